@@ -1,0 +1,105 @@
+# onbstudy - a plain, non-recursive Makefile.
+#   make            libonb.a and the study CLI ./onbstudy
+#   make test       every test (installs missing packages via scripts/install-deps.sh)
+#   make bench      the default benchmark run
+#   make plots      charts of the newest run
+#   make install    PREFIX=/usr/local DESTDIR=  (header, libonb.a, onb.pc)
+#   make uninstall, make clean
+
+CC      ?= cc
+PREFIX  ?= /usr/local
+DESTDIR ?=
+AR      ?= ar
+
+# Floating-point flags, each with its reason.  They are part of the study:
+# every figure in results/ was produced with exactly these.
+#  -ffp-contract=off   no silent contraction into FMA: a*b+c rounds twice, as
+#                      the published listings assume, on every -march.  FMA is
+#                      studied on purpose by a second copy of the kernels (--fma).
+#  -fno-math-errno     sqrt() need not set errno, so loops calling it vectorize
+#                      (sqrtps/sqrtpd) instead of falling back to scalar code.
+#  -fno-trapping-math  we never read the FP exception flags; this lets GCC
+#                      if-convert the branchy kernels (duff, frisvad) into blends.
+#                      It changes no value, only which flags could be raised.
+#  no -ffast-math      onb.h stops at #error under it: reassociation and
+#                      reciprocal approximations would change every result.
+FPFLAGS = -ffp-contract=off -fno-math-errno -fno-trapping-math
+OPT     ?= -O3
+WARN    = -Wall -Wextra -Wpedantic -Wshadow
+# The library is held to a stricter standard: -Wconversion and -Werror.
+LIBWARN = $(WARN) -Wconversion -Werror
+CFLAGS  ?= -g
+SANITIZE ?=
+ifneq ($(SANITIZE),)
+  SANFLAGS = -fsanitize=$(SANITIZE) -fno-omit-frame-pointer -fno-sanitize-recover=all
+endif
+BASE    = -std=c99 $(OPT) $(FPFLAGS) $(CFLAGS) $(SANFLAGS) -Iinclude
+STUDY_LIBS = -lmpfr -lgmp -lm
+OMP     = -fopenmp
+
+B       = build
+LIB_SRC = $(wildcard src/lib/*.c)
+LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o)
+STUDY_SRC = $(wildcard src/study/*.c)
+STUDY_OBJ = $(STUDY_SRC:src/study/%.c=$(B)/study/%.o)
+TEST_SRC  = $(wildcard tests/test_*.c)
+TEST_BIN  = $(TEST_SRC:tests/%.c=$(B)/tests/%)
+GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- 2>/dev/null || echo -dirty)
+PROV     = -DONB_GIT_REV='"$(GIT_REV)"' -DONB_CC='"$(shell $(CC) --version | head -1)"' \
+           -DONB_CFLAGS='"$(BASE)"'
+
+.PHONY: all test bench plots install uninstall clean deps
+all: libonb.a onbstudy
+
+# Dependencies: installed by the script when missing (a stamp records success).
+$(B)/deps.stamp: scripts/install-deps.sh
+	@mkdir -p $(B)
+	sh scripts/install-deps.sh
+	@touch $@
+deps: $(B)/deps.stamp
+
+$(B)/lib/%.o: src/lib/%.c include/onb.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(LIBWARN) -c $< -o $@
+
+libonb.a: $(LIB_OBJ)
+	rm -f $@
+	$(AR) rcs $@ $(LIB_OBJ)
+
+$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h) Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+
+onbstudy: $(STUDY_OBJ) libonb.a
+	$(CC) $(BASE) $(OMP) -o $@ $(STUDY_OBJ) libonb.a $(STUDY_LIBS)
+
+$(B)/tests/%: tests/%.c libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -o $@ $< libonb.a $(STUDY_LIBS)
+
+test: $(B)/deps.stamp all $(TEST_BIN)
+	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
+	for t in tests/*.sh; do [ -f "$$t" ] || continue; echo "== $$t"; sh $$t || fail=1; done; \
+	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
+
+bench: onbstudy
+	./onbstudy bench
+
+plots: onbstudy
+	sh scripts/plots.sh
+
+onb.pc: Makefile
+	printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: onb\nDescription: orthonormal bases from a unit vector (onbstudy)\nVersion: 0.1.0\nCflags: -I$${includedir} -ffp-contract=off\nLibs: -L$${libdir} -lonb -lm\n' '$(PREFIX)' > $@
+
+install: libonb.a onb.pc
+	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/onb.h $(DESTDIR)$(PREFIX)/include/onb.h
+	install -m 644 libonb.a $(DESTDIR)$(PREFIX)/lib/libonb.a
+	install -m 644 onb.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/include/onb.h $(DESTDIR)$(PREFIX)/lib/libonb.a \
+	      $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc
+
+clean:
+	rm -rf $(B) libonb.a onbstudy onb.pc

@@ -1,0 +1,715 @@
+/*
+ * onb.h - orthonormal bases {b1, b2, n} from a 3D unit vector n.
+ *
+ * The whole public face of libonb.  C99, libm only.
+ *
+ * Index
+ *   Types ............ onb_vec3 (double), onb_vec3f (float), onb_method
+ *   Methods .......... one static inline pair per method, double plain,
+ *                      float with the `f` suffix (as in <math.h>):
+ *     onb_naive            onb_naivef             Frisvad 2012 Listing 1
+ *     onb_naive_invsqrt    onb_naive_invsqrtf       + Listing 3 InvSqrt
+ *     onb_naive_rsqrt      onb_naive_rsqrtf         + Listing 3 SSE_rsqrt
+ *     onb_naive_rsqrt_nr   onb_naive_rsqrt_nrf      + Listing 3 SSE_rsqrt_1N
+ *     onb_naive_nonorm     onb_naive_nonormf        + no normalization
+ *     onb_hughes_moeller*  (same five variants)   Hughes & Moller 1999
+ *     onb_frisvad          onb_frisvadf           Frisvad 2012 Listing 2
+ *     onb_frisvad_max      onb_frisvad_maxf       Max 2017 threshold
+ *     onb_duff             onb_dufff              Duff et al. 2017 Listing 2
+ *     onb_duff_branchless  onb_duff_branchlessf   Duff et al. 2017 Listing 3
+ *     onb_stark            onb_starkf             Stark 2009
+ *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
+ *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
+ *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
+ *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
+ *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
+ *                      onb_basis_checked[f]      normalize + status + method
+ *   Batch (libonb.a) . onb_<method>_batch[f]     structure-of-arrays loops
+ *   Registry ......... onb_methods, onb_find, onb_batch_isa
+ *
+ * Conventions
+ *   - Precondition of every method: n is a unit vector as received in the
+ *     format (so |n| = 1 within a few ulps).  Methods never normalize n except
+ *     `rtow`, whose source does.  Non-unit, zero and non-finite input is
+ *     defined (no UB, no hang) but garbage in, garbage out: see the README
+ *     section "Library contract", or use onb_basis_checked.
+ *   - Handedness is det(b1, b2, n): +1 means b1 x b2 = n.
+ *   - Each method is written out by hand for double and float, exactly as
+ *     published, flaws included.  A fix of a published method is a new,
+ *     named method, never an edit of an old one.
+ *   - Error bounds quoted in the comments are maxima of the orthonormality
+ *     defect max(|b1|-1, |b2|-1, b1.n, b2.n, b1.b2) measured by
+ *     `onbstudy sweep` against MPFR; tests/test_lib.c checks the bounds.
+ *
+ * Build with -ffp-contract=off for results that match the study; the
+ * header refuses -ffast-math, under which none of the analysis holds.
+ */
+#ifndef ONB_H
+#define ONB_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#if defined(__FAST_MATH__)
+#error "onb.h: -ffast-math breaks the published error behaviour of every method; build without it"
+#endif
+
+#if (defined(__SSE__) || defined(_M_X64) || defined(__x86_64__)) && !defined(ONB_NO_HW_RSQRT)
+#include <xmmintrin.h>
+#define ONB_HAVE_HW_RSQRT 1
+#else
+#define ONB_HAVE_HW_RSQRT 0
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define ONB_VERSION "0.1.0"
+
+typedef struct { double x, y, z; } onb_vec3;
+typedef struct { float  x, y, z; } onb_vec3f;
+
+/* ------------------------------------------------------------------ */
+/* Reciprocal square roots of Frisvad 2012, Listing 3                  */
+/* ------------------------------------------------------------------ */
+
+/* Listing 3 `rsqrt`: static_cast<float>(1.0/sqrt(x)), i.e. computed in
+   double and rounded once to float: correctly rounded for float. */
+static inline double onb__rsqrt_libm (double x) { return 1.0 / sqrt(x); }
+static inline float  onb__rsqrt_libmf(float x)  { return (float)(1.0 / sqrt((double)x)); }
+
+/* Listing 3 `InvSqrt`: the bit trick and one Newton step.  Unsigned
+   arithmetic reads the listing's int shift without implementation-defined
+   behaviour; for x >= 0 (a dot product) the bits are the same. */
+static inline float onb__invsqrtf(float x)
+{
+	float xhalf = 0.5f * x;
+	uint32_t i;
+	memcpy(&i, &x, sizeof i);
+	i = 0x5f3759dfu - (i >> 1); /* rsqrt seed, 32-bit */
+	memcpy(&x, &i, sizeof x);
+	x = x * (1.5f - xhalf * x * x);
+	return x;
+}
+static inline double onb__invsqrt(double x)
+{
+	double xhalf = 0.5 * x;
+	uint64_t i;
+	memcpy(&i, &x, sizeof i);
+	i = UINT64_C(0x5fe6eb50c7b537a9) - (i >> 1); /* rsqrt seed, 64-bit (Lomont) */
+	memcpy(&x, &i, sizeof x);
+	x = x * (1.5 - xhalf * x * x);
+	return x;
+}
+
+/* Listing 3 `SSE_rsqrt`: the hardware approximation (rsqrtss, relative
+   error <= 1.5*2^-12).  Double has no such instruction below AVX-512, so
+   the double variant rounds x to float, runs rsqrtss and widens the result:
+   the same 12-bit approximation a float renderer gets, on every x86-64.
+   Without SSE both fall back to 1/sqrt and the registry says so
+   (ONB_FELL_BACK). */
+static inline float onb__hw_rsqrtf(float x)
+{
+#if ONB_HAVE_HW_RSQRT
+	return _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x)));
+#else
+	return 1.0f / sqrtf(x);
+#endif
+}
+static inline double onb__hw_rsqrt(double x) { return (double)onb__hw_rsqrtf((float)x); }
+
+/* Listing 3 `SSE_rsqrt_1N`: one Newton step on the hardware estimate y. */
+static inline float  onb__newtonf(float x, float y)   { return y * (1.5f - 0.5f * x * y * y); }
+static inline double onb__newton (double x, double y) { return y * (1.5 - 0.5 * x * y * y); }
+static inline float  onb__hw_rsqrt_nrf(float x)  { return onb__newtonf(x, onb__hw_rsqrtf(x)); }
+static inline double onb__hw_rsqrt_nr (double x) { return onb__newton(x, onb__hw_rsqrt(x)); }
+
+/* Normalization selectors of the naive and hughes_moeller families.  The
+   family kernels take one as a constant, which inlining folds away. */
+enum {
+	ONB__NORM_LIBM = 0, /* Listing 3 rsqrt       */
+	ONB__NORM_INVSQRT,  /* Listing 3 InvSqrt     */
+	ONB__NORM_RSQRT,    /* Listing 3 SSE_rsqrt   */
+	ONB__NORM_RSQRT_NR, /* Listing 3 SSE_rsqrt_1N*/
+	ONB__NORM_NONE      /* no normalization      */
+};
+
+static inline double onb__rsq(double x, int norm)
+{
+	switch (norm) {
+	case ONB__NORM_INVSQRT:  return onb__invsqrt(x);
+	case ONB__NORM_RSQRT:    return onb__hw_rsqrt(x);
+	case ONB__NORM_RSQRT_NR: return onb__hw_rsqrt_nr(x);
+	case ONB__NORM_NONE:     return 1.0;
+	default:                 return onb__rsqrt_libm(x);
+	}
+}
+static inline float onb__rsqf(float x, int norm)
+{
+	switch (norm) {
+	case ONB__NORM_INVSQRT:  return onb__invsqrtf(x);
+	case ONB__NORM_RSQRT:    return onb__hw_rsqrtf(x);
+	case ONB__NORM_RSQRT_NR: return onb__hw_rsqrt_nrf(x);
+	case ONB__NORM_NONE:     return 1.0f;
+	default:                 return onb__rsqrt_libmf(x);
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* naive (Frisvad 2012, Listing 1, credited there to a reviewer)       */
+/* ------------------------------------------------------------------ */
+/* b1 = x-axis, or y-axis when n.x > 0.9; b1 -= n*dot(b1, n); b1 *= rsqrt(
+   dot(b1, b1)); b2 = cross(n, b1).  Handedness +1.
+   Threshold: n.x > 0.9 (one-sided: n.x < -0.9 keeps the x-axis).
+   Singular: n = -x exactly (b1 - n*dot = 0, 0*inf = NaN); precision falls
+   as n approaches -x, where b1 cancels (relative error ~ eps/|1 + n.x|).
+   The dot products are evaluated in full, zeros included, as the Vec3f
+   code of the listing does.
+   The kernel is split at the normalization (pre/post) so that the batch
+   loops can vectorize the hardware rsqrt; the scalar function chains the
+   same three steps, so both give the same bits. */
+static inline double onb__naive_pre(onb_vec3 n, onb_vec3 *b1)
+{
+	double bx, by, bz, d;
+	if (n.x > 0.9) { bx = 0.0; by = 1.0; bz = 0.0; }
+	else           { bx = 1.0; by = 0.0; bz = 0.0; }
+	d = bx * n.x + by * n.y + bz * n.z;
+	bx -= n.x * d;
+	by -= n.y * d;
+	bz -= n.z * d;
+	b1->x = bx; b1->y = by; b1->z = bz;
+	return bx * bx + by * by + bz * bz;
+}
+static inline float onb__naive_pref(onb_vec3f n, onb_vec3f *b1)
+{
+	float bx, by, bz, d;
+	if (n.x > 0.9f) { bx = 0.0f; by = 1.0f; bz = 0.0f; }
+	else            { bx = 1.0f; by = 0.0f; bz = 0.0f; }
+	d = bx * n.x + by * n.y + bz * n.z;
+	bx -= n.x * d;
+	by -= n.y * d;
+	bz -= n.z * d;
+	b1->x = bx; b1->y = by; b1->z = bz;
+	return bx * bx + by * by + bz * bz;
+}
+static inline void onb__naive_post(onb_vec3 n, onb_vec3 u, double s, onb_vec3 *b1, onb_vec3 *b2)
+{
+	u.x *= s; u.y *= s; u.z *= s;
+	*b1 = u;
+	b2->x = n.y * u.z - n.z * u.y;
+	b2->y = n.z * u.x - n.x * u.z;
+	b2->z = n.x * u.y - n.y * u.x;
+}
+static inline void onb__naive_postf(onb_vec3f n, onb_vec3f u, float s, onb_vec3f *b1, onb_vec3f *b2)
+{
+	u.x *= s; u.y *= s; u.z *= s;
+	*b1 = u;
+	b2->x = n.y * u.z - n.z * u.y;
+	b2->y = n.z * u.x - n.x * u.z;
+	b2->z = n.x * u.y - n.y * u.x;
+}
+static inline void onb__naive(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int norm)
+{
+	onb_vec3 u;
+	double l2 = onb__naive_pre(n, &u);
+	onb__naive_post(n, u, onb__rsq(l2, norm), b1, b2);
+}
+static inline void onb__naivef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int norm)
+{
+	onb_vec3f u;
+	float l2 = onb__naive_pref(n, &u);
+	onb__naive_postf(n, u, onb__rsqf(l2, norm), b1, b2);
+}
+
+static inline void onb_naive            (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_LIBM); }
+static inline void onb_naivef           (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_LIBM); }
+static inline void onb_naive_invsqrt    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void onb_naive_invsqrtf   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void onb_naive_rsqrt      (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT); }
+static inline void onb_naive_rsqrtf     (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT); }
+static inline void onb_naive_rsqrt_nr   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void onb_naive_rsqrt_nrf  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void onb_naive_nonorm     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_NONE); }
+static inline void onb_naive_nonormf    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_NONE); }
+
+/* ------------------------------------------------------------------ */
+/* hughes_moeller (Hughes & Moller 1999, as in Frisvad 2012 Listing 1) */
+/* ------------------------------------------------------------------ */
+/* b2 = (-n.y, n.x, 0) if |n.x| > |n.z|, else (0, -n.z, n.y); b2 *= rsqrt(
+   dot(b2, b2)); b1 = cross(b2, n).  Handedness +1.
+   Threshold: |n.x| = |n.z| (the frame jumps there).  No singular unit
+   direction: the chosen vector has squared length >= 1/2 - O(eps) for
+   unit n.  Note this is Frisvad's listing, which compares x with z only;
+   the 1999 paper's "smallest component" variant is not this one. */
+static inline double onb__hughes_moeller_pre(onb_vec3 n, onb_vec3 *b2)
+{
+	double bx, by, bz;
+	if (fabs(n.x) > fabs(n.z)) { bx = -n.y; by = n.x;  bz = 0.0; }
+	else                       { bx = 0.0;  by = -n.z; bz = n.y; }
+	b2->x = bx; b2->y = by; b2->z = bz;
+	return bx * bx + by * by + bz * bz;
+}
+static inline float onb__hughes_moeller_pref(onb_vec3f n, onb_vec3f *b2)
+{
+	float bx, by, bz;
+	if (fabsf(n.x) > fabsf(n.z)) { bx = -n.y; by = n.x;  bz = 0.0f; }
+	else                         { bx = 0.0f; by = -n.z; bz = n.y; }
+	b2->x = bx; b2->y = by; b2->z = bz;
+	return bx * bx + by * by + bz * bz;
+}
+static inline void onb__hughes_moeller_post(onb_vec3 n, onb_vec3 v, double s, onb_vec3 *b1, onb_vec3 *b2)
+{
+	v.x *= s; v.y *= s; v.z *= s;
+	*b2 = v;
+	b1->x = v.y * n.z - v.z * n.y;
+	b1->y = v.z * n.x - v.x * n.z;
+	b1->z = v.x * n.y - v.y * n.x;
+}
+static inline void onb__hughes_moeller_postf(onb_vec3f n, onb_vec3f v, float s, onb_vec3f *b1, onb_vec3f *b2)
+{
+	v.x *= s; v.y *= s; v.z *= s;
+	*b2 = v;
+	b1->x = v.y * n.z - v.z * n.y;
+	b1->y = v.z * n.x - v.x * n.z;
+	b1->z = v.x * n.y - v.y * n.x;
+}
+static inline void onb__hughes_moeller(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int norm)
+{
+	onb_vec3 v;
+	double l2 = onb__hughes_moeller_pre(n, &v);
+	onb__hughes_moeller_post(n, v, onb__rsq(l2, norm), b1, b2);
+}
+static inline void onb__hughes_moellerf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int norm)
+{
+	onb_vec3f v;
+	float l2 = onb__hughes_moeller_pref(n, &v);
+	onb__hughes_moeller_postf(n, v, onb__rsqf(l2, norm), b1, b2);
+}
+
+static inline void onb_hughes_moeller           (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_LIBM); }
+static inline void onb_hughes_moellerf          (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_LIBM); }
+static inline void onb_hughes_moeller_invsqrt   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void onb_hughes_moeller_invsqrtf  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void onb_hughes_moeller_rsqrt     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT); }
+static inline void onb_hughes_moeller_rsqrtf    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT); }
+static inline void onb_hughes_moeller_rsqrt_nr  (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void onb_hughes_moeller_rsqrt_nrf (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void onb_hughes_moeller_nonorm    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_NONE); }
+static inline void onb_hughes_moeller_nonormf   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_NONE); }
+
+/* ------------------------------------------------------------------ */
+/* frisvad (Frisvad 2012, Listing 2 / Equations 4-6)                   */
+/* ------------------------------------------------------------------ */
+/* a = 1/(1 + n.z), b = -n.x*n.y*a, b1 = (1 - n.x*n.x*a, b, -n.x),
+   b2 = (b, 1 - n.y*n.y*a, -n.y); when n.z < t, the fallback
+   b1 = (0, -1, 0), b2 = (-1, 0, 0).  Handedness +1 (fallback included).
+   onb_frisvad uses the published t = -0.9999999 (the float literal
+   -0.9999999f = -0x1.fffffcp-1 in float; the decimal -0.9999999 rounded
+   to double in double, our reading for a listing written only in float).
+   Singular: none exactly (the fallback covers n.z = -1), but the formula
+   loses all precision as n.z -> -1: its error grows like eps/(1 + n.z),
+   and in float it reaches O(1) just above the threshold.  That failure is
+   the published behaviour and is kept. */
+static inline void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2)
+{
+	double a, b;
+	if (n.z < t) {
+		b1->x = 0.0;  b1->y = -1.0; b1->z = 0.0;
+		b2->x = -1.0; b2->y = 0.0;  b2->z = 0.0;
+		return;
+	}
+	a = 1.0 / (1.0 + n.z);
+	b = -n.x * n.y * a;
+	b1->x = 1.0 - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+	b2->x = b; b2->y = 1.0 - n.y * n.y * a; b2->z = -n.y;
+}
+static inline void onb_frisvad_thresholdf(onb_vec3f n, float t, onb_vec3f *b1, onb_vec3f *b2)
+{
+	float a, b;
+	if (n.z < t) {
+		b1->x = 0.0f;  b1->y = -1.0f; b1->z = 0.0f;
+		b2->x = -1.0f; b2->y = 0.0f;  b2->z = 0.0f;
+		return;
+	}
+	a = 1.0f / (1.0f + n.z);
+	b = -n.x * n.y * a;
+	b1->x = 1.0f - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+	b2->x = b; b2->y = 1.0f - n.y * n.y * a; b2->z = -n.y;
+}
+
+#define ONB_FRISVAD_T      (-0.9999999)    /* Frisvad 2012, Listing 2 */
+#define ONB_FRISVAD_TF     (-0.9999999f)
+#define ONB_FRISVAD_MAX_T  (-0.99998796)   /* Max 2017, minimax for float */
+#define ONB_FRISVAD_MAX_TF (-0.99998796f)
+
+static inline void onb_frisvad (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb_frisvad_threshold (n, ONB_FRISVAD_T,  b1, b2); }
+static inline void onb_frisvadf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_frisvad_thresholdf(n, ONB_FRISVAD_TF, b1, b2); }
+
+/* frisvad_max (Nelson Max 2017, JCGT 6(1), "Improved accuracy when
+   building an orthonormal basis"): Listing 2 with t = -0.99998796, where the
+   formula's error above t and the fallback's error below t balance in
+   float (both ~5e-3 at t).  Handedness +1.  The double variant keeps the
+   same published t, although the double minimax lies much nearer -1
+   (`onbstudy threshold --precision double` finds it). */
+static inline void onb_frisvad_max (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb_frisvad_threshold (n, ONB_FRISVAD_MAX_T,  b1, b2); }
+static inline void onb_frisvad_maxf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_frisvad_thresholdf(n, ONB_FRISVAD_MAX_TF, b1, b2); }
+
+/* Frisvad 2012, Equation 3: the direction (x, y, z) given around the
+   z-axis, rotated to the same direction around n, without the basis:
+   w = x*(1 - nx^2 a, -nx ny a, -nx) + y*(-nx ny a, 1 - ny^2 a, -ny) + z*n
+   with a = 1/(1 + n.z).  Singular case as published: when 1 + n.z == 0
+   (n = -z), w = (-y, -x, -z).  No threshold: just above -1 the float
+   result has the formula's full O(eps/(1 + n.z)) error. */
+static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double z)
+{
+	onb_vec3 w;
+	double s = 1.0 + n.z, a, b;
+	if (s == 0.0) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	a = 1.0 / s;
+	b = -n.x * n.y * a;
+	w.x = x * (1.0 - n.x * n.x * a) + y * b + z * n.x;
+	w.y = x * b + y * (1.0 - n.y * n.y * a) + z * n.y;
+	w.z = x * -n.x + y * -n.y + z * n.z;
+	return w;
+}
+static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float z)
+{
+	onb_vec3f w;
+	float s = 1.0f + n.z, a, b;
+	if (s == 0.0f) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	a = 1.0f / s;
+	b = -n.x * n.y * a;
+	w.x = x * (1.0f - n.x * n.x * a) + y * b + z * n.x;
+	w.y = x * b + y * (1.0f - n.y * n.y * a) + z * n.y;
+	w.z = x * -n.x + y * -n.y + z * n.z;
+	return w;
+}
+
+/* ------------------------------------------------------------------ */
+/* duff (Duff et al. 2017, JCGT 6(1), Listing 2, "revisedONB")         */
+/* ------------------------------------------------------------------ */
+/* Frisvad's formula for n.z >= 0, and its mirror for n.z < 0:
+   a = 1/(1 - n.z), b = n.x*n.y*a, b1 = (1 - n.x*n.x*a, -b, n.x),
+   b2 = (b, n.y*n.y*a - 1, -n.y).  Handedness +1 in both branches.
+   Threshold: the sign of n.z (n.z = -0 takes the n.z >= 0 branch, since
+   -0 < 0 is false).  No singular unit direction: 1 +- n.z >= 1.  The
+   frame is discontinuous across n.z = 0 (b2 flips sign in y). */
+static inline void onb_duff(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	if (n.z < 0.0) {
+		const double a = 1.0 / (1.0 - n.z);
+		const double b = n.x * n.y * a;
+		b1->x = 1.0 - n.x * n.x * a; b1->y = -b; b1->z = n.x;
+		b2->x = b; b2->y = n.y * n.y * a - 1.0; b2->z = -n.y;
+	} else {
+		const double a = 1.0 / (1.0 + n.z);
+		const double b = -n.x * n.y * a;
+		b1->x = 1.0 - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+		b2->x = b; b2->y = 1.0 - n.y * n.y * a; b2->z = -n.y;
+	}
+}
+static inline void onb_dufff(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	if (n.z < 0.0f) {
+		const float a = 1.0f / (1.0f - n.z);
+		const float b = n.x * n.y * a;
+		b1->x = 1.0f - n.x * n.x * a; b1->y = -b; b1->z = n.x;
+		b2->x = b; b2->y = n.y * n.y * a - 1.0f; b2->z = -n.y;
+	} else {
+		const float a = 1.0f / (1.0f + n.z);
+		const float b = -n.x * n.y * a;
+		b1->x = 1.0f - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+		b2->x = b; b2->y = 1.0f - n.y * n.y * a; b2->z = -n.y;
+	}
+}
+
+/* duff_branchless (Duff et al. 2017, Listing 3; pbrt-v4 CoordinateSystem,
+   Mitsuba 3 coordinate_system): sign = copysign(1, n.z),
+   a = -1/(sign + n.z), b = n.x*n.y*a,
+   b1 = (1 + sign*n.x*n.x*a, sign*b, -sign*n.x), b2 = (b, sign + n.y*n.y*a, -n.y).
+   Handedness +1.  Threshold: the sign bit of n.z, so n.z = -0 takes the
+   lower branch (unlike `duff`).  No singular unit direction. */
+static inline void onb_duff_branchless(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double sign = copysign(1.0, n.z);
+	const double a = -1.0 / (sign + n.z);
+	const double b = n.x * n.y * a;
+	b1->x = 1.0 + sign * n.x * n.x * a; b1->y = sign * b; b1->z = -sign * n.x;
+	b2->x = b; b2->y = sign + n.y * n.y * a; b2->z = -n.y;
+}
+static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float sign = copysignf(1.0f, n.z);
+	const float a = -1.0f / (sign + n.z);
+	const float b = n.x * n.y * a;
+	b1->x = 1.0f + sign * n.x * n.x * a; b1->y = sign * b; b1->z = -sign * n.x;
+	b2->x = b; b2->y = sign + n.y * n.y * a; b2->z = -n.y;
+}
+
+/* ------------------------------------------------------------------ */
+/* stark (Stark 2009, JGT 14(1), "Efficient construction of            */
+/* perpendicular vectors without branching")                           */
+/* ------------------------------------------------------------------ */
+/* p = cross(n, e_k), where e_k is the axis of n's smallest |component|,
+   chosen by Stark's comparisons on differences of absolute values:
+   xm = (|x| - |y| < 0) && (|x| - |z| < 0), ym = (|y| - |z| < 0) ^ xm
+   restricted to !xm, zm = !(xm | ym).  Then (our completion, as the
+   issue reads it) b1 = p / |p| with 1/sqrt, b2 = cross(n, b1).
+   Handedness +1.  Thresholds: |x| = |y|, |x| = |z|, |y| = |z|.  No
+   singular unit direction: |p|^2 >= 2/3 - O(eps). */
+static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p)
+{
+	const double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+	const int xm = (ax - ay < 0.0) & (ax - az < 0.0);
+	const int ym = (ay - az < 0.0) & !xm;
+	const int zm = !(xm | ym);
+	const double ex = xm, ey = ym, ez = zm;
+	p->x = n.y * ez - n.z * ey;
+	p->y = n.z * ex - n.x * ez;
+	p->z = n.x * ey - n.y * ex;
+	return p->x * p->x + p->y * p->y + p->z * p->z;
+}
+static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
+{
+	const float ax = fabsf(n.x), ay = fabsf(n.y), az = fabsf(n.z);
+	const int xm = (ax - ay < 0.0f) & (ax - az < 0.0f);
+	const int ym = (ay - az < 0.0f) & !xm;
+	const int zm = !(xm | ym);
+	const float ex = (float)xm, ey = (float)ym, ez = (float)zm;
+	p->x = n.y * ez - n.z * ey;
+	p->y = n.z * ex - n.x * ez;
+	p->z = n.x * ey - n.y * ex;
+	return p->x * p->x + p->y * p->y + p->z * p->z;
+}
+static inline void onb_stark(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	const double s = 1.0 / sqrt(onb__stark_pre(n, &p));
+	onb__naive_post(n, p, s, b1, b2);
+}
+static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p));
+	onb__naive_postf(n, p, s, b1, b2);
+}
+
+/* ------------------------------------------------------------------ */
+/* pbrt_v3 (pbrt-v3 src/core/geometry.h, CoordinateSystem)             */
+/* ------------------------------------------------------------------ */
+/* if |v.x| > |v.y|: b1 = (-v.z, 0, v.x) / sqrt(v.x^2 + v.z^2)
+   else:            b1 = (0, v.z, -v.y) / sqrt(v.y^2 + v.z^2)
+   b2 = cross(v, b1).  pbrt-v3's Vector3 operator/ multiplies by
+   inv = 1/f, which we keep.  Handedness +1.  Threshold: |x| = |y|.
+   No singular unit direction (squared length >= 1/2 - O(eps)). */
+static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 u;
+	double inv;
+	if (fabs(n.x) > fabs(n.y)) {
+		inv = 1.0 / sqrt(n.x * n.x + n.z * n.z);
+		u.x = -n.z * inv; u.y = 0.0 * inv; u.z = n.x * inv;
+	} else {
+		inv = 1.0 / sqrt(n.y * n.y + n.z * n.z);
+		u.x = 0.0 * inv; u.y = n.z * inv; u.z = -n.y * inv;
+	}
+	onb__naive_post(n, u, 1.0, b1, b2);
+}
+static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f u;
+	float inv;
+	if (fabsf(n.x) > fabsf(n.y)) {
+		inv = 1.0f / sqrtf(n.x * n.x + n.z * n.z);
+		u.x = -n.z * inv; u.y = 0.0f * inv; u.z = n.x * inv;
+	} else {
+		inv = 1.0f / sqrtf(n.y * n.y + n.z * n.z);
+		u.x = 0.0f * inv; u.y = n.z * inv; u.z = -n.y * inv;
+	}
+	onb__naive_postf(n, u, 1.0f, b1, b2);
+}
+
+/* ------------------------------------------------------------------ */
+/* rtow ("Ray Tracing: The Rest of Your Life", onb::build_from_w)      */
+/* ------------------------------------------------------------------ */
+/* unit_w = w / |w| (the book's operator/ multiplies by 1/t);
+   a = (0,1,0) if |unit_w.x| > 0.9 else (1,0,0); v = unit(cross(unit_w, a));
+   u = cross(unit_w, v).  Returned in the book's axis order: b1 = u,
+   b2 = v, with unit_w (not n) as the implied third axis.  Handedness -1:
+   u x v = -w.  The only method here that normalizes its input.
+   Threshold: |w.x| = 0.9.  Singular: w = 0 only. */
+static inline void onb_rtow(onb_vec3 w, onb_vec3 *b1, onb_vec3 *b2)
+{
+	double inv = 1.0 / sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+	onb_vec3 uw, a, c, v;
+	double il;
+	uw.x = inv * w.x; uw.y = inv * w.y; uw.z = inv * w.z;
+	if (fabs(uw.x) > 0.9) { a.x = 0.0; a.y = 1.0; a.z = 0.0; }
+	else                  { a.x = 1.0; a.y = 0.0; a.z = 0.0; }
+	c.x = uw.y * a.z - uw.z * a.y;
+	c.y = uw.z * a.x - uw.x * a.z;
+	c.z = uw.x * a.y - uw.y * a.x;
+	il = 1.0 / sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+	v.x = il * c.x; v.y = il * c.y; v.z = il * c.z;
+	b1->x = uw.y * v.z - uw.z * v.y;
+	b1->y = uw.z * v.x - uw.x * v.z;
+	b1->z = uw.x * v.y - uw.y * v.x;
+	*b2 = v;
+}
+static inline void onb_rtowf(onb_vec3f w, onb_vec3f *b1, onb_vec3f *b2)
+{
+	float inv = 1.0f / sqrtf(w.x * w.x + w.y * w.y + w.z * w.z);
+	onb_vec3f uw, a, c, v;
+	float il;
+	uw.x = inv * w.x; uw.y = inv * w.y; uw.z = inv * w.z;
+	if (fabsf(uw.x) > 0.9f) { a.x = 0.0f; a.y = 1.0f; a.z = 0.0f; }
+	else                    { a.x = 1.0f; a.y = 0.0f; a.z = 0.0f; }
+	c.x = uw.y * a.z - uw.z * a.y;
+	c.y = uw.z * a.x - uw.x * a.z;
+	c.z = uw.x * a.y - uw.y * a.x;
+	il = 1.0f / sqrtf(c.x * c.x + c.y * c.y + c.z * c.z);
+	v.x = il * c.x; v.y = il * c.y; v.z = il * c.z;
+	b1->x = uw.y * v.z - uw.z * v.y;
+	b1->y = uw.z * v.x - uw.x * v.z;
+	b1->z = uw.x * v.y - uw.y * v.x;
+	*b2 = v;
+}
+
+/* ------------------------------------------------------------------ */
+/* tangent_cross_z (blog "Vector transformation using projection       */
+/* between orthonormal bases", Python get_onb)                         */
+/* ------------------------------------------------------------------ */
+/* t = (n.x, n.y, n.z + 1) (our reading of the post's garbled
+   `t = [n, n, n + 1]`), binormal = normalize(cross(n, t)) with
+   normalize(v) = v / |v| (division, as a Python list comprehension
+   would), tangent = cross(n, binormal); returned [tangent, binormal, n],
+   so b1 = tangent, b2 = binormal.  Handedness -1.
+   Singular: n = +z and n = -z exactly (cross(n, t) = 0, 0/0 = NaN), and
+   in float any n with n.x^2 + n.y^2 below the smallest subnormal, where
+   the squared length underflows. */
+static inline void onb_tangent_cross_z(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double tx = n.x, ty = n.y, tz = n.z + 1.0;
+	double cx = n.y * tz - n.z * ty;
+	double cy = n.z * tx - n.x * tz;
+	double cz = n.x * ty - n.y * tx;
+	const double l = sqrt(cx * cx + cy * cy + cz * cz);
+	cx = cx / l; cy = cy / l; cz = cz / l;
+	b2->x = cx; b2->y = cy; b2->z = cz;
+	b1->x = n.y * cz - n.z * cy;
+	b1->y = n.z * cx - n.x * cz;
+	b1->z = n.x * cy - n.y * cx;
+}
+static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float tx = n.x, ty = n.y, tz = n.z + 1.0f;
+	float cx = n.y * tz - n.z * ty;
+	float cy = n.z * tx - n.x * tz;
+	float cz = n.x * ty - n.y * tx;
+	const float l = sqrtf(cx * cx + cy * cy + cz * cz);
+	cx = cx / l; cy = cy / l; cz = cz / l;
+	b2->x = cx; b2->y = cy; b2->z = cz;
+	b1->x = n.y * cz - n.z * cy;
+	b1->y = n.z * cx - n.x * cz;
+	b1->z = n.x * cy - n.y * cx;
+}
+
+/* ------------------------------------------------------------------ */
+/* Out-of-line library: batch kernels and registry                     */
+/* ------------------------------------------------------------------ */
+
+typedef void (*onb_basis_fn) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2);
+typedef void (*onb_basisf_fn)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2);
+
+/* Structure-of-arrays batch: for i < count, (b1[i], b2[i]) = method(n[i]).
+   The nine arrays must not overlap.  Bit-identical to the scalar function
+   built with the library's flags (see the Makefile).  The loop runs the
+   widest clone the CPU supports (onb_batch_isa names it). */
+typedef void (*onb_batch_fn)(size_t count,
+	const double *nx, const double *ny, const double *nz,
+	double *b1x, double *b1y, double *b1z,
+	double *b2x, double *b2y, double *b2z);
+typedef void (*onb_batchf_fn)(size_t count,
+	const float *nx, const float *ny, const float *nz,
+	float *b1x, float *b1y, float *b1z,
+	float *b2x, float *b2y, float *b2z);
+
+/* onb_method.flags */
+#define ONB_HW_RSQRT     0x1u /* uses the hardware rsqrt approximation        */
+#define ONB_FELL_BACK    0x2u /* ...which this build lacks: runs 1/sqrt instead */
+#define ONB_APPROX_NORM  0x4u /* normalization is approximate or absent        */
+#define ONB_NORMALIZES_N 0x8u /* the method normalizes n itself (rtow)        */
+
+typedef struct onb_method {
+	const char   *name;       /* e.g. "duff_branchless"                        */
+	const char   *family;     /* the exact formula the MPFR reference follows  */
+	const char   *source;     /* one line: publication and listing             */
+	const char   *singular;   /* unit directions where it fails, or "none"     */
+	const char   *thresholds; /* its branch conditions                         */
+	int           handedness; /* det(b1, b2, n): +1, -1, or 0 if it depends on n */
+	unsigned      flags;      /* ONB_* above                                   */
+	double        threshold;  /* Frisvad-family t, or NAN                      */
+	int           norm;       /* normalization variant, for the reference      */
+	onb_basis_fn  basis;      /* out-of-line scalar, double                    */
+	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
+	onb_batch_fn  batch;      /* SoA batch, double                             */
+	onb_batchf_fn batchf;     /* SoA batch, float                              */
+} onb_method;
+
+/* All methods, in a fixed order; *count receives their number. */
+const onb_method *onb_methods(size_t *count);
+/* The method called `name`, or NULL. */
+const onb_method *onb_find(const char *name);
+/* The instruction set the batch kernels run on this CPU:
+   "avx512f", "avx2" or "sse2" (or "generic" off x86-64). */
+const char *onb_batch_isa(void);
+
+/* Status of onb_basis_checked. */
+typedef enum {
+	ONB_OK = 0,          /* n was unit within ONB_CHECK_TOL, used as given  */
+	ONB_RENORMALIZED,    /* n was finite, non-zero, not unit: normalized    */
+	ONB_ZERO,            /* n was zero (or too small to normalize)          */
+	ONB_NONFINITE,       /* n had a NaN or an infinity                      */
+	ONB_BAD_METHOD       /* method was NULL                                 */
+} onb_status;
+
+/* Relative tolerance on |n|^2 - 1 under which n is used unchanged. */
+#define ONB_CHECK_TOL  1e-12
+#define ONB_CHECK_TOLF 1e-6f
+
+/* Checked entry point for renderers: validates n, normalizes it when it is
+   not unit (scaling first, so no overflow or underflow), then calls
+   method->basis (or basisf).  On ONB_ZERO, ONB_NONFINITE and
+   ONB_BAD_METHOD, b1 and b2 are set to (1,0,0) and (0,1,0) and the status
+   tells the caller not to trust them.  *n_used (may be NULL) receives the
+   normal actually passed to the method. */
+onb_status onb_basis_checked (const onb_method *method, onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2, onb_vec3  *n_used);
+onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, onb_vec3f *n_used);
+
+/* Out-of-line copies and batch kernels, one set per method.  Declared by
+   an X-macro so the list stays in one place; registry.c defines them. */
+#define ONB_METHOD_LIST(X) \
+	X(naive) X(naive_invsqrt) X(naive_rsqrt) X(naive_rsqrt_nr) X(naive_nonorm) \
+	X(hughes_moeller) X(hughes_moeller_invsqrt) X(hughes_moeller_rsqrt) \
+	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
+	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(pbrt_v3) \
+	X(rtow) X(tangent_cross_z)
+
+#define ONB__DECLARE(m) \
+	void onb_##m##_outline (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2); \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2); \
+	void onb_##m##_batch (size_t count, const double *nx, const double *ny, const double *nz, \
+		double *b1x, double *b1y, double *b1z, double *b2x, double *b2y, double *b2z); \
+	void onb_##m##_batchf(size_t count, const float *nx, const float *ny, const float *nz, \
+		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
+ONB_METHOD_LIST(ONB__DECLARE)
+#undef ONB__DECLARE
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ONB_H */

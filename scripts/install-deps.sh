@@ -1,0 +1,27 @@
+#!/bin/sh
+# Install what onbstudy needs on Debian or Ubuntu.  Does nothing when
+# everything is present; without root it prints the exact command to run.
+set -eu
+PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config"
+missing=""
+for p in $PKGS; do
+	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+		missing="$missing $p"
+	fi
+done
+if [ -z "$missing" ]; then
+	echo "install-deps: all present ($PKGS)"
+	exit 0
+fi
+cmd="apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends$missing"
+if [ "$(id -u)" -ne 0 ]; then
+	if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+		exec sudo -n sh -c "$cmd"
+	fi
+	echo "install-deps: missing:$missing" >&2
+	echo "install-deps: run as root:  $cmd" >&2
+	exit 1
+fi
+echo "install-deps: installing:$missing"
+apt-get update -q
+DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $missing

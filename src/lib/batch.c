@@ -1,0 +1,193 @@
+/*
+ * batch.c - structure-of-arrays loops over every method, and the
+ * out-of-line scalar copies that the registry points to.
+ *
+ * Each batch loop calls the header's static inline kernel, so it computes
+ * the same IEEE operations in the same order as the scalar function: with
+ * -ffp-contract=off (no FMA contraction) the vectorized loop gives the same
+ * bits as the scalar code.  tests/test_lib.c checks that, per method.
+ *
+ * Run-time ISA dispatch: on x86-64 with GCC, each loop is compiled three
+ * times (target_clones: AVX-512F, AVX2, baseline SSE2) and an ifunc
+ * resolver picks the widest one the CPU has.  The instruction set never
+ * changes the bits, because none of these clones may contract into FMA and
+ * IEEE +, -, *, /, sqrt are correctly rounded at every width.  The one
+ * exception by design is the _rsqrt family: rsqrtps is an approximation
+ * whose table is the CPU vendor's (Intel and AMD differ in the last bits),
+ * but not the clone's, since every clone issues the same SSE rsqrtps
+ * (VEX-encoded under AVX) and never the AVX-512 rsqrt14.
+ */
+#include "onb.h"
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(ONB_NO_CLONES)
+#define ONB__CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#define ONB__HAVE_CLONES 1
+#else
+#define ONB__CLONES
+#define ONB__HAVE_CLONES 0
+#endif
+
+/* Block size of the three-pass loops (pre, rsqrt, post): small enough for
+   the stack and L1, large enough to amortize the loop overhead. */
+#define ONB__BLOCK 256
+
+const char *onb_batch_isa(void)
+{
+#if ONB__HAVE_CLONES
+	__builtin_cpu_init();
+	if (__builtin_cpu_supports("avx512f"))
+		return "avx512f";
+	if (__builtin_cpu_supports("avx2"))
+		return "avx2";
+	return "sse2";
+#elif defined(__x86_64__)
+	return "sse2";
+#else
+	return "generic";
+#endif
+}
+
+/* Hardware rsqrt over a block, four lanes at a time, with the same
+   instruction as the scalar onb__hw_rsqrtf (rsqrtss and rsqrtps share one
+   table), so a batch gives the scalar bits. */
+static void onb__rsqrt_blockf(size_t m, const float *x, float *y)
+{
+	size_t j = 0;
+#if ONB_HAVE_HW_RSQRT
+	for (; j + 4 <= m; j += 4)
+		_mm_storeu_ps(y + j, _mm_rsqrt_ps(_mm_loadu_ps(x + j)));
+#endif
+	for (; j < m; j++)
+		y[j] = onb__hw_rsqrtf(x[j]);
+}
+
+/* Methods without an approximate rsqrt: one fused loop over the inline
+   kernel. */
+#define ONB__BATCH_SIMPLE(m)                                                   \
+	ONB__CLONES void onb_##m##_batch(size_t count,                             \
+		const double *restrict nx, const double *restrict ny,                  \
+		const double *restrict nz, double *restrict b1x,                       \
+		double *restrict b1y, double *restrict b1z, double *restrict b2x,      \
+		double *restrict b2y, double *restrict b2z)                            \
+	{                                                                          \
+		size_t i;                                                              \
+		for (i = 0; i < count; i++) {                                          \
+			onb_vec3 n, b1, b2;                                                \
+			n.x = nx[i]; n.y = ny[i]; n.z = nz[i];                             \
+			onb_##m(n, &b1, &b2);                                              \
+			b1x[i] = b1.x; b1y[i] = b1.y; b1z[i] = b1.z;                       \
+			b2x[i] = b2.x; b2y[i] = b2.y; b2z[i] = b2.z;                       \
+		}                                                                      \
+	}                                                                          \
+	ONB__CLONES void onb_##m##_batchf(size_t count,                            \
+		const float *restrict nx, const float *restrict ny,                    \
+		const float *restrict nz, float *restrict b1x, float *restrict b1y,    \
+		float *restrict b1z, float *restrict b2x, float *restrict b2y,         \
+		float *restrict b2z)                                                   \
+	{                                                                          \
+		size_t i;                                                              \
+		for (i = 0; i < count; i++) {                                          \
+			onb_vec3f n, b1, b2;                                               \
+			n.x = nx[i]; n.y = ny[i]; n.z = nz[i];                             \
+			onb_##m##f(n, &b1, &b2);                                           \
+			b1x[i] = b1.x; b1y[i] = b1.y; b1z[i] = b1.z;                       \
+			b2x[i] = b2.x; b2y[i] = b2.y; b2z[i] = b2.z;                       \
+		}                                                                      \
+	}
+
+ONB__BATCH_SIMPLE(naive)
+ONB__BATCH_SIMPLE(naive_invsqrt)
+ONB__BATCH_SIMPLE(naive_nonorm)
+ONB__BATCH_SIMPLE(hughes_moeller)
+ONB__BATCH_SIMPLE(hughes_moeller_invsqrt)
+ONB__BATCH_SIMPLE(hughes_moeller_nonorm)
+ONB__BATCH_SIMPLE(frisvad)
+ONB__BATCH_SIMPLE(frisvad_max)
+ONB__BATCH_SIMPLE(duff)
+ONB__BATCH_SIMPLE(duff_branchless)
+ONB__BATCH_SIMPLE(stark)
+ONB__BATCH_SIMPLE(pbrt_v3)
+ONB__BATCH_SIMPLE(rtow)
+ONB__BATCH_SIMPLE(tangent_cross_z)
+
+/* Methods with the hardware rsqrt: three passes per block, because GCC
+   cannot vectorize a loop around the scalar rsqrtss intrinsic.  Pass 1
+   builds the unnormalized vector and its squared length, pass 2 runs
+   rsqrtps, pass 3 applies the optional Newton step, scales and crosses.
+   Each pass calls the same inline pieces as the scalar kernel. */
+#define ONB__BATCH_RSQRT(fam, var, newton)                                     \
+	ONB__CLONES void onb_##fam##var##_batch(size_t count,                      \
+		const double *restrict nx, const double *restrict ny,                  \
+		const double *restrict nz, double *restrict b1x,                       \
+		double *restrict b1y, double *restrict b1z, double *restrict b2x,      \
+		double *restrict b2y, double *restrict b2z)                            \
+	{                                                                          \
+		double ux[ONB__BLOCK], uy[ONB__BLOCK], uz[ONB__BLOCK], l2[ONB__BLOCK]; \
+		float l2f[ONB__BLOCK], sf[ONB__BLOCK];                                 \
+		size_t i0, j;                                                          \
+		for (i0 = 0; i0 < count; i0 += ONB__BLOCK) {                           \
+			size_t m = count - i0 < ONB__BLOCK ? count - i0 : ONB__BLOCK;      \
+			for (j = 0; j < m; j++) {                                          \
+				onb_vec3 n, u;                                                 \
+				n.x = nx[i0 + j]; n.y = ny[i0 + j]; n.z = nz[i0 + j];          \
+				l2[j] = onb__##fam##_pre(n, &u);                               \
+				ux[j] = u.x; uy[j] = u.y; uz[j] = u.z;                         \
+				l2f[j] = (float)l2[j];                                         \
+			}                                                                  \
+			onb__rsqrt_blockf(m, l2f, sf);                                     \
+			for (j = 0; j < m; j++) {                                          \
+				onb_vec3 n, u, b1, b2;                                         \
+				double s = (double)sf[j];                                      \
+				if (newton) s = onb__newton(l2[j], s);                         \
+				n.x = nx[i0 + j]; n.y = ny[i0 + j]; n.z = nz[i0 + j];          \
+				u.x = ux[j]; u.y = uy[j]; u.z = uz[j];                         \
+				onb__##fam##_post(n, u, s, &b1, &b2);                          \
+				b1x[i0 + j] = b1.x; b1y[i0 + j] = b1.y; b1z[i0 + j] = b1.z;    \
+				b2x[i0 + j] = b2.x; b2y[i0 + j] = b2.y; b2z[i0 + j] = b2.z;    \
+			}                                                                  \
+		}                                                                      \
+	}                                                                          \
+	ONB__CLONES void onb_##fam##var##_batchf(size_t count,                     \
+		const float *restrict nx, const float *restrict ny,                    \
+		const float *restrict nz, float *restrict b1x, float *restrict b1y,    \
+		float *restrict b1z, float *restrict b2x, float *restrict b2y,         \
+		float *restrict b2z)                                                   \
+	{                                                                          \
+		float ux[ONB__BLOCK], uy[ONB__BLOCK], uz[ONB__BLOCK], l2[ONB__BLOCK];  \
+		float sf[ONB__BLOCK];                                                  \
+		size_t i0, j;                                                          \
+		for (i0 = 0; i0 < count; i0 += ONB__BLOCK) {                           \
+			size_t m = count - i0 < ONB__BLOCK ? count - i0 : ONB__BLOCK;      \
+			for (j = 0; j < m; j++) {                                          \
+				onb_vec3f n, u;                                                \
+				n.x = nx[i0 + j]; n.y = ny[i0 + j]; n.z = nz[i0 + j];          \
+				l2[j] = onb__##fam##_pref(n, &u);                              \
+				ux[j] = u.x; uy[j] = u.y; uz[j] = u.z;                         \
+			}                                                                  \
+			onb__rsqrt_blockf(m, l2, sf);                                      \
+			for (j = 0; j < m; j++) {                                          \
+				onb_vec3f n, u, b1, b2;                                        \
+				float s = sf[j];                                               \
+				if (newton) s = onb__newtonf(l2[j], s);                        \
+				n.x = nx[i0 + j]; n.y = ny[i0 + j]; n.z = nz[i0 + j];          \
+				u.x = ux[j]; u.y = uy[j]; u.z = uz[j];                         \
+				onb__##fam##_postf(n, u, s, &b1, &b2);                         \
+				b1x[i0 + j] = b1.x; b1y[i0 + j] = b1.y; b1z[i0 + j] = b1.z;    \
+				b2x[i0 + j] = b2.x; b2y[i0 + j] = b2.y; b2z[i0 + j] = b2.z;    \
+			}                                                                  \
+		}                                                                      \
+	}
+
+ONB__BATCH_RSQRT(naive, _rsqrt, 0)
+ONB__BATCH_RSQRT(naive, _rsqrt_nr, 1)
+ONB__BATCH_RSQRT(hughes_moeller, _rsqrt, 0)
+ONB__BATCH_RSQRT(hughes_moeller, _rsqrt_nr, 1)
+
+/* Out-of-line copies of the inline kernels, for the registry and for
+   callers through a function pointer. */
+#define ONB__OUTLINE(m)                                                        \
+	void onb_##m##_outline(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)             \
+	{ onb_##m(n, b1, b2); }                                                    \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
+	{ onb_##m##f(n, b1, b2); }
+ONB_METHOD_LIST(ONB__OUTLINE)

@@ -1,0 +1,63 @@
+/*
+ * main.c - onbstudy: subcommand dispatch.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "study.h"
+
+typedef int (*cmd_fn)(int argc, char **argv);
+
+static const struct {
+	const char *name;
+	cmd_fn fn;
+	const char *help;
+} commands[] = {
+	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
+};
+
+#define NCOMMANDS (sizeof commands / sizeof commands[0])
+
+static void usage(FILE *f)
+{
+	size_t i;
+	fprintf(f, "usage: onbstudy COMMAND [options]\n\n"
+	           "A precision and robustness study of orthonormal-basis methods (libonb %s).\n\n"
+	           "commands:\n", ONB_VERSION);
+	for (i = 0; i < NCOMMANDS; i++)
+		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].help);
+	fprintf(f, "\n'onbstudy COMMAND --help' describes a command's options.\n");
+}
+
+static char cmdline_buf[4096];
+
+int main(int argc, char **argv)
+{
+	size_t i, len = 0;
+	int k;
+	for (k = 0; k < argc && len + 2 < sizeof cmdline_buf; k++) {
+		int w = snprintf(cmdline_buf + len, sizeof cmdline_buf - len, "%s%s", k ? " " : "", argv[k]);
+		if (w < 0)
+			break;
+		len += (size_t)w;
+		if (len >= sizeof cmdline_buf)
+			len = sizeof cmdline_buf - 1;
+	}
+	study_cmdline = cmdline_buf;
+	if (argc < 2) {
+		usage(stderr);
+		return ONB_EXIT_USAGE;
+	}
+	if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+		usage(stdout);
+		return 0;
+	}
+	if (strcmp(argv[1], "--version") == 0) {
+		printf("onbstudy %s (%s)\n", ONB_VERSION, ONB_GIT_REV);
+		return 0;
+	}
+	for (i = 0; i < NCOMMANDS; i++)
+		if (strcmp(argv[1], commands[i].name) == 0)
+			return commands[i].fn(argc - 2, argv + 2);
+	study_error("unknown command '%s' (try 'onbstudy --help')", argv[1]);
+	return ONB_EXIT_USAGE;
+}

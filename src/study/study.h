@@ -38,4 +38,25 @@ int parse_int(const char *opt, const char *s, long lo, long hi, long *out);
 /* The command line as one string, for provenance lines. */
 extern const char *study_cmdline;
 
+/* output.c: atomic result files and provenance.
+   A result file is written to a temporary name beside its final name and
+   renamed over it only when complete, so an interrupted run never leaves a
+   truncated file in place of an earlier good one. */
+typedef struct {
+	FILE *f;
+	char tmp[4096];
+	char path[4096];
+} study_out;
+int  study_mkdir_p(const char *dir);                       /* 0, or -1 with a message */
+int  study_out_open(study_out *o, const char *dir, const char *name); /* 0, or -1 with a message */
+int  study_out_commit(study_out *o);                      /* flush, fsync, rename; 0 or -1 */
+void study_out_abort(study_out *o);                       /* close and remove the temporary */
+/* Lines starting with '#': tool, version, git revision, compiler, flags,
+   CPU, date, seed, threads, command line.  Callers add their own '#' lines
+   (MPFR precision, ISA, ...) after it. */
+void study_provenance(FILE *f, const char *what, unsigned long long seed, int threads);
+const char *study_cpu_model(void);
+/* A new run directory name under results/: results/run-YYYYmmdd-HHMMSS. */
+void study_default_run_dir(char *buf, size_t n);
+
 #endif

@@ -42,6 +42,8 @@ LIB_SRC = $(wildcard src/lib/*.c)
 LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o)
 STUDY_SRC = $(wildcard src/study/*.c)
 STUDY_OBJ = $(STUDY_SRC:src/study/%.c=$(B)/study/%.o)
+# Everything of the study but main(), so tests can link the study's modules.
+STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
 TEST_BIN  = $(TEST_SRC:tests/%.c=$(B)/tests/%)
 GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- 2>/dev/null || echo -dirty)
@@ -70,12 +72,16 @@ $(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h) Makefile $
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -c $< -o $@
 
-onbstudy: $(STUDY_OBJ) libonb.a
-	$(CC) $(BASE) $(OMP) -o $@ $(STUDY_OBJ) libonb.a $(STUDY_LIBS)
+$(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ))
+	rm -f $@
+	$(AR) rcs $@ $^
 
-$(B)/tests/%: tests/%.c libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
+onbstudy: $(B)/study/main.o $(STUDY_LIB) libonb.a
+	$(CC) $(BASE) $(OMP) -o $@ $(B)/study/main.o $(STUDY_LIB) libonb.a $(STUDY_LIBS)
+
+$(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -o $@ $< libonb.a $(STUDY_LIBS)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
 test: $(B)/deps.stamp all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \

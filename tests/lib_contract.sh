@@ -1,0 +1,78 @@
+#!/bin/sh
+# libonb as a renderer sees it:
+#  1. libonb.a exports only onb_* symbols (nm);
+#  2. a program compiled elsewhere against only onb.h and libonb.a
+#     enumerates the registry and calls every method in both precisions;
+#  3. make install/uninstall with DESTDIR, and pkg-config --cflags --libs onb;
+#  4. -ffast-math stops at #error.
+set -u
+cd "$(dirname "$0")/.."
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+# 1. symbol names
+others=$(nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | grep -v '^onb_' || true)
+if [ -z "$others" ]; then ok; else bad "non-onb_ global symbols in libonb.a: $others"; fi
+# External references: libm, libc's memcpy/strcmp, and libgcc's CPU
+# detection for the ifunc resolvers.  Nothing else (no MPFR, no OpenMP).
+nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | sort -u > "$tmp/defined"
+undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|memcpy|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|_GLOBAL_OFFSET_TABLE_)$' || true)
+if [ -z "$undef" ]; then ok; else bad "libonb.a needs more than libm and libc: $undef"; fi
+
+# 2. a renderer-like program elsewhere
+mkdir -p "$tmp/app"
+cp include/onb.h libonb.a "$tmp/app/"
+cat > "$tmp/app/app.c" <<'C'
+#include <stdio.h>
+#include <math.h>
+#include "onb.h"
+int main(void)
+{
+	size_t n, i, calls = 0;
+	const onb_method *m = onb_methods(&n);
+	onb_vec3 v = { 0.48, 0.6, 0.64 }, b1, b2;
+	onb_vec3f vf = { 0.48f, 0.6f, 0.64f }, b1f, b2f;
+	double nx = 0.0, ny = 0.6, nz = 0.8, o[6];
+	float fx = 0.0f, fy = 0.6f, fz = 0.8f, of[6];
+	for (i = 0; i < n; i++) {
+		m[i].basis(v, &b1, &b2);
+		m[i].basisf(vf, &b1f, &b2f);
+		m[i].batch(1, &nx, &ny, &nz, o, o + 1, o + 2, o + 3, o + 4, o + 5);
+		m[i].batchf(1, &fx, &fy, &fz, of, of + 1, of + 2, of + 3, of + 4, of + 5);
+		if (fabs(b1.x * v.x + b1.y * v.y + b1.z * v.z) > 1e-6 || fabsf(of[0] * fx + of[1] * fy + of[2] * fz) > 1e-3f)
+			return printf("%s: not orthogonal\n", m[i].name), 1;
+		calls += 4;
+	}
+	onb_duff_branchless(v, &b1, &b2); /* the inline function */
+	printf("%zu methods, %zu calls, isa %s\n", n, calls, onb_batch_isa());
+	return n == 18 ? 0 : 1;
+}
+C
+if (cd "$tmp/app" && cc -std=c99 -Wall -Wextra -O2 -ffp-contract=off app.c libonb.a -lm -o app && ./app); then ok; else bad "standalone program against onb.h + libonb.a"; fi
+
+# 3. install, pkg-config, uninstall
+if make -s install PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null; then ok; else bad "make install"; fi
+pc="$tmp/root/opt/onb/lib/pkgconfig"
+if [ -f "$pc/onb.pc" ] && [ -f "$tmp/root/opt/onb/include/onb.h" ] && [ -f "$tmp/root/opt/onb/lib/libonb.a" ]; then ok; else bad "installed files"; fi
+if command -v pkg-config >/dev/null 2>&1; then
+	flags=$(PKG_CONFIG_PATH="$pc" PKG_CONFIG_SYSROOT_DIR="$tmp/root" pkg-config --cflags --libs onb)
+	if cc -std=c99 "$tmp/app/app.c" -o "$tmp/app2" $flags && "$tmp/app2" >/dev/null; then ok; else bad "build with pkg-config flags: $flags"; fi
+fi
+make -s uninstall PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null
+if [ -z "$(find "$tmp/root" -type f)" ]; then ok; else bad "uninstall left: $(find "$tmp/root" -type f)"; fi
+
+# 4. -ffast-math is refused
+echo '#include "onb.h"' > "$tmp/fm.c"
+if cc -std=c99 -ffast-math -Iinclude -c "$tmp/fm.c" -o "$tmp/fm.o" 2>"$tmp/fm.err"; then
+	bad "-ffast-math compiled"
+elif grep -q "ffast-math" "$tmp/fm.err"; then ok; else bad "-ffast-math failed without the #error"; fi
+
+# 5. onbstudy list names every method; --help works; a bad command exits 2
+if [ "$(./onbstudy list --format csv | tail -n +2 | wc -l)" -eq 18 ]; then ok; else bad "onbstudy list"; fi
+./onbstudy --help >/dev/null && ok || bad "onbstudy --help"
+./onbstudy frobnicate 2>/dev/null; [ $? -eq 2 ] && ok || bad "unknown command must exit 2"
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -456,7 +456,9 @@ static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 /* p = cross(n, e_k), where e_k is the axis of n's smallest |component|,
    chosen by Stark's comparisons on differences of absolute values:
    xm = (|x| - |y| < 0) && (|x| - |z| < 0), ym = (|y| - |z| < 0) ^ xm
-   restricted to !xm, zm = !(xm | ym).  Then (our completion, as the
+   restricted to !xm, zm = !(xm | ym), made 0.0 or 1.0 by a select (not
+   an int-to-float conversion, which keeps GCC's SSE2 double loop scalar).
+   Then (our completion, as the
    issue reads it) b1 = p / |p| with 1/sqrt, b2 = cross(n, b1).
    Handedness +1.  Thresholds: |x| = |y|, |x| = |z|, |y| = |z|.  No
    singular unit direction: |p|^2 >= 2/3 - O(eps). */
@@ -466,7 +468,7 @@ static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p)
 	const int xm = (ax - ay < 0.0) & (ax - az < 0.0);
 	const int ym = (ay - az < 0.0) & !xm;
 	const int zm = !(xm | ym);
-	const double ex = xm, ey = ym, ez = zm;
+	const double ex = xm ? 1.0 : 0.0, ey = ym ? 1.0 : 0.0, ez = zm ? 1.0 : 0.0;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
 	p->z = n.x * ey - n.y * ex;
@@ -478,7 +480,7 @@ static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
 	const int xm = (ax - ay < 0.0f) & (ax - az < 0.0f);
 	const int ym = (ay - az < 0.0f) & !xm;
 	const int zm = !(xm | ym);
-	const float ex = (float)xm, ey = (float)ym, ez = (float)zm;
+	const float ex = xm ? 1.0f : 0.0f, ey = ym ? 1.0f : 0.0f, ez = zm ? 1.0f : 0.0f;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
 	p->z = n.x * ey - n.y * ex;

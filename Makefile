@@ -85,7 +85,7 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h
 
 test: $(B)/deps.stamp all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
-	for t in tests/*.sh; do [ -f "$$t" ] || continue; echo "== $$t"; sh $$t || fail=1; done; \
+	for t in tests/*.sh; do [ -f "$$t" ] || continue; echo "== $$t"; ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1; done; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
 
 bench: onbstudy

@@ -11,6 +11,9 @@ pass=0; fail=0
 ok()  { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# Under `make test SANITIZE=...` the library carries sanitizer hooks, so
+# programs linking it need the same flags.
+SAN=${ONB_SANFLAGS:-}
 
 # 1. symbol names
 others=$(nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | grep -v '^onb_' || true)
@@ -18,7 +21,7 @@ if [ -z "$others" ]; then ok; else bad "non-onb_ global symbols in libonb.a: $ot
 # External references: libm, libc's memcpy/strcmp, and libgcc's CPU
 # detection for the ifunc resolvers.  Nothing else (no MPFR, no OpenMP).
 nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | sort -u > "$tmp/defined"
-undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|memcpy|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|_GLOBAL_OFFSET_TABLE_)$' || true)
+undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(__asan_.*|__ubsan_.*|__sanitizer_.*|sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|memcpy|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|_GLOBAL_OFFSET_TABLE_)$' || true)
 if [ -z "$undef" ]; then ok; else bad "libonb.a needs more than libm and libc: $undef"; fi
 
 # 2. a renderer-like program elsewhere
@@ -50,7 +53,7 @@ int main(void)
 	return n == 18 ? 0 : 1;
 }
 C
-if (cd "$tmp/app" && cc -std=c99 -Wall -Wextra -O2 -ffp-contract=off app.c libonb.a -lm -o app && ./app); then ok; else bad "standalone program against onb.h + libonb.a"; fi
+if (cd "$tmp/app" && cc -std=c99 -Wall -Wextra -O2 -ffp-contract=off $SAN app.c libonb.a -lm -o app && ./app); then ok; else bad "standalone program against onb.h + libonb.a"; fi
 
 # 3. install, pkg-config, uninstall
 if make -s install PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null; then ok; else bad "make install"; fi
@@ -58,7 +61,7 @@ pc="$tmp/root/opt/onb/lib/pkgconfig"
 if [ -f "$pc/onb.pc" ] && [ -f "$tmp/root/opt/onb/include/onb.h" ] && [ -f "$tmp/root/opt/onb/lib/libonb.a" ]; then ok; else bad "installed files"; fi
 if command -v pkg-config >/dev/null 2>&1; then
 	flags=$(PKG_CONFIG_PATH="$pc" PKG_CONFIG_SYSROOT_DIR="$tmp/root" pkg-config --cflags --libs onb)
-	if cc -std=c99 "$tmp/app/app.c" -o "$tmp/app2" $flags && "$tmp/app2" >/dev/null; then ok; else bad "build with pkg-config flags: $flags"; fi
+	if cc -std=c99 $SAN "$tmp/app/app.c" -o "$tmp/app2" $flags && "$tmp/app2" >/dev/null; then ok; else bad "build with pkg-config flags: $flags"; fi
 fi
 make -s uninstall PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null
 if [ -z "$(find "$tmp/root" -type f)" ]; then ok; else bad "uninstall left: $(find "$tmp/root" -type f)"; fi

@@ -34,7 +34,10 @@ ifneq ($(SANITIZE),)
   SANFLAGS = -fsanitize=$(SANITIZE) -fno-omit-frame-pointer -fno-sanitize-recover=all
 endif
 BASE    = -std=c99 $(OPT) $(FPFLAGS) $(CFLAGS) $(SANFLAGS) -Iinclude
-STUDY_LIBS = -lmpfr -lgmp -lm
+# MPFR and GMP are linked statically: MPFR keeps its flags in thread-local
+# storage, and the shared library reaches them through __tls_get_addr on
+# every operation (11% of a sweep); the static archive uses direct TLS.
+STUDY_LIBS = -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lm
 OMP     = -fopenmp
 
 B       = build
@@ -68,9 +71,16 @@ libonb.a: $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $(LIB_OBJ)
 
-$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h) Makefile $(B)/deps.stamp
+$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h src/study/*.inc) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+
+# The FMA copy of the kernels for `sweep --fma`: contraction on, on purpose.
+ifeq ($(shell uname -m),x86_64)
+$(B)/study/fma_kernels.o: XFLAGS = -mfma -ffp-contract=fast
+else
+$(B)/study/fma_kernels.o: XFLAGS = -ffp-contract=fast
+endif
 
 $(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ))
 	rm -f $@

@@ -13,6 +13,8 @@ static const struct {
 	const char *help;
 } commands[] = {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
+	{ "sweep", cmd_sweep, "MPFR-referenced error of every method over every input distribution" },
+	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
 };
 
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

@@ -13,6 +13,7 @@ static const struct {
 	const char *help;
 } commands[] = {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
+	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
 };
 
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

@@ -854,12 +854,14 @@ badprop:
 					} else {
 						long long cnt, j;
 						unsigned long long cat = off(&r), remain;
-						int isidx = isf && k == e->ilist;
+						/* face indices are checked whether or not
+						   normals are computed from them */
+						int isidx = i == face_e && k == e->ilist;
 						if (ply_value(&r, pr->ctype, e, ei, pr->name, &dv, &cnt) != 0)
 							goto out;
 						remain = (unsigned long long)(r.end - r.p);
 						if (cnt < 0 || (unsigned long long)cnt > (fmt == 0 ? remain / 2 + 1 : remain / pt_size[pr->type])) {
-							fail(c, "byte %llu: list '%s' of element '%s' %llu has count %lld, but only %llu bytes remain",
+							fail(c, "byte %llu: truncated or bad count: list '%s' of element '%s' %llu has count %lld, but only %llu bytes remain",
 							     cat, pr->name, e->name, ei, cnt, remain);
 							goto out;
 						}
@@ -879,13 +881,13 @@ badprop:
 									goto out;
 								}
 								u = (uint32_t)iv;
-								if (gvec_push(&corners, &u) != 0) {
+								if (isf && gvec_push(&corners, &u) != 0) {
 									fail(c, "byte %llu: too many face corners, or out of memory", iat);
 									goto out;
 								}
 							}
 						}
-						if (isidx && cnt >= 3) {
+						if (isf && isidx && cnt >= 3) {
 							if (gvec_push(&faces, &fr) != 0) {
 								fail(c, "byte %llu: too many faces, or out of memory", at);
 								goto out;

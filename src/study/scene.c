@@ -7,7 +7,8 @@
  * there) are counted and located, then left out: no basis is meaningful
  * for them, and a renderer has to catch them before building one
  * (onb_basis_checked does).  Every other normal goes to every method twice:
- *   stored        exactly as the file holds it (non-unit ones included);
+ *   as-read       exactly as the file holds them, or as computed from the
+ *                 faces (non-unit ones included);
  *   renormalized  n / sqrt(n.n) in the working precision, as a renderer's
  *                 normalize() would.
  * For each method: the batch kernel (m->batch / m->batchf) and the scalar
@@ -44,7 +45,7 @@
 
 typedef struct {
 	double max_defect, rms_defect, max_norm, max_dot;
-	size_t nonfinite, wrong_hand, mismatch, worst;
+	size_t nonfinite, wrong_hand, mismatch, worst, first_nonfinite;
 	double batch_mbs, scalar_mbs;
 	int ok;
 } scene_res;
@@ -184,7 +185,8 @@ static void measure(const onb_method *m, const scene_buf *b, scene_res *r)
 				break;
 			}
 		if (!isfinite(u[0]) || !isfinite(u[1]) || !isfinite(u[2]) || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2])) {
-			r->nonfinite++;
+			if (r->nonfinite++ == 0)
+				r->first_nonfinite = i;
 			continue;
 		}
 		l = sqrtl(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -275,7 +277,7 @@ static void usage(FILE *f)
 	"  Reads the normals of an OBJ or PLY file (stored, or area-weighted from the faces),\n"
 	"  runs every method on them as stored and renormalized, and recommends the fastest\n"
 	"  method whose max orthonormality defect stays within E (default 1e-6 float, 1e-14\n"
-	"  double).  --renormalize makes the renormalized row the headline.  --up names the\n"
+	"  double).  --renormalize makes the renormalized row the headline (default: the as-read row).  --up names the\n"
 	"  axis that plays n.z (y: (x,y,z)->(z,x,y), x: (x,y,z)->(y,z,x)).  Writes\n"
 	"  DIR/scene.csv (default results/run-DATE).\n");
 }
@@ -381,6 +383,7 @@ int cmd_scene(int argc, char **argv)
 			run_scalar(&ms[i], &b);
 			measure(&ms[i], &b, &res[v * nm + i]);
 			res[v * nm + i].worst = b.n ? b.src[res[v * nm + i].worst] : 0;
+			res[v * nm + i].first_nonfinite = b.n ? b.src[res[v * nm + i].first_nonfinite] : 0;
 			res[v * nm + i].batch_mbs = throughput(&ms[i], &b, 0, (int)repeats);
 			res[v * nm + i].scalar_mbs = throughput(&ms[i], &b, 1, (int)repeats);
 		}
@@ -434,26 +437,31 @@ int cmd_scene(int argc, char **argv)
 	       up == 'z' ? "(x,y,z) as stored" : up == 'y' ? "(x,y,z) -> (z,x,y)" : "(x,y,z) -> (y,z,x)", tol, onb_batch_isa());
 	for (v = 0; v < 2; v++) {
 		scene_res *r = res + v * nm;
-		printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "stored", fl ? "float" : "double", b.n ? st.total - st.zero - st.nonfinite - dropped[v] : (size_t)0);
+		printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", fl ? "float" : "double", b.n ? st.total - st.zero - st.nonfinite - dropped[v] : (size_t)0);
 		printf("  %-24s %10s %10s %9s %9s %8s %10s %10s  %s\n", "method", "max_defect", "rms_defect", "nonfinite", "wronghand", "scal!=bt", "batch_M/s", "scalar_M/s", "");
 		for (i = 0; i < nm; i++)
 			printf("  %-24s %10.3g %10.3g %9zu %9zu %8zu %10.1f %10.1f  %s\n", ms[i].name, r[i].max_defect, r[i].rms_defect,
 			       r[i].nonfinite, r[i].wrong_hand, r[i].mismatch, r[i].batch_mbs, r[i].scalar_mbs,
-			       (int)i == best[v] ? "RECOMMENDED" : (int)i == second[v] ? "runner-up" : r[i].ok ? "ok" : "exceeds E");
+			       (int)i == best[v] ? "RECOMMENDED" : (int)i == second[v] ? "runner-up" : r[i].ok ? "ok" :
+			       r[i].nonfinite ? "non-finite output" : r[i].wrong_hand ? "wrong-handed" : "exceeds E");
 		if (best[v] >= 0) {
-			printf("  recommended (%s): %s, %.1f M bases/s, max defect %.3g", v ? "renormalized" : "stored",
+			printf("  recommended (%s): %s, %.1f M bases/s, max defect %.3g", v ? "renormalized" : "as-read",
 			       ms[best[v]].name, r[best[v]].batch_mbs, r[best[v]].max_defect);
 			if (second[v] >= 0)
 				printf("; runner-up %s, %.1f M/s, max defect %.3g", ms[second[v]].name, r[second[v]].batch_mbs, r[second[v]].max_defect);
 			printf("\n");
 			for (i = 0; i < nm; i++)
 				if (!r[i].ok && r[i].batch_mbs > r[best[v]].batch_mbs) {
-					mesh_where(&mn, r[i].worst, where, sizeof where);
-					printf("  faster but over E: %-24s %.1f M/s, max defect %.3g at %s%s%s\n", ms[i].name, r[i].batch_mbs,
-					       r[i].max_defect, where, r[i].nonfinite ? ", non-finite outputs" : "", r[i].wrong_hand ? ", wrong-handed bases" : "");
+					mesh_where(&mn, r[i].nonfinite ? r[i].first_nonfinite : r[i].worst, where, sizeof where);
+					if (r[i].nonfinite)
+						printf("  faster but unusable: %-24s %.1f M/s, %zu non-finite bases (first: %s)\n", ms[i].name,
+						       r[i].batch_mbs, r[i].nonfinite, where);
+					else
+						printf("  faster but over E: %-24s %.1f M/s, max defect %.3g at %s%s\n", ms[i].name, r[i].batch_mbs,
+						       r[i].max_defect, where, r[i].wrong_hand ? ", wrong-handed bases" : "");
 				}
 		} else {
-			printf("  recommended (%s): none (no method stays within E = %.3g on these normals)\n", v ? "renormalized" : "stored", tol);
+			printf("  recommended (%s): none (no method stays within E = %.3g on these normals)\n", v ? "renormalized" : "as-read", tol);
 		}
 		if (obest[v] == best[v])
 			printf("  under --up %c: the same recommendation\n", other);
@@ -462,7 +470,7 @@ int cmd_scene(int argc, char **argv)
 			       obest[v] >= 0 ? ores[v * nm + obest[v]].max_defect : 0.0);
 	}
 	v = renorm_head;
-	printf("\nrecommended for %s (%s normals, %s, up %c, E %.3g): %s\n", file, v ? "renormalized" : "stored", fl ? "float" : "double", up, tol,
+	printf("\nrecommended for %s (%s normals, %s, up %c, E %.3g): %s\n", file, v ? "renormalized" : "as-read", fl ? "float" : "double", up, tol,
 	       best[v] >= 0 ? ms[best[v]].name : "none");
 
 	/* CSV */
@@ -484,7 +492,7 @@ int cmd_scene(int argc, char **argv)
 				const scene_res *r = (k ? ores : res) + v * nm + i;
 				const int *bb = k ? obest : best, *ss = k ? osecond : second;
 				fprintf(o.f, "\"%s\",%s,%c,%s,%s,%zu,%.6e,%.6e,%.6e,%.6e,%zu,%zu,%zu,%.2f,%.2f,%d,%s\n", file, fl ? "float" : "double",
-				        k ? other : up, v ? "renormalized" : "stored", ms[i].name, st.total - st.zero - st.nonfinite - dropped[v],
+				        k ? other : up, v ? "renormalized" : "as_read", ms[i].name, st.total - st.zero - st.nonfinite - dropped[v],
 				        r->max_defect, r->rms_defect, r->max_norm, r->max_dot, r->nonfinite, r->wrong_hand, r->mismatch,
 				        r->batch_mbs, r->scalar_mbs, r->ok, (int)i == bb[v] ? "recommended" : (int)i == ss[v] ? "runner-up" : "");
 			}

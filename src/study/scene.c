@@ -450,6 +450,11 @@ int cmd_scene(int argc, char **argv)
 			if (second[v] >= 0)
 				printf("; runner-up %s, %.1f M/s, max defect %.3g", ms[second[v]].name, r[second[v]].batch_mbs, r[second[v]].max_defect);
 			printf("\n");
+			/* the repeats of a pass on a shared machine spread by a few
+			   per cent: say so rather than pretend to a ranking */
+			if (second[v] >= 0 && r[second[v]].batch_mbs > 0.95 * r[best[v]].batch_mbs)
+				printf("  note: the runner-up is within 5%% of the recommended method's throughput; on %zu normals that is within timing noise\n",
+				       b.n);
 			for (i = 0; i < nm; i++)
 				if (!r[i].ok && r[i].batch_mbs > r[best[v]].batch_mbs) {
 					mesh_where(&mn, r[i].nonfinite ? r[i].first_nonfinite : r[i].worst, where, sizeof where);

@@ -119,3 +119,16 @@ uninstall:
 
 clean:
 	rm -rf $(B) libonb.a onbstudy onb.pc
+
+# The example renderer links only libonb.a and libm, as a user's would.
+$(B)/aorender: examples/aorender.c libonb.a include/onb.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -Iinclude -o $@ examples/aorender.c libonb.a -lm
+RENDERS = results/reference/renders
+.PHONY: render
+render: $(B)/aorender
+	@mkdir -p $(RENDERS)
+	$(B)/aorender --method duff_branchless --precision double --out $(RENDERS)/reference-double.png
+	@for m in $$($(B)/aorender --list); do \
+	  $(B)/aorender --method $$m --precision float --out $(RENDERS)/$$m-float.png --diff $(RENDERS)/$$m-float-diff.png || exit 1; \
+	done | tee $(RENDERS)/summary.txt

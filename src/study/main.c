@@ -15,6 +15,7 @@ static const struct {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
 	{ "sweep", cmd_sweep, "MPFR-referenced error of every method over every input distribution" },
 	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
+	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
 };
 
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

@@ -25,6 +25,7 @@
 int cmd_list(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
 int cmd_merge(int argc, char **argv);
+int cmd_scene(int argc, char **argv);
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */

@@ -25,9 +25,17 @@ int dist_find(const char *name)
 	return -1;
 }
 
+/* Round to the format.  The float goes through a volatile: GCC 12.2 at -O2
+   drops the (float) rounding in (double)(float)(double)(long double
+   expression) when the expression comes from sinl/cosl (a miscompilation
+   found by tests/test_sweep.c: uniform float inputs came out as doubles). */
 double fmt_round(double x, int prec)
 {
-	return prec == PREC_FLOAT ? (double)(float)x : x;
+	if (prec == PREC_FLOAT) {
+		volatile float f = (float)x;
+		return f;
+	}
+	return x;
 }
 
 /* Ordinal of a finite value: consecutive representable values have
@@ -94,12 +102,22 @@ static int push(list *l, double x, double y, double z)
 
 /* Inputs with one fixed component c (index axis) and the other two on
    the circle of radius sqrt(1 - c^2), at na random angles. */
+/* The other two are those of an exact unit vector whose fixed component
+   lies within half a step of c (a pseudo-random offset), so the input is
+   unit to the format's rounding, as a normalized normal is. */
 static int ring(list *l, int axis, double c, int na)
 {
 	int a;
-	const long double r = sqrtl(fmaxl(0.0L, 1.0L - (long double)c * c));
+	const long double up = (long double)fmt_step(c, 1, l->prec) - c, down = c - (long double)fmt_step(c, -1, l->prec);
 	for (a = 0; a < na; a++) {
+		const long double u = rng_u01(l->seed, 3000 + (uint64_t)axis, l->n) - 0.5L;
+		long double ct = (long double)c + (u > 0 ? u * up : u * down);
+		long double r;
 		const long double phi = 6.283185307179586476925L * rng_u01(l->seed, 1000 + (uint64_t)axis, l->n);
+		if (ct > 1.0L) ct = 1.0L;
+		if (ct < -1.0L) ct = -1.0L;
+		if (c == 0.0) ct = 0.0L; /* keep +-0 exact: the sign of n.z is what is tested */
+		r = sqrtl(fmaxl(0.0L, 1.0L - ct * ct));
 		const double p = (double)(r * cosl(phi)), q = (double)(r * sinl(phi));
 		int rc = axis == 0 ? push(l, c, p, q) : axis == 1 ? push(l, q, c, p) : push(l, p, q, c);
 		if (rc)
@@ -247,8 +265,16 @@ void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], dou
 		break;
 	case DIST_EXHAUSTIVE: {
 		const uint64_t j = i / (uint64_t)d->ex_azimuths, a = i % (uint64_t)d->ex_azimuths;
+		/* n.z is the j-th representable value; x and y are those of an exact
+		   unit vector whose n.z lies within half an ulp of it (a fixed
+		   pseudo-random offset), so the input is unit to the format's
+		   rounding, as a normalized normal is. */
 		const double z = fmt_step(d->ex_from, (int64_t)j, P);
-		on_sphere(z, TWO_PI * ((long double)a + 0.5L) / d->ex_azimuths, 1.0L, P, n);
+		const long double up = (long double)fmt_step(z, 1, P) - z;
+		const long double jit = rng_u01(S, 10, i) - (z == -1.0 ? 0.0L : 0.5L);
+		long double zt = (long double)z + jit * up;
+		if (zt > 1.0L) zt = 1.0L;
+		on_sphere(zt, TWO_PI * ((long double)a + 0.5L) / d->ex_azimuths, 1.0L, P, n);
 		n[2] = z;
 		break;
 	}

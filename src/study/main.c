@@ -14,6 +14,8 @@ static const struct {
 } commands[] = {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
 	{ "sweep", cmd_sweep, "MPFR-referenced error of every method over every input distribution" },
+	{ "eval", cmd_eval, "one input: every method's outputs (hex) and every metric" },
+	{ "threshold", cmd_threshold, "Nelson Max's analysis of Frisvad's threshold t near -1" },
 	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
 	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
 };

@@ -111,8 +111,8 @@ static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
 	mpfr_add(out, c->q[0], c->q[1], R);
 	for (i = 2; i < k; i++)
 		mpfr_add(out, out, c->q[i], R);
-	if (bound == 0.0)
-		return;
+	if (bound == 0.0 || !isfinite(bound) || mpfr_nan_p(out) || mpfr_inf_p(out))
+		return; /* exact zero terms, or NaN/Inf: nothing to refine */
 	(void)frexp(bound, &e);
 	if (!mpfr_zero_p(out) && mpfr_get_exp(out) > e - 59)
 		return;
@@ -377,13 +377,19 @@ static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s
 		s->abs_eps_max = diff / eps;
 	/* Components whose exact value is below eps (zero ones above all) are
 	   measured by the absolute error only: their ulps and bits would
-	   measure the reference's own last bits, not the method. */
-	if (!mpfr_zero_p(e) && mpfr_get_exp(e) > -(p - 1)) { /* |e| >= eps */
-		mpfr_exp_t E = mpfr_get_exp(e);
-		double ulp = ldexp(1.0, (int)(E < emin ? emin : E) - p);
+	   measure the reference's own last bits, not the method.  The ulp is
+	   that of the exact value rounded to the format (the same thing but
+	   at powers of two, where an exact 1 - 1e-40 would otherwise make the
+	   unit depend on the reference's precision), floored at the smallest
+	   normal's. */
+	rounded = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : *refd;
+	if (rounded != 0.0 && fabs(rounded) >= eps) {
+		int E;
+		double ulp;
+		(void)frexp(rounded, &E);
+		ulp = ldexp(1.0, (E < emin ? emin : E) - p);
 		if (diff / ulp > s->ulp_max)
 			s->ulp_max = diff / ulp;
-		rounded = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : *refd;
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
 			const double dist = float_distance(cv, rounded, prec);
@@ -405,11 +411,21 @@ static int finite6(const double *v, int k)
 	return 1;
 }
 
-void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3],
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
               const double loc[3], int normalize_n, sample_metrics *s)
 {
 	mpfr_t *t = c->t;
 	int i;
+	double n[3];
+	/* The reference reads exactly the values the kernel receives. */
+	for (i = 0; i < 3; i++) {
+		if (prec == PREC_FLOAT) {
+			volatile float f = (float)n_in[i];
+			n[i] = f;
+		} else {
+			n[i] = n_in[i];
+		}
+	}
 	memset(s, 0, sizeof *s);
 	s->has_basis = k->m != NULL;
 	s->ncomp = k->m ? 6 : 3;
@@ -567,4 +583,18 @@ int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_
 			return 0;
 		}
 	return 1;
+}
+
+void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF])
+{
+	mpfr_t *t = c->t;
+	set3(c->n, n[0], n[1], n[2]);
+	c->have_last = 0; /* c->n no longer holds the cached input */
+	set3(c->b1, b[0], b[1], b[2]);
+	set3(c->b2, b[3], b[4], b[5]);
+	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
+	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0); d[DEF_D2N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
 }

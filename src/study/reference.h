@@ -56,6 +56,10 @@ typedef struct {
 void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3],
               const double loc[3], int normalize_n, sample_metrics *s);
 
+/* The five defects of the basis b = (b1, b2) for the input n, all doubles:
+   |b1|-1, |b2|-1, b1.n, b2.n, b1.b2, each to 2^-50 relative or better. */
+void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF]);
+
 /* 1 when two evaluations of the same input (at different MPFR precisions)
    agree in every reported metric to a relative 2^-40; else 0 and a
    description in why. */

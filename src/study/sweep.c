@@ -502,6 +502,25 @@ int cmd_merge(int argc, char **argv)
 			continue;
 		}
 		if (a[0] == '-') { study_error("merge: unknown option '%s'", a); return ONB_EXIT_USAGE; }
+		if (nfiles == 0 && threshold_is_state(a)) {
+			/* threshold shards: every remaining argument is one */
+			static char buf[4096];
+			char **files = malloc((size_t)argc * sizeof *files);
+			int nf = 0, j;
+			if (!files) { study_error("out of memory"); return 1; }
+			for (j = i; j < argc; j++) {
+				if (!strcmp(argv[j], "--out") || !strcmp(argv[j], "--threads") || !strcmp(argv[j], "--format")) {
+					if (j + 1 < argc && !strcmp(argv[j], "--out")) out = argv[j + 1];
+					j++;
+					continue;
+				}
+				files[nf++] = argv[j];
+			}
+			if (!out) { study_default_run_dir(buf, sizeof buf); out = buf; }
+			j = threshold_merge(nf, files, out, threads ? threads : all_cores());
+			free(files);
+			return j;
+		}
 		if (nfiles == 0) {
 			if (sweep_load_state(&acc, a) != 0) return ONB_EXIT_USAGE;
 			seen = calloc((size_t)acc.cfg.shard_n, 1);

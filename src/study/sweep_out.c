@@ -57,6 +57,11 @@ static double max_grid_jump(const sweep_state *s, int p, int k)
 }
 
 /* ---- the worst-case walk ------------------------------------------------ */
+/* From the worst threshold inputs, move to the neighbouring input (x, y
+   and z each changed by -1, 0 or +1 steps of 1 or 8 representable values)
+   with the largest error while it grows, staying unit to within two
+   rounding errors.  Each accepted step joins the threshold distribution
+   and its worst list (source "walk"). */
 
 #define WALK_STARTS 3
 #define WALK_STEPS 24
@@ -92,6 +97,14 @@ static void walk_one(sweep_state *s, ref_ctx *rc, int p, int k)
 							nn[2] = fmt_step(cur[2], dz * sc, p);
 							if (!isfinite(nn[0]) || !isfinite(nn[1]) || !isfinite(nn[2]))
 								continue;
+							/* stay on the sphere, to the format's rounding: a walk that
+							   drifts off it measures non-unit input, not the method */
+							{
+								const long double len = sqrtl((long double)nn[0] * nn[0] + (long double)nn[1] * nn[1] +
+								                              (long double)nn[2] * nn[2]);
+								if (fabsl(len - 1.0L) > 2.0L * (p == PREC_FLOAT ? 0x1p-24L : 0x1p-53L))
+									continue;
+							}
 							ref_eval(rc, K, p, nn, loc, 0, &m);
 							kk = m.nonfinite ? INFINITY : K->m ? m.defect : fmax(m.dir_norm, m.dir_cos);
 							if (kk > best_key) {

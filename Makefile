@@ -101,8 +101,10 @@ test: $(B)/deps.stamp all $(TEST_BIN)
 bench: onbstudy
 	./onbstudy bench
 
+# make plots [RUN=results/<run>]: charts of a run (default results/latest)
+RUN ?= results/latest
 plots: onbstudy
-	sh scripts/plots.sh
+	sh scripts/plots.sh $(RUN)
 
 onb.pc: Makefile
 	printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: onb\nDescription: orthonormal bases from a unit vector (onbstudy)\nVersion: 0.1.0\nCflags: -I$${includedir} -ffp-contract=off\nLibs: -L$${libdir} -lonb -lm\n' '$(PREFIX)' > $@

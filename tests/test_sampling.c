@@ -1,0 +1,440 @@
+/*
+ * test_sampling.c - sampling correctness, more than orthonormality.
+ *
+ * A renderer draws a cosine-weighted direction (x, y, z) around +z
+ * (Malley: r = sqrt(u1), phi = 2 pi u2, z = sqrt(1 - u1)) and turns it
+ * into w = x b1 + y b2 + z n with the method's basis, in the method's
+ * precision.  Its pdf assumes cos(theta) = w.n / (|w| |n|) is distributed
+ * as cosine weighting says: u = cos^2(theta) uniform on [0, 1].  This test
+ * computes that cosine for every sample through an exact frame (n itself)
+ * and runs a chi-square test on u in NB = 64 equal bins, for every method
+ * of the registry, in float and in double, over four normal sets:
+ *   generic   n uniform on the sphere, rounded to the format;
+ *   -z exact  n = (+-0, +-0, -1), all four sign patterns;
+ *   -z ulps   the true direction has 1 + n.z = t ulps, t uniform in
+ *             [0, 64), rounded to the format: the stored n.z is -1 + k ulps
+ *             (k = round(t)) while n.x, n.y keep the true 1 + n.z, exactly
+ *             as a normalized normal near -z arrives in a renderer;
+ *   -z log    1 + n.z log-uniform in [eps, 2^-10] (eps of the format).
+ * N = 2^16 samples per method x precision x set, one normal per sample.
+ *
+ * Exact frame.  u is evaluated in long double with a rigorous error bound
+ * (each of the ~12 operations rounds by at most LDBL_EPSILON/2, and the
+ * inputs are exact in long double); whenever the bound does not settle
+ * the bin, or the sign of w.n, the sample is redone in MPFR at 256 bits
+ * (dot products by mpfr_sum of exact products, so the sign of w.n is
+ * exact and u has a relative error below 2^-250).  Every 64th sample is
+ * also redone in MPFR and must land in the same bin.
+ *
+ * Failure categories.  w.n < 0 (below the surface) and non-finite w are
+ * counted apart: a cosine-weighted sampler never makes them, so any such
+ * sample is a failure.  The chi-square runs on the remaining samples,
+ * 63 degrees of freedom; the p-value is the regularized upper incomplete
+ * gamma Q(63/2, chi2/2), computed by series / continued fraction
+ * (Numerical Recipes 6.2), checked below against closed forms.
+ * Significance alpha = 1e-6 per row; with 144 rows Bonferroni bounds the
+ * chance that any correct row fails by bad luck at 1.44e-4.  Seeds are
+ * fixed (printed; argv[1] overrides the base seed), and every method sees
+ * the same normals and directions for a set and precision (a paired
+ * design): correct methods show the same chi2, that of the random draws.
+ *
+ * What must pass, from first principles.  Let D be the orthonormality
+ * defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|) of a basis.
+ * A defect D moves u by O(D) smoothly in u, so the density of u changes
+ * by a relative O(2D) and the chi-square gains a noncentrality of about
+ * N (2D)^2 / 3 <= 1 for D <= 2e-3 at N = 2^16, far below the alpha = 1e-6
+ * critical value (~133 for 63 dof).  Samples with a larger defect can
+ * each land anywhere; a fraction f of them adds at most 64 f^2 N to chi2
+ * (all in one bin), which stays below 10 for f <= 1e-3.  So a row MUST
+ * pass when at most 1e-3 of its normals have D > 2e-3; this test
+ * measures that premise (column "D>2e-3") and checks it for every
+ * must-pass row.  Per method:
+ *   - naive, hughes_moeller (and their libm, InvSqrt, rsqrtss, rsqrtss+NR
+ *     normalizations), duff, duff_branchless, stark, pbrt_v3, rtow: D is a
+ *     few ulps, or the normalization's relative error (<= 1.76e-3 for
+ *     InvSqrt) away from -x (naive): must pass on every set.
+ *   - naive_nonorm, hughes_moeller_nonorm: |b1| = |b2| = sqrt(1 - n.x^2)
+ *     (or sqrt(1 - n.z^2)): O(1) wrong for generic normals, must fail
+ *     there; near -z n.x^2 <= 2 (1 + n.z) <= 2^-9, D <= 2^-10: must pass.
+ *   - frisvad (t = -0.9999999): in float, n.z >= t leaves 1 + n.z as few
+ *     as 4 ulps, whose rounding (up to half an ulp) is an O(1/k) relative
+ *     error of a = 1/(1 + n.z), hence of the basis: must fail on -z ulps
+ *     and -z log.  In double the formula's error eps/(1 + n.z) <= 1e-9
+ *     above t and the fallback tilts by |n.xy| <= sqrt(2e-7) = 4.5e-4
+ *     below it: must pass everywhere.  Generic and -z exact: must pass.
+ *   - frisvad_max (t = -0.99998796): its minimax error is ~5e-3 near t,
+ *     above the 2e-3 line: not asserted on -z log, nor in float on -z
+ *     ulps (fallback tilt up to sqrt(2 * 64 * 2^-24) = 2.8e-3); must pass
+ *     elsewhere.
+ *   - tangent_cross_z: cross(n, n + z) is 0 at n = -z exactly: NaN, must
+ *     fail on -z exact; n.x^2 + n.y^2 is far above underflow on the other
+ *     sets, where it is accurate: must pass.
+ * Must-fail rows must fail, and their premise (at least 1e-2 of the
+ * normals with D > 0.1 or non-finite) is checked too.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <mpfr.h>
+#include "onb.h"
+#include "rng.h"
+
+#define NS (1u << 16)    /* samples per row */
+#define NB 64            /* bins of u = cos^2 theta */
+#define ALPHA 1e-6       /* per row */
+#define D_SMALL 2e-3     /* defect that cannot move the chi-square */
+#define F_SMALL 1e-3     /* share of larger defects that cannot either */
+#define SPOT 64          /* every SPOT-th sample is also done in MPFR */
+#define MPFR_BITS 256
+
+static int passed, failed;
+
+#define CHECK(cond, ...)                                                       \
+	do {                                                                       \
+		if (cond) {                                                            \
+			passed++;                                                          \
+		} else {                                                               \
+			failed++;                                                          \
+			printf("FAIL %s:%d: ", __FILE__, __LINE__);                       \
+			printf(__VA_ARGS__);                                               \
+			printf("\n");                                                      \
+		}                                                                      \
+	} while (0)
+
+/* ---- regularized upper incomplete gamma Q(a, x) ---- */
+static double gamma_q(double a, double x)
+{
+	const double gln = lgamma(a);
+	int i;
+	if (!(x >= 0) || !(a > 0))
+		return NAN;
+	if (x == 0)
+		return 1.0;
+	if (x < a + 1.0) { /* series for P */
+		double ap = a, del = 1.0 / a, sum = del;
+		for (i = 0; i < 10000; i++) {
+			ap += 1.0;
+			del *= x / ap;
+			sum += del;
+			if (fabs(del) < fabs(sum) * 1e-17)
+				break;
+		}
+		return 1.0 - sum * exp(-x + a * log(x) - gln);
+	} else { /* continued fraction for Q, modified Lentz */
+		const double tiny = 1e-300;
+		double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d, an, del;
+		for (i = 1; i < 10000; i++) {
+			an = -i * (i - a);
+			b += 2.0;
+			d = an * d + b;
+			if (fabs(d) < tiny) d = tiny;
+			c = b + an / c;
+			if (fabs(c) < tiny) c = tiny;
+			d = 1.0 / d;
+			del = d * c;
+			h *= del;
+			if (fabs(del - 1.0) < 1e-16)
+				break;
+		}
+		return exp(-x + a * log(x) - gln) * h;
+	}
+}
+
+static void test_gamma_q(void)
+{
+	/* closed forms: Q(1, x) = exp(-x); Q(1/2, x) = erfc(sqrt(x));
+	   Q(n, x) = exp(-x) sum_{k<n} x^k / k! */
+	static const double xs[] = { 0.01, 0.3, 1.0, 2.5, 7.0, 30.0, 200.0 };
+	size_t i;
+	for (i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+		double x = xs[i], q3 = exp(-x) * (1.0 + x + x * x / 2.0);
+		CHECK(fabs(gamma_q(1.0, x) - exp(-x)) <= 1e-13 * exp(-x), "Q(1, %g) = %.17g, want %.17g", x, gamma_q(1.0, x), exp(-x));
+		CHECK(fabs(gamma_q(0.5, x) - erfc(sqrt(x))) <= 1e-12 * erfc(sqrt(x)), "Q(1/2, %g) = %.17g, want %.17g", x, gamma_q(0.5, x), erfc(sqrt(x)));
+		CHECK(fabs(gamma_q(3.0, x) - q3) <= 1e-12 * q3, "Q(3, %g) = %.17g, want %.17g", x, gamma_q(3.0, x), q3);
+	}
+	/* the median of chi-square(63) is about 62.335 */
+	CHECK(fabs(gamma_q(31.5, 62.335 / 2) - 0.5) < 1e-3, "chi2(63) median: Q = %g", gamma_q(31.5, 62.335 / 2));
+}
+
+/* ---- normal sets ---- */
+enum { SET_GENERIC, SET_EXACT, SET_ULPS, SET_LOG, NSET };
+static const char *const set_name[NSET] = { "generic", "-z_exact", "-z_ulps", "-z_log" };
+
+/* One set in one precision: normals and local directions, already rounded
+   to the format (held in double, which holds both formats exactly). */
+static double gnx[NS], gny[NS], gnz[NS], glx[NS], gly[NS], glz[NS], gu1[NS];
+
+static double to_fmt(long double v, int fl) { return fl ? (double)(float)v : (double)v; }
+
+static void make_set(int set, int fl, uint64_t seed)
+{
+	const long double pi = 3.14159265358979323846264338327950288L;
+	const long double ulp = fl ? 0x1p-24L : 0x1p-53L; /* spacing just above -1 */
+	const long double eps = fl ? 0x1p-23L : 0x1p-52L;
+	const uint64_t stream = (uint64_t)(set * 2 + fl) << 8;
+	uint32_t i;
+	for (i = 0; i < NS; i++) {
+		long double a = rng_u01(seed, stream + 0, i), ph = 2 * pi * rng_u01(seed, stream + 1, i);
+		long double u1 = rng_u01(seed, stream + 2, i), u2 = rng_u01(seed, stream + 3, i);
+		long double nz, rho, d;
+		switch (set) {
+		case SET_GENERIC:
+			nz = 2 * a - 1;
+			rho = sqrtl(1 - nz * nz);
+			gnx[i] = to_fmt(rho * cosl(ph), fl); gny[i] = to_fmt(rho * sinl(ph), fl); gnz[i] = to_fmt(nz, fl);
+			break;
+		case SET_EXACT:
+			gnx[i] = i & 1 ? -0.0 : 0.0; gny[i] = i & 2 ? -0.0 : 0.0; gnz[i] = -1.0;
+			break;
+		default:
+			d = set == SET_ULPS ? 64 * a * ulp : expl(logl(eps) + a * (logl(0x1p-10L) - logl(eps)));
+			rho = sqrtl(d * (2 - d));
+			gnx[i] = to_fmt(rho * cosl(ph), fl); gny[i] = to_fmt(rho * sinl(ph), fl); gnz[i] = to_fmt(-1 + d, fl);
+			break;
+		}
+		/* Malley's method, in double as a renderer would, then the format */
+		{
+			double r = sqrt((double)u1), p2 = 2.0 * 3.14159265358979323846 * (double)u2;
+			glx[i] = to_fmt(r * cos(p2), fl); gly[i] = to_fmt(r * sin(p2), fl); glz[i] = to_fmt(sqrt(1.0 - (double)u1), fl);
+			gu1[i] = (double)u1;
+		}
+	}
+}
+
+/* ---- u = cos^2 theta through the exact frame ---- */
+enum { CAT_BELOW = -1, CAT_NONFINITE = -2 };
+
+static int bin_of(long double u)
+{
+	long double b = floorl(u * NB);
+	if (b < 0) return 0;
+	if (b > NB - 1) return NB - 1;
+	return (int)b;
+}
+
+static mpfr_t mw[3], mn[3], mp[3], md, mww, mnn, mt;
+
+static int classify_mpfr(const double w[3], const double n[3])
+{
+	mpfr_ptr ps[3];
+	int k;
+	if (!isfinite(w[0]) || !isfinite(w[1]) || !isfinite(w[2]))
+		return CAT_NONFINITE;
+	for (k = 0; k < 3; k++) {
+		mpfr_set_d(mw[k], w[k], MPFR_RNDN);
+		mpfr_set_d(mn[k], n[k], MPFR_RNDN);
+		ps[k] = mp[k];
+	}
+	/* products of two 53-bit numbers are exact at MPFR_BITS; mpfr_sum
+	   rounds their sum once, so the sign of d is exact */
+	for (k = 0; k < 3; k++) mpfr_mul(mp[k], mw[k], mn[k], MPFR_RNDN);
+	mpfr_sum(md, ps, 3, MPFR_RNDN);
+	if (mpfr_sgn(md) < 0)
+		return CAT_BELOW;
+	for (k = 0; k < 3; k++) mpfr_sqr(mp[k], mw[k], MPFR_RNDN);
+	mpfr_sum(mww, ps, 3, MPFR_RNDN);
+	for (k = 0; k < 3; k++) mpfr_sqr(mp[k], mn[k], MPFR_RNDN);
+	mpfr_sum(mnn, ps, 3, MPFR_RNDN);
+	if (mpfr_zero_p(mww))
+		return CAT_NONFINITE; /* w = 0: no direction at all */
+	mpfr_sqr(md, md, MPFR_RNDN);
+	mpfr_mul(mt, mww, mnn, MPFR_RNDN);
+	mpfr_div(md, md, mt, MPFR_RNDN);
+	mpfr_mul_ui(md, md, NB, MPFR_RNDN);
+	mpfr_floor(md, md);
+	k = (int)mpfr_get_si(md, MPFR_RNDN);
+	return k < 0 ? 0 : k > NB - 1 ? NB - 1 : k;
+}
+
+static unsigned long n_mpfr; /* samples the long double bound could not settle */
+
+static int classify(const double w[3], const double n[3])
+{
+	const long double ue = LDBL_EPSILON / 2;
+	long double d, ed, ww, nn, u, err;
+	int k;
+	if (!isfinite(w[0]) || !isfinite(w[1]) || !isfinite(w[2]))
+		return CAT_NONFINITE;
+	d = (long double)w[0] * n[0] + (long double)w[1] * n[1] + (long double)w[2] * n[2];
+	/* three rounded products and two rounded sums: |error| <= 5 ue sum|w_i n_i| */
+	ed = 6 * ue * (fabsl((long double)w[0] * n[0]) + fabsl((long double)w[1] * n[1]) + fabsl((long double)w[2] * n[2]));
+	ww = (long double)w[0] * w[0] + (long double)w[1] * w[1] + (long double)w[2] * w[2];
+	nn = (long double)n[0] * n[0] + (long double)n[1] * n[1] + (long double)n[2] * n[2];
+	if (fabsl(d) <= ed || ww == 0 || !(ww * nn > LDBL_MIN) || ed < LDBL_MIN) {
+		n_mpfr++;
+		return classify_mpfr(w, n);
+	}
+	if (d < 0)
+		return CAT_BELOW;
+	u = d * d / (ww * nn);
+	/* relative: 2 ed/|d| from d, 6 ue from ww and nn, 3 ue from the square,
+	   the product and the quotient; doubled for second-order terms */
+	err = u * (2 * (2 * ed / fabsl(d)) + 32 * ue);
+	k = bin_of(u);
+	if (bin_of(u - err) != k || bin_of(u + err) != k) {
+		n_mpfr++;
+		return classify_mpfr(w, n);
+	}
+	return k;
+}
+
+/* ---- expectations ---- */
+enum { EXP_ANY, EXP_PASS, EXP_FAIL };
+static const char *const exp_name[] = { "-", "must pass", "must fail" };
+
+static int expect(const char *name, int fl, int set)
+{
+	if (!strcmp(name, "tangent_cross_z"))
+		return set == SET_EXACT ? EXP_FAIL : EXP_PASS;
+	if (!strcmp(name, "naive_nonorm") || !strcmp(name, "hughes_moeller_nonorm"))
+		return set == SET_GENERIC ? EXP_FAIL : EXP_PASS;
+	if (!strcmp(name, "frisvad"))
+		return fl && (set == SET_ULPS || set == SET_LOG) ? EXP_FAIL : EXP_PASS;
+	if (!strcmp(name, "frisvad_max"))
+		return set == SET_LOG || (fl && set == SET_ULPS) ? EXP_ANY : EXP_PASS;
+	return EXP_PASS;
+}
+
+/* ---- one row ---- */
+typedef struct {
+	unsigned long cnt[NB], below, nonfinite, moved, big, huge, spot_bad;
+	double chi2, p;
+	int ok;
+} row;
+
+static long double defect(const double b1[3], const double b2[3], const double n[3])
+{
+	long double l1 = sqrtl((long double)b1[0] * b1[0] + (long double)b1[1] * b1[1] + (long double)b1[2] * b1[2]);
+	long double l2 = sqrtl((long double)b2[0] * b2[0] + (long double)b2[1] * b2[1] + (long double)b2[2] * b2[2]);
+	long double ln = sqrtl((long double)n[0] * n[0] + (long double)n[1] * n[1] + (long double)n[2] * n[2]);
+	long double d1 = ((long double)b1[0] * n[0] + (long double)b1[1] * n[1] + (long double)b1[2] * n[2]) / ln;
+	long double d2 = ((long double)b2[0] * n[0] + (long double)b2[1] * n[1] + (long double)b2[2] * n[2]) / ln;
+	long double d12 = (long double)b1[0] * b2[0] + (long double)b1[1] * b2[1] + (long double)b1[2] * b2[2];
+	long double m = fabsl(l1 - 1);
+	if (fabsl(l2 - 1) > m) m = fabsl(l2 - 1);
+	if (fabsl(d1) > m) m = fabsl(d1);
+	if (fabsl(d2) > m) m = fabsl(d2);
+	if (fabsl(d12) > m) m = fabsl(d12);
+	return m == m ? m : INFINITY;
+}
+
+static void run_row(const onb_method *m, int fl, row *r)
+{
+	uint32_t i;
+	unsigned long nok = 0;
+	int k;
+	memset(r, 0, sizeof *r);
+	for (i = 0; i < NS; i++) {
+		double w[3], n[3], b1[3], b2[3];
+		long double D;
+		int c, ideal;
+		if (fl) {
+			onb_vec3f nf, p, q;
+			float x = (float)glx[i], y = (float)gly[i], z = (float)glz[i];
+			nf.x = (float)gnx[i]; nf.y = (float)gny[i]; nf.z = (float)gnz[i];
+			m->basisf(nf, &p, &q);
+			w[0] = p.x * x + q.x * y + nf.x * z;
+			w[1] = p.y * x + q.y * y + nf.y * z;
+			w[2] = p.z * x + q.z * y + nf.z * z;
+			b1[0] = p.x; b1[1] = p.y; b1[2] = p.z; b2[0] = q.x; b2[1] = q.y; b2[2] = q.z;
+		} else {
+			onb_vec3 nd, p, q;
+			nd.x = gnx[i]; nd.y = gny[i]; nd.z = gnz[i];
+			m->basis(nd, &p, &q);
+			w[0] = p.x * glx[i] + q.x * gly[i] + nd.x * glz[i];
+			w[1] = p.y * glx[i] + q.y * gly[i] + nd.y * glz[i];
+			w[2] = p.z * glx[i] + q.z * gly[i] + nd.z * glz[i];
+			b1[0] = p.x; b1[1] = p.y; b1[2] = p.z; b2[0] = q.x; b2[1] = q.y; b2[2] = q.z;
+		}
+		n[0] = gnx[i]; n[1] = gny[i]; n[2] = gnz[i];
+		D = defect(b1, b2, n);
+		if (D > D_SMALL) r->big++;
+		if (D > 0.1L) r->huge++;
+		c = classify(w, n);
+		if (i % SPOT == 0 && classify_mpfr(w, n) != c)
+			r->spot_bad++;
+		if (c == CAT_NONFINITE) { r->nonfinite++; continue; }
+		if (c == CAT_BELOW) { r->below++; continue; }
+		r->cnt[c]++;
+		nok++;
+		ideal = bin_of(1.0L - gu1[i]); /* where the exact frame would put it */
+		if (c != ideal) r->moved++;
+	}
+	r->chi2 = 0;
+	if (nok > 0) {
+		double e = (double)nok / NB;
+		for (k = 0; k < NB; k++)
+			r->chi2 += ((double)r->cnt[k] - e) * ((double)r->cnt[k] - e) / e;
+		r->p = gamma_q((NB - 1) / 2.0, r->chi2 / 2.0);
+	} else {
+		r->chi2 = NAN;
+		r->p = NAN;
+	}
+	r->ok = r->below == 0 && r->nonfinite == 0 && r->p >= ALPHA;
+}
+
+int main(int argc, char **argv)
+{
+	uint64_t seed = 0x73616d706c696e67u; /* "sampling" */
+	size_t nm, j;
+	const onb_method *ms = onb_methods(&nm);
+	int fl, set, k, npass = 0, nfail = 0, nunexp = 0;
+	if (argc > 1) {
+		char *end;
+		seed = strtoull(argv[1], &end, 0);
+		if (*end) {
+			fprintf(stderr, "test_sampling: seed must be an integer\n");
+			return 2;
+		}
+	}
+	for (k = 0; k < 3; k++) {
+		mpfr_init2(mw[k], MPFR_BITS); mpfr_init2(mn[k], MPFR_BITS); mpfr_init2(mp[k], MPFR_BITS);
+	}
+	mpfr_inits2(MPFR_BITS, md, mww, mnn, mt, (mpfr_ptr)0);
+
+	test_gamma_q();
+	printf("test_sampling: seed %#llx, N = %u per row, %d bins of u = cos^2 theta, alpha = %g per row "
+	       "(%zu rows: Bonferroni family-wise <= %.3g)\n", (unsigned long long)seed, NS, NB, ALPHA,
+	       nm * 2 * NSET, ALPHA * (double)(nm * 2 * NSET));
+	printf("p-value: regularized upper incomplete gamma Q(63/2, chi2/2) (series / continued fraction)\n");
+	printf("%-24s %-6s %-9s %9s %10s %6s %6s %6s %7s %7s  %-7s %s\n", "method", "prec", "normals", "chi2", "p",
+	       "below", "nonfin", "moved", "D>2e-3", "D>0.1", "verdict", "expected");
+	for (set = 0; set < NSET; set++)
+		for (fl = 1; fl >= 0; fl--) {
+			make_set(set, fl, seed);
+			for (j = 0; j < nm; j++) {
+				row r;
+				int e = expect(ms[j].name, fl, set);
+				const char *note = "";
+				run_row(&ms[j], fl, &r);
+				if (r.ok) npass++; else nfail++;
+				if ((e == EXP_PASS && !r.ok) || (e == EXP_FAIL && r.ok)) { note = "  UNEXPECTED"; nunexp++; }
+				printf("%-24s %-6s %-9s %9.1f %10.3g %6lu %6lu %6lu %7.5f %7.5f  %-7s %s%s\n", ms[j].name,
+				       fl ? "float" : "double", set_name[set], r.chi2, r.p, r.below, r.nonfinite, r.moved,
+				       (double)r.big / NS, (double)r.huge / NS, r.ok ? "pass" : "FAIL", exp_name[e], note);
+				CHECK(r.spot_bad == 0, "%s %s %s: %lu spot checks disagree with MPFR", ms[j].name,
+				      fl ? "float" : "double", set_name[set], r.spot_bad);
+				if (e == EXP_PASS) {
+					CHECK(r.ok, "%s %s %s must pass: chi2 %.1f p %g below %lu nonfinite %lu", ms[j].name,
+					      fl ? "float" : "double", set_name[set], r.chi2, r.p, r.below, r.nonfinite);
+					CHECK((double)r.big / NS <= F_SMALL, "%s %s %s: premise of must-pass broken: %lu of %u normals with D > %g",
+					      ms[j].name, fl ? "float" : "double", set_name[set], r.big, NS, D_SMALL);
+				} else if (e == EXP_FAIL) {
+					CHECK(!r.ok, "%s %s %s must fail but passed: chi2 %.1f p %g", ms[j].name,
+					      fl ? "float" : "double", set_name[set], r.chi2, r.p);
+					CHECK((double)r.huge / NS >= 1e-2, "%s %s %s: premise of must-fail broken: %lu of %u normals with D > 0.1",
+					      ms[j].name, fl ? "float" : "double", set_name[set], r.huge, NS);
+				}
+			}
+		}
+	printf("rows: %d pass, %d fail, %d unexpected; %lu of %lu samples settled in MPFR (long double bound too loose)\n",
+	       npass, nfail, nunexp, n_mpfr, (unsigned long)(nm * 2 * NSET * NS));
+	for (k = 0; k < 3; k++) { mpfr_clear(mw[k]); mpfr_clear(mn[k]); mpfr_clear(mp[k]); }
+	mpfr_clears(md, mww, mnn, mt, (mpfr_ptr)0);
+	mpfr_free_cache();
+	printf("%d passed, %d failed\n", passed, failed);
+	return failed != 0;
+}

@@ -8,7 +8,7 @@
  * as cosine weighting says: u = cos^2(theta) uniform on [0, 1].  This test
  * computes that cosine for every sample through an exact frame (n itself)
  * and runs chi-square tests on u, for every method of the registry, in
- * float and in double, over four normal sets:
+ * float and in double, over five normal sets:
  *   generic   n uniform on the sphere, rounded to the format;
  *   -z exact  n = (+-0, +-0, -1), all four sign patterns;
  *   -z ulps   the true direction has 1 + n.z = t ulps, t uniform in
@@ -16,7 +16,8 @@
  *             (k = round(t)) while n.x, n.y keep the true 1 + n.z, exactly
  *             as a normalized normal near -z arrives in a renderer (frisvad
  *             float's threshold -0.9999999f is -1 + 4 ulps);
- *   -z log    1 + n.z log-uniform in [eps, 2^-10] (eps of the format).
+ *   -z log    1 + n.z log-uniform in [eps, 2^-10] (eps of the format);
+ *   -x exact  n = (-1, +-0, +-0), naive's singular direction.
  * Two tests per row (method x precision x set):
  *   pooled      2^16 normals, one direction each, NB = 64 bins, 63 dof;
  *   per-normal  64 normals, 4096 directions each, 4 bins per normal, the
@@ -43,8 +44,8 @@
  * p-values are the regularized upper incomplete gamma Q(dof/2, chi2/2),
  * computed by series / continued fraction (Numerical Recipes 6.2),
  * checked below against closed forms.  Significance alpha = 1e-6 per
- * test; with 288 tests Bonferroni bounds the chance that any correct row
- * fails by bad luck at 2.9e-4.  Seeds are fixed (printed; argv[1]
+ * test; with 360 tests Bonferroni bounds the chance that any correct row
+ * fails by bad luck at 3.6e-4.  Seeds are fixed (printed; argv[1]
  * overrides the base seed), and every method sees the same normals and
  * directions for a set and precision (a paired design): correct methods
  * show the same chi2, that of the random draws.
@@ -64,7 +65,7 @@
  *   - naive, hughes_moeller (and their libm, InvSqrt, rsqrtss, rsqrtss+NR
  *     normalizations), duff, duff_branchless, stark, pbrt_v3, rtow: D is a
  *     few ulps, or the normalization's relative error (<= 1.76e-3 for
- *     InvSqrt) away from -x (naive): must pass on every set.
+ *     InvSqrt): must pass on every set but -x exact for naive (below).
  *   - naive_nonorm, hughes_moeller_nonorm: |b1| = |b2| = sqrt(1 - n.x^2)
  *     (or sqrt(1 - n.z^2)): O(1) wrong for generic normals, must fail
  *     there; near -z n.x^2 <= 2 (1 + n.z) <= 2^-9, D <= 2^-10: must pass.
@@ -81,6 +82,10 @@
  *     but the set is near the line); must pass elsewhere.  Its fallback
  *     tilt can push a grazing sample below the surface (seed 3 shows one
  *     in double on -z log).
+ *   - naive family at n = -x exactly: b1 = x - n (n.x) = 0, so b1 and b2
+ *     are 0 (InvSqrt of 0 is finite: w = z n, every sample at u = 1) or
+ *     NaN (1/sqrt(0) * 0): must fail on -x exact; every other method
+ *     picks another axis there: must pass.
  *   - tangent_cross_z: cross(n, n + z) is 0 at n = -z exactly: NaN, must
  *     fail on -z exact; n.x^2 + n.y^2 is far above underflow on the other
  *     sets, where it is accurate: must pass.
@@ -180,8 +185,8 @@ static void test_gamma_q(void)
 }
 
 /* ---- normal sets ---- */
-enum { SET_GENERIC, SET_EXACT, SET_ULPS, SET_LOG, NSET };
-static const char *const set_name[NSET] = { "generic", "-z_exact", "-z_ulps", "-z_log" };
+enum { SET_GENERIC, SET_EXACT, SET_ULPS, SET_LOG, SET_XEXACT, NSET };
+static const char *const set_name[NSET] = { "generic", "-z_exact", "-z_ulps", "-z_log", "-x_exact" };
 
 /* One set in one precision: normals and local directions, already rounded
    to the format (held in double, which holds both formats exactly).
@@ -207,6 +212,9 @@ static void gen_normal(int set, int fl, long double a, long double b, uint32_t i
 		break;
 	case SET_EXACT:
 		n[0] = i & 1 ? -0.0 : 0.0; n[1] = i & 2 ? -0.0 : 0.0; n[2] = -1.0;
+		break;
+	case SET_XEXACT:
+		n[0] = -1.0; n[1] = i & 1 ? -0.0 : 0.0; n[2] = i & 2 ? -0.0 : 0.0;
 		break;
 	default: /* the true direction, rounded component by component */
 		d = set == SET_ULPS ? ULPS_MAX * a * ulp : expl(logl(eps) + a * (logl(0x1p-10L) - logl(eps)));
@@ -325,6 +333,8 @@ static const char *const exp_name[] = { "-", "must pass", "must fail" };
 
 static int expect(const char *name, int fl, int set)
 {
+	if (set == SET_XEXACT) /* naive's b1 = x - n (n.x) cancels to 0 */
+		return !strncmp(name, "naive", 5) ? EXP_FAIL : EXP_PASS;
 	if (!strcmp(name, "tangent_cross_z"))
 		return set == SET_EXACT ? EXP_FAIL : EXP_PASS;
 	if (!strcmp(name, "naive_nonorm") || !strcmp(name, "hughes_moeller_nonorm"))

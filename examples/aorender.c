@@ -4,23 +4,34 @@
  * libm; writes PNG with a dependency-free writer (stored deflate blocks).
  *
  *   aorender --method NAME [--precision float|double] --out FILE.png
- *            [--diff DIFF.png] [--spp N] [--list]
+ *            [--diff DIFF.png] [--spp N (256)] [--list]
  *
- * Scene (z up): a ceiling z = 3 facing down (normal exactly -z), a unit
- * sphere under it centred at (0, 0, 1.6), seen from below and in front,
- * so the image is full of normals at and near -z.  At each hit the basis
- * {b1, b2} of the method turns a cosine-weighted local direction
- * (r cos phi, r sin phi, sqrt(1 - u)) into b1 x + b2 y + n z; the pixel is
- * the fraction of such rays that escape within distance 2.  A basis that
- * is not orthonormal sends rays under the surface (darker) or off the
- * cosine lobe; a non-finite basis gives NaN, drawn black.
+ * Scene (z up), built so that only the basis can change the picture.  A
+ * floor z = 0 (normal exactly +z) under a ceiling 1.4 above it: the
+ * underside of a sphere of radius 400 (a shallow dome whose normals come
+ * within 1 + n.z <= 3.8e-6 of -z), which meets a flat ceiling (normal
+ * exactly -z) at rho = 1.1 from the dome's lowest point.  The camera, 1.2 below the dome's lowest point, looks
+ * straight up: the image is the dome (centre), the flat ceiling (corners).
+ * At each hit the basis {b1, b2} of the method turns a cosine-weighted
+ * local direction (r cos phi, r sin phi, sqrt(1 - u)) into
+ * w = b1 x + b2 y + n z; the pixel is the fraction of such rays that
+ * travel a distance 2 without hitting anything.  The floor lies right at
+ * that horizon (cos theta = 0.7, where the estimate is most sensitive to
+ * the distribution of cos theta), and seen from every ceiling point it is
+ * the same within the dome's tilt (< 2.8e-3 rad): a correct frame only
+ * rotates the samples about n, so it changes almost no sample's outcome,
+ * and the difference to the reference is a faint noise (mean ~0.001).
+ * A frame that is not orthonormal changes the distribution of cos theta
+ * around each normal, and the difference shows where: float frisvad in a
+ * ring (its formula with 1 + n.z = 4..16 float ulps, whose rounding is an
+ * O(1/k) relative error), tangent_cross_z on the flat ceiling (NaN at
+ * n = -z exactly, drawn black).  The ring is speckled with moire rings:
+ * the sign of frisvad's error is that of the rounding of n.z to float.
  *
  * --diff renders the reference (duff_branchless in double, the same
  * random numbers) and writes |image - reference| on a colour scale from
- * black (0) through blue and red to yellow (0.5 or more), with the scale
- * as a bar along the bottom.  Correct methods differ from the reference
- * only by Monte Carlo noise (another frame rotates the same samples about
- * n); broken ones differ by a pattern.
+ * black (0) through blue and red to yellow (DIFF_MAX = 0.05 or more; NaN
+ * is yellow too), with the scale as a bar along the bottom.
  */
 #include <math.h>
 #include <stdio.h>
@@ -112,9 +123,25 @@ static v3 mul(v3 a, double s) { v3 r; r.x = a.x * s; r.y = a.y * s; r.z = a.z * 
 static double dot(v3 a, v3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static v3 norm(v3 a) { return mul(a, 1.0 / sqrt(dot(a, a))); }
 
-static const v3 C = { 0.0, 0.0, 1.6 };
-#define CEIL 3.0
-#define EXTENT 8.0
+/* The dome is the underside of a sphere of radius R whose lowest point is
+   at height HC above the floor z = 0.  At horizontal distance rho from
+   that point its normal has 1 + n.z = rho^2 / (2 R^2) (to first order):
+   with R = 400 and the dome ending at RHO_FLAT = 1.1, 1 + n.z runs from 0
+   to 3.8e-6 (63 float ulps of -1).  Float frisvad keeps its fallback
+   below 4 ulps (rho < 0.28) and runs its formula above, with a relative
+   error in a = 1/(1 + n.z) of up to half an ulp over 1 + n.z: 12% at
+   4 ulps, 3% at 16 ulps (rho = 0.55).  HC = 1.4 and AO_DIST = 2 put the
+   floor at the occlusion horizon cos(theta) = 0.7 of a ceiling point
+   (u = cos^2 = 0.49, where the estimate is most sensitive), and the
+   ceiling at the same horizon for a floor point. */
+#define R 400.0
+#define HC 1.4
+#define RHO_FLAT 1.1 /* the dome meets the flat ceiling there */
+#define CEIL (HC + RHO_FLAT * RHO_FLAT / (2 * R))
+#define EXTENT 50.0
+#define AO_DIST 2.0
+#define DIFF_MAX 0.05 /* top of the difference colour scale */
+static const v3 C = { 0.0, 0.0, HC + R };
 
 /* Nearest hit with t in (1e-6, tmax); fills point and unit normal. */
 static int hit(v3 o, v3 d, double tmax, double *t, v3 *p, v3 *n)
@@ -122,23 +149,33 @@ static int hit(v3 o, v3 d, double tmax, double *t, v3 *p, v3 *n)
 	double best = tmax;
 	int any = 0;
 	v3 oc = add(o, mul(C, -1.0));
-	double bq = dot(oc, d), cq = dot(oc, oc) - 1.0, disc = bq * bq - dot(d, d) * cq;
+	/* |oc|^2 - R^2 = (|oc| - R)(|oc| + R) loses nothing that matters here:
+	   its absolute error is ~ R^2 eps = 3e-11 */
+	double dd = dot(d, d), bq = dot(oc, d), cq = dot(oc, oc) - R * R, disc = bq * bq - dd * cq;
 	if (disc >= 0) {
-		double s = sqrt(disc), t0 = (-bq - s) / dot(d, d);
-		if (t0 > 1e-6 && t0 < best) {
-			best = t0; any = 1;
-			*p = add(o, mul(d, t0));
-			*n = norm(add(*p, mul(C, -1.0)));
+		/* stable roots: q = -(b + sign(b) sqrt(disc)); t = c/q and q/dd */
+		double q = -(bq + (bq >= 0 ? sqrt(disc) : -sqrt(disc))), t0 = q != 0 ? cq / q : -1, t1 = q / dd, tt;
+		if (t0 > t1) { tt = t0; t0 = t1; t1 = tt; }
+		tt = t0 > 1e-6 ? t0 : t1;
+		if (tt > 1e-6 && tt < best) {
+			best = tt; any = 1;
+			*p = add(o, mul(d, tt));
+			*n = mul(add(*p, mul(C, -1.0)), 1.0 / R);
+			*n = norm(*n);
 		}
 	}
-	if (d.z != 0) {
-		double tc = (CEIL - o.z) / d.z;
-		if (tc > 1e-6 && tc < best) {
-			v3 q = add(o, mul(d, tc));
-			if (fabs(q.x) < EXTENT && fabs(q.y) < EXTENT) {
-				best = tc; any = 1;
-				*p = q;
-				n->x = 0; n->y = 0; n->z = -1.0;
+	if (d.z != 0) { /* the floor z = 0 (normal +z) and the flat ceiling (normal -z) */
+		static const double pz[2] = { 0.0, CEIL }, nz[2] = { 1.0, -1.0 };
+		int k;
+		for (k = 0; k < 2; k++) {
+			double tc = (pz[k] - o.z) / d.z;
+			if (tc > 1e-6 && tc < best) {
+				v3 q = add(o, mul(d, tc));
+				if (fabs(q.x) < EXTENT && fabs(q.y) < EXTENT) {
+					best = tc; any = 1;
+					*p = q;
+					n->x = 0; n->y = 0; n->z = nz[k];
+				}
 			}
 		}
 	}
@@ -156,7 +193,7 @@ static double u01(unsigned long long *s) { *s = mix(*s + 0x9e3779b97f4a7c15ULL);
 
 static void render(const onb_method *m, int fl, int spp, double *img)
 {
-	const v3 eye = { 0.0, -5.5, -1.2 }, at = { 0.0, 0.0, 2.0 }, upv = { 0, 0, 1 };
+	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 };
 	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up;
 	int x, y, s;
 	rt.x = fw.y * upv.z - fw.z * upv.y; rt.y = fw.z * upv.x - fw.x * upv.z; rt.z = fw.x * upv.y - fw.y * upv.x;
@@ -191,11 +228,16 @@ static void render(const onb_method *m, int fl, int spp, double *img)
 					w.y = b1.y * lx + b2.y * ly + nd.y * lz;
 					w.z = b1.z * lx + b2.z * ly + nd.z * lz;
 				}
-				o = add(p, mul(n, 1e-4));
-				if (!hit(o, w, 2.0, &tt, &pp, &nn))
-					sum += 1.0;
-				if (!isfinite(w.x) || !isfinite(w.y) || !isfinite(w.z))
+				if (!isfinite(w.x) || !isfinite(w.y) || !isfinite(w.z)) {
 					sum = NAN;
+					continue;
+				}
+				/* AO_DIST is a distance: trace the unit direction.  (Tracing w
+				   as it is would also scale the AO distance by |w|, which for a
+				   stretched frame partly cancels the change of direction.) */
+				o = add(p, mul(n, 1e-4));
+				if (dot(w, w) > 0 && !hit(o, norm(w), AO_DIST, &tt, &pp, &nn))
+					sum += 1.0;
 			}
 			img[y * W + x] = sum / spp;
 		}
@@ -216,7 +258,7 @@ static void colour(double v, unsigned char *c)
 int main(int argc, char **argv)
 {
 	const char *name = NULL, *out = NULL, *diff = NULL;
-	int fl = 1, spp = 64, k, i;
+	int fl = 1, spp = 256, k, i;
 	const onb_method *m;
 	static double img[W * H], ref[W * H];
 	static unsigned char rgb[W * H * 3];
@@ -265,21 +307,22 @@ int main(int argc, char **argv)
 	}
 	if (diff) {
 		double maxd = 0, sumd = 0;
-		int nan = 0;
+		int nan = 0, over = 0;
 		render(onb_find("duff_branchless"), 0, spp, ref);
 		for (i = 0; i < W * H; i++) {
 			double d = fabs(img[i] - ref[i]);
 			if (d != d) nan++;
-			else { if (d > maxd) maxd = d; sumd += d; }
-			colour(d / 0.5, rgb + 3 * i);
+			else { if (d > maxd) maxd = d; sumd += d; over += d > DIFF_MAX / 2; }
+			colour(d / DIFF_MAX, rgb + 3 * i);
 		}
-		for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to 0.5 at the right */
+		for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to DIFF_MAX at the right */
 			colour((double)(i % W) / (W - 1), rgb + 3 * i);
 		if (write_png(diff, rgb, W, H, 3) != 0) {
 			fprintf(stderr, "aorender: cannot write '%s'\n", diff);
 			return 1;
 		}
-		printf("%-24s %-6s mean |diff| %.4f  max %.3f  NaN pixels %d\n", name, fl ? "float" : "double", sumd / (W * H - nan), maxd, nan);
+		printf("%-24s %-6s mean |diff| %.4f  max %.3f  pixels > %.3f: %5d  NaN pixels %d\n", name, fl ? "float" : "double",
+		       sumd / (W * H - nan), maxd, DIFF_MAX / 2, over, nan);
 	}
 	return 0;
 }

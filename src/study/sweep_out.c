@@ -226,13 +226,15 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 	if (study_out_open(&o, dir, name) != 0)
 		return -1;
 	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, and by log10| |n| - 1 |; empty bins omitted; lo and hi bound the bin\n");
+	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, and by log10| |n| - 1 |; empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
 	fprintf(o.f, "method,precision,distribution,axis,lo,hi,count,rms,max\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
 				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
-				if (!s->cfg.prec_on[p] || !s->cfg.dist_on[d])
+				/* threshold and grid are lists, not distributions over n.z:
+				   their errors are in worst.csv and grid.csv */
+				if (!s->cfg.prec_on[p] || !s->cfg.dist_on[d] || d == DIST_THRESHOLD || d == DIST_GRID)
 					continue;
 				for (b = 0; b < NBINS; b++) {
 					const bin_t *x = &c->bins[b];
@@ -247,7 +249,7 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 					} else {
 						axis = "log10_absnorm"; lo = -9.0 + 0.25 * (b - NB_NZ - NB_LOG); hi = lo + 0.25;
 					}
-					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.6g,%.6g\n", s->kernels[k].name, prec_name(p),
+					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
 					        dist_name(d), axis, lo, hi, (unsigned long long)x->count,
 					        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max);
 				}
@@ -310,7 +312,7 @@ static int write_grid(const sweep_state *s, const char *dir, const char *name, i
 				const size_t r = i / (size_t)s->cfg.grid_cols, c = i % (size_t)s->cfg.grid_cols;
 				if (!s->g_done[(size_t)p * G(s) + i])
 					continue;
-				fprintf(o.f, "%s,%s,%zu,%zu,%.5f,%.5f,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p), r, c,
+				fprintf(o.f, "%s,%s,%zu,%zu,%.4g,%.4g,%.3g,%.3g,%.3g\n", s->kernels[k].name, prec_name(p), r, c,
 				        -1.0 + 2.0 * ((double)r + 0.5) / s->cfg.grid_rows,
 				        6.283185307179586 * ((double)c + 0.5) / s->cfg.grid_cols,
 				        s->g_err[j], s->g_bits[j], s->kernels[k].m && !partial ? grid_jump(s, p, k, i) : NAN);

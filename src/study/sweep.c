@@ -204,8 +204,9 @@ int cmd_sweep(int argc, char **argv)
 		else if (!strcmp(a, "--grid")) {
 			int r, c; char tail;
 			NEED();
-			if (sscanf(v, "%dx%d%c", &r, &c, &tail) != 2 || r < 2 || c < 2 || r > 4096 || c > 8192) {
-				study_error("--grid: expected RxC with 2 <= R <= 4096, 2 <= C <= 8192, not '%s'", v);
+			if (sscanf(v, "%dx%d%c", &r, &c, &tail) != 2 || r < 2 || c < 2 || r > 4096 || c > 8192 ||
+			    (uint64_t)r * (uint64_t)c > SWEEP_MAX_GRID_CELLS) {
+				study_error("--grid: expected RxC with 2 <= R <= 4096, 2 <= C <= 8192, R*C <= %u, not '%s'", SWEEP_MAX_GRID_CELLS, v);
 				return ONB_EXIT_USAGE;
 			}
 			cfg->grid_rows = r; cfg->grid_cols = c;
@@ -246,13 +247,6 @@ int cmd_sweep(int argc, char **argv)
 		snprintf(outbuf, sizeof outbuf, "%s", o.out);
 	} else {
 		study_default_run_dir(outbuf, sizeof outbuf);
-	}
-	/* Refuse an unusable output directory before hours of work. */
-	if (study_mkdir_p(outbuf) != 0)
-		return ONB_EXIT_USAGE;
-	if (access(outbuf, W_OK) != 0) {
-		study_error("%s: output directory is not writable", outbuf);
-		return ONB_EXIT_USAGE;
 	}
 
 	/* Inputs per distribution. */
@@ -302,6 +296,14 @@ int cmd_sweep(int argc, char **argv)
 			total += ds.count * (unsigned long long)nk;
 			dist_free(&ds);
 		}
+	}
+	/* Refuse an unusable output directory before hours of work (and only
+	   once every option has been checked, so a refused run creates nothing). */
+	if (study_mkdir_p(outbuf) != 0)
+		return ONB_EXIT_USAGE;
+	if (access(outbuf, W_OK) != 0) {
+		study_error("%s: output directory is not writable", outbuf);
+		return ONB_EXIT_USAGE;
 	}
 	if (sweep_alloc(&st) != 0)
 		return 1;
@@ -540,7 +542,7 @@ int cmd_merge(int argc, char **argv)
 		}
 		nfiles++;
 	}
-	if (nfiles == 0) { merge_usage(stderr); return ONB_EXIT_USAGE; }
+	if (nfiles == 0) { study_error("merge: no state files given (usage: onbstudy merge [--out DIR] STATE...)"); return ONB_EXIT_USAGE; }
 	for (i = 0; i < acc.cfg.shard_n; i++)
 		if (!seen[i]) {
 			study_error("shard %d of %d is missing", i, acc.cfg.shard_n);

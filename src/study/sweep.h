@@ -12,6 +12,9 @@
 #include "reference.h"
 
 #define SWEEP_MAX_KERNELS 64
+/* grid cells: the maps keep per-cell arrays for every method (about 40
+   bytes per cell, method and precision) */
+#define SWEEP_MAX_GRID_CELLS (1u << 20)
 #define NWORST 5
 /* by_nz bins: n.z in [-1, 1]; log10(1 + n.z) in [-17, 0]; log10| |n|-1 | in [-9, -1] */
 #define NB_NZ   100

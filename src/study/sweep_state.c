@@ -244,8 +244,11 @@ int sweep_load_state(sweep_state *s, const char *path)
 		fclose(f);
 		return -1;
 	}
-	if (s->cfg.nk < 1 || s->cfg.nk > SWEEP_MAX_KERNELS || s->cfg.grid_rows < 1 || s->cfg.grid_cols < 1 ||
-	    s->cfg.grid_rows > 4096 || s->cfg.grid_cols > 8192) {
+	if (s->cfg.nk < 1 || s->cfg.nk > SWEEP_MAX_KERNELS || s->cfg.grid_rows < 2 || s->cfg.grid_cols < 2 ||
+	    (uint64_t)s->cfg.grid_rows * (uint64_t)s->cfg.grid_cols > SWEEP_MAX_GRID_CELLS ||
+	    s->cfg.shard_n < 1 || s->cfg.shard_n > 1000000 || s->cfg.shard_k < 0 || s->cfg.shard_k >= s->cfg.shard_n ||
+	    s->cfg.ref_bits < 64 || s->cfg.ref_bits > 4096 || s->cfg.check_every < 1 ||
+	    (s->cfg.prec_on[0] & ~1) || (s->cfg.prec_on[1] & ~1)) {
 		study_error("%s: corrupt state header", path);
 		fclose(f);
 		return -1;

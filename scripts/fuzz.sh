@@ -10,7 +10,8 @@
 # tests/fuzz/regressions/<harness>/ (commit it: tests/fuzz_regress.sh replays
 # it in `make test` from then on) and the script exits 1.
 # Logs, with libFuzzer's final statistics (stat::number_of_executed_units),
-# go to build/fuzz/<harness>.log; scripts/robustness.sh reads them.
+# go to build/fuzz/<harness>.log, and one line per harness to
+# build/fuzz/summary.tsv; scripts/robustness.sh reads that.
 set -eu
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -58,6 +59,7 @@ run cli & pc=$!
 rm_=0; wait $pm || rm_=$?
 rc_=0; wait $pc || rc_=$?
 fail=0
+printf 'harness\tseconds\texecutions\texit\tcrash_inputs\tcoverage\tcorpus\n' > "$out/summary.tsv"
 for h in mesh cli; do
 	if [ "$h" = mesh ]; then st=$rm_; else st=$rc_; fi
 	execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$h.log" | tail -1)
@@ -68,7 +70,10 @@ for h in mesh cli; do
 		cp "$a" "tests/fuzz/regressions/$h/"
 		echo "fuzz.sh: $h: kept $(basename "$a") in tests/fuzz/regressions/$h/" >&2
 	done
-	echo "fuzz.sh: $h: ${execs:-?} executions in ${secs} s, exit $st, $found crash input(s)"
+	cov=$(sed -n 's/.*DONE *cov: \([0-9]*\).*/\1/p' "$out/$h.log" | tail -1)
+	corp=$(sed -n 's/.*DONE .* corp: \([0-9]*\)\/.*/\1/p' "$out/$h.log" | tail -1)
+	printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$h" "$secs" "${execs:-?}" "$st" "$found" "${cov:-?}" "${corp:-?}" >> "$out/summary.tsv"
+	echo "fuzz.sh: $h: ${execs:-?} executions in ${secs} s, exit $st, $found crash input(s), coverage ${cov:-?} edges, corpus ${corp:-?}"
 	if [ "$st" -ne 0 ] || [ "$found" -ne 0 ] || [ -z "$execs" ]; then
 		fail=1
 		echo "fuzz.sh: $h FAILED; the end of $out/$h.log:" >&2

@@ -62,8 +62,8 @@ int main(void)
 		{ "(0,0,-Inf)", 0.0, 0.0, -INFINITY },
 		{ "(sub,sub,sub)", -1.0, -1.0, -1.0 },   /* smallest subnormal of the format */
 		{ "(sub,0,-1)", -2.0, 0.0, -1.0 },       /* x = that subnormal, z = -1 */
-		{ "|n|=1e-20", 0.48 * s20, 0.6 * s20, 0.64 * s20 },
-		{ "|n|=1e20", 0.48 * b20, 0.6 * b20, 0.64 * b20 },
+		{ "norm 1e-20", 0.48 * s20, 0.6 * s20, 0.64 * s20 },
+		{ "norm 1e20", 0.48 * b20, 0.6 * b20, 0.64 * b20 },
 	};
 	const size_t nc = sizeof cases / sizeof cases[0];
 	size_t nm, i, c;

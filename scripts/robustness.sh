@@ -71,12 +71,13 @@ nreg=$(find tests/fuzz/regressions -type f ! -name '.*' | wc -l)
 # --- logs of scripts/harden.sh
 stepval() { awk -F'\t' -v s="$1" -v c="$2" '$1 == s { print $c }' "$L/steps.tsv" 2>/dev/null; }
 if [ -f "$L/sanitize.log" ]; then
-	tests=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$L/sanitize.log" | awk '{ p += $1; f += $3 } END { printf "%d checks passed, %d failed", p, f }')
+	tests=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$L/sanitize.log" | awk '{ n++; p += $1; f += $3 } END { printf "%d test programs, %d checks passed, %d failed", n, p, f }')
 	reports=$(grep -c -E 'ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:' "$L/sanitize.log")
 	if grep -q '^make test: all passed' "$L/sanitize.log"; then san="all passed ($tests), $reports sanitizer reports"
 	else san="FAILED ($tests), $reports sanitizer reports"; fi
-	sanknown=$(grep -c '^KNOWN' "$L/sanitize.log")
-	[ "$sanknown" -gt 0 ] && san="$san; $sanknown KNOWN cases of tests/cli_errors.sh"
+	sanknown=$(grep '^KNOWN' "$L/sanitize.log" | sed 's/^KNOWN (\([^)]*\)): \(.*\) -- onbstudy .*/\1: \2/' | sort | uniq -c |
+		awk '{ c = $1; $1 = ""; sub(/^ /, ""); sub(/ +$/, ""); printf "%s%s (x%d)", (NR > 1 ? "; " : ""), $0, c }')
+	[ -n "$sanknown" ] && san="$san; KNOWN cases of tests/cli_errors.sh (bugs reported, not counted): $sanknown"
 else san="not run"; fi
 if [ -f "$L/valgrind.log" ]; then
 	vg=$(grep -o 'ERROR SUMMARY: [0-9]* errors' "$L/valgrind.log" | awk '{ n++; e += $3 } END { printf "%d runs, %d errors", n, e }')

@@ -41,10 +41,13 @@ refuse() {
 	n=$(wc -l < "$tmp/e")
 	[ -n "$why" ] || [ "$n" -eq 1 ] || why="$n lines on stderr"
 	[ -n "$why" ] || grep -q '^onbstudy: ' "$tmp/e" || why="stderr does not start with 'onbstudy: '"
-	[ -n "$why" ] || [ ! -e "$out" ] || why="left $out behind: $(ls -A "$out")"
+	[ -n "$why" ] || [ ! -e "$out" ] || why="left the --out directory behind (holding: $(ls -A "$out" | tr '\n' ' '))"
 	[ -n "$why" ] || [ -z "$(ls -A "$tmp/cwd")" ] || why="wrote into the working directory: $(ls -A "$tmp/cwd")"
 	if is_known "$id"; then
-		if [ -n "$why" ]; then known=$((known + 1)); echo "KNOWN ($id): onbstudy $*: $why"
+		if [ -n "$why" ]; then
+			known=$((known + 1))
+			san=$(grep -m1 -o 'ERROR: [A-Za-z]*Sanitizer: [A-Za-z-]*\|runtime error: .*' "$tmp/e")
+			echo "KNOWN ($id): $why${san:+ [$san]} -- onbstudy $*"
 		else ok; echo "note: KNOWN case ($id) passes in this build (a heap overflow may show only under SANITIZE=address): onbstudy $*"; fi
 	elif [ -z "$why" ]; then ok
 	else bad "onbstudy $*: $why; stderr: $(head -3 "$tmp/e")"; fi

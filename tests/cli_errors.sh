@@ -41,7 +41,7 @@ refuse() {
 	n=$(wc -l < "$tmp/e")
 	[ -n "$why" ] || [ "$n" -eq 1 ] || why="$n lines on stderr"
 	[ -n "$why" ] || grep -q '^onbstudy: ' "$tmp/e" || why="stderr does not start with 'onbstudy: '"
-	[ -n "$why" ] || [ ! -e "$out" ] || why="left the --out directory behind (holding: $(ls -A "$out" | tr '\n' ' '))"
+	[ -n "$why" ] || [ ! -e "$out" ] || why="left the --out directory behind$( [ -n "$(ls -A "$out")" ] && echo " holding $(ls -A "$out" | tr '\n' ' ')")"
 	[ -n "$why" ] || [ -z "$(ls -A "$tmp/cwd")" ] || why="wrote into the working directory: $(ls -A "$tmp/cwd")"
 	if is_known "$id"; then
 		if [ -n "$why" ]; then

@@ -114,6 +114,7 @@ refuse range-mkdir sweep --exhaustive-range nan:1 --samples 1 --methods duff $S
 refuse range-mkdir sweep --exhaustive-range 0.5 --samples 1 --methods duff $S
 # unwritable or impossible output directories
 R sweep --samples 1 --methods duff --out "$tmp/afile/sub"
+R sweep --samples 1 --methods duff --out "$tmp/afile"
 R sweep --samples 1 --methods duff --out /proc/onbstudy-cli-test/x
 if [ "$(id -u)" -ne 0 ]; then
 	mkdir -p "$tmp/ro"; chmod 555 "$tmp/ro"
@@ -190,6 +191,7 @@ R scene "$tmp/empty.obj" --out "$out"
 R scene "$tmp/badidx.obj" --out "$out"
 R scene "$tmp/short.ply" --out "$out"
 R scene "$tmp/ok.obj" --repeats 1 --out "$tmp/afile/sub"
+R scene "$tmp/ok.obj" --repeats 1 --out "$tmp/afile"
 R scene "$tmp/ok.obj" --repeats 1 --out /proc/onbstudy-cli-test/x
 if [ "$(id -u)" -ne 0 ]; then
 	cp "$tmp/ok.obj" "$tmp/noread.obj"; chmod 000 "$tmp/noread.obj"

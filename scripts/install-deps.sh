@@ -2,7 +2,13 @@
 # Install what onbstudy needs on Debian or Ubuntu.  Does nothing when
 # everything is present; without root it prints the exact command to run.
 set -eu
-PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels"
+# clang + libclang-rt-dev: libFuzzer (-fsanitize=fuzzer) for scripts/fuzz.sh.
+#   Debian 12's clang (clang-14) only *recommends* the runtime libraries, and
+#   we install without recommends, so libclang-rt-dev (-> libclang-rt-14-dev,
+#   which holds libclang_rt.fuzzer-x86_64.a) is named explicitly.
+# valgrind: memcheck of a short sweep and scene run in .ci/run.
+# cppcheck: static analysis of src/lib in .ci/run.
+PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck"
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -23,7 +23,8 @@ int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned lo
 {
 	char *end;
 	unsigned long long v;
-	if (!s || !*s || *s == '-' || *s == '+') {
+	/* a digit first: strtoull would skip blanks and accept " -1" as 2^64-1 */
+	if (!s || !(*s >= '0' && *s <= '9')) {
 		study_error("%s: expected a non-negative integer, got '%s'", opt, s ? s : "");
 		return -1;
 	}
@@ -45,8 +46,8 @@ int parse_int(const char *opt, const char *s, long lo, long hi, long *out)
 {
 	char *end;
 	long v;
-	if (!s || !*s) {
-		study_error("%s: expected an integer, got ''", opt);
+	if (!s || !((*s >= '0' && *s <= '9') || (*s == '-' && s[1] >= '0' && s[1] <= '9'))) {
+		study_error("%s: expected an integer, got '%s'", opt, s ? s : "");
 		return -1;
 	}
 	errno = 0;
@@ -67,13 +68,14 @@ int parse_double(const char *opt, const char *s, double *out)
 {
 	char *end;
 	double v;
-	if (!s || !*s) {
-		study_error("%s: expected a number, got ''", opt);
+	/* no leading blanks (strtod skips them), and nan/inf are refused */
+	if (!s || !*s || *s == ' ' || *s == '\t' || *s == '\n') {
+		study_error("%s: expected a number, got '%s'", opt, s ? s : "");
 		return -1;
 	}
 	errno = 0;
 	v = strtod(s, &end);
-	if (*end || (errno == ERANGE && v != 0.0 && (v == HUGE_VAL || v == -HUGE_VAL))) {
+	if (*end || v != v || v == HUGE_VAL || v == -HUGE_VAL) {
 		study_error("%s: expected a finite number, got '%s'", opt, s);
 		return -1;
 	}

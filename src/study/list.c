@@ -14,8 +14,22 @@ int cmd_list(int argc, char **argv)
 			csv = 1;
 			if (argv[k][8] != '=')
 				k++;
+		} else if (strcmp(argv[k], "--format=table") == 0) {
+			csv = 0;
 		} else if (strcmp(argv[k], "--format") == 0 && k + 1 < argc && strcmp(argv[k + 1], "table") == 0) {
+			csv = 0;
 			k++;
+		} else if (strcmp(argv[k], "--format") == 0 || strncmp(argv[k], "--format=", 9) == 0) {
+			const char *v = argv[k][8] == '=' ? argv[k] + 9 : k + 1 < argc ? argv[k + 1] : NULL;
+			if (v)
+				study_error("list: --format must be table or csv, got '%s'", v);
+			else
+				study_error("list: --format needs a value (table or csv)");
+			return ONB_EXIT_USAGE;
+		} else if (strcmp(argv[k], "--help") == 0 || strcmp(argv[k], "-h") == 0) {
+			printf("usage: onbstudy list [--format table|csv]\n"
+			       "  The methods in the registry: name, handedness, singular directions, source.\n");
+			return 0;
 		} else {
 			study_error("list: unknown argument '%s' (try --format table|csv)", argv[k]);
 			return ONB_EXIT_USAGE;

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "meshio.h"
 
 /* ------------------------------------------------------------------ */
@@ -999,6 +1000,20 @@ int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen
 	f = fopen(path, "rb");
 	if (!f)
 		return fail(&c, "cannot open: %s", strerror(errno));
+	{	/* a directory, or a regular file known to be too large, is refused
+		   before anything is read or allocated */
+		struct stat st;
+		if (fstat(fileno(f), &st) == 0) {
+			if (S_ISDIR(st.st_mode)) {
+				fclose(f);
+				return fail(&c, "is a directory, not an OBJ or PLY file");
+			}
+			if (S_ISREG(st.st_mode) && (uintmax_t)st.st_size > (uintmax_t)MESH_MAX_FILE) {
+				fclose(f);
+				return fail(&c, "file larger than %zu bytes", MESH_MAX_FILE);
+			}
+		}
+	}
 	for (;;) {
 		size_t got;
 		if (len == cap) {

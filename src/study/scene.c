@@ -364,6 +364,13 @@ int cmd_scene(int argc, char **argv)
 		study_error("scene: %s", err);
 		return ONB_EXIT_USAGE;
 	}
+	/* Refuse an unusable output directory before the measurements. */
+	if (!outdir) {
+		study_default_run_dir(rundir, sizeof rundir);
+		outdir = rundir;
+	}
+	if (study_mkdir_p(outdir) != 0)
+		goto out;
 	if (mesh_classify(&mn, fl, 0, &st) != 0) {
 		study_error("scene: out of memory");
 		goto out;
@@ -479,11 +486,7 @@ int cmd_scene(int argc, char **argv)
 	       best[v] >= 0 ? ms[best[v]].name : "none");
 
 	/* CSV */
-	if (!outdir) {
-		study_default_run_dir(rundir, sizeof rundir);
-		outdir = rundir;
-	}
-	if (study_mkdir_p(outdir) != 0 || study_out_open(&o, outdir, "scene.csv") != 0)
+	if (study_out_open(&o, outdir, "scene.csv") != 0)
 		goto out;
 	study_provenance(o.f, "scene", 0, 1);
 	fprintf(o.f, "# file: %s\n# normals: %zu %s; unit %zu (tol %.3g), non-unit %zu, zero %zu, non-finite %zu\n", file, mn.count,

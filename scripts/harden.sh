@@ -1,0 +1,94 @@
+#!/bin/sh
+# The hardening checks of issue 7, each with its own time limit; CI runs
+# this after `make test` (.ci/run).  Every step's tool is installed by
+# scripts/install-deps.sh; a missing tool fails the step loudly.
+#   sh scripts/harden.sh [FUZZ_SECONDS]     (default 120 per harness)
+# Steps, in order (logs in build/harden/, durations in build/harden/steps.tsv):
+#   sanitize   make clean && make test SANITIZE=address,undefined
+#   build      make clean && make (the plain build that valgrind needs)
+#   fuzz       scripts/fuzz.sh FUZZ_SECONDS (both harnesses at once)
+#   valgrind   memcheck of a short sweep and two short scene runs
+#   cppcheck   src/lib, suppressions in scripts/cppcheck-suppressions.txt
+#   robustness scripts/robustness.sh -> results/robustness.md
+# Exits 1 when any step failed (all steps still run, so the table shows
+# every result).
+set -u
+cd "$(dirname "$0")/.."
+fuzz_secs=${1:-120}
+L=build/harden
+steps=""
+failed=""
+tmplog=$(mktemp -d)
+trap 'rm -rf "$tmplog"' EXIT
+
+need() {
+	for t in "$@"; do
+		if ! command -v "$t" >/dev/null 2>&1; then
+			echo "harden: $t is not installed (scripts/install-deps.sh installs it)" >&2
+			return 1
+		fi
+	done
+}
+# step NAME LIMIT_SECONDS COMMAND...: run with a time limit, log, record
+step() {
+	name=$1; limit=$2; shift 2
+	echo "harden: == $name (limit ${limit} s)"
+	t0=$(date +%s)
+	timeout --kill-after=10 "$limit" "$@" > "$tmplog/$name.log" 2>&1 < /dev/null
+	rc=$?
+	t1=$(date +%s)
+	[ $rc -eq 124 ] && echo "harden: $name: TIMED OUT after $limit s" >> "$tmplog/$name.log"
+	steps="$steps$name	$((t1 - t0))	$rc
+"
+	if [ $rc -ne 0 ]; then
+		failed="$failed $name"
+		echo "harden: $name FAILED (exit $rc) in $((t1 - t0)) s; the end of its log:" >&2
+		tail -30 "$tmplog/$name.log" >&2
+	else
+		echo "harden: $name passed in $((t1 - t0)) s"
+	fi
+	return 0
+}
+
+need make cc clang valgrind cppcheck timeout || exit 1
+# .ci/run passes the duration of its plain `make test` for the table
+if [ -n "${ONB_CI_MAKE_TEST_SECONDS:-}" ]; then
+	steps="make test	$ONB_CI_MAKE_TEST_SECONDS	0
+"
+fi
+
+step sanitize 1200 sh -c 'make clean && make test SANITIZE=address,undefined'
+grep -q '^make test: all passed' "$tmplog/sanitize.log" || { case " $failed " in *" sanitize "*) ;; *) failed="$failed sanitize";; esac; }
+# a plain build for valgrind (and for whoever runs ./onbstudy next)
+step build 600 sh -c 'make clean && make'
+mkdir -p "$L"
+mv "$tmplog/sanitize.log" "$tmplog/build.log" "$L/"
+
+step fuzz $((fuzz_secs + 300)) sh scripts/fuzz.sh "$fuzz_secs"
+
+VG="valgrind --tool=memcheck --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite --track-origins=yes"
+# libgomp keeps its thread pool (and the threads' TLS) until exit: valgrind
+# calls that "possibly lost"; only definite leaks count as errors.
+vgout=$(mktemp -d)
+step valgrind 600 sh -c "
+  $VG ./onbstudy sweep --samples 256 --exhaustive-count 256 --grid 4x8 --threads 2 --quiet --out '$vgout/sweep' &&
+  $VG ./onbstudy scene tests/fuzz/corpus/mesh/cube_vn.obj --repeats 1 --out '$vgout/scene1' &&
+  $VG ./onbstudy scene tests/fuzz/corpus/mesh/binbe.ply --precision double --up y --repeats 1 --out '$vgout/scene2' &&
+  test -f '$vgout/sweep/summary.csv' && test -f '$vgout/scene1/scene.csv' && test -f '$vgout/scene2/scene.csv'"
+rm -rf "$vgout"
+
+step cppcheck 300 cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \
+	--suppressions-list=scripts/cppcheck-suppressions.txt --error-exitcode=1 -q -Iinclude src/lib
+
+mv "$tmplog/fuzz.log" "$tmplog/valgrind.log" "$tmplog/cppcheck.log" "$L/"
+printf 'step\tseconds\texit\n%s' "$steps" > "$L/steps.tsv"
+
+step robustness 600 sh scripts/robustness.sh
+mv "$tmplog/robustness.log" "$L/"
+printf 'step\tseconds\texit\n%s' "$steps" > "$L/steps.tsv"
+
+if [ -n "$failed" ]; then
+	echo "harden: FAILED:$failed (logs in $L/)" >&2
+	exit 1
+fi
+echo "harden: all steps passed (logs in $L/, table in results/robustness.md)"

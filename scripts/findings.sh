@@ -93,7 +93,7 @@ generate() {
 			for (i = 1; i <= nmeth; i++) {
 				m = meth[i]
 				if (!((m SUBSEP pp[p], "method") in TRD)) continue
-				out = out "| `" m "` | " pp[p] " | " X(m, pp[p], TRDCOL["b1"]) " | " X(m, pp[p], TRDCOL["bn"]) " | " X(m, pp[p], TRDCOL["ns"]) " | " X(m, pp[p], TRDCOL["rmse"]) " | " X(m, pp[p], TRDCOL["south"]) " | " X(m, pp[p], TRDCOL["thr"]) " | " (TRD[m SUBSEP pp[p], TRDCOL["pareto"]] ~ /^(1|yes|\*)$/ ? "*" : "") " |\n"
+				out = out "| `" m "` | " pp[p] " | " X(m, pp[p], TRDCOL["b1"]) " | " X(m, pp[p], TRDCOL["bn"]) " | " X(m, pp[p], TRDCOL["ns"]) " | " X(m, pp[p], TRDCOL["rmse"]) " | " X(m, pp[p], TRDCOL["south"]) " | " X(m, pp[p], TRDCOL["thr"]) " | " (TRD[m SUBSEP pp[p], TRDCOL["pareto"]] == "1" ? "**yes**" : "") " |\n"
 			}
 		return out
 	}
@@ -113,15 +113,9 @@ generate() {
 			load(xf, TRD, "1 2")
 			ntrd = 1
 			split(hdrs[xf], H, ",")
-			for (i in H) {
-				if (H[i] ~ /^batch_mbps_1t$|^batch_1t|mbases_per_s_1t/) TRDCOL["b1"] = H[i]
-				if (H[i] ~ /^batch_mbps_all$|^batch_all|mbases_per_s_all/) TRDCOL["bn"] = H[i]
-				if (H[i] ~ /ns_per_call/) TRDCOL["ns"] = H[i]
-				if (H[i] ~ /rmse/) TRDCOL["rmse"] = H[i]
-				if (H[i] ~ /south/) TRDCOL["south"] = H[i]
-				if (H[i] ~ /threshold/) TRDCOL["thr"] = H[i]
-				if (H[i] ~ /pareto/) TRDCOL["pareto"] = H[i]
-			}
+			TRDCOL["b1"] = "batch_mbases_1t"; TRDCOL["bn"] = "batch_mbases_all"; TRDCOL["ns"] = "call_ns"
+			TRDCOL["rmse"] = "rmse_uniform"; TRDCOL["south"] = "max_defect_south"
+			TRDCOL["thr"] = "max_defect_threshold"; TRDCOL["pareto"] = "pareto"
 		}
 	}
 	{

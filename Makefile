@@ -72,6 +72,12 @@ $(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h) Makefile $
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -c $< -o $@
 
+# The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
+# libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
+$(B)/study/yardstick.o: src/study/yardstick.c src/study/bench.h include/onb.h Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -c $< -o $@
+
 $(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ))
 	rm -f $@
 	$(AR) rcs $@ $^

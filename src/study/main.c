@@ -13,6 +13,8 @@ static const struct {
 	const char *help;
 } commands[] = {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
+	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },
+	{ "table", cmd_table, "the speed-accuracy trade table (bench.csv joined with a sweep's summary.csv)" },
 };
 
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

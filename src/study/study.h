@@ -23,6 +23,8 @@
 
 /* Subcommands: each takes the arguments after its own name. */
 int cmd_list(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
+int cmd_table(int argc, char **argv);
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */

@@ -51,7 +51,8 @@ typedef struct {
    repetition between two barriers.  Returns 0, or -1 on a bad cfg. */
 int bench_run(bench_kernel k, void *ctx, size_t n, const bench_cfg *cfg, bench_result *r);
 /* The number of passes per repetition for which one repetition takes at
-   least target_s (one timed pass first; at least 1, at most max_inner). */
+   least target_s (grown from 1 by timed trial repetitions; at most
+   max_inner). */
 size_t bench_calibrate(bench_kernel k, void *ctx, size_t n, int threads, double target_s, size_t max_inner);
 /* Median and minimum of v[0..n) (v is reordered). */
 double bench_median(double *v, size_t n);

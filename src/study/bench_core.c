@@ -144,21 +144,33 @@ int bench_run(bench_kernel k, void *ctx, size_t n, const bench_cfg *cfg, bench_r
 
 size_t bench_calibrate(bench_kernel k, void *ctx, size_t n, int threads, double target_s, size_t max_inner)
 {
+	/* Grow the passes per repetition until one timed repetition lasts
+	   target_s, barriers and thread wake-ups included: on a busy machine
+	   a slow first pass must not leave repetitions so short that the
+	   wake-up of a descheduled thread dominates them. */
 	bench_cfg cfg;
 	bench_result r;
-	double want;
+	size_t inner = 1;
+	int tries;
 	cfg.threads = threads;
 	cfg.warmup = 1;
 	cfg.reps = 1;
-	cfg.inner = 1;
-	if (bench_run(k, ctx, n, &cfg, &r) != 0 || !(r.min_s > 0.0))
-		return 1;
-	want = ceil(target_s / r.min_s);
-	if (want < 1.0)
-		want = 1.0;
-	if (want > (double)max_inner)
-		want = (double)max_inner;
-	return (size_t)want;
+	for (tries = 0; tries < 40; tries++) {
+		double grow;
+		cfg.inner = inner;
+		if (bench_run(k, ctx, n, &cfg, &r) != 0)
+			return 1;
+		cfg.warmup = 0;
+		if (r.min_s * (double)inner >= target_s || inner >= max_inner)
+			break;
+		grow = r.min_s > 0.0 ? ceil(1.2 * target_s / (r.min_s * (double)inner)) : 100.0;
+		if (grow < 2.0)
+			grow = 2.0;
+		if (grow > 100.0)
+			grow = 100.0;
+		inner = (double)inner * grow > (double)max_inner ? max_inner : (size_t)((double)inner * grow);
+	}
+	return inner;
 }
 
 /* ---- SoA buffers ---------------------------------------------------- */

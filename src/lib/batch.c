@@ -16,6 +16,8 @@
  * whose table is the CPU vendor's (Intel and AMD differ in the last bits),
  * but not the clone's, since every clone issues the same SSE rsqrtps
  * (VEX-encoded under AVX) and never the AVX-512 rsqrt14.
+ * Two float kernels (naive, hughes_moeller) dispatch by hand instead, to
+ * run 256-bit code on AVX-512 CPUs: see ONB__BATCH_F_256 below.
  */
 #include "onb.h"
 

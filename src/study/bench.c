@@ -457,6 +457,19 @@ done:
 	return rc;
 }
 
+/* The first three fields of /proc/loadavg, or "unknown". */
+static void loadavg(char *buf, size_t n)
+{
+	FILE *f = fopen("/proc/loadavg", "r");
+	double a = 0, b = 0, c = 0;
+	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
+		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
+	else
+		snprintf(buf, n, "unknown");
+	if (f)
+		fclose(f);
+}
+
 static void put_num(FILE *f, double v)
 {
 	if (isnan(v))
@@ -549,6 +562,7 @@ int cmd_bench(int argc, char **argv)
 	size_t n_l2, n_stream, i;
 	int rc, tsc, p;
 	double ghz, t0 = bench_now();
+	char load0[64], load1[64];
 
 	rc = parse_opts(argc, argv, &o);
 	if (rc)
@@ -575,6 +589,7 @@ int cmd_bench(int argc, char **argv)
 	while ((double)(n_stream * 9 * sizeof(float)) < o.stream_mib * 1048576.0)
 		n_stream *= 2;
 
+	loadavg(load0, sizeof load0);
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
 	for (p = 0; p < 2; p++)
@@ -584,6 +599,7 @@ int cmd_bench(int argc, char **argv)
 				return 1;
 			}
 
+	loadavg(load1, sizeof load1);
 	if (study_out_open(&f, out, "bench.csv") != 0) {
 		free(rs.v);
 		return 1;
@@ -592,6 +608,8 @@ int cmd_bench(int argc, char **argv)
 	fprintf(f.f, "# timer: clock_gettime(CLOCK_MONOTONIC) between OpenMP barriers; %s\n",
 	        tsc ? "cycles from the TSC (constant_tsc nonstop_tsc): ticks at the nominal frequency, not core cycles" :
 	              "no constant TSC: cycle columns are nan");
+	fprintf(f.f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
+	             "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
 	if (tsc)
 		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
 	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
@@ -623,9 +641,9 @@ int cmd_bench(int argc, char **argv)
 		for (i = 0; i < rs.n; i++)
 			write_row(stdout, &rs.v[i], tsc);
 	} else {
-		printf("# onbstudy bench: batch isa %s, yardstick native-%s, call loops %s, %d threads; TSC %s\n",
+		printf("# onbstudy bench: batch isa %s, yardstick native-%s, call loops %s, %d threads; TSC %s; load %s -> %s\n",
 		       onb_batch_isa(), bench_yardstick_isa(), bench_calls_isa(), o.threads,
-		       tsc ? "constant" : "not constant (no cycles)");
+		       tsc ? "constant" : "not constant (no cycles)", load0, load1);
 		print_table(&o, &rs);
 	}
 	fprintf(stderr, "onbstudy: wrote %s/bench.csv (%zu rows, %.1f s)\n", out, rs.n, bench_now() - t0);

@@ -116,7 +116,7 @@ int main(void)
 	snprintf(s, sizeof s, "%s/summary.csv", dir);
 	snprintf(t, sizeof t, "%s/tradeoff.csv", dir);
 
-	n = tradeoff_load(b, s, &rows);
+	n = tradeoff_load(b, s, 0.05, &rows);
 	CHECK(n == 8, "rows: %d, want 8 (6 float, 2 double; copy's roofline row is not a method row)", n);
 	if (n > 0) {
 		r = get(rows, n, "fast", 0);
@@ -154,11 +154,36 @@ int main(void)
 		x[0].has_speed = x[0].has_accuracy = x[1].has_speed = x[1].has_accuracy = 1;
 		x[0].batch1 = 10; x[0].max_worst = NAN;
 		x[1].batch1 = 5; x[1].max_worst = 1.0;
-		tradeoff_pareto(x, 2);
+		tradeoff_pareto(x, 2, 0.05);
 		CHECK(x[0].pareto == 1 && x[1].pareto == 1, "NaN error: both on the front");
 		x[1].batch1 = 10;
-		tradeoff_pareto(x, 2);
+		tradeoff_pareto(x, 2, 0.05);
 		CHECK(x[0].pareto == 0 && x[1].pareto == 1, "as fast and finite beats NaN");
+	}
+
+	/* the speed tolerance: speeds within 5% are equal, beyond it faster */
+	{
+		tradeoff_row x[3];
+		int i;
+		memset(x, 0, sizeof x);
+		for (i = 0; i < 3; i++) {
+			snprintf(x[i].method, sizeof x[i].method, "m%d", i);
+			x[i].has_speed = x[i].has_accuracy = 1;
+		}
+		x[0].batch1 = 2000; x[0].max_worst = 1e-6;
+		x[1].batch1 = 1950; x[1].max_worst = 1e-7;
+		x[2].batch1 = 100;  x[2].max_worst = 1e-6;
+		tradeoff_pareto(x, 3, 0.05);
+		CHECK(x[0].pareto == 0 && x[1].pareto == 1 && x[2].pareto == 0, "2.5%% slower but more accurate wins at tol 5%%");
+		tradeoff_pareto(x, 3, 0.0);
+		CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 0, "tol 0: the faster one stays on the front");
+		x[1].max_worst = 1e-6;
+		x[2].batch1 = 2040;
+		tradeoff_pareto(x, 3, 0.05);
+		CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 1, "equal errors, speeds within 5%%: all ties");
+		x[2].batch1 = 2101;
+		tradeoff_pareto(x, 3, 0.05);
+		CHECK(x[0].pareto == 0 && x[1].pareto == 0 && x[2].pareto == 1, "equal errors, more than 5%% faster wins");
 	}
 
 	/* the command: tradeoff.csv written, one line per row, the pareto column */

@@ -148,10 +148,11 @@ typedef struct {
 
 /* Reads bench.csv and summary.csv (lines starting with '#' skipped,
    columns found by header name) and joins them into rows (one per method
-   and precision found in bench.csv, in its order).  Returns the number of
-   rows, or -1 with a message.  *rows is malloc'ed. */
-int  tradeoff_load(const char *bench_csv, const char *summary_csv, tradeoff_row **rows);
-/* Marks the Pareto front per precision (see table.c). */
-void tradeoff_pareto(tradeoff_row *rows, int n);
+   and precision found in bench.csv, in its order) and marks the front.
+   Returns the number of rows, or -1 with a message.  *rows is malloc'ed. */
+int  tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows);
+/* Marks the Pareto front per precision, speeds within the fraction tol
+   counting as equal (see table.c). */
+void tradeoff_pareto(tradeoff_row *rows, int n, double tol);
 
 #endif

@@ -9,7 +9,11 @@
  *
  * Pareto front, per precision: a method is on it when no other method is
  * at least as fast (batch, 1 thread, L2) and at least as accurate, and
- * strictly better in one of the two.  Accuracy here is the worst
+ * strictly better in one of the two.  Speeds within a tolerance (default
+ * 5%, --speed-tol) count as equal: at the L2 size the cheap methods all
+ * run at the copy roofline, and their order there is timing noise.  So B
+ * beats A when speed_B >= (1 - tol) speed_A and err_B <= err_A, and
+ * err_B < err_A or speed_B > (1 + tol) speed_A.  Accuracy here is the worst
  * max_defect over uniform, south and threshold together; a method with
  * any non-finite output on those inputs counts as infinitely inaccurate.
  * Methods without both speed and accuracy are left off the front ("na").
@@ -130,7 +134,7 @@ static int parse_prec(const char *s)
 	return strcmp(s, "double") == 0 ? 1 : strcmp(s, "float") == 0 ? 0 : -1;
 }
 
-int tradeoff_load(const char *bench_csv, const char *summary_csv, tradeoff_row **rows_out)
+int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows_out)
 {
 	csv_file c;
 	tradeoff_row *rows = NULL;
@@ -259,7 +263,7 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, tradeoff_row *
 		free(seen);
 	}
 	fclose(c.f);
-	tradeoff_pareto(rows, n);
+	tradeoff_pareto(rows, n, tol);
 	*rows_out = rows;
 	return n;
 fail:
@@ -274,7 +278,7 @@ static double err_of(const tradeoff_row *r)
 	return r->nonfinite > 0 || isnan(r->max_worst) ? INFINITY : r->max_worst;
 }
 
-void tradeoff_pareto(tradeoff_row *rows, int n)
+void tradeoff_pareto(tradeoff_row *rows, int n, double tol)
 {
 	int i, j;
 	for (i = 0; i < n; i++) {
@@ -289,7 +293,7 @@ void tradeoff_pareto(tradeoff_row *rows, int n)
 				continue;
 			sj = rows[j].batch1;
 			ej = err_of(&rows[j]);
-			if (sj >= si && ej <= ei && (sj > si || ej < ei)) {
+			if (sj >= (1.0 - tol) * si && ej <= ei && (ej < ei || sj > (1.0 + tol) * si)) {
 				rows[i].pareto = 0;
 				break;
 			}
@@ -342,6 +346,7 @@ int cmd_table(int argc, char **argv)
 	char bbuf[4096], sbuf[4096], obuf[4096];
 	tradeoff_row *rows;
 	int n, i, k, csv = 0, p;
+	double tol = 0.05;
 	study_out f;
 	for (k = 0; k < argc; k++) {
 		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
@@ -350,10 +355,12 @@ int cmd_table(int argc, char **argv)
 			       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
 			       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
 			       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"
+			       "  --speed-tol T    speeds within this fraction count as equal on the Pareto front (default 0.05)\n"
 			       "  --format F       table (default) or csv on stdout\n");
 			return 0;
 		}
-		if (strcmp(a, "--bench") && strcmp(a, "--summary") && strcmp(a, "--out") && strcmp(a, "--format")) {
+		if (strcmp(a, "--bench") && strcmp(a, "--summary") && strcmp(a, "--out") && strcmp(a, "--format") &&
+		    strcmp(a, "--speed-tol")) {
 			study_error("table: unknown argument '%s' (try 'onbstudy table --help')", a);
 			return ONB_EXIT_USAGE;
 		}
@@ -368,7 +375,14 @@ int cmd_table(int argc, char **argv)
 			summary = v;
 		else if (strcmp(a, "--out") == 0)
 			out = v;
-		else if (strcmp(v, "csv") == 0)
+		else if (strcmp(a, "--speed-tol") == 0) {
+			if (parse_double("table: --speed-tol", v, &tol) != 0)
+				return ONB_EXIT_USAGE;
+			if (!(tol >= 0.0 && tol < 1.0)) {
+				study_error("table: --speed-tol: %s is out of range [0, 1)", v);
+				return ONB_EXIT_USAGE;
+			}
+		} else if (strcmp(v, "csv") == 0)
 			csv = 1;
 		else if (strcmp(v, "table") == 0)
 			csv = 0;
@@ -395,7 +409,7 @@ int cmd_table(int argc, char **argv)
 		} else
 			out = ".";
 	}
-	n = tradeoff_load(bench, summary, &rows);
+	n = tradeoff_load(bench, summary, tol, &rows);
 	if (n < 0)
 		return ONB_EXIT_USAGE;
 	if (n == 0) {
@@ -411,9 +425,9 @@ int cmd_table(int argc, char **argv)
 	fprintf(f.f, "# bench: %s\n# summary: %s\n", bench, summary);
 	fprintf(f.f, "# speed: batch at the L2-resident size (1 thread, all threads), call_ns = inline call_throughput; "
 	             "accuracy: rmse on uniform, max_defect on south and threshold\n");
-	fprintf(f.f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t) and at least as "
-	             "accurate (max_defect_worst = max over uniform, south, threshold; any nonfinite output = infinite) and "
-	             "better in one; na without speed or accuracy\n");
+	fprintf(f.f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t, speeds within "
+	             "%g%% counted equal) and at least as accurate (max_defect_worst = max over uniform, south, threshold; "
+	             "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * tol);
 	fprintf(f.f, "%s\n", TRADEOFF_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (i = 0; i < n; i++) {
@@ -445,7 +459,8 @@ int cmd_table(int argc, char **argv)
 			fclose(in);
 		}
 	} else {
-		printf("# speed from %s, accuracy from %s; * = Pareto front of its precision\n", bench, summary);
+		printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
+		       bench, summary, 100.0 * tol);
 		printf("%-24s |%44s |%44s\n", "", "float", "double");
 		printf("%-24s |", "method");
 		for (p = 0; p < 2; p++)

@@ -613,7 +613,8 @@ int cmd_bench(int argc, char **argv)
 	if (tsc)
 		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
 	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
-	             "(-O3 -march=native); call loops %s (the study's flags)\n",
+	             "(src/study/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
+	             "at full vector width); call loops %s (the flags above)\n",
 	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
 	fprintf(f.f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "
 	             "executable): zmm, ymm, xmm, scalar, or unknown\n");

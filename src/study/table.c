@@ -351,7 +351,7 @@ int cmd_table(int argc, char **argv)
 	for (k = 0; k < argc; k++) {
 		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
 		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-			printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--format table|csv]\n"
+			printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--speed-tol T] [--format table|csv]\n"
 			       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
 			       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
 			       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"

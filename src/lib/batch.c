@@ -106,9 +106,11 @@ static void onb__rsqrt_blockf(size_t m, const float *x, float *y)
 /* naive and hughes_moeller in float with the libm normalization,
    (float)(1.0/sqrt((double)x)), spend their time in double sqrt and
    division on converted lanes.  On AVX-512 CPUs these run faster with
-   256-bit vectors than with 512-bit ones (onbstudy bench measured about
-   10% on the project's machine, where the 512-bit clone fell below 0.9 of
-   the -march=native yardstick), and target_clones cannot carry
+   256-bit vectors than with 512-bit ones: on the project's machine
+   (onbstudy bench, 4 interleaved runs) the 512-bit clone ran at 0.90-0.93
+   of the -march=native yardstick, this code at 0.98-1.02, about 8% faster.
+   In double, and for the other methods, 512 bits win or tie (stark and the
+   _rsqrt variants lose up to 40% at 256).  target_clones cannot carry
    -mprefer-vector-width, so these two dispatch by hand on the same CPU
    tests as the clones.  Same loop, same operations: same bits. */
 #if ONB__HAVE_CLONES

@@ -2,7 +2,7 @@
 # Install what onbstudy needs on Debian or Ubuntu.  Does nothing when
 # everything is present; without root it prints the exact command to run.
 set -eu
-PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config"
+PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels"
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

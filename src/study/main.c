@@ -13,6 +13,11 @@ static const struct {
 	const char *help;
 } commands[] = {
 	{ "list", cmd_list, "the methods in the registry: source, handedness, singular set" },
+	{ "sweep", cmd_sweep, "MPFR-referenced error of every method over every input distribution" },
+	{ "eval", cmd_eval, "one input: every method's outputs (hex) and every metric" },
+	{ "threshold", cmd_threshold, "Nelson Max's analysis of Frisvad's threshold t near -1" },
+	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
+	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
 	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },
 	{ "table", cmd_table, "the speed-accuracy trade table (bench.csv joined with a sweep's summary.csv)" },
 };

@@ -23,6 +23,14 @@
 
 /* Subcommands: each takes the arguments after its own name. */
 int cmd_list(int argc, char **argv);
+int cmd_sweep(int argc, char **argv);
+int cmd_merge(int argc, char **argv);
+int cmd_eval(int argc, char **argv);
+int cmd_threshold(int argc, char **argv);
+/* threshold.c: merge support for threshold shards */
+int threshold_is_state(const char *path);
+int threshold_merge(int nfiles, char **files, const char *out, int threads);
+int cmd_scene(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_table(int argc, char **argv);
 

@@ -1,0 +1,146 @@
+#!/bin/sh
+# plots.sh [RUNDIR] - every chart of a run (default results/latest), as
+# PNG (pngcairo) and SVG beside its CSV files:
+#   error_vs_nz_P     the per-input defect against n.z, max and RMS per bin
+#   south_pole_P      the same near n.z = -1, log-log in 1 + n.z
+#   maps_P            error maps over the sphere (equal-area), one panel per method
+#   continuity_P      the largest jump of b1 between neighbouring grid cells
+#   nonunit_P         error against | |n| - 1 | of non-unit input
+#   threshold_P       Max's threshold analysis (when threshold.csv is there)
+#   tradeoff_P        speed against accuracy (when tradeoff.csv is there)
+# for P in float and double.  The gnuplot scripts are scripts/*.gp.
+set -eu
+RUN=${1:-results/latest}
+HERE=$(cd "$(dirname "$0")" && pwd)
+if ! command -v gnuplot >/dev/null 2>&1; then
+	echo "plots: gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox)" >&2
+	exit 2
+fi
+if [ ! -f "$RUN/summary.csv" ] || [ ! -f "$RUN/by_nz.csv" ]; then
+	echo "plots: $RUN/summary.csv or by_nz.csv not found (run ./onbstudy sweep first)" >&2
+	exit 2
+fi
+W=$(mktemp -d)
+trap 'rm -rf "$W"' EXIT
+LOG="$W/gnuplot.log"
+: > "$LOG"
+made=0
+
+gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
+	script=$1; shift
+	gnuplot -e "$*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
+	made=$((made + 1))
+}
+
+# Methods in the run's order, their colours and dash types.
+methods=$(awk -F, '!/^#/ && NR > 1 && $1 != "method" && !seen[$1]++ { print $1 }' "$RUN/summary.csv")
+colour() {
+	base=${1%+fma}
+	c=$(awk -v m="$base" '$1 == m { print $2 }' "$HERE/colors.txt")
+	echo "${c:-#000000}"
+}
+dash() { case $1 in *+fma) echo 2 ;; *) echo 1 ;; esac; }
+samples() { # samples METHOD PREC DIST
+	awk -F, -v m="$1" -v p="$2" -v d="$3" '!/^#/ && $1 == m && $2 == p && $3 == d { print $4; exit }' "$RUN/summary.csv"
+}
+
+for P in float double; do
+	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
+	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; else FLOOR=1e-20; EPS=2.22e-16; fi
+	CEIL=10
+	first=$(echo "$methods" | head -1)
+
+	# 1. error against n.z (uniform), max and RMS
+	# 2. near the south pole, max over south, exhaustive and uniform
+	# 6. against | |n| - 1 | (nonunit)
+	files1=""; files2=""; files6=""; names=""; colors=""; dashes=""
+	for m in $methods; do
+		f1="$W/nz_${P}_$m.dat"; f2="$W/sp_${P}_$m.dat"; f6="$W/nu_${P}_$m.dat"
+		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
+			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
+			!/^#/ && $1 == m && $2 == p && $3 == "uniform" && $4 == "nz" { print ($5 + $6) / 2, v($9), v($8) }' "$RUN/by_nz.csv" > "$f1"
+		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
+			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
+			!/^#/ && $1 == m && $2 == p && ($3 == "south" || $3 == "exhaustive" || $3 == "uniform") && $4 == "log10_1pnz" {
+				k = $5; x = v($9); if (!(k in mx) || x > mx[k]) mx[k] = x; c[k] = ($5 + $6) / 2 }
+			END { for (k in mx) print 10 ^ c[k], mx[k] }' "$RUN/by_nz.csv" | sort -g > "$f2"
+		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
+			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
+			!/^#/ && $1 == m && $2 == p && $3 == "nonunit" && $4 == "log10_absnorm" { print 10 ^ (($5 + $6) / 2), v($9), v($8) }' "$RUN/by_nz.csv" > "$f6"
+		files1="$files1 $f1"; files2="$files2 $f2"; files6="$files6 $f6"
+		names="$names $m"; colors="$colors $(colour "$m")"; dashes="$dashes $(dash "$m")"
+	done
+	common="files='$files1'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL"
+	n=$(samples "$first" "$P" uniform)
+	if [ -n "$n" ]; then
+		gp lines.gp "$common; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='largest orthonormality defect in the bin (unitless)'; ttl='$P: max defect against n.z, uniform, $n inputs per method'"
+		gp lines.gp "$common; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='RMS orthonormality defect in the bin (unitless)'; ttl='$P: RMS defect against n.z, uniform, $n inputs per method'"
+	fi
+	n=$(samples "$first" "$P" south)
+	gp lines.gp "files='$files2'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$EPS/2; xmax=1; xl='1 + n.z (distance from the south pole, unitless)'; yl='largest orthonormality defect (unitless)'; ttl='$P: near n.z = -1, south (${n:-0}), exhaustive and uniform inputs'"
+	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
+		n=$(samples "$first" "$P" nonunit)
+		gp lines.gp "files='$files6'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=1e-9; xmax=0.1; xl='| |n| - 1 | of the input (unitless)'; yl='largest defect against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method'"
+	fi
+
+	# 3. maps and continuity, from grid.csv
+	if [ -f "$RUN/grid.csv" ]; then
+		mfiles=""; mnames=""; k=0
+		for m in $methods; do
+			f="$W/map_${P}_$m.dat"
+			awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
+				function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
+				!/^#/ && $1 == m && $2 == p { if ($3 != last && NR > 1 && started) print ""; last = $3; started = 1
+					print $6 * 57.29577951308232, $5, log(v($7)) / log(10) }' "$RUN/grid.csv" > "$f"
+			[ -s "$f" ] || continue
+			mfiles="$mfiles $f"; mnames="$mnames $m"; k=$((k + 1))
+		done
+		if [ $k -gt 0 ]; then
+			ncols=5; [ $k -lt 5 ] && ncols=$k
+			nrows=$(( (k + ncols - 1) / ncols ))
+			cells=$(awk -F, '!/^#/ && $1 != "method" { n++ } END { print n }' "$RUN/grid.csv")
+			lo=$(awk -v f=$FLOOR 'BEGIN { print log(f) / log(10) }')
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: log10 of the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'"
+		fi
+		awk -F, -v p="$P" -v H="$HERE/colors.txt" '
+			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }
+			function hex(s,   i, v, c) { v = 0; s = tolower(substr(s, 2)); for (i = 1; i <= 6; i++) { c = index("0123456789abcdef", substr(s, i, 1)) - 1; v = v * 16 + c } return v }
+			!/^#/ && $2 == p && $3 == "grid" && $18 != "nan" { b = $1; sub(/\+fma$/, "", b); print $1, $18, hex(col[b] ? col[b] : "#000000") }' \
+			"$RUN/summary.csv" > "$W/bars_$P.dat"
+		if [ -s "$W/bars_$P.dat" ]; then
+			rows=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed 's/.*grid: \([0-9]*\)x\([0-9]*\).*/\1 \2/')
+			cell=$(echo "$rows" | awk '{ r = $1; c = $2; dz = 2 / r; dphi = 6.283185307 / c; print (dz > dphi ? dz : dphi) }')
+			gp bars.gp "file='$W/bars_$P.dat'; cell=${cell:-0.1}; yl='largest |b1 - b1''| between neighbouring cells'; out='$RUN/continuity_$P'; ttl='$P: continuity of the frame field on the ${rows% *}x${rows#* } equal-area grid'"
+		fi
+	fi
+
+	# 5. threshold
+	if [ -f "$RUN/threshold.csv" ] && grep -q "^$P," "$RUN/threshold.csv"; then
+		awk -F, -v p="$P" '!/^#/ && $1 == p { print $4, $5, $6, $7 }' "$RUN/threshold.csv" > "$W/th_$P.dat"
+		awk -v p="$P" -v F="$RUN/threshold.csv" 'BEGIN { sect = ""
+			while ((getline l < F) > 0) {
+				if (l ~ /^[a-z]/) { split(l, a, ","); sect = a[1]; continue }
+				if (sect != p) continue
+				if (l ~ /^# minimax both/ || l ~ /^# published/) {
+					match(l, /\(([-0-9.e]+)\)/); t = substr(l, RSTART + 1, RLENGTH - 2) + 0; x = 1 + t
+					lab = (l ~ /minimax/) ? "minimax (both)" : (l ~ /Frisvad/ ? "Frisvad 2012" : "Max 2017")
+					n++; printf "set arrow %d from %g, graph 0 to %g, graph 1 nohead dt %d lc rgb \"%s\"\n", n, x, x, (l ~ /minimax/) ? 1 : 3, (l ~ /minimax/) ? "#2ca02c" : "#555555"
+					printf "set label %d \"%s\" at %g, graph %g rotate by 90 right font \",8\" offset %s,0\n", n, lab, x, (l ~ /minimax/) ? 0.97 : (l ~ /Frisvad/ ? 0.97 : 0.55), (l ~ /minimax/) ? "-0.6" : "1.2"
+				}
+			} }' > "$W/marks_$P.gp"
+		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") values of n.z near -1, $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths each'"
+	fi
+
+	# 4. speed against accuracy
+	if [ -f "$RUN/tradeoff.csv" ] && [ -f "$HERE/tradeoff.gp" ]; then
+		sh "$HERE/tradeoff-data.sh" "$RUN/tradeoff.csv" "$P" "$W" "$HERE/colors.txt" && \
+		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR"
+	fi
+done
+
+if grep -qi "warning" "$LOG"; then
+	cat "$LOG" >&2
+	echo "plots: gnuplot warned (above)" >&2
+	exit 1
+fi
+echo "plots: $made charts (PNG and SVG) in $RUN"

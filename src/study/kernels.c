@@ -1,0 +1,80 @@
+/*
+ * kernels.c - selecting the kernels a study runs (see kernels.h).
+ */
+#include <stdio.h>
+#include <string.h>
+#include "kernels.h"
+#include "study.h"
+
+#define KERNELS_BRANCH_NAME kernels_branch
+#include "branch.inc"
+
+static onb_vec3  plain_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
+static onb_vec3f plain_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
+
+static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int *k)
+{
+	study_kernel *s;
+	const onb_method *m = onb_find(name);
+	if (!m && strcmp(name, "frisvad_rotate") != 0) {
+		study_error("unknown method '%s' (see 'onbstudy list'; frisvad_rotate is also accepted)", name);
+		return -1;
+	}
+	if (*k >= cap) {
+		study_error("too many methods (at most %d)", cap);
+		return -1;
+	}
+	s = &out[(*k)++];
+	memset(s, 0, sizeof *s);
+	snprintf(s->name, sizeof s->name, "%s%s", name, fma ? "+fma" : "");
+	s->m = m;
+	s->fma = fma;
+	if (fma) {
+		if (fma_lookup(name, &s->basis, &s->basisf, &s->rot, &s->rotf) != 0) {
+			study_error("no FMA copy of '%s'", name);
+			return -1;
+		}
+		s->branch = fma_branch;
+	} else {
+		if (m) {
+			s->basis = m->basis;
+			s->basisf = m->basisf;
+		} else {
+			s->rot = plain_rot;
+			s->rotf = plain_rotf;
+		}
+		s->branch = kernels_branch;
+	}
+	return 0;
+}
+
+int kernels_select(const char *names, int fma, study_kernel *out, int cap)
+{
+	int k = 0, pass;
+	for (pass = 0; pass < (fma ? 2 : 1); pass++) {
+		if (!names || !strcmp(names, "all")) {
+			size_t i, n;
+			const onb_method *ms = onb_methods(&n);
+			for (i = 0; i < n; i++)
+				if (add_kernel(ms[i].name, pass, out, cap, &k) != 0)
+					return -1;
+			if (add_kernel("frisvad_rotate", pass, out, cap, &k) != 0)
+				return -1;
+		} else {
+			char buf[2048], *tok, *save = NULL;
+			if (strlen(names) >= sizeof buf) {
+				study_error("--methods list too long");
+				return -1;
+			}
+			strcpy(buf, names);
+			for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save))
+				if (add_kernel(tok, pass, out, cap, &k) != 0)
+					return -1;
+			if (k == 0) {
+				study_error("--methods: empty list");
+				return -1;
+			}
+		}
+	}
+	return k;
+}

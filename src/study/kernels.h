@@ -1,0 +1,45 @@
+/*
+ * kernels.h - what the study evaluates: every registry method as built
+ * with the library's flags, optionally a second copy compiled with FMA
+ * contraction (--fma), and Frisvad's Equation 3 (frisvad_rotate), which
+ * rotates a direction instead of returning a basis.
+ */
+#ifndef ONB_KERNELS_H
+#define ONB_KERNELS_H
+
+#include "onb.h"
+
+enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
+
+typedef onb_vec3  (*rotate_fn) (onb_vec3  n, double x, double y, double z);
+typedef onb_vec3f (*rotatef_fn)(onb_vec3f n, float x, float y, float z);
+
+typedef struct study_kernel {
+	char name[64];          /* registry name, "+fma" appended for FMA copies */
+	const onb_method *m;    /* registry entry; NULL for frisvad_rotate       */
+	int fma;                /* compiled with -mfma -ffp-contract=fast        */
+	onb_basis_fn  basis;    /* NULL for frisvad_rotate                       */
+	onb_basisf_fn basisf;
+	rotate_fn  rot;         /* frisvad_rotate only                           */
+	rotatef_fn rotf;
+	/* The branch the kernel takes on n (see reference.c for the ids).  For
+	   the FMA copies it is evaluated in the FMA translation unit, since
+	   rtow's branch depends on rounded intermediates. */
+	int (*branch)(const onb_method *m, int prec, const double n[3]);
+} study_kernel;
+
+/* Fill out[] (capacity cap) with the kernels named in the comma-separated
+   list `names` (NULL or "all": every registry method and frisvad_rotate),
+   plus FMA copies when fma != 0.  Returns the count, or -1 after a
+   message naming the unknown method. */
+int kernels_select(const char *names, int fma, study_kernel *out, int cap);
+
+/* Branch ids, plain arithmetic. */
+int kernels_branch(const onb_method *m, int prec, const double n[3]);
+
+/* fma_kernels.c: 1 when the CPU can run the FMA copies. */
+int fma_available(void);
+int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rotate_fn *rot, rotatef_fn *rotf);
+int fma_branch(const onb_method *m, int prec, const double n[3]);
+
+#endif

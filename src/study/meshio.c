@@ -1,0 +1,1107 @@
+/*
+ * meshio.c - OBJ and PLY normal readers.  See meshio.h for what counts as
+ * a normal.  Parsing is bounded by the buffer length everywhere (no NUL
+ * termination is assumed), every count is checked against the bytes that
+ * remain before anything is allocated, and every allocation size is
+ * checked for overflow.
+ */
+#include <errno.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "meshio.h"
+
+/* ------------------------------------------------------------------ */
+/* errors and growable arrays                                          */
+/* ------------------------------------------------------------------ */
+
+typedef struct {
+	char *err;
+	size_t errlen;
+	const char *name;
+} mctx;
+
+static int fail(mctx *c, const char *fmt, ...)
+#if defined(__GNUC__)
+	__attribute__((format(printf, 2, 3)))
+#endif
+	;
+static int fail(mctx *c, const char *fmt, ...)
+{
+	va_list ap;
+	int w;
+	if (!c->err || c->errlen == 0)
+		return -1;
+	w = snprintf(c->err, c->errlen, "%s: ", c->name ? c->name : "(buffer)");
+	if (w < 0 || (size_t)w >= c->errlen)
+		w = 0;
+	va_start(ap, fmt);
+	vsnprintf(c->err + w, c->errlen - (size_t)w, fmt, ap);
+	va_end(ap);
+	return -1;
+}
+
+typedef struct {
+	void *p;
+	size_t n, cap, esz;
+} gvec;
+
+static void gvec_init(gvec *v, size_t esz) { v->p = NULL; v->n = v->cap = 0; v->esz = esz; }
+static void gvec_free(gvec *v) { free(v->p); v->p = NULL; v->n = v->cap = 0; }
+
+/* Room for one more element; -1 when past MESH_MAX_ITEMS or out of memory. */
+static int gvec_grow(gvec *v)
+{
+	size_t nc;
+	void *q;
+	if (v->n < v->cap)
+		return 0;
+	nc = v->cap ? v->cap * 2 : 64;
+	if (nc > MESH_MAX_ITEMS)
+		nc = (size_t)MESH_MAX_ITEMS;
+	if (v->n >= nc || nc > SIZE_MAX / v->esz)
+		return -1;
+	q = realloc(v->p, nc * v->esz);
+	if (!q)
+		return -1;
+	v->p = q;
+	v->cap = nc;
+	return 0;
+}
+static int gvec_push(gvec *v, const void *e)
+{
+	if (gvec_grow(v) != 0)
+		return -1;
+	memcpy((char *)v->p + v->n * v->esz, e, v->esz);
+	v->n++;
+	return 0;
+}
+
+/* calloc with an overflow-checked product. */
+static void *xcalloc(size_t n, size_t sz)
+{
+	if (n == 0)
+		n = 1;
+	if (sz && n > SIZE_MAX / sz)
+		return NULL;
+	return calloc(n, sz);
+}
+
+void mesh_free(mesh_normals *m)
+{
+	if (!m)
+		return;
+	free(m->x); free(m->y); free(m->z); free(m->where); free(m->index);
+	memset(m, 0, sizeof *m);
+}
+
+static int alloc_normals(mesh_normals *m, size_t n)
+{
+	m->x = xcalloc(n, sizeof *m->x);
+	m->y = xcalloc(n, sizeof *m->y);
+	m->z = xcalloc(n, sizeof *m->z);
+	m->where = xcalloc(n, sizeof *m->where);
+	m->index = xcalloc(n, sizeof *m->index);
+	if (!m->x || !m->y || !m->z || !m->where || !m->index) {
+		mesh_free(m);
+		return -1;
+	}
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* tokens and numbers                                                  */
+/* ------------------------------------------------------------------ */
+
+/* Callers bound OBJ and header lines before tokenizing, so a newline only
+   separates tokens inside an ascii PLY body. */
+static int is_space(unsigned char ch) { return ch == ' ' || ch == '\t' || ch == '\v' || ch == '\f' || ch == '\r' || ch == '\n'; }
+
+/* Next token in [*p, end), whitespace separated. */
+static int next_tok(const unsigned char **p, const unsigned char *end, const unsigned char **t, size_t *tl)
+{
+	const unsigned char *q = *p;
+	while (q < end && is_space(*q))
+		q++;
+	if (q >= end) {
+		*p = q;
+		return 0;
+	}
+	*t = q;
+	while (q < end && !is_space(*q))
+		q++;
+	*tl = (size_t)(q - *t);
+	*p = q;
+	return 1;
+}
+
+static int tok_eq(const unsigned char *t, size_t tl, const char *s)
+{
+	size_t n = strlen(s);
+	return tl == n && memcmp(t, s, n) == 0;
+}
+
+/* Copy a token for strtod/strtoll; 0 if it does not fit or holds a NUL. */
+static int tok_copy(const unsigned char *t, size_t tl, char *buf, size_t bn)
+{
+	if (tl == 0 || tl >= bn || memchr(t, '\0', tl))
+		return 0;
+	memcpy(buf, t, tl);
+	buf[tl] = '\0';
+	return 1;
+}
+
+/* Whole token as a number; non-finite values and overflow to infinity are
+   accepted (they are reported as degenerate normals), garbage is not. */
+static int tok_double(const unsigned char *t, size_t tl, double *v)
+{
+	char buf[80], *e;
+	if (!tok_copy(t, tl, buf, sizeof buf))
+		return 0;
+	errno = 0;
+	*v = strtod(buf, &e);
+	return e == buf + tl && e != buf;
+}
+static int tok_float(const unsigned char *t, size_t tl, double *v)
+{
+	char buf[80], *e;
+	float f;
+	if (!tok_copy(t, tl, buf, sizeof buf))
+		return 0;
+	f = strtof(buf, &e);
+	*v = f;
+	return e == buf + tl && e != buf;
+}
+static int tok_ll(const unsigned char *t, size_t tl, long long *v)
+{
+	char buf[40], *e;
+	if (!tok_copy(t, tl, buf, sizeof buf))
+		return 0;
+	errno = 0;
+	*v = strtoll(buf, &e, 10);
+	return e == buf + tl && e != buf && errno == 0;
+}
+
+/* Printable excerpt of a token for error messages. */
+static const char *tok_show(const unsigned char *t, size_t tl, char *buf, size_t bn)
+{
+	size_t i, k = 0;
+	for (i = 0; i < tl && k + 5 < bn; i++) {
+		unsigned char ch = t[i];
+		if (ch >= 0x20 && ch < 0x7f && ch != '\'')
+			buf[k++] = (char)ch;
+		else
+			k += (size_t)snprintf(buf + k, bn - k, "\\x%02x", ch);
+	}
+	if (i < tl && k + 4 < bn) { memcpy(buf + k, "...", 3); k += 3; }
+	buf[k] = '\0';
+	return buf;
+}
+
+/* ------------------------------------------------------------------ */
+/* area-weighted vertex normals                                        */
+/* ------------------------------------------------------------------ */
+
+typedef struct { size_t first, count; uint64_t where; } face_rec;
+
+/* pos: 3*nv doubles; corners: vertex indices (validated); faces: spans.
+   Each polygon's area vector (sum of its fan triangles' cross products,
+   twice its area times its unit normal when planar) is added to each of
+   its vertices; the sums are normalized in long double. */
+static int compute_normals(mctx *c, mesh_normals *m, const double *pos, size_t nv,
+                           const uint64_t *vwhere, const uint32_t *corners,
+                           const face_rec *faces, size_t nf)
+{
+	long double *acc = xcalloc(nv, 3 * sizeof *acc);
+	unsigned char *used = xcalloc(nv, 1);
+	size_t f, i, k, nused = 0;
+	if (!acc || !used) {
+		free(acc); free(used);
+		return fail(c, "out of memory for %zu vertices", nv);
+	}
+	for (f = 0; f < nf; f++) {
+		const uint32_t *cv = corners + faces[f].first;
+		long double sx = 0, sy = 0, sz = 0;
+		const double *a = pos + 3 * (size_t)cv[0];
+		for (i = 1; i + 1 < faces[f].count; i++) {
+			const double *b = pos + 3 * (size_t)cv[i], *d = pos + 3 * (size_t)cv[i + 1];
+			long double ux = (long double)b[0] - a[0], uy = (long double)b[1] - a[1], uz = (long double)b[2] - a[2];
+			long double vx = (long double)d[0] - a[0], vy = (long double)d[1] - a[1], vz = (long double)d[2] - a[2];
+			sx += uy * vz - uz * vy;
+			sy += uz * vx - ux * vz;
+			sz += ux * vy - uy * vx;
+			m->ntriangles++;
+		}
+		for (i = 0; i < faces[f].count; i++) {
+			size_t v = cv[i];
+			acc[3 * v] += sx; acc[3 * v + 1] += sy; acc[3 * v + 2] += sz;
+			used[v] = 1;
+		}
+	}
+	for (i = 0; i < nv; i++)
+		nused += used[i];
+	if (alloc_normals(m, nused) != 0) {
+		free(acc); free(used);
+		return fail(c, "out of memory for %zu normals", nused);
+	}
+	for (i = 0, k = 0; i < nv; i++) {
+		long double x, y, z, l;
+		if (!used[i])
+			continue;
+		x = acc[3 * i]; y = acc[3 * i + 1]; z = acc[3 * i + 2];
+		l = sqrtl(x * x + y * y + z * z);
+		if (l > 0 && isfinite(l)) { x /= l; y /= l; z /= l; }
+		m->x[k] = (double)x; m->y[k] = (double)y; m->z[k] = (double)z;
+		m->where[k] = vwhere[i];
+		m->index[k] = i;
+		k++;
+	}
+	m->count = nused;
+	m->unreferenced = nv - nused;
+	m->origin = MESH_COMPUTED;
+	free(acc); free(used);
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* OBJ                                                                 */
+/* ------------------------------------------------------------------ */
+
+/* Resolve one OBJ index (1-based, or negative relative to n so far). */
+static int obj_index(mctx *c, uint64_t line, const char *what, const unsigned char *t, size_t tl,
+                     size_t n, size_t *out)
+{
+	long long v;
+	char sb[64];
+	if (!tok_ll(t, tl, &v))
+		return fail(c, "line %llu: bad %s index '%s'", (unsigned long long)line, what, tok_show(t, tl, sb, sizeof sb));
+	if (v > 0 && (unsigned long long)v <= n) { *out = (size_t)(v - 1); return 0; }
+	if (v < 0 && (unsigned long long)(-(v + 1)) < n) { *out = n - (size_t)(-(v + 1)) - 1; return 0; }
+	return fail(c, "line %llu: %s index %lld out of range (%zu defined so far)", (unsigned long long)line, what, v, n);
+}
+
+static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m)
+{
+	gvec pos, vwhere, vn, vnwhere, corners, faces;
+	const unsigned char *p = buf, *end = buf + len;
+	uint64_t line = 0;
+	size_t nvt = 0;
+	int rc = -1;
+	char sb[64];
+	gvec_init(&pos, 3 * sizeof(double)); gvec_init(&vwhere, sizeof(uint64_t));
+	gvec_init(&vn, 3 * sizeof(double)); gvec_init(&vnwhere, sizeof(uint64_t));
+	gvec_init(&corners, sizeof(uint32_t)); gvec_init(&faces, sizeof(face_rec));
+	m->format = MESH_OBJ;
+	if (len >= 2 && ((buf[0] == 0xfe && buf[1] == 0xff) || (buf[0] == 0xff && buf[1] == 0xfe))) {
+		fail(c, "line 1: UTF-16 text (byte-order mark %02x %02x) is not supported; convert to UTF-8", buf[0], buf[1]);
+		goto out;
+	}
+	if (len >= 3 && buf[0] == 0xef && buf[1] == 0xbb && buf[2] == 0xbf)
+		p += 3; /* UTF-8 byte-order mark */
+	while (p < end) {
+		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
+		const unsigned char *le = eol ? eol : end, *hash, *q, *t;
+		size_t tl;
+		line++;
+		hash = memchr(p, '#', (size_t)(le - p));
+		if (hash)
+			le = hash;
+		q = p;
+		p = eol ? eol + 1 : end;
+		if (!next_tok(&q, le, &t, &tl))
+			continue;
+		if (tok_eq(t, tl, "v") || tok_eq(t, tl, "vn")) {
+			int isn = tl == 2;
+			double v[7];
+			int k = 0;
+			while (next_tok(&q, le, &t, &tl)) {
+				if (k == (isn ? 3 : 7)) {
+					fail(c, "line %llu: too many numbers in '%s' (at most %d)", (unsigned long long)line, isn ? "vn" : "v", isn ? 3 : 7);
+					goto out;
+				}
+				if (!tok_double(t, tl, &v[k])) {
+					fail(c, "line %llu: bad number '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
+					goto out;
+				}
+				k++;
+			}
+			if (k < 3) {
+				fail(c, "line %llu: '%s' needs 3 numbers, got %d", (unsigned long long)line, isn ? "vn" : "v", k);
+				goto out;
+			}
+			if (gvec_push(isn ? &vn : &pos, v) != 0 || gvec_push(isn ? &vnwhere : &vwhere, &line) != 0) {
+				fail(c, "line %llu: too many vertices or normals, or out of memory", (unsigned long long)line);
+				goto out;
+			}
+		} else if (tok_eq(t, tl, "vt")) {
+			double v;
+			int k = 0;
+			while (next_tok(&q, le, &t, &tl)) {
+				if (!tok_double(t, tl, &v) || ++k > 3) {
+					fail(c, "line %llu: bad texture coordinate '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
+					goto out;
+				}
+			}
+			if (k < 1) {
+				fail(c, "line %llu: 'vt' needs 1 to 3 numbers", (unsigned long long)line);
+				goto out;
+			}
+			nvt++;
+		} else if (tok_eq(t, tl, "f")) {
+			face_rec fr;
+			fr.first = corners.n;
+			fr.count = 0;
+			fr.where = line;
+			while (next_tok(&q, le, &t, &tl)) {
+				const unsigned char *s1 = memchr(t, '/', tl), *s2 = NULL;
+				size_t vi, other;
+				uint32_t u;
+				if (s1)
+					s2 = memchr(s1 + 1, '/', tl - (size_t)(s1 + 1 - t));
+				if (s2 && memchr(s2 + 1, '/', tl - (size_t)(s2 + 1 - t))) {
+					fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
+					goto out;
+				}
+				if (obj_index(c, line, "vertex", t, s1 ? (size_t)(s1 - t) : tl, pos.n, &vi) != 0)
+					goto out;
+				if (s1) {
+					const unsigned char *b = s1 + 1, *be = s2 ? s2 : t + tl;
+					if (be > b && obj_index(c, line, "texture", b, (size_t)(be - b), nvt, &other) != 0)
+						goto out;
+					if (!s2 && be == b) {
+						fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
+						goto out;
+					}
+					if (s2 && obj_index(c, line, "normal", s2 + 1, (size_t)(t + tl - s2 - 1), vn.n, &other) != 0)
+						goto out;
+				}
+				u = (uint32_t)vi;
+				if (gvec_push(&corners, &u) != 0) {
+					fail(c, "line %llu: too many face corners, or out of memory", (unsigned long long)line);
+					goto out;
+				}
+				fr.count++;
+			}
+			if (fr.count < 3) {
+				fail(c, "line %llu: a face needs at least 3 vertices, got %zu", (unsigned long long)line, fr.count);
+				goto out;
+			}
+			if (gvec_push(&faces, &fr) != 0) {
+				fail(c, "line %llu: too many faces, or out of memory", (unsigned long long)line);
+				goto out;
+			}
+		}
+		/* every other statement (vp, l, p, g, o, s, usemtl, mtllib, ...)
+		   carries no normal and is skipped */
+	}
+	m->nvertices = pos.n;
+	m->nfaces = faces.n;
+	{
+		size_t f;
+		const face_rec *fr = faces.p;
+		for (f = 0; f < faces.n; f++)
+			m->ntriangles += fr[f].count - 2;
+	}
+	if (vn.n > 0) {
+		size_t i;
+		const double *v = vn.p;
+		if (alloc_normals(m, vn.n) != 0) {
+			fail(c, "out of memory for %zu normals", vn.n);
+			goto out;
+		}
+		for (i = 0; i < vn.n; i++) {
+			m->x[i] = v[3 * i]; m->y[i] = v[3 * i + 1]; m->z[i] = v[3 * i + 2];
+			m->where[i] = ((const uint64_t *)vnwhere.p)[i];
+			m->index[i] = i;
+		}
+		m->count = vn.n;
+		m->origin = MESH_STORED;
+		m->stored_type = MESH_T_TEXT;
+		rc = 0;
+	} else if (faces.n > 0) {
+		size_t t = m->ntriangles;
+		m->ntriangles = 0;
+		rc = compute_normals(c, m, pos.p, pos.n, vwhere.p, corners.p, faces.p, faces.n);
+		m->ntriangles = t;
+		m->stored_type = MESH_T_TEXT;
+	} else {
+		fail(c, "no normals: no 'vn' lines and no faces to compute them from (%llu lines, %zu vertices)",
+		     (unsigned long long)line, pos.n);
+	}
+out:
+	gvec_free(&pos); gvec_free(&vwhere); gvec_free(&vn); gvec_free(&vnwhere);
+	gvec_free(&corners); gvec_free(&faces);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* PLY                                                                 */
+/* ------------------------------------------------------------------ */
+
+enum { PT_NONE = 0, PT_I8, PT_U8, PT_I16, PT_U16, PT_I32, PT_U32, PT_F32, PT_F64 };
+static const struct { const char *name; int type; } ply_types[] = {
+	{ "char", PT_I8 }, { "int8", PT_I8 }, { "uchar", PT_U8 }, { "uint8", PT_U8 },
+	{ "short", PT_I16 }, { "int16", PT_I16 }, { "ushort", PT_U16 }, { "uint16", PT_U16 },
+	{ "int", PT_I32 }, { "int32", PT_I32 }, { "uint", PT_U32 }, { "uint32", PT_U32 },
+	{ "float", PT_F32 }, { "float32", PT_F32 }, { "double", PT_F64 }, { "float64", PT_F64 },
+};
+static const size_t pt_size[] = { 0, 1, 1, 2, 2, 4, 4, 4, 8 };
+
+#define PLY_MAX_ELEMS 32
+#define PLY_MAX_PROPS 64
+#define PLY_NAME 64
+
+typedef struct {
+	char name[PLY_NAME];
+	int type;       /* scalar type, or the list's item type */
+	int list;       /* 1 for a list */
+	int ctype;      /* list count type */
+} ply_prop;
+
+typedef struct {
+	char name[PLY_NAME];
+	unsigned long long count;
+	int nprop;
+	ply_prop prop[PLY_MAX_PROPS];
+	int ix, iy, iz, inx, iny, inz, ilist; /* property indices, or -1 */
+} ply_elem;
+
+typedef struct {
+	mctx *c;
+	const unsigned char *buf, *p, *end;
+	int fmt;              /* 0 ascii, 1 little, 2 big */
+	uint64_t line;        /* ascii: current line */
+} ply_rd;
+
+static int pt_lookup(const unsigned char *t, size_t tl)
+{
+	size_t i;
+	for (i = 0; i < sizeof ply_types / sizeof ply_types[0]; i++)
+		if (tok_eq(t, tl, ply_types[i].name))
+			return ply_types[i].type;
+	return PT_NONE;
+}
+
+static unsigned long long off(const ply_rd *r) { return (unsigned long long)(r->p - r->buf); }
+
+/* One value of type `type`; is_int tells whether *iv is meaningful. */
+static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long ei, const char *pname,
+                     double *dv, long long *iv)
+{
+	mctx *c = r->c;
+	if (r->fmt == 0) {
+		const unsigned char *t = NULL;
+		size_t tl = 0;
+		char sb[64];
+		unsigned long long at;
+		for (;;) {
+			while (r->p < r->end && (is_space(*r->p) || *r->p == '\n')) {
+				if (*r->p == '\n')
+					r->line++;
+				r->p++;
+			}
+			if (r->p >= r->end)
+				return fail(c, "byte %llu (line %llu): file ends inside element '%s' %llu of %llu (property '%s')",
+				            off(r), (unsigned long long)r->line, e->name, ei, e->count, pname);
+			break;
+		}
+		at = off(r);
+		next_tok(&r->p, r->end, &t, &tl);
+		if (type == PT_F32 || type == PT_F64) {
+			if (!(type == PT_F32 ? tok_float(t, tl, dv) : tok_double(t, tl, dv)))
+				return fail(c, "byte %llu (line %llu): bad number '%s' for property '%s' of element '%s' %llu",
+				            at, (unsigned long long)r->line, tok_show(t, tl, sb, sizeof sb), pname, e->name, ei);
+			*iv = 0;
+		} else {
+			long long v, lo, hi;
+			switch (type) {
+			case PT_I8:  lo = -128; hi = 127; break;
+			case PT_U8:  lo = 0; hi = 255; break;
+			case PT_I16: lo = -32768; hi = 32767; break;
+			case PT_U16: lo = 0; hi = 65535; break;
+			case PT_I32: lo = -2147483647LL - 1; hi = 2147483647LL; break;
+			default:     lo = 0; hi = 4294967295LL; break;
+			}
+			if (!tok_ll(t, tl, &v) || v < lo || v > hi)
+				return fail(c, "byte %llu (line %llu): bad integer '%s' for property '%s' of element '%s' %llu",
+				            at, (unsigned long long)r->line, tok_show(t, tl, sb, sizeof sb), pname, e->name, ei);
+			*iv = v;
+			*dv = (double)v;
+		}
+		return 0;
+	} else {
+		unsigned char b[8];
+		size_t n = pt_size[type], i;
+		if ((size_t)(r->end - r->p) < n)
+			return fail(c, "byte %llu: truncated binary data: element '%s' %llu of %llu, property '%s' needs %zu bytes, %zu remain",
+			            off(r), e->name, ei, e->count, pname, n, (size_t)(r->end - r->p));
+		for (i = 0; i < n; i++)
+			b[i] = r->p[r->fmt == 1 ? i : n - 1 - i];
+		r->p += n;
+		switch (type) {
+		case PT_I8:  { int8_t v;   memcpy(&v, b, 1); *iv = v; break; }
+		case PT_U8:  { uint8_t v;  memcpy(&v, b, 1); *iv = v; break; }
+		case PT_I16: { int16_t v;  memcpy(&v, b, 2); *iv = v; break; }
+		case PT_U16: { uint16_t v; memcpy(&v, b, 2); *iv = v; break; }
+		case PT_I32: { int32_t v;  memcpy(&v, b, 4); *iv = v; break; }
+		case PT_U32: { uint32_t v; memcpy(&v, b, 4); *iv = v; break; }
+		case PT_F32: { float v;    memcpy(&v, b, 4); *dv = v; *iv = 0; return 0; }
+		default:     { double v;   memcpy(&v, b, 8); *dv = v; *iv = 0; return 0; }
+		}
+		*dv = (double)*iv;
+		return 0;
+	}
+}
+
+static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m)
+{
+	ply_elem *el = NULL;
+	int ne = 0, i, normal_elems = 0, rc = -1;
+	const unsigned char *p = buf, *end = buf + len;
+	uint64_t line = 0;
+	int fmt = -1, have_end = 0, magic = 0;
+	ply_rd r;
+	double *pos = NULL;
+	uint64_t *vwhere = NULL;
+	gvec corners, faces;
+	unsigned long long nnorm = 0, nvert = 0;
+	int vert_e = -1, face_e = -1, compute;
+	char sb[64];
+
+	gvec_init(&corners, sizeof(uint32_t));
+	gvec_init(&faces, sizeof(face_rec));
+	m->format = MESH_PLY;
+	el = xcalloc(PLY_MAX_ELEMS, sizeof *el);
+	if (!el)
+		return fail(c, "out of memory");
+	/* header: one statement a line, up to end_header */
+	while (p < end) {
+		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
+		const unsigned char *le = eol ? eol : end, *q = p, *t;
+		unsigned long long lo = (unsigned long long)(p - buf);
+		size_t tl;
+		line++;
+		p = eol ? eol + 1 : end;
+		if (!next_tok(&q, le, &t, &tl)) {
+			if (line == 1)
+				break;
+			continue;
+		}
+		if (line == 1) {
+			if (!tok_eq(t, tl, "ply") || next_tok(&q, le, &t, &tl))
+				break;
+			magic = 1;
+			continue;
+		}
+		if (tok_eq(t, tl, "format")) {
+			const unsigned char *t2, *t3;
+			size_t l2, l3;
+			if (fmt >= 0) {
+				fail(c, "byte %llu (line %llu): second 'format' line", lo, (unsigned long long)line);
+				goto out;
+			}
+			if (!next_tok(&q, le, &t2, &l2) || !next_tok(&q, le, &t3, &l3) || !tok_eq(t3, l3, "1.0")) {
+				fail(c, "byte %llu (line %llu): expected 'format ascii|binary_little_endian|binary_big_endian 1.0'", lo, (unsigned long long)line);
+				goto out;
+			}
+			if (tok_eq(t2, l2, "ascii")) fmt = 0;
+			else if (tok_eq(t2, l2, "binary_little_endian")) fmt = 1;
+			else if (tok_eq(t2, l2, "binary_big_endian")) fmt = 2;
+			else {
+				fail(c, "byte %llu (line %llu): unknown format '%s'", lo, (unsigned long long)line, tok_show(t2, l2, sb, sizeof sb));
+				goto out;
+			}
+		} else if (tok_eq(t, tl, "comment") || tok_eq(t, tl, "obj_info")) {
+			continue;
+		} else if (tok_eq(t, tl, "element")) {
+			const unsigned char *t2, *t3;
+			size_t l2, l3;
+			long long cnt;
+			ply_elem *e;
+			if (ne == PLY_MAX_ELEMS) {
+				fail(c, "byte %llu (line %llu): more than %d elements", lo, (unsigned long long)line, PLY_MAX_ELEMS);
+				goto out;
+			}
+			if (!next_tok(&q, le, &t2, &l2) || l2 >= PLY_NAME || !next_tok(&q, le, &t3, &l3)
+			    || !tok_ll(t3, l3, &cnt) || cnt < 0 || next_tok(&q, le, &t, &tl)) {
+				fail(c, "byte %llu (line %llu): expected 'element NAME COUNT' with a count >= 0", lo, (unsigned long long)line);
+				goto out;
+			}
+			e = &el[ne++];
+			memcpy(e->name, t2, l2);
+			e->name[l2] = '\0';
+			e->count = (unsigned long long)cnt;
+			e->ix = e->iy = e->iz = e->inx = e->iny = e->inz = e->ilist = -1;
+		} else if (tok_eq(t, tl, "property")) {
+			const unsigned char *t2, *tn;
+			size_t l2, ln;
+			ply_prop pr;
+			ply_elem *e;
+			memset(&pr, 0, sizeof pr);
+			if (ne == 0) {
+				fail(c, "byte %llu (line %llu): 'property' before any 'element'", lo, (unsigned long long)line);
+				goto out;
+			}
+			e = &el[ne - 1];
+			if (e->nprop == PLY_MAX_PROPS) {
+				fail(c, "byte %llu (line %llu): more than %d properties in element '%s'", lo, (unsigned long long)line, PLY_MAX_PROPS, e->name);
+				goto out;
+			}
+			if (!next_tok(&q, le, &t2, &l2))
+				goto badprop;
+			if (tok_eq(t2, l2, "list")) {
+				const unsigned char *t3, *t4;
+				size_t l3, l4;
+				if (!next_tok(&q, le, &t3, &l3) || !next_tok(&q, le, &t4, &l4))
+					goto badprop;
+				pr.list = 1;
+				pr.ctype = pt_lookup(t3, l3);
+				pr.type = pt_lookup(t4, l4);
+				if (pr.ctype == PT_NONE || pr.type == PT_NONE || pr.ctype == PT_F32 || pr.ctype == PT_F64)
+					goto badprop;
+			} else {
+				pr.type = pt_lookup(t2, l2);
+				if (pr.type == PT_NONE)
+					goto badprop;
+			}
+			if (!next_tok(&q, le, &tn, &ln) || ln >= PLY_NAME || next_tok(&q, le, &t, &tl))
+				goto badprop;
+			memcpy(pr.name, tn, ln);
+			pr.name[ln] = '\0';
+			if (!pr.list) {
+				int *slot = NULL;
+				if (!strcmp(pr.name, "x")) slot = &e->ix;
+				else if (!strcmp(pr.name, "y")) slot = &e->iy;
+				else if (!strcmp(pr.name, "z")) slot = &e->iz;
+				else if (!strcmp(pr.name, "nx")) slot = &e->inx;
+				else if (!strcmp(pr.name, "ny")) slot = &e->iny;
+				else if (!strcmp(pr.name, "nz")) slot = &e->inz;
+				if (slot) {
+					if (*slot >= 0) {
+						fail(c, "byte %llu (line %llu): property '%s' twice in element '%s'", lo, (unsigned long long)line, pr.name, e->name);
+						goto out;
+					}
+					*slot = e->nprop;
+				}
+			} else if (!strcmp(pr.name, "vertex_indices") || !strcmp(pr.name, "vertex_index")) {
+				if (pr.type == PT_F32 || pr.type == PT_F64) {
+					fail(c, "byte %llu (line %llu): list '%s' must hold integers", lo, (unsigned long long)line, pr.name);
+					goto out;
+				}
+				e->ilist = e->nprop;
+			}
+			e->prop[e->nprop++] = pr;
+			continue;
+badprop:
+			fail(c, "byte %llu (line %llu): expected 'property TYPE NAME' or 'property list COUNTTYPE ITEMTYPE NAME' (integer count type)",
+			     lo, (unsigned long long)line);
+			goto out;
+		} else if (tok_eq(t, tl, "end_header")) {
+			have_end = 1;
+			break;
+		} else {
+			/* not in the PLY grammar (e.g. Blender 2.4's "Created by ..."
+			   line): skipped, counted and reported, as most readers do */
+			if (m->header_skipped++ == 0)
+				m->header_skipped_line = line;
+		}
+	}
+	if (!magic) {
+		fail(c, "byte 0: not a PLY file (first line is not 'ply')");
+		goto out;
+	}
+	if (!have_end) {
+		fail(c, "byte %llu: header has no 'end_header' line", (unsigned long long)len);
+		goto out;
+	}
+	if (fmt < 0) {
+		fail(c, "byte 0: header has no 'format' line");
+		goto out;
+	}
+	m->ply_binary = fmt;
+
+	/* what to read, and counts against the bytes that remain */
+	{
+		unsigned long long remain = (unsigned long long)(end - p), need = 0;
+		for (i = 0; i < ne; i++) {
+			ply_elem *e = &el[i];
+			unsigned long long rec = 0;
+			int k;
+			if (e->count == 0)
+				continue;
+			if (e->nprop == 0) {
+				fail(c, "byte %llu: element '%s' has %llu records but no properties", (unsigned long long)(p - buf), e->name, e->count);
+				goto out;
+			}
+			for (k = 0; k < e->nprop; k++)
+				rec += fmt == 0 ? 2 : pt_size[e->prop[k].list ? e->prop[k].ctype : e->prop[k].type];
+			/* ascii: each value is at least one character and a separator */
+			if (e->count > (remain + 1) / rec || need + e->count * rec > remain + 1) {
+				fail(c, "byte %llu: element '%s' count %llu needs at least %llu bytes per record, but only %llu bytes follow the header",
+				     (unsigned long long)(p - buf), e->name, e->count, rec, remain);
+				goto out;
+			}
+			need += e->count * rec;
+			if (e->inx >= 0 && e->iny >= 0 && e->inz >= 0) {
+				normal_elems++;
+				nnorm += e->count;
+			}
+			if (!strcmp(e->name, "vertex") && vert_e < 0)
+				vert_e = i;
+			if (!strcmp(e->name, "face") && face_e < 0)
+				face_e = i;
+		}
+		for (i = 0; i < ne && vert_e < 0; i++)
+			if (!strcmp(el[i].name, "vertex"))
+				vert_e = i;
+		for (i = 0; i < ne && face_e < 0; i++)
+			if (!strcmp(el[i].name, "face"))
+				face_e = i;
+	}
+	if (nnorm > MESH_MAX_ITEMS) {
+		fail(c, "%llu normals: more than the %llu accepted", nnorm, (unsigned long long)MESH_MAX_ITEMS);
+		goto out;
+	}
+	compute = normal_elems == 0;
+	if (vert_e >= 0)
+		nvert = el[vert_e].count;
+	m->nvertices = (size_t)nvert;
+	if (compute) {
+		if (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0) {
+			fail(c, "no normals: no element has nx, ny, nz, and there is no 'vertex' element with x, y, z and 'face' element with vertex_indices to compute them from");
+			goto out;
+		}
+		if (nvert > MESH_MAX_ITEMS) {
+			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
+			goto out;
+		}
+		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
+		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
+		if (!pos || !vwhere) {
+			fail(c, "out of memory for %llu vertices", nvert);
+			goto out;
+		}
+	} else {
+		if (alloc_normals(m, (size_t)nnorm) != 0) {
+			fail(c, "out of memory for %llu normals", nnorm);
+			goto out;
+		}
+		m->count = (size_t)nnorm;
+		m->element[0] = '\0';
+		for (i = 0; i < ne; i++)
+			if (el[i].inx >= 0 && el[i].iny >= 0 && el[i].inz >= 0 && el[i].count) {
+				size_t l = strlen(m->element);
+				snprintf(m->element + l, sizeof m->element - l, "%s%s", l ? "," : "", el[i].name);
+			}
+		{
+			int all_f = 1, all_d = 1;
+			for (i = 0; i < ne; i++)
+				if (el[i].inx >= 0 && el[i].iny >= 0 && el[i].inz >= 0) {
+					int ts[3], k;
+					ts[0] = el[i].prop[el[i].inx].type; ts[1] = el[i].prop[el[i].iny].type; ts[2] = el[i].prop[el[i].inz].type;
+					for (k = 0; k < 3; k++) {
+						all_f &= ts[k] == PT_F32;
+						all_d &= ts[k] == PT_F64;
+					}
+				}
+			m->stored_type = all_f ? MESH_T_FLOAT : all_d ? MESH_T_DOUBLE : MESH_T_OTHER;
+		}
+		m->origin = MESH_STORED;
+	}
+
+	/* body */
+	r.c = c; r.buf = buf; r.p = p; r.end = end; r.fmt = fmt; r.line = line + 1;
+	{
+		size_t kn = 0;
+		for (i = 0; i < ne; i++) {
+			ply_elem *e = &el[i];
+			int isn = e->inx >= 0 && e->iny >= 0 && e->inz >= 0;
+			int isv = compute && i == vert_e, isf = compute && i == face_e;
+			unsigned long long ei;
+			for (ei = 0; ei < e->count; ei++) {
+				unsigned long long at;
+				double nv[3] = { 0, 0, 0 }, dv;
+				long long iv;
+				face_rec fr;
+				int k;
+				/* the record starts at its first value (ascii: after blanks) */
+				if (fmt == 0)
+					while (r.p < r.end && (is_space(*r.p) || *r.p == '\n')) {
+						if (*r.p == '\n')
+							r.line++;
+						r.p++;
+					}
+				at = off(&r);
+				for (k = 0; k < e->nprop; k++) {
+					const ply_prop *pr = &e->prop[k];
+					if (!pr->list) {
+						if (ply_value(&r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
+							goto out;
+						if (isn) {
+							if (k == e->inx) nv[0] = dv;
+							else if (k == e->iny) nv[1] = dv;
+							else if (k == e->inz) nv[2] = dv;
+						}
+						if (isv) {
+							if (k == e->ix) pos[3 * ei] = dv;
+							else if (k == e->iy) pos[3 * ei + 1] = dv;
+							else if (k == e->iz) pos[3 * ei + 2] = dv;
+						}
+					} else {
+						long long cnt, j;
+						unsigned long long cat = off(&r), remain;
+						/* face indices are checked whether or not
+						   normals are computed from them */
+						int isidx = i == face_e && k == e->ilist;
+						if (ply_value(&r, pr->ctype, e, ei, pr->name, &dv, &cnt) != 0)
+							goto out;
+						remain = (unsigned long long)(r.end - r.p);
+						if (cnt < 0 || (unsigned long long)cnt > (fmt == 0 ? remain / 2 + 1 : remain / pt_size[pr->type])) {
+							fail(c, "byte %llu: truncated or bad count: list '%s' of element '%s' %llu has count %lld, but only %llu bytes remain",
+							     cat, pr->name, e->name, ei, cnt, remain);
+							goto out;
+						}
+						if (isidx) {
+							fr.first = corners.n;
+							fr.count = (size_t)cnt;
+							fr.where = at;
+						}
+						for (j = 0; j < cnt; j++) {
+							unsigned long long iat = off(&r);
+							if (ply_value(&r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
+								goto out;
+							if (isidx) {
+								uint32_t u;
+								if (iv < 0 || (unsigned long long)iv >= nvert) {
+									fail(c, "byte %llu: face %llu: vertex index %lld out of range [0, %llu)", iat, ei, iv, nvert);
+									goto out;
+								}
+								u = (uint32_t)iv;
+								if (isf && gvec_push(&corners, &u) != 0) {
+									fail(c, "byte %llu: too many face corners, or out of memory", iat);
+									goto out;
+								}
+							}
+						}
+						if (isf && isidx && cnt >= 3) {
+							if (gvec_push(&faces, &fr) != 0) {
+								fail(c, "byte %llu: too many faces, or out of memory", at);
+								goto out;
+							}
+						}
+					}
+				}
+				if (isn) {
+					m->x[kn] = nv[0]; m->y[kn] = nv[1]; m->z[kn] = nv[2];
+					m->where[kn] = at;
+					m->index[kn] = (size_t)ei;
+					kn++;
+				}
+				if (isv)
+					vwhere[ei] = at;
+			}
+		}
+		if (fmt == 0) {
+			while (r.p < r.end && (is_space(*r.p) || *r.p == '\n' || *r.p == '\0'))
+				r.p++;
+			if (r.p < r.end) {
+				fail(c, "byte %llu: data after the last element (the header's counts are wrong?)", off(&r));
+				goto out;
+			}
+		} else if (r.p < r.end) {
+			fail(c, "byte %llu: %llu bytes after the last element (the header's counts are wrong?)",
+			     off(&r), (unsigned long long)(r.end - r.p));
+			goto out;
+		}
+	}
+	if (face_e >= 0)
+		m->nfaces = (size_t)el[face_e].count;
+	if (compute) {
+		if (faces.n == 0) {
+			fail(c, "no normals: no element has nx, ny, nz, and no face has 3 or more vertices");
+			goto out;
+		}
+		m->nfaces = faces.n;
+		if (compute_normals(c, m, pos, (size_t)nvert, vwhere, corners.p, faces.p, faces.n) != 0)
+			goto out;
+		m->stored_type = MESH_T_DOUBLE;
+		snprintf(m->element, sizeof m->element, "vertex");
+	}
+	rc = 0;
+out:
+	if (rc != 0)
+		mesh_free(m);
+	free(el); free(pos); free(vwhere);
+	gvec_free(&corners); gvec_free(&faces);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* entry points                                                        */
+/* ------------------------------------------------------------------ */
+
+static int has_ext(const char *name, const char *ext)
+{
+	size_t n, e = strlen(ext), i;
+	if (!name)
+		return 0;
+	n = strlen(name);
+	if (n < e)
+		return 0;
+	for (i = 0; i < e; i++) {
+		char a = name[n - e + i];
+		if (a >= 'A' && a <= 'Z')
+			a = (char)(a - 'A' + 'a');
+		if (a != ext[i])
+			return 0;
+	}
+	return 1;
+}
+
+int mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
+                  mesh_normals *out, char *err, size_t errlen)
+{
+	mctx c;
+	int rc, ply;
+	c.err = err; c.errlen = errlen; c.name = name;
+	if (err && errlen)
+		err[0] = '\0';
+	memset(out, 0, sizeof *out);
+	if (!buf && len)
+		return fail(&c, "no data");
+	if (len == 0)
+		return fail(&c, "empty file");
+	if (has_ext(name, ".ply"))
+		ply = 1;
+	else if (has_ext(name, ".obj"))
+		ply = 0;
+	else
+		ply = len >= 4 && memcmp(buf, "ply", 3) == 0 && (buf[3] == '\n' || buf[3] == '\r');
+	rc = ply ? read_ply(&c, buf, len, out) : read_obj(&c, buf, len, out);
+	if (rc != 0)
+		mesh_free(out);
+	return rc;
+}
+
+int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen)
+{
+	mctx c;
+	FILE *f;
+	unsigned char *buf = NULL;
+	size_t len = 0, cap = 0;
+	int rc;
+	c.err = err; c.errlen = errlen; c.name = path;
+	memset(out, 0, sizeof *out);
+	f = fopen(path, "rb");
+	if (!f)
+		return fail(&c, "cannot open: %s", strerror(errno));
+	for (;;) {
+		size_t got;
+		if (len == cap) {
+			size_t nc = cap ? cap * 2 : 65536;
+			unsigned char *q;
+			if (cap >= MESH_MAX_FILE) {
+				free(buf);
+				fclose(f);
+				return fail(&c, "file larger than %zu bytes", MESH_MAX_FILE);
+			}
+			q = realloc(buf, nc);
+			if (!q) {
+				free(buf);
+				fclose(f);
+				return fail(&c, "out of memory reading the file");
+			}
+			buf = q;
+			cap = nc;
+		}
+		got = fread(buf + len, 1, cap - len, f);
+		len += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(f)) {
+		free(buf);
+		fclose(f);
+		return fail(&c, "read error");
+	}
+	fclose(f);
+	rc = mesh_read_mem(path, buf, len, out, err, errlen);
+	free(buf);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* classification                                                      */
+/* ------------------------------------------------------------------ */
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+int mesh_classify(const mesh_normals *m, int use_float, double tol, mesh_stats *st)
+{
+	size_t i, k = 0;
+	double *dev;
+	memset(st, 0, sizeof *st);
+	st->tol = tol > 0 ? tol : use_float ? 4.0 * FLT_EPSILON : 4.0 * DBL_EPSILON;
+	st->total = m->count;
+	dev = xcalloc(m->count, sizeof *dev);
+	if (!dev)
+		return -1;
+	for (i = 0; i < m->count; i++) {
+		long double x = m->x[i], y = m->y[i], z = m->z[i], l, d;
+		if (use_float) {
+			x = (float)m->x[i]; y = (float)m->y[i]; z = (float)m->z[i];
+		}
+		if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {
+			st->nonfinite++;
+			goto bad;
+		}
+		if (x == 0 && y == 0 && z == 0) {
+			st->zero++;
+			goto bad;
+		}
+		l = sqrtl(x * x + y * y + z * z);
+		d = l - 1;
+		if (fabsl(d) <= st->tol) {
+			st->unit++;
+			continue;
+		}
+		if (k == 0 || d < st->dev_min) st->dev_min = (double)d;
+		if (k == 0 || d > st->dev_max) st->dev_max = (double)d;
+		dev[k++] = (double)fabsl(d);
+		continue;
+bad:
+		if (st->nbad < sizeof st->bad / sizeof st->bad[0])
+			st->bad[st->nbad++] = i;
+	}
+	st->nonunit = k;
+	if (k) {
+		qsort(dev, k, sizeof *dev, cmp_double);
+		st->q50 = dev[(k - 1) / 2];
+		st->q90 = dev[(size_t)((double)(k - 1) * 0.9)];
+		st->q99 = dev[(size_t)((double)(k - 1) * 0.99)];
+	}
+	free(dev);
+	return 0;
+}
+
+void mesh_where(const mesh_normals *m, size_t i, char *buf, size_t n)
+{
+	if (i >= m->count) {
+		snprintf(buf, n, "?");
+		return;
+	}
+	if (m->format == MESH_OBJ)
+		snprintf(buf, n, "line %llu%s", (unsigned long long)m->where[i],
+		         m->origin == MESH_COMPUTED ? " (the 'v' of a vertex with a computed normal)" : "");
+	else
+		snprintf(buf, n, "%s %zu at byte %llu", m->element[0] ? m->element : "element", m->index[i],
+		         (unsigned long long)m->where[i]);
+}

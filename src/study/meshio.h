@@ -1,0 +1,82 @@
+/*
+ * meshio.h - scene normals from Wavefront OBJ and PLY files (study only,
+ * not part of libonb).
+ *
+ * Every reader parses a memory buffer (mesh_read_mem), so a fuzzer can call
+ * it on arbitrary bytes; mesh_read_file reads a whole file and calls it.
+ * The readers never crash and never return a partial result: on malformed
+ * input they return -1 with one line in err naming the OBJ line or the PLY
+ * byte offset (and line, for ascii PLY), and *out is left empty.
+ *
+ * What counts as a normal
+ *   OBJ   every `vn` line, in file order.  When the file has no `vn`, the
+ *         area-weighted vertex normal of every vertex that a face uses:
+ *         the sum over the (fan-triangulated) faces around it of the cross
+ *         product (b - a) x (c - a), which is twice the triangle's area
+ *         times its unit normal, then normalized in long double.
+ *   PLY   (nx, ny, nz) of every element that has all three properties
+ *         (per-vertex and per-face normals both count), in file order.
+ *         When no element has them, area-weighted vertex normals from the
+ *         `face` element's vertex_indices (or vertex_index) lists, as above.
+ *   Unreferenced vertices get no computed normal; they are counted.
+ */
+#ifndef ONB_MESHIO_H
+#define ONB_MESHIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+enum { MESH_OBJ = 1, MESH_PLY = 2 };
+enum { MESH_STORED = 1, MESH_COMPUTED = 2 };
+/* Type the stored normals had in the file. */
+enum { MESH_T_TEXT = 1, MESH_T_FLOAT, MESH_T_DOUBLE, MESH_T_OTHER };
+
+typedef struct {
+	size_t count;          /* number of normals                              */
+	double *x, *y, *z;     /* the normals, exactly as stored (or computed)   */
+	uint64_t *where;       /* OBJ: line number; PLY: byte offset of the record */
+	size_t *index;         /* index of the normal's vertex/element (0-based)  */
+	int format;            /* MESH_OBJ or MESH_PLY                           */
+	int origin;            /* MESH_STORED or MESH_COMPUTED                   */
+	int stored_type;       /* MESH_T_*                                       */
+	int ply_binary;        /* 0 ascii, 1 little endian, 2 big endian         */
+	char element[32];      /* PLY: element that held them ("vertex", ...)    */
+	size_t nvertices;      /* `v` lines / vertex elements                    */
+	size_t nfaces;         /* faces (polygons)                               */
+	size_t ntriangles;     /* triangles after fan triangulation              */
+	size_t unreferenced;   /* computed normals: vertices used by no face     */
+	size_t header_skipped; /* PLY: header lines with an unknown keyword      */
+	uint64_t header_skipped_line; /* ...the first of them                    */
+} mesh_normals;
+
+/* Format from the name's extension (.obj/.ply, any case), else from the
+   content ("ply\n" magic means PLY, else OBJ). */
+int  mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
+                   mesh_normals *out, char *err, size_t errlen);
+/* Reads the whole file (refusing files over MESH_MAX_FILE bytes). */
+int  mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen);
+void mesh_free(mesh_normals *m);
+
+#define MESH_MAX_FILE ((size_t)1 << 31)
+/* Most normals, vertices or face corners accepted (before any allocation). */
+#define MESH_MAX_ITEMS ((uint64_t)1 << 28)
+
+/* Classification of the normals.  |n| is computed in long double from the
+   values rounded to the working precision (use_float: to float first). */
+typedef struct {
+	size_t total, unit, nonunit, zero, nonfinite;
+	double tol;                    /* unit means ||n| - 1| <= tol            */
+	double dev_min, dev_max;       /* signed |n| - 1 over the non-unit ones  */
+	double q50, q90, q99;          /* quantiles of ||n| - 1| over the non-unit */
+	size_t nbad;                   /* locations kept in bad[] (first few)    */
+	size_t bad[8];                 /* indices (into the normals) of degenerate ones */
+} mesh_stats;
+
+/* tol <= 0 selects the default: 4 ulps of 1 in the working precision
+   (4 * FLT_EPSILON = 4.8e-7 for float, 4 * DBL_EPSILON = 8.9e-16 for double).
+   Returns 0, or -1 when out of memory (quantiles need a sorted copy). */
+int mesh_classify(const mesh_normals *m, int use_float, double tol, mesh_stats *st);
+/* "line 12" (OBJ) or "vertex 17 at byte 345" (PLY) for normal i. */
+void mesh_where(const mesh_normals *m, size_t i, char *buf, size_t n);
+
+#endif

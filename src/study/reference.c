@@ -1,0 +1,600 @@
+/*
+ * reference.c - the MPFR reference of every method family, and the
+ * per-input metrics (see reference.h).
+ *
+ * Each family's formula is written out below exactly as its kernel in
+ * include/onb.h computes it, with every operation exact or rounded at the
+ * context's precision (128 bits by default: 2.4 times double's 53).  The
+ * branch is not recomputed in MPFR: it is the branch the kernel took
+ * (branch.inc), so a kernel is compared with its own formula on its own
+ * side of every threshold.  The normalization variants (_invsqrt, _rsqrt,
+ * _rsqrt_nr) are compared with the exactly normalized formula, so their
+ * forward error includes the approximation; _nonorm is compared with the
+ * unnormalized formula, which it computes faithfully.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <stdio.h>
+#include <stdint.h>
+#include "reference.h"
+
+#define NT 6
+
+struct ref_ctx {
+	mpfr_prec_t prec;
+	mpfr_t n[3], nn[3], b1[3], b2[3], r1[3], r2[3], w[3], u[3], t[NT];
+	mpfr_t p0, p1;   /* products for dot and cross */
+	mpfr_t q[4];     /* exact products for dot_exact */
+	mpfr_t inv_n;    /* 1/|n| of the current input */
+	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
+	double last_norm;
+	int have_last;
+};
+
+
+static void vinit(mpfr_t *v, int k, mpfr_prec_t p)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		mpfr_init2(v[i], p);
+}
+
+static void vclear(mpfr_t *v, int k)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		mpfr_clear(v[i]);
+}
+
+ref_ctx *ref_new(mpfr_prec_t prec)
+{
+	ref_ctx *c = malloc(sizeof *c);
+	if (!c)
+		return NULL;
+	c->prec = prec;
+	c->have_last = 0;
+	vinit(c->n, 3, prec); vinit(c->nn, 3, prec); vinit(c->b1, 3, prec);
+	vinit(c->b2, 3, prec); vinit(c->r1, 3, prec); vinit(c->r2, 3, prec);
+	vinit(c->w, 3, prec); vinit(c->u, 3, prec); vinit(c->t, NT, prec);
+	mpfr_init2(c->p0, prec); mpfr_init2(c->p1, prec);
+	vinit(c->q, 4, prec < 106 ? 106 : prec);
+	mpfr_init2(c->inv_n, prec);
+	return c;
+}
+
+void ref_free(ref_ctx *c)
+{
+	if (!c)
+		return;
+	vclear(c->n, 3); vclear(c->nn, 3); vclear(c->b1, 3); vclear(c->b2, 3);
+	vclear(c->r1, 3); vclear(c->r2, 3); vclear(c->w, 3); vclear(c->u, 3);
+	vclear(c->t, NT);
+	mpfr_clear(c->p0); mpfr_clear(c->p1);
+	vclear(c->q, 4);
+	mpfr_clear(c->inv_n);
+	free(c);
+}
+
+mpfr_prec_t ref_prec(const ref_ctx *c) { return c->prec; }
+
+#define R MPFR_RNDN
+
+/* Products go through p0 and p1, at the context's precision: a product
+   of two doubles (every defect, every input) is exact there, and the
+   reference's own intermediate products round at 2^-prec relative, far
+   below what any metric reports (ref_agree checks it on every run). */
+
+/* out = a.b (out may be a temporary, never a component of a or b) */
+static void dot(ref_ctx *c, mpfr_t out, mpfr_t *a, mpfr_t *b)
+{
+	mpfr_mul(c->p0, a[0], b[0], R);
+	mpfr_mul(c->p1, a[1], b[1], R);
+	mpfr_add(out, c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[2], b[2], R);
+	mpfr_add(out, out, c->p0, R);
+}
+
+/* Sums of exact products, for a, b and z holding doubles (the rounded
+   outputs and the input; da, db are the same values as C doubles).  Each
+   product is exact at the context's precision (106 bits suffice).  The
+   fast path adds them at that precision, with an error below
+   2^-(prec-2) * sum|term|; when the result is smaller than 2^-60 of that
+   sum (heavy cancellation: b2.n of a near-orthogonal basis reaches
+   2^-125), mpfr_sum rounds the exact sum once instead.  Either way the
+   result has a relative error below 2^-(prec-63), 2^-64 at 127 bits.
+   The bound sum|term| is taken in double from da and db, which costs
+   nothing.  (A plain dot at 127 bits failed the two-precision check.) */
+static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
+{
+	mpfr_ptr q[4];
+	int i, e;
+	mpfr_add(out, c->q[0], c->q[1], R);
+	for (i = 2; i < k; i++)
+		mpfr_add(out, out, c->q[i], R);
+	if (bound == 0.0 || !isfinite(bound) || mpfr_nan_p(out) || mpfr_inf_p(out))
+		return; /* exact zero terms, or NaN/Inf: nothing to refine */
+	(void)frexp(bound, &e);
+	if (!mpfr_zero_p(out) && mpfr_get_exp(out) > e - 59)
+		return;
+	for (i = 0; i < k; i++)
+		q[i] = c->q[i];
+	mpfr_sum(out, q, (unsigned long)k, R);
+}
+
+/* out = a.b - z */
+static void dot_exact(ref_ctx *c, mpfr_t out, mpfr_t *a, mpfr_t *b, const double *da, const double *db, double z)
+{
+	mpfr_mul(c->q[0], a[0], b[0], R);
+	mpfr_mul(c->q[1], a[1], b[1], R);
+	mpfr_mul(c->q[2], a[2], b[2], R);
+	if (z != 0.0)
+		mpfr_set_d(c->q[3], -z, R);
+	exact_sum(c, out, z != 0.0 ? 4 : 3,
+	          fabs(da[0] * db[0]) + fabs(da[1] * db[1]) + fabs(da[2] * db[2]) + fabs(z));
+}
+
+/* |v| - 1 for v holding doubles, accurate however close |v| is to 1:
+   e = vx^2 + vy^2 + vz^2 - 1 by exact_sum (correct to 2^-64 relative),
+   then |v| - 1 = e/(sqrt(1 + e) + 1), whose denominator in [1, 2.42] for
+   |v| <= 1.2 needs no more than double: the result's relative error is
+   below 2^-50, far under the 6 digits reported.  (sqrt(s) - 1 at 127
+   bits loses everything below 2^-127 absolute: it failed the
+   two-precision check on inputs with |n| - 1 ~ 1e-30.) */
+static double norm_m1_exact(ref_ctx *c, mpfr_t *v, const double *dv)
+{
+	double e;
+	mpfr_sqr(c->q[0], v[0], R);
+	mpfr_sqr(c->q[1], v[1], R);
+	mpfr_sqr(c->q[2], v[2], R);
+	mpfr_set_si(c->q[3], -1, R);
+	exact_sum(c, c->p0, 4, dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2] + 1.0);
+	e = mpfr_get_d(c->p0, R);
+	return e / (sqrt(1.0 + e) + 1.0);
+}
+
+/* o = a x b (o distinct from a and b) */
+static void cross(ref_ctx *c, mpfr_t *o, mpfr_t *a, mpfr_t *b)
+{
+	mpfr_mul(c->p0, a[1], b[2], R); mpfr_mul(c->p1, a[2], b[1], R); mpfr_sub(o[0], c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[2], b[0], R); mpfr_mul(c->p1, a[0], b[2], R); mpfr_sub(o[1], c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[0], b[1], R); mpfr_mul(c->p1, a[1], b[0], R); mpfr_sub(o[2], c->p0, c->p1, R);
+}
+
+static void set3(mpfr_t *o, double x, double y, double z)
+{
+	mpfr_set_d(o[0], x, R);
+	mpfr_set_d(o[1], y, R);
+	mpfr_set_d(o[2], z, R);
+}
+
+static void copy3(mpfr_t *o, mpfr_t *a)
+{
+	mpfr_set(o[0], a[0], R);
+	mpfr_set(o[1], a[1], R);
+	mpfr_set(o[2], a[2], R);
+}
+
+/* a *= 1/|a| (exactly rounded reciprocal square root) */
+static void normalize(ref_ctx *c, mpfr_t *a)
+{
+	dot(c, c->t[5], a, a);
+	mpfr_rec_sqrt(c->t[5], c->t[5], R);
+	mpfr_mul(a[0], a[0], c->t[5], R);
+	mpfr_mul(a[1], a[1], c->t[5], R);
+	mpfr_mul(a[2], a[2], c->t[5], R);
+}
+
+/* Frisvad's formula (Equations 4-6), shared with duff's upper branch:
+   a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
+static void frisvad_formula(ref_ctx *c, mpfr_t *n, mpfr_t *b1, mpfr_t *b2)
+{
+	mpfr_t *t = c->t;
+	mpfr_add_ui(t[0], n[2], 1, R);
+	mpfr_ui_div(t[0], 1, t[0], R);           /* a */
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_neg(t[1], t[1], R);                 /* b */
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(b1[0], 1, t[2], R);
+	mpfr_set(b1[1], t[1], R);
+	mpfr_neg(b1[2], n[0], R);
+	mpfr_set(b2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(b2[1], 1, t[2], R);
+	mpfr_neg(b2[2], n[1], R);
+}
+
+/* The exact formula of kernel k on n along branch br, into r1, r2 (or the
+   rotated direction of loc into r1 for frisvad_rotate). */
+static void reference(ref_ctx *c, const study_kernel *k, int br, const double loc[3])
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
+	const onb_method *m = k->m;
+	const char *f;
+	if (!m) { /* frisvad_rotate, Equation 3 */
+		mpfr_add_ui(t[3], n[2], 1, R);
+		if (mpfr_zero_p(t[3])) {
+			mpfr_set_d(r1[0], -loc[1], R);
+			mpfr_set_d(r1[1], -loc[0], R);
+			mpfr_set_d(r1[2], -loc[2], R);
+			return;
+		}
+		frisvad_formula(c, n, u, r2);           /* u = b1, r2 = b2 */
+		mpfr_set_d(t[3], loc[0], R);
+		mpfr_set_d(t[4], loc[1], R);
+		mpfr_set_d(t[5], loc[2], R);
+		{
+			int i;
+			for (i = 0; i < 3; i++) {
+				mpfr_mul(c->p0, t[3], u[i], R);
+				mpfr_mul(c->p1, t[4], r2[i], R);
+				mpfr_add(r1[i], c->p0, c->p1, R);
+				mpfr_mul(c->p0, t[5], n[i], R);
+				mpfr_add(r1[i], r1[i], c->p0, R);
+			}
+		}
+		return;
+	}
+	f = m->family;
+	if (!strcmp(f, "naive")) {
+		/* u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
+		mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
+		mpfr_mul(r1[0], n[0], t[0], R);
+		mpfr_mul(r1[1], n[1], t[0], R);
+		mpfr_mul(r1[2], n[2], t[0], R);
+		mpfr_ui_sub(r1[br ? 1 : 0], 1, r1[br ? 1 : 0], R);
+		mpfr_neg(r1[br ? 0 : 1], r1[br ? 0 : 1], R);
+		mpfr_neg(r1[2], r1[2], R);
+		if (m->norm != ONB__NORM_NONE)
+			normalize(c, r1);
+		cross(c, r2, n, r1);
+	} else if (!strcmp(f, "hughes_moeller")) {
+		/* b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
+		if (br) {
+			mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
+		} else {
+			mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
+		}
+		if (m->norm != ONB__NORM_NONE)
+			normalize(c, r2);
+		cross(c, r1, r2, n);
+	} else if (!strcmp(f, "frisvad")) {
+		if (br) {
+			set3(r1, 0.0, -1.0, 0.0);
+			set3(r2, -1.0, 0.0, 0.0);
+		} else {
+			frisvad_formula(c, n, r1, r2);
+		}
+	} else if (!strcmp(f, "duff")) {
+		if (br) { /* a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
+			mpfr_ui_sub(t[0], 1, n[2], R);
+			mpfr_ui_div(t[0], 1, t[0], R);
+			mpfr_mul(t[1], n[0], n[1], R);
+			mpfr_mul(t[1], t[1], t[0], R);
+			mpfr_sqr(t[2], n[0], R);
+			mpfr_mul(t[2], t[2], t[0], R);
+			mpfr_ui_sub(r1[0], 1, t[2], R);
+			mpfr_neg(r1[1], t[1], R);
+			mpfr_set(r1[2], n[0], R);
+			mpfr_set(r2[0], t[1], R);
+			mpfr_sqr(t[2], n[1], R);
+			mpfr_mul(t[2], t[2], t[0], R);
+			mpfr_sub_ui(r2[1], t[2], 1, R);
+			mpfr_neg(r2[2], n[1], R);
+		} else {
+			frisvad_formula(c, n, r1, r2);
+		}
+	} else if (!strcmp(f, "duff_branchless")) {
+		/* s = +-1, a = -1/(s + z), b = x y a,
+		   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
+		const int s = br ? -1 : 1;
+		mpfr_add_si(t[0], n[2], s, R);
+		mpfr_si_div(t[0], -1, t[0], R);
+		mpfr_mul(t[1], n[0], n[1], R);
+		mpfr_mul(t[1], t[1], t[0], R);
+		mpfr_sqr(t[2], n[0], R);
+		mpfr_mul(t[2], t[2], t[0], R);
+		mpfr_mul_si(t[2], t[2], s, R);
+		mpfr_add_ui(r1[0], t[2], 1, R);
+		mpfr_mul_si(r1[1], t[1], s, R);
+		mpfr_mul_si(r1[2], n[0], -s, R);
+		mpfr_set(r2[0], t[1], R);
+		mpfr_sqr(t[2], n[1], R);
+		mpfr_mul(t[2], t[2], t[0], R);
+		mpfr_add_si(r2[1], t[2], s, R);
+		mpfr_neg(r2[2], n[1], R);
+	} else if (!strcmp(f, "stark")) {
+		/* p = n x e_k, b1 = p/|p|, b2 = n x b1 */
+		set3(u, br == 0, br == 1, br == 2);
+		cross(c, r1, n, u);
+		normalize(c, r1);
+		cross(c, r2, n, r1);
+	} else if (!strcmp(f, "pbrt_v3")) {
+		if (br) {
+			mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
+		} else {
+			mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
+		}
+		normalize(c, r1);
+		cross(c, r2, n, r1);
+	} else if (!strcmp(f, "rtow")) {
+		/* uw = w/|w|; a = e_y if br else e_x; v = unit(uw x a); b1 = uw x v; b2 = v */
+		copy3(c->w, n);
+		normalize(c, c->w);
+		set3(u, br ? 0.0 : 1.0, br ? 1.0 : 0.0, 0.0);
+		cross(c, r2, c->w, u);
+		normalize(c, r2);
+		cross(c, r1, c->w, r2);
+	} else { /* tangent_cross_z: t = (x, y, z+1); b2 = unit(n x t); b1 = n x b2 */
+		mpfr_set(u[0], n[0], R);
+		mpfr_set(u[1], n[1], R);
+		mpfr_add_ui(u[2], n[2], 1, R);
+		cross(c, r2, n, u);
+		normalize(c, r2);
+		cross(c, r1, n, r2);
+	}
+}
+
+/* Distance in representable values between a and b, of the format. */
+static double float_distance(double a, double b, int prec)
+{
+	if (prec == PREC_FLOAT) {
+		float fa = (float)a, fb = (float)b;
+		uint32_t ua, ub;
+		int64_t oa, ob;
+		memcpy(&ua, &fa, 4);
+		memcpy(&ub, &fb, 4);
+		oa = (ua >> 31) ? -(int64_t)(ua & 0x7fffffffu) : (int64_t)ua;
+		ob = (ub >> 31) ? -(int64_t)(ub & 0x7fffffffu) : (int64_t)ub;
+		return (double)(oa > ob ? oa - ob : ob - oa);
+	} else {
+		uint64_t ua, ub, ma, mb;
+		memcpy(&ua, &a, 8);
+		memcpy(&ub, &b, 8);
+		ma = ua & 0x7fffffffffffffffu;
+		mb = ub & 0x7fffffffffffffffu;
+		if ((ua >> 63) != (ub >> 63))
+			return (double)ma + (double)mb;
+		return (double)(ma > mb ? ma - mb : mb - ma);
+	}
+}
+
+/* Forward error of component value cv against the exact value e. */
+static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s, double *refd)
+{
+	const int p = prec == PREC_FLOAT ? 24 : 53;
+	const int emin = prec == PREC_FLOAT ? -125 : -1021; /* exponent of the smallest normal */
+	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
+	double diff, rounded, bits;
+	*refd = mpfr_get_d(e, R);
+	if (!mpfr_number_p(e))
+		return;
+	mpfr_sub_d(c->t[4], e, cv, R);
+	diff = fabs(mpfr_get_d(c->t[4], R));
+	if (diff / eps > s->abs_eps_max)
+		s->abs_eps_max = diff / eps;
+	/* Components whose exact value is below eps (zero ones above all) are
+	   measured by the absolute error only: their ulps and bits would
+	   measure the reference's own last bits, not the method.  The ulp is
+	   that of the exact value rounded to the format (the same thing but
+	   at powers of two, where an exact 1 - 1e-40 would otherwise make the
+	   unit depend on the reference's precision), floored at the smallest
+	   normal's. */
+	rounded = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : *refd;
+	if (rounded != 0.0 && fabs(rounded) >= eps) {
+		int E;
+		double ulp;
+		(void)frexp(rounded, &E);
+		ulp = ldexp(1.0, (E < emin ? emin : E) - p);
+		if (diff / ulp > s->ulp_max)
+			s->ulp_max = diff / ulp;
+		{
+			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
+			const double dist = float_distance(cv, rounded, prec);
+			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
+		}
+		s->bits_sum += bits;
+		s->nbits++;
+		if (bits > s->bits_max)
+			s->bits_max = bits;
+	}
+}
+
+static int finite6(const double *v, int k)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		if (!isfinite(v[i]))
+			return 0;
+	return 1;
+}
+
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+              const double loc[3], int normalize_n, sample_metrics *s)
+{
+	mpfr_t *t = c->t;
+	int i;
+	double n[3];
+	/* The reference reads exactly the values the kernel receives. */
+	for (i = 0; i < 3; i++) {
+		if (prec == PREC_FLOAT) {
+			volatile float f = (float)n_in[i];
+			n[i] = f;
+		} else {
+			n[i] = n_in[i];
+		}
+	}
+	memset(s, 0, sizeof *s);
+	s->has_basis = k->m != NULL;
+	s->ncomp = k->m ? 6 : 3;
+	s->branch = k->branch(k->m, prec, n);
+	s->in_norm = NAN;
+	for (i = 0; i < NDEF; i++)
+		s->d[i] = NAN;
+	s->defect = s->sumsq = s->det = NAN;
+
+	/* Run the kernel, and the direction through its basis. */
+	if (prec == PREC_FLOAT) {
+		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
+		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+		onb_vec3f b1, b2, w;
+		if (k->m) {
+			k->basisf(nf, &b1, &b2);
+			w.x = x * b1.x + y * b2.x + z * nf.x;
+			w.y = x * b1.y + y * b2.y + z * nf.y;
+			w.z = x * b1.z + y * b2.z + z * nf.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rotf(nf, x, y, z);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	} else {
+		const onb_vec3 nd = { n[0], n[1], n[2] };
+		onb_vec3 b1, b2, w;
+		if (k->m) {
+			k->basis(nd, &b1, &b2);
+			w.x = loc[0] * b1.x + loc[1] * b2.x + loc[2] * nd.x;
+			w.y = loc[0] * b1.y + loc[1] * b2.y + loc[2] * nd.y;
+			w.z = loc[0] * b1.z + loc[1] * b2.z + loc[2] * nd.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rot(nd, loc[0], loc[1], loc[2]);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	}
+
+	/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
+	   the sweep evaluates every kernel on an input in a row.  Compared by
+	   bit pattern, so -0 and +0 are different inputs. */
+	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
+		set3(c->n, n[0], n[1], n[2]);
+		c->last_norm = norm_m1_exact(c, c->n, n);
+		/* 1/|n| = 1/(1 + (|n| - 1)) at the context's precision */
+		dot(c, t[0], c->n, c->n);
+		mpfr_rec_sqrt(c->inv_n, t[0], R);
+		memcpy(c->last, n, sizeof c->last);
+		c->have_last = 1;
+	}
+	s->in_norm = c->last_norm;
+
+	if (!finite6(s->out, s->ncomp) || !finite6(s->w, 3)) {
+		s->nonfinite = 1;
+		s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = NAN;
+		s->dir_norm = s->dir_cos = NAN;
+		for (i = 0; i < 6; i++)
+			s->ref[i] = NAN;
+		return;
+	}
+
+	if (k->m) {
+		/* Orthonormality defect of the rounded outputs. */
+		long double det;
+		set3(c->b1, s->out[0], s->out[1], s->out[2]);
+		set3(c->b2, s->out[3], s->out[4], s->out[5]);
+		s->d[DEF_N1] = norm_m1_exact(c, c->b1, s->out);
+		s->d[DEF_N2] = norm_m1_exact(c, c->b2, s->out + 3);
+		/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
+		dot_exact(c, t[0], c->b1, c->n, s->out, n, 0.0);
+		if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+		s->d[DEF_D1N] = mpfr_get_d(t[0], R);
+		dot_exact(c, t[0], c->b2, c->n, s->out + 3, n, 0.0);
+		if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+		s->d[DEF_D2N] = mpfr_get_d(t[0], R);
+		dot_exact(c, t[0], c->b1, c->b2, s->out, s->out + 3, 0.0); s->d[DEF_D12] = mpfr_get_d(t[0], R);
+		s->defect = 0.0;
+		s->sumsq = 0.0;
+		for (i = 0; i < NDEF; i++) {
+			if (fabs(s->d[i]) > s->defect)
+				s->defect = fabs(s->d[i]);
+			s->sumsq += s->d[i] * s->d[i];
+		}
+		/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
+		   what matters, and |det| ~ 1 unless the basis has collapsed. */
+		{
+			long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
+			long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
+			det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
+			    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
+			    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
+		}
+		s->det = (double)det;
+		s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+	}
+
+	/* Forward error against the kernel's own formula. */
+	reference(c, k, s->branch, loc);
+	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
+	for (i = 0; i < 3; i++)
+		forward(c, c->r1[i], s->out[i], prec, s, &s->ref[i]);
+	if (k->m)
+		for (i = 0; i < 3; i++)
+			forward(c, c->r2[i], s->out[3 + i], prec, s, &s->ref[3 + i]);
+
+	/* Direction error: | |w| - 1 | and | w.n - z |. */
+	set3(c->w, s->w[0], s->w[1], s->w[2]);
+	s->dir_norm = fabs(norm_m1_exact(c, c->w, s->w));
+	{
+		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+		if (normalize_n) {
+			dot_exact(c, t[0], c->w, c->n, s->w, n, 0.0);
+			mpfr_mul(t[0], t[0], c->inv_n, R);
+			mpfr_sub_d(t[0], t[0], z, R);
+		} else {
+			dot_exact(c, t[0], c->w, c->n, s->w, n, z);
+		}
+	}
+	s->dir_cos = fabs(mpfr_get_d(t[0], R));
+}
+
+/* Agreement of one metric: relative 2^-40, or absolute `abs_tol` (the
+   noise floor of a forward metric: the reference's own rounding at 127
+   bits reaches 2^-23 ulps of an exact value just above eps, so forward
+   errors are compared to 2^-16 ulps or eps; the defects are sums of
+   exact products and must agree to 2^-40 relative). */
+static int close_enough(double a, double b, double abs_tol)
+{
+	if (isnan(a) || isnan(b))
+		return isnan(a) && isnan(b);
+	if (a == b)
+		return 1;
+	return fabs(a - b) <= 0x1p-40 * fmax(fabs(a), fabs(b)) || fabs(a - b) <= abs_tol;
+}
+
+int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_t n)
+{
+	const struct { const char *name; double x, y, tol; } v[] = {
+		{ "|b1|-1", a->d[0], b->d[0], 0.0 }, { "|b2|-1", a->d[1], b->d[1], 0.0 },
+		{ "b1.n", a->d[2], b->d[2], 0.0 }, { "b2.n", a->d[3], b->d[3], 0.0 },
+		{ "b1.b2", a->d[4], b->d[4], 0.0 }, { "|n|-1", a->in_norm, b->in_norm, 0.0 },
+		{ "ulp", a->ulp_max, b->ulp_max, 0x1p-16 }, { "abs/eps", a->abs_eps_max, b->abs_eps_max, 0x1p-16 },
+		{ "bits", a->bits_sum, b->bits_sum, 0x1p-16 }, { "|w|-1", a->dir_norm, b->dir_norm, 0.0 },
+		{ "w.n-z", a->dir_cos, b->dir_cos, 0.0 },
+	};
+	size_t i;
+	for (i = 0; i < sizeof v / sizeof v[0]; i++)
+		if (!close_enough(v[i].x, v[i].y, v[i].tol)) {
+			snprintf(why, n, "%s: %a at one precision, %a at the other", v[i].name, v[i].x, v[i].y);
+			return 0;
+		}
+	return 1;
+}
+
+void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF])
+{
+	mpfr_t *t = c->t;
+	set3(c->n, n[0], n[1], n[2]);
+	c->have_last = 0; /* c->n no longer holds the cached input */
+	set3(c->b1, b[0], b[1], b[2]);
+	set3(c->b2, b[3], b[4], b[5]);
+	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
+	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0); d[DEF_D2N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+}

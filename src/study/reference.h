@@ -1,0 +1,68 @@
+/*
+ * reference.h - the MPFR reference and the per-input metrics.
+ *
+ * For one kernel, one precision and one input n (the exact binary value
+ * the kernel received), ref_eval runs the kernel and measures, in MPFR at
+ * the context's precision (never MPFR's default precision):
+ *   - the orthonormality defect from the rounded outputs and n:
+ *     |b1|-1, |b2|-1, b1.n, b2.n, b1.b2 (against n/|n| when asked);
+ *   - the forward error against the kernel's own formula evaluated exactly
+ *     on the same input along the same branch: ulps of the exact value,
+ *     absolute error in units of the format's epsilon, Herbie's bits;
+ *   - det(b1, b2, n) against the registry's handedness, non-finite output;
+ *   - the direction error of w = x b1 + y b2 + z n for a local direction
+ *     (x, y, z): | |w| - 1 | and | w.n - z |.
+ * Each thread owns one ref_ctx.
+ */
+#ifndef ONB_REFERENCE_H
+#define ONB_REFERENCE_H
+
+#include <mpfr.h>
+#include "kernels.h"
+
+typedef struct ref_ctx ref_ctx;
+
+ref_ctx *ref_new(mpfr_prec_t prec);  /* NULL on allocation failure */
+void ref_free(ref_ctx *c);
+mpfr_prec_t ref_prec(const ref_ctx *c);
+
+enum { DEF_N1 = 0, DEF_N2, DEF_D1N, DEF_D2N, DEF_D12, NDEF };
+
+typedef struct {
+	int branch;          /* branch id the kernel took (branch.inc)               */
+	int nonfinite;       /* an output was NaN or infinite: no other metric       */
+	int wrong_hand;      /* det(b1, b2, n) * handedness <= 0                     */
+	int has_basis;       /* 0 for frisvad_rotate (direction metrics only)        */
+	double in_norm;      /* |n| - 1 of the input as received                     */
+	double d[NDEF];      /* the five defects, signed                             */
+	double defect;       /* max |d[k]|: the per-input error                      */
+	double sumsq;        /* sum of d[k]^2: the RMSE term of Frisvad's Table 1    */
+	double ulp_max;      /* forward error in ulps, components with |exact| >= eps */
+	double abs_eps_max;  /* forward error / eps, every component                 */
+	double bits_sum;     /* Herbie bits, summed over the components with |exact| >= eps */
+	int    nbits;        /* how many components that is                          */
+	double bits_max;
+	int    ncomp;        /* number of output components (6, or 3 for rotate)     */
+	double det;
+	double dir_norm;     /* | |w| - 1 |                                          */
+	double dir_cos;      /* | w.n - z |                                          */
+	double out[6];       /* the kernel's outputs b1, b2 (or w), widened          */
+	double ref[6];       /* the exact formula, rounded to double                 */
+	double w[3];         /* the rotated direction (format precision)             */
+} sample_metrics;
+
+/* Evaluate kernel k on n (values exactly representable in `prec`) with the
+   local direction loc; normalize_n measures the defects against n/|n|. */
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3],
+              const double loc[3], int normalize_n, sample_metrics *s);
+
+/* The five defects of the basis b = (b1, b2) for the input n, all doubles:
+   |b1|-1, |b2|-1, b1.n, b2.n, b1.b2, each to 2^-50 relative or better. */
+void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF]);
+
+/* 1 when two evaluations of the same input (at different MPFR precisions)
+   agree in every reported metric to a relative 2^-40; else 0 and a
+   description in why. */
+int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_t n);
+
+#endif

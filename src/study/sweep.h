@@ -1,0 +1,85 @@
+/*
+ * sweep.h - the sweep's accumulators, its state (what a shard writes and
+ * merge reads), and the writers of its CSV files.
+ */
+#ifndef ONB_SWEEP_H
+#define ONB_SWEEP_H
+
+#include <stdint.h>
+#include "fx.h"
+#include "inputs.h"
+#include "kernels.h"
+#include "reference.h"
+
+#define SWEEP_MAX_KERNELS 64
+#define NWORST 5
+/* by_nz bins: n.z in [-1, 1]; log10(1 + n.z) in [-17, 0]; log10| |n|-1 | in [-9, -1] */
+#define NB_NZ   100
+#define NB_LOG  68
+#define NB_NORM 32
+#define NBINS   (NB_NZ + NB_LOG + NB_NORM)
+
+typedef struct {
+	uint64_t count;
+	fx sumsq;
+	double max;
+} bin_t;
+
+typedef struct {
+	double key;          /* the per-input error; +inf for non-finite output */
+	uint64_t index;      /* input index, or UINT64_MAX when empty          */
+	int source;          /* 0 sampled, 1 found by the worst-case walk      */
+	int branch;
+	double n[3], out[6], ref[6];
+	double defect, ulp, bits_max, dir_norm, dir_cos;
+} worst_t;
+
+typedef struct {
+	uint64_t count, finite, nonfinite, wrong, comps;
+	fx sumsq, sumdef2, bits, dirn2, dirc2;
+	double max_defect, max_ulp, max_abs_eps, max_bits, max_in_norm, max_dir_norm, max_dir_cos;
+	worst_t worst[NWORST];
+	bin_t bins[NBINS];
+} cell_t;
+
+/* Everything that defines a run's data (not its thread count or output). */
+typedef struct {
+	char magic[16];
+	uint64_t seed, samples, ex_values;
+	double ex_from;
+	int ex_azimuths, grid_rows, grid_cols, ref_bits, fma, check_every;
+	int prec_on[2], dist_on[NDIST];
+	int nk;
+	char names[SWEEP_MAX_KERNELS][64];
+	int shard_k, shard_n;
+	uint64_t counts[2][NDIST];    /* inputs per distribution (before the walk) */
+	uint64_t evals, checked;      /* referenced evaluations; two-precision checks */
+} sweep_cfg;
+
+typedef struct {
+	sweep_cfg cfg;
+	study_kernel kernels[SWEEP_MAX_KERNELS];
+	cell_t *cells;                /* [prec][dist][kernel]                    */
+	/* grid, per [prec][kernel][cell]: the per-input error, mean bits, b1 */
+	double *g_err, *g_bits, *g_b1;
+	unsigned char *g_done;        /* [prec][cell] computed by this state     */
+} sweep_state;
+
+cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
+void cell_init(cell_t *c);
+void cell_merge(cell_t *dst, const cell_t *src);
+void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
+
+int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
+void sweep_free(sweep_state *s);
+/* Restore the kernels from cfg.names. */
+int  sweep_kernels_from_names(sweep_state *s);
+
+int  sweep_save_state(const sweep_state *s, const char *dir, const char *name);
+int  sweep_load_state(sweep_state *s, const char *path);
+int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
+
+/* Worst-case walk, then every CSV file; fmt is the stdout format. */
+int  sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial);
+
+#endif

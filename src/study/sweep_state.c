@@ -1,0 +1,303 @@
+/*
+ * sweep_state.c - the sweep's accumulators and their state file.
+ *
+ * Every accumulation here is exact or order-independent (integer counts,
+ * fx sums, maxima, worst lists ordered by error then index), so the data
+ * are the same bits for any thread count, and a merge of shards equals
+ * the unsharded run.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <errno.h>
+#include "sweep.h"
+#include "study.h"
+
+#define STATE_MAGIC "onbsweep-state2"
+
+cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k)
+{
+	return &s->cells[((size_t)prec * NDIST + (size_t)dist) * (size_t)s->cfg.nk + (size_t)k];
+}
+
+void cell_init(cell_t *c)
+{
+	int i;
+	memset(c, 0, sizeof *c);
+	for (i = 0; i < NWORST; i++) {
+		c->worst[i].key = -1.0;
+		c->worst[i].index = UINT64_MAX;
+	}
+}
+
+/* a ranks before b: larger error first, then the smaller index, then
+   sampled before walked (a total order, so merges are deterministic). */
+static int worse(const worst_t *a, const worst_t *b)
+{
+	if (a->key != b->key)
+		return a->key > b->key;
+	if (a->index != b->index)
+		return a->index < b->index;
+	return a->source < b->source;
+}
+
+static void worst_insert(cell_t *c, const worst_t *w)
+{
+	int i;
+	if (!worse(w, &c->worst[NWORST - 1]))
+		return;
+	for (i = 0; i < NWORST; i++)
+		if (c->worst[i].index == w->index && c->worst[i].source == w->source && c->worst[i].key == w->key)
+			return; /* already there */
+	i = NWORST - 1;
+	while (i > 0 && worse(w, &c->worst[i - 1])) {
+		c->worst[i] = c->worst[i - 1];
+		i--;
+	}
+	c->worst[i] = *w;
+}
+
+static double dmax(double a, double b) { return b > a ? b : a; }
+
+void cell_merge(cell_t *d, const cell_t *s)
+{
+	int i;
+	d->count += s->count; d->finite += s->finite; d->nonfinite += s->nonfinite;
+	d->wrong += s->wrong; d->comps += s->comps;
+	fx_add(&d->sumsq, &s->sumsq); fx_add(&d->sumdef2, &s->sumdef2); fx_add(&d->bits, &s->bits);
+	fx_add(&d->dirn2, &s->dirn2); fx_add(&d->dirc2, &s->dirc2);
+	d->max_defect = dmax(d->max_defect, s->max_defect);
+	d->max_ulp = dmax(d->max_ulp, s->max_ulp);
+	d->max_abs_eps = dmax(d->max_abs_eps, s->max_abs_eps);
+	d->max_bits = dmax(d->max_bits, s->max_bits);
+	d->max_in_norm = dmax(d->max_in_norm, s->max_in_norm);
+	d->max_dir_norm = dmax(d->max_dir_norm, s->max_dir_norm);
+	d->max_dir_cos = dmax(d->max_dir_cos, s->max_dir_cos);
+	for (i = 0; i < NWORST; i++)
+		if (s->worst[i].index != UINT64_MAX)
+			worst_insert(d, &s->worst[i]);
+	for (i = 0; i < NBINS; i++) {
+		d->bins[i].count += s->bins[i].count;
+		fx_add(&d->bins[i].sumsq, &s->bins[i].sumsq);
+		d->bins[i].max = dmax(d->bins[i].max, s->bins[i].max);
+	}
+}
+
+static void bin_add(bin_t *b, double e)
+{
+	b->count++;
+	fx_add_double(&b->sumsq, e * e);
+	if (e > b->max)
+		b->max = e;
+}
+
+static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+{
+	worst_t w;
+	double key;
+	c->count++;
+	if (m->nonfinite) {
+		c->nonfinite++;
+		key = INFINITY;
+	} else {
+		c->finite++;
+		if (m->has_basis) {
+			fx_add_double(&c->sumsq, m->sumsq);
+			fx_add_double(&c->sumdef2, m->defect * m->defect);
+			c->max_defect = dmax(c->max_defect, m->defect);
+			c->wrong += (uint64_t)m->wrong_hand;
+			key = m->defect;
+		} else {
+			key = dmax(m->dir_norm, m->dir_cos);
+		}
+		c->comps += (uint64_t)m->nbits;
+		fx_add_double(&c->bits, m->bits_sum);
+		c->max_ulp = dmax(c->max_ulp, m->ulp_max);
+		c->max_abs_eps = dmax(c->max_abs_eps, m->abs_eps_max);
+		c->max_bits = dmax(c->max_bits, m->bits_max);
+		c->max_dir_norm = dmax(c->max_dir_norm, m->dir_norm);
+		c->max_dir_cos = dmax(c->max_dir_cos, m->dir_cos);
+		fx_add_double(&c->dirn2, m->dir_norm * m->dir_norm);
+		fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
+		/* bins of the per-input error */
+		bin_add(&c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)], key);
+		if (n[2] <= 0.0) {
+			const double h = 1.0 + n[2];
+			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
+			bin_add(&c->bins[NB_NZ + b], key);
+		}
+		{
+			const double a = fabs(m->in_norm);
+			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
+			bin_add(&c->bins[NB_NZ + NB_LOG + b], key);
+		}
+	}
+	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
+	w.key = key;
+	w.index = index;
+	w.source = source;
+	if (!worse(&w, &c->worst[NWORST - 1]))
+		return; /* the common case: not among the worst */
+	w.branch = m->branch;
+	memcpy(w.n, n, sizeof w.n);
+	memcpy(w.out, m->out, sizeof w.out);
+	memcpy(w.ref, m->ref, sizeof w.ref);
+	w.defect = m->defect;
+	w.ulp = m->ulp_max;
+	w.bits_max = m->bits_max;
+	w.dir_norm = m->dir_norm;
+	w.dir_cos = m->dir_cos;
+	worst_insert(c, &w);
+}
+
+static size_t grid_cells(const sweep_state *s)
+{
+	return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols;
+}
+
+int sweep_alloc(sweep_state *s)
+{
+	size_t i, nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	s->cells = malloc(nc * sizeof *s->cells);
+	s->g_err = malloc(g * sizeof *s->g_err);
+	s->g_bits = malloc(g * sizeof *s->g_bits);
+	s->g_b1 = malloc(3 * g * sizeof *s->g_b1);
+	s->g_done = calloc(2 * grid_cells(s) + 1, 1);
+	if (!s->cells || !s->g_err || !s->g_bits || !s->g_b1 || !s->g_done) {
+		study_error("out of memory for the sweep's accumulators (grid %dx%d, %d methods)",
+		            s->cfg.grid_rows, s->cfg.grid_cols, s->cfg.nk);
+		sweep_free(s);
+		return -1;
+	}
+	for (i = 0; i < nc; i++)
+		cell_init(&s->cells[i]);
+	for (i = 0; i < g; i++)
+		s->g_err[i] = s->g_bits[i] = s->g_b1[3 * i] = s->g_b1[3 * i + 1] = s->g_b1[3 * i + 2] = NAN;
+	return 0;
+}
+
+void sweep_free(sweep_state *s)
+{
+	free(s->cells); free(s->g_err); free(s->g_bits); free(s->g_b1); free(s->g_done);
+	s->cells = NULL; s->g_err = s->g_bits = s->g_b1 = NULL; s->g_done = NULL;
+}
+
+int sweep_kernels_from_names(sweep_state *s)
+{
+	int i;
+	for (i = 0; i < s->cfg.nk; i++) {
+		char name[64];
+		const size_t len = strlen(s->cfg.names[i]);
+		const int fma = len > 4 && strcmp(s->cfg.names[i] + len - 4, "+fma") == 0;
+		snprintf(name, sizeof name, "%.*s", (int)(fma ? len - 4 : len), s->cfg.names[i]);
+		if (fma && !fma_available()) {
+			study_error("state has FMA kernels, but this CPU or build has no FMA");
+			return -1;
+		}
+		if (fma) { /* kernels_select with fma adds the plain copy, then the FMA one */
+			study_kernel tmp[2];
+			if (kernels_select(name, 1, tmp, 2) != 2)
+				return -1;
+			s->kernels[i] = tmp[1];
+		} else if (kernels_select(name, 0, &s->kernels[i], 1) != 1) {
+			return -1;
+		}
+	}
+	return 0;
+}
+
+static int wr(FILE *f, const void *p, size_t n) { return fwrite(p, 1, n, f) == n ? 0 : -1; }
+static int rd(FILE *f, void *p, size_t n) { return fread(p, 1, n, f) == n ? 0 : -1; }
+
+int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
+{
+	study_out o;
+	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	sweep_cfg cfg = s->cfg;
+	snprintf(cfg.magic, sizeof cfg.magic, "%s", STATE_MAGIC);
+	if (study_out_open(&o, dir, name) != 0)
+		return -1;
+	if (wr(o.f, &cfg, sizeof cfg) || wr(o.f, s->cells, nc * sizeof *s->cells) ||
+	    wr(o.f, s->g_err, g * sizeof *s->g_err) || wr(o.f, s->g_bits, g * sizeof *s->g_bits) ||
+	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s))) {
+		study_error("%s: write failed: %s", o.path, strerror(errno));
+		study_out_abort(&o);
+		return -1;
+	}
+	return study_out_commit(&o);
+}
+
+int sweep_load_state(sweep_state *s, const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	size_t nc, g;
+	int c;
+	memset(s, 0, sizeof *s);
+	if (!f) {
+		study_error("%s: %s", path, strerror(errno));
+		return -1;
+	}
+	if (rd(f, &s->cfg, sizeof s->cfg) || strcmp(s->cfg.magic, STATE_MAGIC) != 0) {
+		study_error("%s: not a sweep state file of this version (write one with 'sweep --shard K/N')", path);
+		fclose(f);
+		return -1;
+	}
+	if (s->cfg.nk < 1 || s->cfg.nk > SWEEP_MAX_KERNELS || s->cfg.grid_rows < 1 || s->cfg.grid_cols < 1 ||
+	    s->cfg.grid_rows > 4096 || s->cfg.grid_cols > 8192) {
+		study_error("%s: corrupt state header", path);
+		fclose(f);
+		return -1;
+	}
+	for (c = 0; c < s->cfg.nk; c++)
+		s->cfg.names[c][63] = '\0';
+	if (sweep_kernels_from_names(s) != 0 || sweep_alloc(s) != 0) {
+		fclose(f);
+		return -1;
+	}
+	nc = 2 * NDIST * (size_t)s->cfg.nk;
+	g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	if (rd(f, s->cells, nc * sizeof *s->cells) || rd(f, s->g_err, g * sizeof *s->g_err) ||
+	    rd(f, s->g_bits, g * sizeof *s->g_bits) || rd(f, s->g_b1, 3 * g * sizeof *s->g_b1) ||
+	    rd(f, s->g_done, 2 * grid_cells(s)) || fgetc(f) != EOF) {
+		study_error("%s: truncated or oversized state file", path);
+		fclose(f);
+		sweep_free(s);
+		return -1;
+	}
+	fclose(f);
+	return 0;
+}
+
+int sweep_merge_into(sweep_state *d, const sweep_state *s)
+{
+	sweep_cfg a = d->cfg, b = s->cfg;
+	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
+	int p, k;
+	/* everything but the shard index and the counters must agree */
+	a.shard_k = b.shard_k = 0;
+	a.evals = b.evals = a.checked = b.checked = 0;
+	memset(a.magic, 0, sizeof a.magic);
+	memset(b.magic, 0, sizeof b.magic);
+	if (memcmp(&a, &b, sizeof a) != 0) {
+		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
+		return -1;
+	}
+	for (i = 0; i < nc; i++)
+		cell_merge(&d->cells[i], &s->cells[i]);
+	for (p = 0; p < 2; p++)
+		for (i = 0; i < G; i++)
+			if (s->g_done[p * G + i]) {
+				d->g_done[p * G + i] = 1;
+				for (k = 0; k < d->cfg.nk; k++) {
+					const size_t j = ((size_t)p * (size_t)d->cfg.nk + (size_t)k) * G + i;
+					d->g_err[j] = s->g_err[j];
+					d->g_bits[j] = s->g_bits[j];
+					memcpy(&d->g_b1[3 * j], &s->g_b1[3 * j], 3 * sizeof(double));
+				}
+			}
+	d->cfg.evals += s->cfg.evals;
+	d->cfg.checked += s->cfg.checked;
+	return 0;
+}

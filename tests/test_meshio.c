@@ -1,0 +1,392 @@
+/*
+ * test_meshio.c - the OBJ and PLY normal readers on small files written
+ * here: counts, stored values, area-weighted normals with known answers,
+ * locations of degenerate normals, and the error line or byte offset of
+ * malformed variants.  Ends with every prefix of a binary PLY (each must
+ * be refused: no silent partial read) and seeded random byte mutations
+ * (each must be read or refused with a message, never crash).
+ */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "meshio.h"
+
+static int pass, failed;
+#define CHECK(c, ...) do { if (c) pass++; else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)
+
+static int rd(const char *name, const void *buf, size_t len, mesh_normals *m, char *err)
+{
+	return mesh_read_mem(name, buf, len, m, err, 512);
+}
+static int rds(const char *name, const char *s, mesh_normals *m, char *err)
+{
+	return rd(name, s, strlen(s), m, err);
+}
+
+/* index of the normal whose vertex index is vi, or -1 */
+static long find_vertex(const mesh_normals *m, size_t vi)
+{
+	size_t i;
+	for (i = 0; i < m->count; i++)
+		if (m->index[i] == vi)
+			return (long)i;
+	return -1;
+}
+
+static int near3(const mesh_normals *m, long i, double x, double y, double z)
+{
+	const double t = 4 * DBL_EPSILON;
+	return i >= 0 && fabs(m->x[i] - x) <= t && fabs(m->y[i] - y) <= t && fabs(m->z[i] - z) <= t;
+}
+
+static void expect_error(const char *name, const void *buf, size_t len, const char *w1, const char *w2)
+{
+	mesh_normals m;
+	char err[512];
+	int rc = rd(name, buf, len, &m, err);
+	CHECK(rc == -1, "%s: accepted malformed input", name);
+	CHECK(m.count == 0 && m.x == NULL, "%s: partial result left behind", name);
+	CHECK(strstr(err, w1) != NULL, "%s: error '%s' lacks '%s'", name, err, w1);
+	if (w2)
+		CHECK(strstr(err, w2) != NULL, "%s: error '%s' lacks '%s'", name, err, w2);
+	CHECK(strchr(err, '\n') == NULL, "%s: error is more than one line", name);
+}
+static void expect_errors(const char *name, const char *s, const char *w1, const char *w2)
+{
+	expect_error(name, s, strlen(s), w1, w2);
+}
+
+static const double r3 = 0.57735026918962576451; /* 1/sqrt(3) */
+
+static void test_obj(void)
+{
+	mesh_normals m;
+	mesh_stats st;
+	char err[512];
+	/* tetrahedron, no vn: face syntaxes v, v/vt, negative v/vt */
+	const char *tet =
+		"# tetrahedron\n"
+		"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+		"vt 0 0\nvt 1 0\nvt 0 1\n"
+		"f 1 3 2\n"
+		"f 1/1 2/2 4/3\n"
+		"f -4/1 -1/2 -2/3\n"
+		"f 2 3 4\n";
+	CHECK(rds("tet.obj", tet, &m, err) == 0, "tet.obj: %s", err);
+	CHECK(m.count == 4 && m.origin == MESH_COMPUTED && m.nfaces == 4 && m.ntriangles == 4, "tet counts %zu %d %zu", m.count, m.origin, m.nfaces);
+	CHECK(near3(&m, find_vertex(&m, 0), -r3, -r3, -r3), "tet vertex 1 normal (%a %a %a)", m.x[0], m.y[0], m.z[0]);
+	CHECK(near3(&m, find_vertex(&m, 1), 1, 0, 0), "tet vertex 2 normal");
+	CHECK(near3(&m, find_vertex(&m, 2), 0, 1, 0), "tet vertex 3 normal");
+	CHECK(near3(&m, find_vertex(&m, 3), 0, 0, 1), "tet vertex 4 normal");
+	CHECK(m.where[find_vertex(&m, 3)] == 5, "tet vertex 4 is on line 5, got %llu", (unsigned long long)m.where[3]);
+	CHECK(mesh_classify(&m, 0, 0, &st) == 0 && st.unit == 4 && st.nonunit == 0, "tet classify unit %zu", st.unit);
+	mesh_free(&m);
+
+	/* cube of quads (fan-triangulated): polygon-area weighting gives the
+	   corner directions exactly; an unused vertex is skipped and counted */
+	{
+		const char *cube =
+			"v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
+			"v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\nv 5 5 5\n"
+			"f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n";
+		int i, ok = 1;
+		CHECK(rds("cube.obj", cube, &m, err) == 0, "cube.obj: %s", err);
+		CHECK(m.count == 8 && m.unreferenced == 1 && m.ntriangles == 12, "cube counts %zu %zu %zu", m.count, m.unreferenced, m.ntriangles);
+		for (i = 0; i < 8 && m.count == 8; i++) {
+			double sx = (i == 1 || i == 2 || i == 5 || i == 6) ? r3 : -r3;
+			double sy = (i == 2 || i == 3 || i == 6 || i == 7) ? r3 : -r3;
+			double sz = i >= 4 ? r3 : -r3;
+			ok &= near3(&m, find_vertex(&m, (size_t)i), sx, sy, sz);
+		}
+		CHECK(ok, "cube corner normals are not (+-1,+-1,+-1)/sqrt(3)");
+		mesh_free(&m);
+	}
+
+	/* stored vn: v//vn and v/vt/vn faces; a zero, a NaN and a non-unit one */
+	{
+		const char *vn =
+			"v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+			"vt 0 0\n"
+			"vn 0 0 1\n"
+			"vn 0 0 0\n"
+			"vn nan 0 1\n"
+			"vn 0 0 2\n"
+			"vn 0.6 0.8 0\r\n"
+			"f 1//1 2//1 3/1/1\n";
+		CHECK(rds("vn.obj", vn, &m, err) == 0, "vn.obj: %s", err);
+		CHECK(m.count == 5 && m.origin == MESH_STORED, "vn count %zu", m.count);
+		CHECK(m.count == 5 && m.where[0] == 5 && m.where[4] == 9, "vn lines %llu %llu", (unsigned long long)m.where[0], (unsigned long long)m.where[4]);
+		CHECK(m.count == 5 && m.x[4] == 0.6 && m.y[4] == 0.8, "vn values");
+		CHECK(mesh_classify(&m, 0, 0, &st) == 0, "classify");
+		CHECK(st.zero == 1 && st.nonfinite == 1 && st.nonunit == 1 && st.unit == 2, "vn classes zero %zu nonfinite %zu nonunit %zu unit %zu",
+		      st.zero, st.nonfinite, st.nonunit, st.unit);
+		CHECK(st.dev_max == 1.0 && st.nbad == 2 && st.bad[0] == 1 && st.bad[1] == 2, "vn deviations %g, bad %zu", st.dev_max, st.nbad);
+		{
+			char w[160];
+			mesh_where(&m, 1, w, sizeof w);
+			CHECK(strcmp(w, "line 6") == 0, "where '%s'", w);
+		}
+		/* in float, 0.6 and 0.8 round so that |n| - 1 is about 3e-8: unit at 4 float ulps */
+		CHECK(mesh_classify(&m, 1, 0, &st) == 0 && st.unit == 2, "float unit %zu", st.unit);
+		mesh_free(&m);
+	}
+
+	expect_errors("badnum.obj", "v 0 0 0\nv 1 0 0\nv 0 1 x\nf 1 2 3\n", "line 3", "bad number 'x'");
+	expect_errors("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n", "line 5", "out of range");
+	expect_errors("negrange.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", "line 4", "out of range");
+	expect_errors("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4", "out of range");
+	expect_errors("vnrange.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n", "line 5", "normal index 2");
+	expect_errors("short.obj", "vn 0 1\n", "line 1", "needs 3 numbers");
+	expect_errors("long.obj", "vn 0 1 0 1\n", "line 1", "too many");
+	expect_errors("twov.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "line 3", "at least 3");
+	expect_errors("slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "line 4", "bad face vertex");
+	expect_errors("empty.obj", "", "empty", NULL);
+	expect_errors("nothing.obj", "# only a comment\nv 1 2 3\n", "no normals", NULL);
+	expect_error("utf16.obj", "\xfe\xff\0v\0 \0001", 8, "UTF-16", NULL);
+	{
+		/* a number longer than any float needs is refused, not truncated */
+		char big[300];
+		memset(big, '1', sizeof big);
+		memcpy(big, "vn 0 0 ", 7);
+		big[sizeof big - 1] = '\n';
+		expect_error("bignum.obj", big, sizeof big, "line 1", "bad number");
+	}
+}
+
+/* little-endian writers */
+static size_t put(unsigned char *p, const void *v, size_t n) { memcpy(p, v, n); return n; }
+static size_t putf(unsigned char *p, float v) { return put(p, &v, 4); }
+static size_t putd(unsigned char *p, double v) { return put(p, &v, 8); }
+static size_t puti(unsigned char *p, int v) { return put(p, &v, 4); }
+
+static void test_ply(void)
+{
+	mesh_normals m;
+	mesh_stats st;
+	char err[512];
+	const char *asc =
+		"ply\r\n"
+		"format ascii 1.0\n"
+		"comment three normals, one face\n"
+		"element vertex 3\n"
+		"property float x\nproperty float y\nproperty float z\n"
+		"property float nx\nproperty float ny\nproperty float nz\n"
+		"element face 1\n"
+		"property list uchar int vertex_indices\n"
+		"end_header\n"
+		"0 0 0 0 0 1\n"
+		"1 0 0 0.6 0.8 0\n"
+		"0 1 0 0 0 0\n"
+		"3 0 1 2\n";
+	CHECK(rds("a.ply", asc, &m, err) == 0, "a.ply: %s", err);
+	CHECK(m.count == 3 && m.origin == MESH_STORED && m.stored_type == MESH_T_FLOAT && m.ply_binary == 0, "a.ply counts %zu", m.count);
+	CHECK(m.count == 3 && m.x[1] == (double)0.6f && m.y[1] == (double)0.8f, "a.ply values are the float roundings");
+	CHECK(mesh_classify(&m, 1, 0, &st) == 0 && st.zero == 1 && st.nbad == 1 && st.bad[0] == 2, "a.ply zero");
+	{
+		char w[160];
+		mesh_where(&m, 2, w, sizeof w);
+		CHECK(strstr(w, "vertex 2 at byte") != NULL, "a.ply where '%s'", w);
+		CHECK(m.count == 3 && m.where[2] == (uint64_t)(strstr(asc, "0 1 0 0 0 0") - asc), "a.ply offset %llu", (unsigned long long)m.where[2]);
+	}
+	mesh_free(&m);
+
+	/* ascii, no normals: tetrahedron from faces, vertex_index spelling */
+	{
+		const char *tet =
+			"ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+			"element face 4\nproperty list uint8 int32 vertex_index\nend_header\n"
+			"0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+		CHECK(rds("tet.ply", tet, &m, err) == 0, "tet.ply: %s", err);
+		CHECK(m.count == 4 && m.origin == MESH_COMPUTED, "tet.ply count %zu", m.count);
+		CHECK(near3(&m, find_vertex(&m, 0), -r3, -r3, -r3) && near3(&m, find_vertex(&m, 3), 0, 0, 1), "tet.ply normals");
+		mesh_free(&m);
+	}
+
+	/* binary little endian, double normals plus a face list */
+	{
+		unsigned char b[1024];
+		const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+		                  "property double nx\nproperty double ny\nproperty double nz\nproperty uchar flag\n"
+		                  "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+		size_t h = strlen(hdr), n = h, rec = 12 + 24 + 1, cut;
+		unsigned char u8 = 3;
+		unsigned int u32;
+		memcpy(b, hdr, h);
+		n += putf(b + n, 0); n += putf(b + n, 0); n += putf(b + n, 0);
+		n += putd(b + n, 0.0); n += putd(b + n, -0.6); n += putd(b + n, -0.8); b[n++] = 7;
+		n += putf(b + n, 1); n += putf(b + n, 0); n += putf(b + n, 0);
+		n += putd(b + n, 0.1); n += putd(b + n, 0.2); n += putd(b + n, 0.3); b[n++] = 7;
+		n += put(b + n, &u8, 1);
+		u32 = 0; n += put(b + n, &u32, 4); u32 = 1; n += put(b + n, &u32, 4); u32 = 0; n += put(b + n, &u32, 4);
+		CHECK(rd("b.ply", b, n, &m, err) == 0, "b.ply: %s", err);
+		CHECK(m.count == 2 && m.stored_type == MESH_T_DOUBLE && m.ply_binary == 1, "b.ply count %zu", m.count);
+		CHECK(m.count == 2 && m.y[0] == -0.6 && m.z[1] == 0.3, "b.ply values");
+		CHECK(m.count == 2 && m.where[1] == h + rec, "b.ply offset %llu, expected %zu", (unsigned long long)m.where[1], h + rec);
+		mesh_free(&m);
+		/* every proper prefix of the body is refused, never read in part */
+		{
+			int ok = 1;
+			for (cut = h; cut < n; cut++) {
+				if (rd("b.ply", b, cut, &m, err) == 0) { ok = 0; mesh_free(&m); }
+				else if (!strstr(err, "byte")) ok = 0;
+			}
+			CHECK(ok, "a truncated binary PLY was accepted or the error named no byte offset");
+		}
+		expect_error("trunc.ply", b, n - 3, "byte", "truncated");
+		/* trailing garbage means the counts are wrong */
+		b[n] = 0;
+		expect_error("extra.ply", b, n + 1, "byte", "after the last element");
+		/* out-of-range face index */
+		u32 = 2; memcpy(b + n - 4, &u32, 4);
+		expect_error("badidx.ply", b, n, "out of range", "byte");
+		/* a list count larger than the file */
+		b[n - 13] = 255;
+		expect_error("biglist.ply", b, n, "count 255", "byte");
+	}
+
+	/* binary cube from faces (the layout of assimp's cube_binary.ply) */
+	{
+		unsigned char b[1024];
+		const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+		                  "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+		static const int q[6][4] = { {0,3,2,1}, {4,5,6,7}, {0,1,5,4}, {2,3,7,6}, {1,2,6,5}, {0,4,7,3} };
+		size_t n = strlen(hdr);
+		int i, k, ok = 1;
+		memcpy(b, hdr, n);
+		for (i = 0; i < 8; i++) {
+			n += putf(b + n, (i == 1 || i == 2 || i == 5 || i == 6) ? 1.0f : -1.0f);
+			n += putf(b + n, (i == 2 || i == 3 || i == 6 || i == 7) ? 1.0f : -1.0f);
+			n += putf(b + n, i >= 4 ? 1.0f : -1.0f);
+		}
+		for (i = 0; i < 6; i++) {
+			b[n++] = 4;
+			for (k = 0; k < 4; k++)
+				n += puti(b + n, q[i][k]);
+		}
+		CHECK(rd("cube.ply", b, n, &m, err) == 0, "cube.ply: %s", err);
+		for (i = 0; i < 8 && m.count == 8; i++)
+			ok &= near3(&m, find_vertex(&m, (size_t)i), (i == 1 || i == 2 || i == 5 || i == 6) ? r3 : -r3,
+			            (i == 2 || i == 3 || i == 6 || i == 7) ? r3 : -r3, i >= 4 ? r3 : -r3);
+		CHECK(m.count == 8 && ok, "cube.ply normals (count %zu)", m.count);
+		mesh_free(&m);
+		/* big endian reading of the same bytes is wrong-sized floats: still
+		   read in full or refused, never a crash (values are garbage) */
+	}
+
+	/* malformed ascii */
+	expect_errors("nohdr.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float nx\nproperty float ny\nproperty float nz\n0 0 1\n",
+	              "end_header", NULL);
+	expect_errors("badnum.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
+	              "0 0 1\n0 0.5x 1\n", "line 9", "bad number '0.5x'");
+	expect_errors("fewrec.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
+	              "0 0 1\n0 0 1\n0 0 1 0 0 1 0 0 1\n", "after the last element", NULL);
+	expect_errors("manyrec.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
+	              "0.0 0.0 1.0\n0.0 0.0 1.0\n0.0 0.0 1.0\n", "file ends", "vertex");
+	expect_errors("huge.ply", "ply\nformat ascii 1.0\nelement vertex 4000000000000\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n0 0 1\n",
+	              "count 4000000000000", "byte");
+	expect_errors("hugebin.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 9223372036854775807\nproperty double nx\nproperty double ny\nproperty double nz\nend_header\n",
+	              "count", "byte");
+	expect_errors("idx.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+	              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "out of range", "byte");
+	expect_errors("neg.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+	              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n", "out of range", NULL);
+	expect_errors("fmt.ply", "ply\nformat utf8 1.0\nend_header\n", "unknown format", "line 2");
+	expect_errors("magic.ply", "plx\nformat ascii 1.0\nend_header\n", "not a PLY", NULL);
+	expect_errors("noprop.ply", "ply\nformat ascii 1.0\nelement vertex 2\nend_header\n1 2\n", "no properties", NULL);
+	expect_errors("none.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n",
+	              "no normals", NULL);
+	expect_errors("u8.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nproperty float nx\nproperty float ny\nproperty float nz\n"
+	              "end_header\n300 0 1 2 0 0 1\n", "bad integer '300'", NULL);
+}
+
+/* deterministic xorshift */
+static unsigned long long rng = 0x9e3779b97f4a7c15ULL;
+static unsigned long long next_rand(void)
+{
+	rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17;
+	return rng;
+}
+
+static void test_mutations(void)
+{
+	static const char *seeds[] = {
+		"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nf 1/1/1 3/1/1 2/1/1\nf 1 2 4\nf -4 -1 -2\nf 2 3 4\n",
+		"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+		"element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+		"ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float nx\nproperty float ny\nproperty float nz\n"
+		"element face 1\nproperty list uchar uchar vertex_indices\nend_header\n\0\0\0\0\0\0\x80?\0\0\x80?\0\0\0\0\0\0\0\0\x03\x00\x01\x01",
+	};
+	static const size_t lens[] = { 0, 0, 0 };
+	int s, it, bad = 0, accepted = 0, refused = 0;
+	(void)lens;
+	for (s = 0; s < 3; s++) {
+		size_t len = s == 2 ? strlen(seeds[s]) + 24 : strlen(seeds[s]);
+		for (it = 0; it < 3000; it++) {
+			unsigned char buf[512];
+			mesh_normals m;
+			char err[512];
+			int k, nmut = 1 + (int)(next_rand() % 4);
+			size_t n = len;
+			memcpy(buf, seeds[s], len);
+			for (k = 0; k < nmut; k++) {
+				size_t at = (size_t)(next_rand() % n);
+				switch (next_rand() % 4) {
+				case 0: buf[at] = (unsigned char)next_rand(); break;
+				case 1: buf[at] ^= (unsigned char)(1u << (next_rand() % 8)); break;
+				case 2: n = at + 1; break;
+				default: buf[at] = "0123456789-. \n/"[next_rand() % 15]; break;
+				}
+			}
+			if (mesh_read_mem(s ? "m.ply" : "m.obj", buf, n, &m, err, sizeof err) == 0) {
+				size_t i;
+				accepted++;
+				for (i = 0; i < m.count; i++)
+					if (m.index[i] >= (m.origin == MESH_COMPUTED ? m.nvertices : (size_t)-1))
+						bad++;
+				mesh_free(&m);
+			} else {
+				refused++;
+				if (err[0] == '\0' || strchr(err, '\n'))
+					bad++;
+			}
+		}
+	}
+	CHECK(bad == 0, "%d mutated inputs gave an empty or multi-line error or an inconsistent result", bad);
+	CHECK(accepted > 0 && refused > 0, "mutations: %d accepted, %d refused (both kinds expected)", accepted, refused);
+	printf("mutations: %d accepted, %d refused\n", accepted, refused);
+}
+
+static void test_file(void)
+{
+	char dir[] = "/tmp/test_meshio.XXXXXX", path[256];
+	mesh_normals m;
+	char err[512];
+	FILE *f;
+	if (!mkdtemp(dir)) {
+		CHECK(0, "mkdtemp");
+		return;
+	}
+	snprintf(path, sizeof path, "%s/tri.obj", dir);
+	f = fopen(path, "w");
+	fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3", f); /* no final newline */
+	fclose(f);
+	CHECK(mesh_read_file(path, &m, err, sizeof err) == 0 && m.count == 3 && near3(&m, 0, 0, 0, 1), "tri.obj from a file: %s", err);
+	mesh_free(&m);
+	remove(path);
+	snprintf(path, sizeof path, "%s/missing.ply", dir);
+	CHECK(mesh_read_file(path, &m, err, sizeof err) == -1 && strstr(err, "cannot open"), "missing file: %s", err);
+	rmdir(dir);
+}
+
+int main(void)
+{
+	test_obj();
+	test_ply();
+	test_mutations();
+	test_file();
+	printf("%d passed, %d failed\n", pass, failed);
+	return failed != 0;
+}

@@ -1,0 +1,232 @@
+/*
+ * test_sweep.c - the MPFR reference and the metrics: hand-derived exact
+ * cases, deliberately broken methods caught by the expected amounts, the
+ * exact accumulator, the distributions' reproducibility.
+ */
+#include <stdio.h>
+#include <string.h>
+#include <math.h>
+#include <float.h>
+#include "reference.h"
+#include "inputs.h"
+#include "fx.h"
+#include "sweep.h"
+
+static int passed, failed;
+
+#define CHECK(cond, ...) do { \
+	if (cond) passed++; \
+	else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } \
+} while (0)
+
+static study_kernel kernel(const char *name)
+{
+	study_kernel k[2];
+	memset(k, 0, sizeof k);
+	if (kernels_select(name, 0, k, 1) != 1)
+		printf("no kernel %s\n", name);
+	return k[0];
+}
+
+/* Deliberately broken variants of duff (test-only methods). */
+static void duff_sign_error(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_duff(n, b1, b2);
+	b2->x = -b2->x; b2->y = -b2->y; b2->z = -b2->z;   /* b2 -> -b2: wrong hand */
+}
+static void duff_lost_ulp(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_duff(n, b1, b2);
+	b1->x = nextafter(b1->x, 2.0);                   /* one ulp off */
+}
+static void duff_lost_ulpf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_dufff(n, b1, b2);
+	b1->x = nextafterf(b1->x, 2.0f);
+}
+
+int main(void)
+{
+	ref_ctx *c = ref_new(127), *c2 = ref_new(191);
+	const double loc[3] = { 0.0, 0.0, 1.0 };
+	sample_metrics m, m2;
+	int i, p;
+	char why[256];
+
+	/* 1. Exact cases of the reference. */
+	{
+		const study_kernel duff = kernel("duff"), naive = kernel("naive"), fris = kernel("frisvad"),
+		                   hm = kernel("hughes_moeller"), rtow = kernel("rtow");
+		const double up[3] = { 0, 0, 1 }, down[3] = { 0, 0, -1 }, ey[3] = { 0, 1, 0 };
+		const double half[3] = { 0.5, 0.5, 0.5 };
+		for (p = 0; p < 2; p++) {
+			ref_eval(c, &duff, p, up, loc, 0, &m);
+			CHECK(m.ref[0] == 1 && m.ref[1] == 0 && m.ref[2] == 0 && m.ref[3] == 0 && m.ref[4] == 1 && m.ref[5] == 0,
+			      "duff at +z: exact (1,0,0),(0,1,0), got (%a,%a,%a),(%a,%a,%a)", m.ref[0], m.ref[1], m.ref[2], m.ref[3], m.ref[4], m.ref[5]);
+			CHECK(m.defect == 0.0 && m.ulp_max == 0.0 && m.abs_eps_max == 0.0 && !m.wrong_hand, "duff at +z: no error");
+			ref_eval(c, &duff, p, down, loc, 0, &m);
+			CHECK(m.branch == 1 && m.ref[0] == 1 && m.ref[4] == -1 && m.defect == 0.0,
+			      "duff at -z: lower branch, b1 = (1,0,0), b2 = (0,-1,0)");
+			ref_eval(c, &naive, p, ey, loc, 0, &m);
+			CHECK(m.ref[0] == 1 && m.ref[5] == -1 && m.defect == 0.0, "naive at +y: b1 = x, b2 = n x b1 = -z");
+			ref_eval(c, &hm, p, up, loc, 0, &m);
+			CHECK(m.branch == 0 && m.ref[4] == -1 && m.ref[0] == -1, "hughes_moeller at +z: b2 = (0,-1,0), b1 = b2 x n = (-1,0,0), got b1.x %a", m.ref[0]);
+		}
+		/* Frisvad's formula on (1/2, 1/2, 1/2) (not unit, exact in binary):
+		   a = 2/3, b1 = (1 - 1/6, -1/6, -1/2), b2 = (-1/6, 5/6, -1/2). */
+		ref_eval(c, &fris, PREC_DOUBLE, half, loc, 0, &m);
+		CHECK(m.ref[0] == 5.0 / 6.0 && m.ref[1] == -1.0 / 6.0 && m.ref[2] == -0.5 && m.ref[3] == -1.0 / 6.0 &&
+		      m.ref[4] == 5.0 / 6.0 && m.ref[5] == -0.5, "frisvad on (1/2,1/2,1/2): exact sixths, got %a %a", m.ref[0], m.ref[1]);
+		/* |n| - 1 of that input: sqrt(3)/2 - 1 */
+		CHECK(fabs(m.in_norm - (sqrt(3.0) / 2.0 - 1.0)) < 1e-16, "|n|-1 of (1/2,1/2,1/2): %.17g", m.in_norm);
+		/* its defects: b1.n = (5/6 - 1/6 - 1/2)/2 = 1/12, up to the outputs' rounding */
+		CHECK(fabs(m.d[DEF_D1N] - 1.0 / 12.0) < 1e-16, "frisvad (1/2,1/2,1/2): b1.n = 1/12, got %.17g", m.d[DEF_D1N]);
+		/* rtow normalizes its input: the exact frame of 2z is the frame of z */
+		{
+			const double twoz[3] = { 0, 0, 2 };
+			ref_eval(c, &rtow, PREC_DOUBLE, twoz, loc, 0, &m);
+			CHECK(m.ulp_max == 0.0 && m.abs_eps_max == 0.0, "rtow on (0,0,2): exact");
+		}
+	}
+
+	/* 2. Broken methods are flagged by the expected amounts. */
+	{
+		study_kernel bad = kernel("duff");
+		const double up[3] = { 0, 0, 1 };
+		bad.basis = duff_sign_error;
+		ref_eval(c, &bad, PREC_DOUBLE, up, loc, 0, &m);
+		CHECK(m.wrong_hand == 1 && m.det == -1.0, "sign error: wrong hand, det -1 (got %d, %g)", m.wrong_hand, m.det);
+		CHECK(m.defect == 0.0, "sign error: still orthonormal (defect %g)", m.defect);
+		CHECK(m.abs_eps_max == 2.0 / DBL_EPSILON, "sign error: forward error 2 = %g eps, got %g", 2.0 / DBL_EPSILON, m.abs_eps_max);
+		bad.basis = duff_lost_ulp;
+		ref_eval(c, &bad, PREC_DOUBLE, up, loc, 0, &m);
+		CHECK(m.ulp_max == 1.0, "lost ulp: exactly 1 ulp forward, got %.17g", m.ulp_max);
+		CHECK(m.bits_max == 1.0, "lost ulp: 1 bit of error (Herbie), got %.17g", m.bits_max);
+		CHECK(fabs(m.d[DEF_N1] - DBL_EPSILON) < 1e-30, "lost ulp: |b1|-1 = 2^-52, got %a", m.d[DEF_N1]);
+		CHECK(!m.wrong_hand, "lost ulp: right hand");
+		bad.basisf = duff_lost_ulpf;
+		ref_eval(c, &bad, PREC_FLOAT, up, loc, 0, &m);
+		CHECK(m.ulp_max == 1.0 && fabs(m.d[DEF_N1] - FLT_EPSILON) < 1e-20, "lost ulp in float: 1 ulp, |b1|-1 = 2^-23 (got %g, %a)", m.ulp_max, m.d[DEF_N1]);
+		/* a lost ulp on a generic input: forward error grows by about one ulp */
+		{
+			const double n[3] = { 0x1.3p-2, -0x1.7p-1, 0x1.9p-1 };
+			sample_metrics good;
+			const study_kernel duff = kernel("duff");
+			double nn[3];
+			const double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+			for (i = 0; i < 3; i++) nn[i] = n[i] / len;
+			ref_eval(c, &duff, PREC_DOUBLE, nn, loc, 0, &good);
+			ref_eval(c, &bad, PREC_DOUBLE, nn, loc, 0, &m);
+			CHECK(m.ulp_max >= 0.5 && m.ulp_max <= good.ulp_max + 1.5, "lost ulp (generic n): %g ulp, method alone %g", m.ulp_max, good.ulp_max);
+		}
+	}
+
+	/* 3. Known failures: frisvad in float just above its threshold fails,
+	      duff does not; tangent_cross_z at -z is not finite. */
+	{
+		const study_kernel fris = kernel("frisvad"), duff = kernel("duff"), tcz = kernel("tangent_cross_z");
+		double worst_f = 0, worst_d = 0;
+		dist_spec d;
+		uint64_t k;
+		memset(&d, 0, sizeof d);
+		d.dist = DIST_SOUTH; d.prec = PREC_FLOAT; d.seed = 7; d.count = 4096;
+		for (k = 0; k < d.count; k++) {
+			double n[3], lv[3], aux;
+			dist_sample(&d, k, n, lv, &aux);
+			ref_eval(c, &fris, PREC_FLOAT, n, lv, 0, &m);
+			if (m.defect > worst_f) worst_f = m.defect;
+			ref_eval(c, &duff, PREC_FLOAT, n, lv, 0, &m);
+			if (m.defect > worst_d) worst_d = m.defect;
+		}
+		CHECK(worst_f > 0.1, "frisvad float near -z: published failure, max defect %g > 0.1", worst_f);
+		CHECK(worst_d < 4.0 * FLT_EPSILON, "duff float near -z: max defect %g < 4 eps", worst_d);
+		{
+			const double down[3] = { 0, 0, -1 };
+			ref_eval(c, &tcz, PREC_FLOAT, down, loc, 0, &m);
+			CHECK(m.nonfinite == 1, "tangent_cross_z at -z: non-finite");
+		}
+	}
+
+	/* 4. The two-precision check agrees on ordinary inputs and the MPFR
+	      reference does not depend on the context's history. */
+	{
+		const study_kernel all[3] = { kernel("naive"), kernel("frisvad_rotate"), kernel("rtow") };
+		dist_spec d;
+		uint64_t k;
+		int bad = 0;
+		memset(&d, 0, sizeof d);
+		d.dist = DIST_UNIFORM; d.prec = PREC_DOUBLE; d.seed = 3; d.count = 2000;
+		for (k = 0; k < d.count; k++) {
+			double n[3], lv[3], aux;
+			dist_sample(&d, k, n, lv, &aux);
+			for (i = 0; i < 3; i++) {
+				ref_eval(c, &all[i], PREC_DOUBLE, n, lv, 0, &m);
+				ref_eval(c2, &all[i], PREC_DOUBLE, n, lv, 0, &m2);
+				if (!ref_agree(&m, &m2, why, sizeof why)) {
+					if (!bad) printf("disagreement: %s\n", why);
+					bad++;
+				}
+			}
+		}
+		CHECK(bad == 0, "127 and 191 bits agree on 6000 uniform evaluations (%d disagree)", bad);
+		m2 = m;
+		m2.d[DEF_D12] *= 1.0 + 0x1p-30;
+		CHECK(m2.d[DEF_D12] == m.d[DEF_D12] || !ref_agree(&m, &m2, why, sizeof why), "ref_agree notices a 2^-30 relative change");
+	}
+
+	/* 5. The exact accumulator: order-independent, exact on dyadic terms. */
+	{
+		fx a, b;
+		memset(&a, 0, sizeof a);
+		memset(&b, 0, sizeof b);
+		fx_add_double(&a, 1.0); fx_add_double(&a, 0x1p-200); fx_add_double(&a, 3.0);
+		fx_add_double(&b, 3.0); fx_add_double(&b, 0x1p-200); fx_add_double(&b, 1.0);
+		CHECK(memcmp(&a, &b, sizeof a) == 0, "fx: sums are order-independent");
+		CHECK(fx_value(&a) == 4.0, "fx: 1 + 3 + 2^-200 reads 4 in double, got %a", fx_value(&a));
+		fx_add_double(&a, 0x1p90);
+		CHECK(isinf(fx_value(&a)), "fx: saturates to +inf beyond 2^80");
+		memset(&a, 0, sizeof a);
+		for (i = 0; i < 1000; i++) fx_add_double(&a, 0.1);
+		CHECK(fabs(fx_value(&a) - 100.0) < 1e-12, "fx: 1000 x 0.1 = 100 (got %.17g)", fx_value(&a));
+	}
+
+	/* 6. Distributions: pure functions of (seed, index), in the format. */
+	{
+		int dd, bad = 0;
+		for (p = 0; p < 2; p++)
+			for (dd = 0; dd < NDIST; dd++) {
+				dist_spec d;
+				uint64_t k;
+				memset(&d, 0, sizeof d);
+				d.dist = dd; d.prec = p; d.seed = 11; d.count = 500;
+				d.ex_from = -1.0; d.ex_values = 100; d.ex_azimuths = 5; d.grid_rows = 10; d.grid_cols = 20;
+				if (dist_prepare(&d) != 0) { bad++; continue; }
+				for (k = 0; k < d.count && k < 500; k++) {
+					double n1[3], n2[3], l1[3], l2[3], a1, a2;
+					dist_sample(&d, k, n1, l1, &a1);
+					dist_sample(&d, k, n2, l2, &a2);
+					int b0 = bad;
+					if (memcmp(n1, n2, sizeof n1) || memcmp(l1, l2, sizeof l1)) bad++;
+					for (i = 0; i < 3; i++)
+						if (fmt_round(n1[i], p) != n1[i] || !isfinite(n1[i])) bad++;
+					if (dd != DIST_NONUNIT && dd != DIST_THRESHOLD) {
+						const long double len = sqrtl((long double)n1[0] * n1[0] + (long double)n1[1] * n1[1] + (long double)n1[2] * n1[2]);
+						if (fabsl(len - 1.0L) > 2.0 * (p ? DBL_EPSILON : FLT_EPSILON)) bad++;
+					}
+					if (dd == DIST_SOUTH && !(n1[2] <= -0.9 + 1e-7)) bad++;
+					if (dd == DIST_NORTH && !(n1[2] >= 0.9 - 1e-7)) bad++;
+					if (dd == DIST_EXHAUSTIVE && n1[2] != fmt_step(-1.0, (int64_t)(k / 5), p)) bad++;
+					if (bad != b0 && bad < 5)
+						printf("  %s %s input %llu: (%a, %a, %a)\n", dist_name(dd), p ? "double" : "float",
+						       (unsigned long long)k, n1[0], n1[1], n1[2]);
+				}
+				dist_free(&d);
+			}
+		CHECK(bad == 0, "distributions: reproducible, representable, unit to rounding, in range (%d bad)", bad);
+	}
+
+	ref_free(c);
+	ref_free(c2);
+	printf("test_sweep: %d passed, %d failed\n", passed, failed);
+	return failed ? 1 : 0;
+}

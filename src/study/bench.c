@@ -525,6 +525,11 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 			continue;
 		printf("\n%s: batch M bases/s (median), L2-resident and stream, 1 and %d threads; per call ns (inline, 1 thread)\n",
 		       p ? "double" : "float", o->threads);
+		printf("  roof%% = stream, 1 thread, vs the copy; vsYard = L2, 1 thread, vs the yardstick (both from best times);\n"
+		       "  vec = widest packed register of the kernel that ran; call ns = inline, independent calls; lat ns = dependent\n"
+		       "  chain; lat-ch = lat ns minus the chain alone (%.2f ns)\n",
+		       find_row(rs, o->meth[0]->name, p, "call_latency", "l2", 0) ?
+		       find_row(rs, o->meth[0]->name, p, "call_latency", "l2", 0)->chain_ns : NAN);
 		printf("%-24s %8s %8s %8s %8s %6s %6s %6s %7s %7s %7s\n", "method", "L2 1t", "L2 all", "strm 1t", "strm all",
 		       "roof%", "vsYard", "vec", "call ns", "lat ns", "lat-ch");
 		for (mi = -1; mi < o->nmeth; mi++) {

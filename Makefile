@@ -82,6 +82,12 @@ else
 $(B)/study/fma_kernels.o: XFLAGS = -ffp-contract=fast
 endif
 
+# The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
+# libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
+$(B)/study/yardstick.o: src/study/yardstick.c src/study/bench.h include/onb.h Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -c $< -o $@
+
 $(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ))
 	rm -f $@
 	$(AR) rcs $@ $^

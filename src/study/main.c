@@ -18,6 +18,8 @@ static const struct {
 	{ "threshold", cmd_threshold, "Nelson Max's analysis of Frisvad's threshold t near -1" },
 	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
 	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
+	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },
+	{ "table", cmd_table, "the speed-accuracy trade table (bench.csv joined with a sweep's summary.csv)" },
 };
 
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

@@ -31,6 +31,8 @@ int cmd_threshold(int argc, char **argv);
 int threshold_is_state(const char *path);
 int threshold_merge(int nfiles, char **files, const char *out, int threads);
 int cmd_scene(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
+int cmd_table(int argc, char **argv);
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */

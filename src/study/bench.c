@@ -1,0 +1,658 @@
+/*
+ * bench.c - `onbstudy bench`: batch throughput, per-call throughput and
+ * latency of every registry method, beside a copy roofline and a
+ * hand-written -march=native yardstick.  Writes bench.csv.
+ *
+ * Every measurement: the same pre-generated uniform inputs for every
+ * method, a calibration pass, a warm-up repetition, then `reps` timed
+ * repetitions of `inner` passes each (each repetition lasts at least
+ * `target` seconds), timed between OpenMP barriers; median and minimum
+ * over repetitions.  Results stay live through checksums of the outputs,
+ * written to the CSV.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <omp.h>
+#include "study.h"
+#include "bench.h"
+
+typedef struct {
+	const char *method;   /* registry name, or "copy" for the roofline */
+	int dbl;
+	const char *mode;     /* batch, yardstick, roofline, call_throughput, call_latency */
+	const char *size_class; /* l2 or stream */
+	size_t bytes;
+	bench_result r;
+	double chain_ns, frac_roof, vs_yard, checksum;
+	char isa[32];
+	const char *vec;
+} bench_row;
+
+typedef struct {
+	bench_row *v;
+	size_t n, cap;
+} bench_rows;
+
+static volatile double bench_sink;
+
+static bench_row *rows_add(bench_rows *rs)
+{
+	if (rs->n == rs->cap) {
+		size_t cap = rs->cap ? 2 * rs->cap : 256;
+		bench_row *t = realloc(rs->v, cap * sizeof *t);
+		if (!t)
+			return NULL;
+		rs->v = t;
+		rs->cap = cap;
+	}
+	memset(&rs->v[rs->n], 0, sizeof rs->v[rs->n]);
+	rs->v[rs->n].chain_ns = NAN;
+	rs->v[rs->n].frac_roof = NAN;
+	rs->v[rs->n].vs_yard = NAN;
+	rs->v[rs->n].checksum = NAN;
+	return &rs->v[rs->n++];
+}
+
+typedef struct {
+	int quick, threads, csv, nmeth, prec_mask; /* prec_mask: 1 float, 2 double */
+	const onb_method *meth[64];
+	const char *out;
+	double stream_mib;
+	unsigned long long seed;
+	int reps, warmup;
+	double target;
+} bench_opts;
+
+static const char usage_text[] =
+	"usage: onbstudy bench [options]\n"
+	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
+	"  --precision P          float, double or both (default both)\n"
+	"  --threads N            threads of the all-threads runs (default: OpenMP's maximum)\n"
+	"  --out DIR              output directory (default results/run-<UTC date>)\n"
+	"  --quick                a check, not a measurement: 3 short repetitions and a 16 MiB\n"
+	"                         'stream' set (under 15 s); the default run takes about a minute\n"
+	"  --stream-mib M         smallest float working set of the stream size (default 64)\n"
+	"  --seed S               input seed (default 1)\n"
+	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n";
+
+static int parse_opts(int argc, char **argv, bench_opts *o)
+{
+	int k;
+	size_t nm, i;
+	const onb_method *all = onb_methods(&nm);
+	memset(o, 0, sizeof *o);
+	o->prec_mask = 3;
+	o->threads = omp_get_max_threads();
+	o->stream_mib = -1.0;
+	o->seed = 1;
+	for (k = 0; k < argc; k++) {
+		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
+		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+			fputs(usage_text, stdout);
+			return 1;
+		} else if (strcmp(a, "--quick") == 0) {
+			o->quick = 1;
+			continue;
+		}
+		if (strcmp(a, "--methods") && strcmp(a, "--precision") && strcmp(a, "--threads") && strcmp(a, "--out") &&
+		    strcmp(a, "--format") && strcmp(a, "--stream-mib") && strcmp(a, "--seed")) {
+			study_error("bench: unknown argument '%s' (try 'onbstudy bench --help')", a);
+			return -1;
+		}
+		if (!v) {
+			study_error("bench: %s needs a value", a);
+			return -1;
+		}
+		k++;
+		if (strcmp(a, "--methods") == 0) {
+			const char *p = v;
+			if (!*p) {
+				study_error("bench: --methods: empty list");
+				return -1;
+			}
+			while (*p) {
+				char name[64];
+				size_t l = strcspn(p, ",");
+				const onb_method *m;
+				if (l == 0 || l >= sizeof name) {
+					study_error("bench: --methods: bad list '%s'", v);
+					return -1;
+				}
+				memcpy(name, p, l);
+				name[l] = '\0';
+				m = onb_find(name);
+				if (!m) {
+					study_error("bench: --methods: unknown method '%s' (see onbstudy list)", name);
+					return -1;
+				}
+				for (i = 0; i < (size_t)o->nmeth; i++)
+					if (o->meth[i] == m)
+						break;
+				if (i == (size_t)o->nmeth) {
+					if (o->nmeth == 64) {
+						study_error("bench: --methods: too many methods");
+						return -1;
+					}
+					o->meth[o->nmeth++] = m;
+				}
+				p += l;
+				if (*p == ',') {
+					p++;
+					if (!*p) {
+						study_error("bench: --methods: bad list '%s'", v);
+						return -1;
+					}
+				}
+			}
+		} else if (strcmp(a, "--precision") == 0) {
+			if (strcmp(v, "float") == 0)
+				o->prec_mask = 1;
+			else if (strcmp(v, "double") == 0)
+				o->prec_mask = 2;
+			else if (strcmp(v, "both") == 0)
+				o->prec_mask = 3;
+			else {
+				study_error("bench: --precision: expected float, double or both, got '%s'", v);
+				return -1;
+			}
+		} else if (strcmp(a, "--threads") == 0) {
+			long t;
+			if (parse_int("bench: --threads", v, 1, 1024, &t) != 0)
+				return -1;
+			o->threads = (int)t;
+		} else if (strcmp(a, "--out") == 0) {
+			if (!*v) {
+				study_error("bench: --out: empty directory name");
+				return -1;
+			}
+			o->out = v;
+		} else if (strcmp(a, "--format") == 0) {
+			if (strcmp(v, "csv") == 0)
+				o->csv = 1;
+			else if (strcmp(v, "table") == 0)
+				o->csv = 0;
+			else {
+				study_error("bench: --format: expected table or csv, got '%s'", v);
+				return -1;
+			}
+		} else if (strcmp(a, "--stream-mib") == 0) {
+			if (parse_double("bench: --stream-mib", v, &o->stream_mib) != 0)
+				return -1;
+			if (!(o->stream_mib >= 1.0 && o->stream_mib <= 65536.0)) {
+				study_error("bench: --stream-mib: %s is out of range [1, 65536]", v);
+				return -1;
+			}
+		} else if (strcmp(a, "--seed") == 0) {
+			if (parse_u64("bench: --seed", v, 0, ~0ULL, &o->seed) != 0)
+				return -1;
+		}
+	}
+	if (o->nmeth == 0)
+		for (i = 0; i < nm && i < 64; i++)
+			o->meth[o->nmeth++] = &all[i];
+	if (o->stream_mib < 0.0)
+		o->stream_mib = o->quick ? 16.0 : 64.0;
+	o->reps = o->quick ? 3 : 11;
+	o->warmup = 1;
+	o->target = o->quick ? 0.5e-3 : 10e-3;
+	return 0;
+}
+
+/* ---- kernels for the runner -------------------------------------------- */
+
+typedef struct {
+	const bench_call *c;
+	int dbl;
+	const void *in;
+	void *out;
+	double sum;
+} call_ctx;
+
+static void call_tp_kernel(void *ctx, size_t lo, size_t hi)
+{
+	call_ctx *c = ctx;
+	if (c->dbl)
+		c->c->tp(hi - lo, (const onb_vec3 *)c->in + lo, (bench_pair *)c->out + lo);
+	else
+		c->c->tpf(hi - lo, (const onb_vec3f *)c->in + lo, (bench_pairf *)c->out + lo);
+}
+
+static void call_lat_kernel(void *ctx, size_t lo, size_t hi)
+{
+	call_ctx *c = ctx;
+	if (c->dbl)
+		c->sum += c->c->lat(hi - lo, (const onb_vec3 *)c->in + lo);
+	else
+		c->sum += c->c->latf(hi - lo, (const onb_vec3f *)c->in + lo);
+}
+
+static int measure(bench_kernel k, void *ctx, size_t n, int threads, const bench_opts *o, bench_result *r)
+{
+	bench_cfg cfg;
+	cfg.threads = threads;
+	cfg.warmup = o->warmup;
+	cfg.reps = o->reps;
+	cfg.inner = bench_calibrate(k, ctx, n, threads, o->target, 100000);
+	return bench_run(k, ctx, n, &cfg, r);
+}
+
+static const char *clone_name(void)
+{
+	const char *isa = onb_batch_isa();
+	return strcmp(isa, "sse2") == 0 ? "default" : isa;
+}
+
+/* The vector width of the batch clone that ran. */
+static const char *batch_vec(const char *method, int dbl)
+{
+	char sym[128];
+	const char *w;
+	snprintf(sym, sizeof sym, "onb_%s_batch%s.%s", method, dbl ? "" : "f", clone_name());
+	w = bench_vector_width(sym);
+	if (strcmp(w, "unknown") == 0) { /* hand-dispatched kernels (batch.c) */
+		snprintf(sym, sizeof sym, "onb__%s_batch%s_%s", method, dbl ? "" : "f", clone_name());
+		w = bench_vector_width(sym);
+	}
+	if (strcmp(w, "unknown") == 0) {
+		snprintf(sym, sizeof sym, "onb_%s_batch%s", method, dbl ? "" : "f");
+		w = bench_vector_width(sym);
+	}
+	return w;
+}
+
+static const char *sym_vec(const char *prefix, const char *method, int dbl)
+{
+	char sym[128];
+	snprintf(sym, sizeof sym, "%s%s%s", prefix, method, dbl ? "" : "f");
+	return bench_vector_width(sym);
+}
+
+/* One precision: every measurement, appended to rs.  0 or -1. */
+static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_stream, bench_rows *rs)
+{
+	const int T = o->threads;
+	const int nthr = T > 1 ? 2 : 1;
+	const int thr[2] = { 1, T };
+	const size_t w = dbl ? sizeof(double) : sizeof(float);
+	const size_t n_l2_all = n_l2 * (size_t)T;
+	const size_t n_gen = n_stream > n_l2_all ? n_stream : n_l2_all;
+	size_t ny, i, roof0 = rs->n;
+	const bench_yardstick *yd = bench_yardsticks(&ny);
+	double *gx = malloc(n_gen * sizeof *gx), *gy = malloc(n_gen * sizeof *gy), *gz = malloc(n_gen * sizeof *gz);
+	bench_soa soa[2];
+	void *aos_in = NULL, *aos_out = NULL;
+	int s, t, mi, rc = -1;
+	const char *cls[2] = { "l2", "stream" };
+	const size_t sz[2][2] = { { n_l2, n_l2_all }, { n_stream, n_stream } };
+	const bench_call *chain = bench_call_find("chain");
+	double chain_ns = NAN;
+
+	memset(soa, 0, sizeof soa);
+	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, dbl) || bench_soa_alloc(&soa[1], n_stream, dbl))
+		goto oom;
+	aos_in = malloc(n_l2 * (dbl ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
+	aos_out = malloc(n_l2 * (dbl ? sizeof(bench_pair) : sizeof(bench_pairf)));
+	if (!aos_in || !aos_out)
+		goto oom;
+	bench_fill_uniform(n_gen, o->seed, gx, gy, gz);
+	for (s = 0; s < 2; s++)
+		for (i = 0; i < soa[s].n; i++) {
+			if (dbl) {
+				((double *)soa[s].in[0])[i] = gx[i];
+				((double *)soa[s].in[1])[i] = gy[i];
+				((double *)soa[s].in[2])[i] = gz[i];
+			} else {
+				((float *)soa[s].in[0])[i] = (float)gx[i];
+				((float *)soa[s].in[1])[i] = (float)gy[i];
+				((float *)soa[s].in[2])[i] = (float)gz[i];
+			}
+		}
+	for (i = 0; i < n_l2; i++) {
+		if (dbl) {
+			onb_vec3 *v = (onb_vec3 *)aos_in + i;
+			v->x = gx[i]; v->y = gy[i]; v->z = gz[i];
+		} else {
+			onb_vec3f *v = (onb_vec3f *)aos_in + i;
+			v->x = (float)gx[i]; v->y = (float)gy[i]; v->z = (float)gz[i];
+		}
+	}
+
+	/* roofline, batch and yardstick: the same SoA arrays, same sizes; a
+	   method's yardstick runs right after it at each size and thread
+	   count, so that both see the same machine load */
+	for (mi = -1; mi < o->nmeth; mi++) {
+		const bench_yardstick *y = NULL;
+		int v;
+		if (mi >= 0)
+			for (i = 0; i < ny; i++)
+				if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
+					y = &yd[i];
+		for (s = 0; s < 2; s++)
+			for (t = 0; t < nthr; t++)
+				for (v = 0; v < (y ? 2 : 1); v++) {
+					bench_soa *b = &soa[s];
+					bench_row *r = rows_add(rs);
+					if (!r)
+						goto oom;
+					r->dbl = dbl;
+					r->size_class = cls[s];
+					r->bytes = sz[s][t] * 9 * w;
+					if (mi < 0) {
+						r->method = "copy";
+						r->mode = "roofline";
+						b->batch = bench_copy;
+						b->batchf = bench_copyf;
+						snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
+						r->vec = sym_vec("bench_copy", "", dbl);
+					} else if (v == 0) {
+						r->method = o->meth[mi]->name;
+						r->mode = "batch";
+						b->batch = o->meth[mi]->batch;
+						b->batchf = o->meth[mi]->batchf;
+						snprintf(r->isa, sizeof r->isa, "%s", onb_batch_isa());
+						r->vec = batch_vec(r->method, dbl);
+					} else {
+						r->method = y->name;
+						r->mode = "yardstick";
+						b->batch = y->batch;
+						b->batchf = y->batchf;
+						snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
+						r->vec = sym_vec("bench_yard_", y->name, dbl);
+					}
+					if (measure(bench_soa_kernel, b, sz[s][t], thr[t], o, &r->r) != 0)
+						goto oom;
+					/* the outputs of this run, over the items it wrote */
+					{
+						size_t keep = b->n;
+						b->n = sz[s][t];
+						r->checksum = bench_soa_checksum(b);
+						b->n = keep;
+					}
+					bench_sink = r->checksum;
+				}
+	}
+	/* fractions of the roofline, ratios to the yardstick */
+	for (i = roof0; i < rs->n; i++) {
+		bench_row *r = &rs->v[i];
+		size_t j;
+		for (j = roof0; j < rs->n; j++) {
+			const bench_row *q = &rs->v[j];
+			if (q->r.n != r->r.n || q->r.threads != r->r.threads || strcmp(q->size_class, r->size_class))
+				continue;
+			if (strcmp(q->mode, "roofline") == 0)
+				r->frac_roof = q->r.min_s / r->r.min_s;
+			if (strcmp(r->mode, "batch") == 0 && strcmp(q->mode, "yardstick") == 0 && strcmp(q->method, r->method) == 0)
+				r->vs_yard = q->r.min_s / r->r.min_s;
+		}
+	}
+
+	/* per call: the inline function over an array of structs, 1 thread */
+	{
+		call_ctx cc;
+		cc.dbl = dbl;
+		cc.in = aos_in;
+		cc.out = aos_out;
+		cc.c = chain;
+		cc.sum = 0.0;
+		{
+			bench_result cr;
+			if (measure(call_lat_kernel, &cc, n_l2, 1, o, &cr) != 0)
+				goto oom;
+			chain_ns = cr.median_s / (double)n_l2 * 1e9;
+			bench_sink = cc.sum;
+		}
+		for (mi = 0; mi < o->nmeth; mi++) {
+			const bench_call *c = bench_call_find(o->meth[mi]->name);
+			bench_row *r;
+			if (!c) {
+				study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
+				goto fail;
+			}
+			cc.c = c;
+			for (t = 0; t < 2; t++) {
+				r = rows_add(rs);
+				if (!r)
+					goto oom;
+				r->method = c->name;
+				r->dbl = dbl;
+				r->mode = t ? "call_latency" : "call_throughput";
+				r->size_class = "l2";
+				r->bytes = n_l2 * 9 * w;
+				snprintf(r->isa, sizeof r->isa, "%s", bench_calls_isa());
+				cc.sum = 0.0;
+				if (measure(t ? call_lat_kernel : call_tp_kernel, &cc, n_l2, 1, o, &r->r) != 0)
+					goto oom;
+				if (t) {
+					/* one more pass, alone, for the checksum */
+					cc.sum = 0.0;
+					call_lat_kernel(&cc, 0, n_l2);
+					r->checksum = cc.sum;
+					r->chain_ns = chain_ns;
+					r->vec = sym_vec("bench_lat_", c->name, dbl);
+				} else {
+					r->checksum = dbl ? bench_pair_checksum(n_l2, aos_out) : bench_pair_checksumf(n_l2, aos_out);
+					r->vec = sym_vec("bench_tp_", c->name, dbl);
+				}
+				bench_sink = r->checksum;
+			}
+		}
+	}
+	rc = 0;
+	goto done;
+oom:
+	study_error("bench: out of memory or bad run configuration");
+fail:
+	rc = -1;
+done:
+	free(gx);
+	free(gy);
+	free(gz);
+	free(aos_in);
+	free(aos_out);
+	bench_soa_free(&soa[0]);
+	bench_soa_free(&soa[1]);
+	return rc;
+}
+
+/* The first three fields of /proc/loadavg, or "unknown". */
+static void loadavg(char *buf, size_t n)
+{
+	FILE *f = fopen("/proc/loadavg", "r");
+	double a = 0, b = 0, c = 0;
+	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
+		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
+	else
+		snprintf(buf, n, "unknown");
+	if (f)
+		fclose(f);
+}
+
+static void put_num(FILE *f, double v)
+{
+	if (isnan(v))
+		fputs(",nan", f);
+	else
+		fprintf(f, ",%.6g", v);
+}
+
+#define BENCH_COLUMNS "method,precision,mode,threads,size_class,size,bytes,reps,passes," \
+	"mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best," \
+	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum"
+
+static void write_row(FILE *f, const bench_row *r, int tsc)
+{
+	const double n = (double)r->r.n;
+	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, r->dbl ? "double" : "float", r->mode, r->r.threads,
+	        r->size_class, r->r.n, r->bytes, (size_t)r->r.reps, r->r.passes);
+	put_num(f, n / r->r.median_s * 1e-6);
+	put_num(f, n / r->r.min_s * 1e-6);
+	put_num(f, r->r.median_s / n * 1e9);
+	put_num(f, r->r.min_s / n * 1e9);
+	put_num(f, tsc ? r->r.median_ticks / n : NAN);
+	put_num(f, tsc ? r->r.min_ticks / n : NAN);
+	put_num(f, r->chain_ns);
+	put_num(f, r->frac_roof);
+	put_num(f, r->vs_yard);
+	fprintf(f, ",%s,%s,%.17g\n", r->isa, r->vec ? r->vec : "unknown", r->checksum);
+}
+
+static const bench_row *find_row(const bench_rows *rs, const char *method, int dbl, const char *mode,
+                                 const char *cls, int many)
+{
+	size_t i;
+	for (i = 0; i < rs->n; i++) {
+		const bench_row *r = &rs->v[i];
+		if (r->dbl == dbl && strcmp(r->method, method) == 0 && strcmp(r->mode, mode) == 0 &&
+		    strcmp(r->size_class, cls) == 0 && (r->r.threads > 1) == many)
+			return r;
+	}
+	return NULL;
+}
+
+static double mbs(const bench_row *r)
+{
+	return r ? (double)r->r.n / r->r.median_s * 1e-6 : NAN;
+}
+
+static void print_table(const bench_opts *o, const bench_rows *rs)
+{
+	int p, mi;
+	for (p = 0; p < 2; p++) {
+		if (!(o->prec_mask & (1 << p)))
+			continue;
+		printf("\n%s: batch M bases/s (median), L2-resident and stream, 1 and %d threads; per call ns (inline, 1 thread)\n",
+		       p ? "double" : "float", o->threads);
+		printf("  roof%% = stream, 1 thread, vs the copy; vsYard = L2, 1 thread, vs the yardstick (both from best times);\n"
+		       "  vec = widest packed register of the kernel that ran; call ns = inline, independent calls; lat ns = dependent\n"
+		       "  chain; lat-ch = lat ns minus the chain alone (%.2f ns)\n",
+		       find_row(rs, o->meth[0]->name, p, "call_latency", "l2", 0) ?
+		       find_row(rs, o->meth[0]->name, p, "call_latency", "l2", 0)->chain_ns : NAN);
+		printf("%-24s %8s %8s %8s %8s %6s %6s %6s %7s %7s %7s\n", "method", "L2 1t", "L2 all", "strm 1t", "strm all",
+		       "roof%", "vsYard", "vec", "call ns", "lat ns", "lat-ch");
+		for (mi = -1; mi < o->nmeth; mi++) {
+			const char *name = mi < 0 ? "copy" : o->meth[mi]->name;
+			const char *mode = mi < 0 ? "roofline" : "batch";
+			const bench_row *a = find_row(rs, name, p, mode, "l2", 0);
+			const bench_row *b = find_row(rs, name, p, mode, "l2", 1);
+			const bench_row *c = find_row(rs, name, p, mode, "stream", 0);
+			const bench_row *d = find_row(rs, name, p, mode, "stream", 1);
+			const bench_row *tp = find_row(rs, name, p, "call_throughput", "l2", 0);
+			const bench_row *lat = find_row(rs, name, p, "call_latency", "l2", 0);
+			printf("%-24s %8.0f %8.0f %8.0f %8.0f %5.0f%% %6.2f %6s %7.2f %7.2f %7.2f\n", mi < 0 ? "(copy roofline)" : name,
+			       mbs(a), mbs(b), mbs(c), mbs(d), c ? 100.0 * c->frac_roof : NAN, a ? a->vs_yard : NAN,
+			       a && a->vec ? a->vec : "-", tp ? tp->r.median_s / (double)tp->r.n * 1e9 : NAN,
+			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 : NAN,
+			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 - lat->chain_ns : NAN);
+		}
+		for (mi = 0; mi < o->nmeth; mi++) {
+			const bench_row *y = find_row(rs, o->meth[mi]->name, p, "yardstick", "l2", 0);
+			if (y)
+				printf("  yardstick %-20s %8.0f M/s (L2, 1 thread, -march=native %s, %s)\n", y->method, mbs(y),
+				       bench_yardstick_isa(), y->vec);
+		}
+	}
+}
+
+int cmd_bench(int argc, char **argv)
+{
+	bench_opts o;
+	bench_rows rs = { NULL, 0, 0 };
+	char outbuf[4096];
+	const char *out;
+	study_out f;
+	long l2 = -1;
+	size_t n_l2, n_stream, i;
+	int rc, tsc, p;
+	double ghz, t0 = bench_now();
+	char load0[64], load1[64];
+
+	rc = parse_opts(argc, argv, &o);
+	if (rc)
+		return rc > 0 ? 0 : ONB_EXIT_USAGE;
+	if (o.out)
+		out = o.out;
+	else {
+		study_default_run_dir(outbuf, sizeof outbuf);
+		out = outbuf;
+	}
+	if (study_mkdir_p(out) != 0)
+		return ONB_EXIT_USAGE;
+#ifdef _SC_LEVEL2_CACHE_SIZE
+	l2 = sysconf(_SC_LEVEL2_CACHE_SIZE);
+#endif
+	if (l2 <= 0)
+		l2 = 1L << 20;
+	/* L2-resident: the nine double arrays fill half of one core's L2 */
+	n_l2 = ((size_t)l2 / 2 / (9 * sizeof(double))) / 256 * 256;
+	if (n_l2 < 1024)
+		n_l2 = 1024;
+	/* stream: a power of two of bases, float working set >= stream_mib */
+	n_stream = 1024;
+	while ((double)(n_stream * 9 * sizeof(float)) < o.stream_mib * 1048576.0)
+		n_stream *= 2;
+
+	loadavg(load0, sizeof load0);
+	tsc = bench_tsc_constant();
+	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
+	for (p = 0; p < 2; p++)
+		if (o.prec_mask & (1 << p))
+			if (bench_precision(&o, p, n_l2, n_stream, &rs) != 0) {
+				free(rs.v);
+				return 1;
+			}
+
+	loadavg(load1, sizeof load1);
+	if (study_out_open(&f, out, "bench.csv") != 0) {
+		free(rs.v);
+		return 1;
+	}
+	study_provenance(f.f, "bench", o.seed, o.threads);
+	fprintf(f.f, "# timer: clock_gettime(CLOCK_MONOTONIC) between OpenMP barriers; %s\n",
+	        tsc ? "cycles from the TSC (constant_tsc nonstop_tsc): ticks at the nominal frequency, not core cycles" :
+	              "no constant TSC: cycle columns are nan");
+	fprintf(f.f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
+	             "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
+	if (tsc)
+		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
+	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
+	             "(src/study/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
+	             "at full vector width); call loops %s (the flags above)\n",
+	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
+	fprintf(f.f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "
+	             "executable): zmm, ymm, xmm, scalar, or unknown\n");
+	fprintf(f.f, "# sizes: l2 = %zu bases per thread (L2 %ld B per core; working set %zu B float, %zu B double); "
+	             "stream = %zu bases (%zu B float, %zu B double)\n",
+	        n_l2, l2, n_l2 * 36, n_l2 * 72, n_stream, n_stream * 36, n_stream * 72);
+	fprintf(f.f, "# repetitions: 1 calibration pass, %d warm-up and %d timed repetitions of >= %g s each; "
+	             "median (mbases_per_s, ns_per_call, cycles_per_call) and minimum time (_best)%s\n",
+	        o.warmup, o.reps, o.target, o.quick ? "; --quick: a check, not a measurement" : "");
+	fprintf(f.f, "# modes: batch = libonb SoA kernel; yardstick = hand-written loop of the same formula; roofline = "
+	             "copy 3 arrays to 6; call_throughput = inline function over an array of structs; call_latency = "
+	             "dependent chain (input + (b1.x + b2.x) * 0), chain_ns = the chain alone, included in ns_per_call\n");
+	fprintf(f.f, "# ns_per_call and cycles_per_call: wall time per basis (all threads together for threads > 1); "
+	             "frac_roofline and vs_yardstick: ratios of best throughput (minimum time, the least disturbed by other load) at "
+	             "the same size and threads; each yardstick runs right after its method\n");
+	fprintf(f.f, "%s\n", BENCH_COLUMNS);
+	for (i = 0; i < rs.n; i++)
+		write_row(f.f, &rs.v[i], tsc);
+	if (study_out_commit(&f) != 0) {
+		free(rs.v);
+		return 1;
+	}
+	if (o.csv) {
+		printf("%s\n", BENCH_COLUMNS);
+		for (i = 0; i < rs.n; i++)
+			write_row(stdout, &rs.v[i], tsc);
+	} else {
+		printf("# onbstudy bench: batch isa %s, yardstick native-%s, call loops %s, %d threads; TSC %s; load %s -> %s\n",
+		       onb_batch_isa(), bench_yardstick_isa(), bench_calls_isa(), o.threads,
+		       tsc ? "constant" : "not constant (no cycles)", load0, load1);
+		print_table(&o, &rs);
+	}
+	fprintf(stderr, "onbstudy: wrote %s/bench.csv (%zu rows, %.1f s)\n", out, rs.n, bench_now() - t0);
+	free(rs.v);
+	return 0;
+}

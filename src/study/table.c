@@ -1,0 +1,492 @@
+/*
+ * table.c - `onbstudy table`: the successor of Frisvad 2012, Table 1, for
+ * this machine.  Joins a bench.csv (speed) with a sweep's summary.csv
+ * (accuracy), marks the Pareto front and writes tradeoff.csv.
+ *
+ * Speed: batch M bases/s at the L2-resident size, 1 thread and all
+ * threads, and the inline call_throughput ns per call.  Accuracy: RMSE on
+ * `uniform`, max_defect on `south` and on `threshold`.
+ *
+ * Pareto front, per precision: a method is on it when no other method is
+ * at least as fast (batch, 1 thread, L2) and at least as accurate, and
+ * strictly better in one of the two.  Speeds within a tolerance (default
+ * 5%, --speed-tol) count as equal: at the L2 size the cheap methods all
+ * run at the copy roofline, and their order there is timing noise.  So B
+ * beats A when speed_B >= (1 - tol) speed_A and err_B <= err_A, and
+ * err_B < err_A or speed_B > (1 + tol) speed_A.  Accuracy here is the worst
+ * max_defect over uniform, south and threshold together; a method with
+ * any non-finite output on those inputs counts as infinitely inaccurate.
+ * Methods without both speed and accuracy are left off the front ("na").
+ */
+#include <errno.h>
+#include <glob.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "study.h"
+#include "bench.h"
+
+#define CSV_MAXF 64
+
+/* Splits line (modified in place) at commas, honouring "quoted" fields;
+   returns the number of fields. */
+static int csv_split(char *line, char **f, int maxf)
+{
+	int n = 0;
+	char *p = line;
+	line[strcspn(line, "\r\n")] = '\0';
+	while (n < maxf) {
+		if (*p == '"') {
+			char *q = ++p;
+			f[n++] = p;
+			while (*q && *q != '"')
+				q++;
+			if (*q == '"')
+				*q++ = '\0';
+			p = q;
+			while (*p && *p != ',')
+				p++;
+		} else {
+			f[n++] = p;
+			while (*p && *p != ',')
+				p++;
+		}
+		if (*p != ',')
+			break;
+		*p++ = '\0';
+	}
+	return n;
+}
+
+static int col(char **hdr, int nh, const char *name)
+{
+	int i;
+	for (i = 0; i < nh; i++)
+		if (strcmp(hdr[i], name) == 0)
+			return i;
+	return -1;
+}
+
+static double num(const char *s)
+{
+	char *end;
+	double v;
+	if (!s || !*s)
+		return NAN;
+	v = strtod(s, &end);
+	return *end ? NAN : v;
+}
+
+typedef struct {
+	FILE *f;
+	const char *path;
+	char hline[4096], line[4096];
+	char *hdr[CSV_MAXF], *fld[CSV_MAXF];
+	int nh;
+	long lineno;
+} csv_file;
+
+static int csv_open(csv_file *c, const char *path)
+{
+	memset(c, 0, sizeof *c);
+	c->path = path;
+	c->f = fopen(path, "r");
+	if (!c->f) {
+		study_error("table: cannot read '%s': %s", path, strerror(errno));
+		return -1;
+	}
+	while (fgets(c->hline, sizeof c->hline, c->f)) {
+		c->lineno++;
+		if (c->hline[0] == '#' || c->hline[0] == '\n')
+			continue;
+		c->nh = csv_split(c->hline, c->hdr, CSV_MAXF);
+		return 0;
+	}
+	study_error("table: '%s' has no header line", path);
+	fclose(c->f);
+	return -1;
+}
+
+/* The next data row: its number of fields, 0 at the end. */
+static int csv_next(csv_file *c)
+{
+	while (fgets(c->line, sizeof c->line, c->f)) {
+		c->lineno++;
+		if (c->line[0] == '#' || c->line[0] == '\n')
+			continue;
+		return csv_split(c->line, c->fld, CSV_MAXF);
+	}
+	return 0;
+}
+
+static int find_row(tradeoff_row *rows, int n, const char *method, int dbl)
+{
+	int i;
+	for (i = 0; i < n; i++)
+		if (rows[i].dbl == dbl && strcmp(rows[i].method, method) == 0)
+			return i;
+	return -1;
+}
+
+static int parse_prec(const char *s)
+{
+	return strcmp(s, "double") == 0 ? 1 : strcmp(s, "float") == 0 ? 0 : -1;
+}
+
+int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows_out)
+{
+	csv_file c;
+	tradeoff_row *rows = NULL;
+	int n = 0, cap = 0, nf, i;
+	int cm, cp, cmode, ct, ccls, cmbs, cns, cdist, crmse, cmax, cnf;
+	*rows_out = NULL;
+
+	if (csv_open(&c, bench_csv) != 0)
+		return -1;
+	cm = col(c.hdr, c.nh, "method");
+	cp = col(c.hdr, c.nh, "precision");
+	cmode = col(c.hdr, c.nh, "mode");
+	ct = col(c.hdr, c.nh, "threads");
+	ccls = col(c.hdr, c.nh, "size_class");
+	cmbs = col(c.hdr, c.nh, "mbases_per_s");
+	cns = col(c.hdr, c.nh, "ns_per_call");
+	if (cm < 0 || cp < 0 || cmode < 0 || ct < 0 || cmbs < 0 || cns < 0) {
+		study_error("table: '%s' lacks one of the columns method,precision,mode,threads,mbases_per_s,ns_per_call", bench_csv);
+		fclose(c.f);
+		return -1;
+	}
+	while ((nf = csv_next(&c)) > 0) {
+		const char *mode;
+		int dbl, r, thr;
+		if (nf != c.nh) {
+			study_error("table: %s:%ld: %d fields, the header has %d", bench_csv, c.lineno, nf, c.nh);
+			goto fail;
+		}
+		mode = c.fld[cmode];
+		dbl = parse_prec(c.fld[cp]);
+		if (dbl < 0) {
+			study_error("table: %s:%ld: precision '%s' is neither float nor double", bench_csv, c.lineno, c.fld[cp]);
+			goto fail;
+		}
+		if (strcmp(mode, "batch") && strcmp(mode, "call_throughput"))
+			continue;
+		if (ccls >= 0 && strcmp(c.fld[ccls], "l2") != 0)
+			continue;
+		r = find_row(rows, n, c.fld[cm], dbl);
+		if (r < 0) {
+			if (n == cap) {
+				tradeoff_row *t;
+				cap = cap ? 2 * cap : 64;
+				t = realloc(rows, (size_t)cap * sizeof *t);
+				if (!t) {
+					study_error("table: out of memory");
+					goto fail;
+				}
+				rows = t;
+			}
+			r = n++;
+			memset(&rows[r], 0, sizeof rows[r]);
+			snprintf(rows[r].method, sizeof rows[r].method, "%s", c.fld[cm]);
+			rows[r].dbl = dbl;
+			rows[r].batch1 = rows[r].batchn = rows[r].call_ns = NAN;
+			rows[r].rmse_uniform = rows[r].max_south = rows[r].max_threshold = rows[r].max_worst = NAN;
+		}
+		thr = atoi(c.fld[ct]);
+		if (strcmp(mode, "batch") == 0) {
+			if (thr <= 1)
+				rows[r].batch1 = num(c.fld[cmbs]);
+			else {
+				rows[r].batchn = num(c.fld[cmbs]);
+				rows[r].threads = thr;
+			}
+		} else
+			rows[r].call_ns = num(c.fld[cns]);
+	}
+	fclose(c.f);
+	for (i = 0; i < n; i++)
+		rows[i].has_speed = !isnan(rows[i].batch1);
+
+	if (csv_open(&c, summary_csv) != 0)
+		goto fail_closed;
+	cm = col(c.hdr, c.nh, "method");
+	cp = col(c.hdr, c.nh, "precision");
+	cdist = col(c.hdr, c.nh, "distribution");
+	crmse = col(c.hdr, c.nh, "rmse");
+	cmax = col(c.hdr, c.nh, "max_defect");
+	cnf = col(c.hdr, c.nh, "nonfinite");
+	if (cm < 0 || cp < 0 || cdist < 0 || crmse < 0 || cmax < 0) {
+		study_error("table: '%s' lacks one of the columns method,precision,distribution,rmse,max_defect", summary_csv);
+		goto fail;
+	}
+	{
+		/* bit 0 uniform, 1 south, 2 threshold seen */
+		int *seen = calloc((size_t)(n ? n : 1), sizeof *seen);
+		if (!seen) {
+			study_error("table: out of memory");
+			goto fail;
+		}
+		while ((nf = csv_next(&c)) > 0) {
+			const char *d;
+			int dbl, r, bit;
+			double mx;
+			if (nf != c.nh) {
+				study_error("table: %s:%ld: %d fields, the header has %d", summary_csv, c.lineno, nf, c.nh);
+				free(seen);
+				goto fail;
+			}
+			dbl = parse_prec(c.fld[cp]);
+			r = dbl < 0 ? -1 : find_row(rows, n, c.fld[cm], dbl);
+			if (r < 0)
+				continue;
+			d = c.fld[cdist];
+			bit = strcmp(d, "uniform") == 0 ? 1 : strcmp(d, "south") == 0 ? 2 : strcmp(d, "threshold") == 0 ? 4 : 0;
+			if (!bit)
+				continue;
+			mx = num(c.fld[cmax]);
+			if (bit == 1)
+				rows[r].rmse_uniform = num(c.fld[crmse]);
+			else if (bit == 2)
+				rows[r].max_south = mx;
+			else
+				rows[r].max_threshold = mx;
+			if (isnan(mx))
+				mx = INFINITY;
+			if (!(seen[r] & 7) || mx > rows[r].max_worst)
+				rows[r].max_worst = mx;
+			if (cnf >= 0)
+				rows[r].nonfinite += atol(c.fld[cnf]);
+			seen[r] |= bit;
+		}
+		for (i = 0; i < n; i++)
+			rows[i].has_accuracy = seen[i] == 7;
+		free(seen);
+	}
+	fclose(c.f);
+	tradeoff_pareto(rows, n, tol);
+	*rows_out = rows;
+	return n;
+fail:
+	fclose(c.f);
+fail_closed:
+	free(rows);
+	return -1;
+}
+
+static double err_of(const tradeoff_row *r)
+{
+	return r->nonfinite > 0 || isnan(r->max_worst) ? INFINITY : r->max_worst;
+}
+
+void tradeoff_pareto(tradeoff_row *rows, int n, double tol)
+{
+	int i, j;
+	for (i = 0; i < n; i++) {
+		const double si = rows[i].batch1, ei = err_of(&rows[i]);
+		rows[i].pareto = 0;
+		if (!rows[i].has_speed || !rows[i].has_accuracy)
+			continue;
+		rows[i].pareto = 1;
+		for (j = 0; j < n; j++) {
+			double sj, ej;
+			if (j == i || rows[j].dbl != rows[i].dbl || !rows[j].has_speed || !rows[j].has_accuracy)
+				continue;
+			sj = rows[j].batch1;
+			ej = err_of(&rows[j]);
+			if (sj >= (1.0 - tol) * si && ej <= ei && (ej < ei || sj > (1.0 + tol) * si)) {
+				rows[i].pareto = 0;
+				break;
+			}
+		}
+	}
+}
+
+/* results/latest/<name> if it exists, else the newest results/run-* that has it */
+static int default_path(const char *name, char *buf, size_t n)
+{
+	struct stat st;
+	char pat[256];
+	glob_t g;
+	snprintf(buf, n, "results/latest/%s", name);
+	if (stat(buf, &st) == 0)
+		return 0;
+	snprintf(pat, sizeof pat, "results/run-*/%s", name);
+	if (glob(pat, 0, NULL, &g) == 0 && g.gl_pathc > 0) {
+		snprintf(buf, n, "%s", g.gl_pathv[g.gl_pathc - 1]);
+		globfree(&g);
+		return 0;
+	}
+	study_error("table: no %s in results/latest/ or results/run-*/ (run onbstudy %s, or pass --%s FILE)", name,
+	            strcmp(name, "bench.csv") == 0 ? "bench" : "sweep", strcmp(name, "bench.csv") == 0 ? "bench" : "summary");
+	return -1;
+}
+
+static void put(FILE *f, double v)
+{
+	if (isnan(v))
+		fputs(",nan", f);
+	else
+		fprintf(f, ",%.6g", v);
+}
+
+#define TRADEOFF_COLUMNS "method,precision,batch_mbases_1t,batch_mbases_all,threads_all,call_ns," \
+	"rmse_uniform,max_defect_south,max_defect_threshold,max_defect_worst,nonfinite,pareto"
+
+static void print_cell(double v, const char *fmt, int w)
+{
+	if (isnan(v))
+		printf(" %*s", w, "-");
+	else
+		printf(fmt, w, v);
+}
+
+int cmd_table(int argc, char **argv)
+{
+	const char *bench = NULL, *summary = NULL, *out = NULL;
+	char bbuf[4096], sbuf[4096], obuf[4096];
+	tradeoff_row *rows;
+	int n, i, k, csv = 0, p;
+	double tol = 0.05;
+	study_out f;
+	for (k = 0; k < argc; k++) {
+		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
+		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+			printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--speed-tol T] [--format table|csv]\n"
+			       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
+			       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
+			       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"
+			       "  --speed-tol T    speeds within this fraction count as equal on the Pareto front (default 0.05)\n"
+			       "  --format F       table (default) or csv on stdout\n");
+			return 0;
+		}
+		if (strcmp(a, "--bench") && strcmp(a, "--summary") && strcmp(a, "--out") && strcmp(a, "--format") &&
+		    strcmp(a, "--speed-tol")) {
+			study_error("table: unknown argument '%s' (try 'onbstudy table --help')", a);
+			return ONB_EXIT_USAGE;
+		}
+		if (!v || !*v) {
+			study_error("table: %s needs a value", a);
+			return ONB_EXIT_USAGE;
+		}
+		k++;
+		if (strcmp(a, "--bench") == 0)
+			bench = v;
+		else if (strcmp(a, "--summary") == 0)
+			summary = v;
+		else if (strcmp(a, "--out") == 0)
+			out = v;
+		else if (strcmp(a, "--speed-tol") == 0) {
+			if (parse_double("table: --speed-tol", v, &tol) != 0)
+				return ONB_EXIT_USAGE;
+			if (!(tol >= 0.0 && tol < 1.0)) {
+				study_error("table: --speed-tol: %s is out of range [0, 1)", v);
+				return ONB_EXIT_USAGE;
+			}
+		} else if (strcmp(v, "csv") == 0)
+			csv = 1;
+		else if (strcmp(v, "table") == 0)
+			csv = 0;
+		else {
+			study_error("table: --format: expected table or csv, got '%s'", v);
+			return ONB_EXIT_USAGE;
+		}
+	}
+	if (!bench) {
+		if (default_path("bench.csv", bbuf, sizeof bbuf) != 0)
+			return ONB_EXIT_USAGE;
+		bench = bbuf;
+	}
+	if (!summary) {
+		if (default_path("summary.csv", sbuf, sizeof sbuf) != 0)
+			return ONB_EXIT_USAGE;
+		summary = sbuf;
+	}
+	if (!out) {
+		const char *sl = strrchr(bench, '/');
+		if (sl) {
+			snprintf(obuf, sizeof obuf, "%.*s", (int)(sl - bench), bench);
+			out = sl == bench ? "/" : obuf;
+		} else
+			out = ".";
+	}
+	n = tradeoff_load(bench, summary, tol, &rows);
+	if (n < 0)
+		return ONB_EXIT_USAGE;
+	if (n == 0) {
+		study_error("table: '%s' has no batch or call_throughput rows", bench);
+		free(rows);
+		return ONB_EXIT_USAGE;
+	}
+	if (study_mkdir_p(out) != 0 || study_out_open(&f, out, "tradeoff.csv") != 0) {
+		free(rows);
+		return 1;
+	}
+	study_provenance(f.f, "table", 0, 0);
+	fprintf(f.f, "# bench: %s\n# summary: %s\n", bench, summary);
+	fprintf(f.f, "# speed: batch at the L2-resident size (1 thread, all threads), call_ns = inline call_throughput; "
+	             "accuracy: rmse on uniform, max_defect on south and threshold\n");
+	fprintf(f.f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t, speeds within "
+	             "%g%% counted equal) and at least as accurate (max_defect_worst = max over uniform, south, threshold; "
+	             "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * tol);
+	fprintf(f.f, "%s\n", TRADEOFF_COLUMNS);
+	for (p = 0; p < 2; p++)
+		for (i = 0; i < n; i++) {
+			const tradeoff_row *r = &rows[i];
+			if (r->dbl != p)
+				continue;
+			fprintf(f.f, "%s,%s", r->method, r->dbl ? "double" : "float");
+			put(f.f, r->batch1);
+			put(f.f, r->batchn);
+			fprintf(f.f, ",%d", r->threads);
+			put(f.f, r->call_ns);
+			put(f.f, r->rmse_uniform);
+			put(f.f, r->max_south);
+			put(f.f, r->max_threshold);
+			put(f.f, r->has_accuracy ? r->max_worst : NAN);
+			fprintf(f.f, ",%ld,%s\n", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
+		}
+	if (study_out_commit(&f) != 0) {
+		free(rows);
+		return 1;
+	}
+	if (csv) {
+		FILE *in = fopen(f.path, "r");
+		char line[4096];
+		if (in) {
+			while (fgets(line, sizeof line, in))
+				if (line[0] != '#')
+					fputs(line, stdout);
+			fclose(in);
+		}
+	} else {
+		printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
+		       bench, summary, 100.0 * tol);
+		printf("%-24s |%44s |%44s\n", "", "float", "double");
+		printf("%-24s |", "method");
+		for (p = 0; p < 2; p++)
+			printf(" %7s %7s %5s %8s %8s %8s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", p ? "\n" : " |");
+		for (i = 0; i < n; i++) {
+			int j;
+			if (rows[i].dbl != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
+				continue; /* printed with its float row */
+			printf("%-24s |", rows[i].method);
+			for (p = 0; p < 2; p++) {
+				j = find_row(rows, n, rows[i].method, p);
+				if (j < 0) {
+					printf(" %43s%s", "-", p ? "\n" : " |");
+					continue;
+				}
+				print_cell(rows[j].batch1, " %*.0f", 7);
+				print_cell(rows[j].batchn, " %*.0f", 7);
+				print_cell(rows[j].call_ns, " %*.2f", 5);
+				print_cell(rows[j].rmse_uniform, " %*.1e", 8);
+				print_cell(rows[j].max_south, " %*.1e", 8);
+				print_cell(rows[j].max_threshold, " %*.1e", 8);
+				printf("%s%s", rows[j].pareto ? "*" : " ", p ? "\n" : "|");
+			}
+		}
+	}
+	fprintf(stderr, "onbstudy: wrote %s\n", f.path);
+	free(rows);
+	return 0;
+}

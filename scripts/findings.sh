@@ -11,6 +11,8 @@
 #                               orthogonality, Frisvad, Max; field: t, 1pt,
 #                               max_normality, max_orthogonality, max_both)
 #   {{X method precision column}}  a tradeoff.csv value
+#   {{F method precision distribution column}}  a fma/summary.csv value
+#   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
 #   {{TABLE tradeoff}}              the speed-accuracy table
 set -eu
@@ -40,13 +42,32 @@ generate() {
 		if (v ~ /nan/) return "n/a"
 		if (v ~ /inf/) return "inf"
 		if (v + 0 == 0) return "0"
-		if (v + 0 == int(v + 0) && v + 0 < 1e6) return sprintf("%d", v)
+		if (v + 0 >= 100 || v + 0 <= -100) return sprintf("%.0f", v + 0)
 		return sprintf("%.3g", v + 0)
 	}
 	function S(m, p, d, c,   k) {
 		k = m SUBSEP p SUBSEP d
 		if (!((k, c) in SUM)) { print "findings: no " m "," p "," d "," c " in summary.csv" > "/dev/stderr"; bad = 1; return "?" }
 		return fmt(SUM[k, c])
+	}
+	function F(m, p, d, c,   k) {
+		k = m SUBSEP p SUBSEP d
+		if (!((k, c) in FMA)) { print "findings: no " m "," p "," d "," c " in fma/summary.csv" > "/dev/stderr"; bad = 1; return "?" }
+		return fmt(FMA[k, c])
+	}
+	function RN(m, field,   f, line, a, n, i) {
+		f = REF "/renders/summary.txt"
+		while ((getline line < f) > 0) {
+			n = split(line, a, /[ \t]+/)
+			if (a[1] != m) continue
+			close(f)
+			if (field == "mean") return a[5]
+			if (field == "max") return a[7]
+			if (field == "pixels") return a[11]
+			if (field == "nan") return a[14]
+		}
+		close(f)
+		print "findings: no render " m " " field > "/dev/stderr"; bad = 1; return "?"
 	}
 	function X(m, p, c,   k) {
 		k = m SUBSEP p
@@ -58,10 +79,11 @@ generate() {
 		for (i = 1; i <= n; i++) {
 			l = lines[i]
 			if (l !~ ("^# (minimax|published) " key)) continue
-			if (field == "t" || field == "1pt") {
+			if (field == "t") {
 				match(l, /\(([-0-9.e]+)\)/); v = substr(l, RSTART + 1, RLENGTH - 2) + 0
-				return field == "t" ? sprintf("%.9g", v) : sprintf("%.3g", 1 + v)
+				return sprintf("%.9g", v)
 			}
+			if (field == "1pt") field = "one_plus_t"
 			if (match(l, field " [-0-9.e+]+")) { s = substr(l, RSTART, RLENGTH); split(s, parts, " "); return fmt(parts[2]) }
 		}
 		print "findings: no threshold " p " " key " " field > "/dev/stderr"; bad = 1; return "?"
@@ -99,6 +121,7 @@ generate() {
 	}
 	BEGIN {
 		load(REF "/summary.csv", SUM, "1 2 3")
+		load(REF "/fma/summary.csv", FMA, "1 2 3")
 		n = split(rows[REF "/summary.csv"], rr, "\n")
 		for (i = 1; i <= n; i++) { split(rr[i], kk, SUBSEP); if (kk[1] != "" && !(kk[1] in seenm)) { seenm[kk[1]] = 1; meth[++nmeth] = kk[1] } }
 		tf = REF "/threshold.csv"
@@ -121,15 +144,18 @@ generate() {
 	{
 		line = $0
 		while (match(line, /\{\{[^}]*\}\}/)) {
-			tok = substr(line, RSTART + 2, RLENGTH - 4)
+			rs = RSTART; rl = RLENGTH   # the functions below call match() too
+			tok = substr(line, rs + 2, rl - 4)
 			nt = split(tok, a, " ")
 			if (a[1] == "S" && nt == 5) rep = S(a[2], a[3], a[4], a[5])
 			else if (a[1] == "X" && nt == 4) rep = X(a[2], a[3], a[4])
+			else if (a[1] == "F" && nt == 5) rep = F(a[2], a[3], a[4], a[5])
+			else if (a[1] == "R" && nt == 3) rep = RN(a[2], a[3])
 			else if (a[1] == "TH" && nt == 4) rep = TH(a[2], a[3], a[4])
 			else if (a[1] == "TABLE" && a[2] == "accuracy") rep = table_accuracy(a[3])
 			else if (a[1] == "TABLE" && a[2] == "tradeoff") rep = table_tradeoff()
 			else { print "findings: bad placeholder {{" tok "}}" > "/dev/stderr"; bad = 1; rep = "?" }
-			line = substr(line, 1, RSTART - 1) rep substr(line, RSTART + RLENGTH)
+			line = substr(line, 1, rs - 1) rep substr(line, rs + rl)
 		}
 		print line
 	}

@@ -219,8 +219,8 @@ static int th_write(th_state *s, const char *out, int threads)
 			const int b = best[c];
 			printf("%-7s %-10s %-26a %-14.6g %-12.4g %-12.4g %-12.4g  minimax of %s\n", pn, crit[c], s->v[p][b],
 			       1.0 + s->v[p][b], mN[b], mO[b], mB[b], crit[c]);
-			fprintf(o.f, "# minimax %s: t = %a (%.9g), max_normality %.6g, max_orthogonality %.6g, max_both %.6g\n",
-			        crit[c], s->v[p][b], s->v[p][b], mN[b], mO[b], mB[b]);
+			fprintf(o.f, "# minimax %s: t = %a (%.9g), one_plus_t %.6g, max_normality %.6g, max_orthogonality %.6g, max_both %.6g\n",
+			        crit[c], s->v[p][b], s->v[p][b], 1.0 + s->v[p][b], mN[b], mO[b], mB[b]);
 		}
 		{
 			const double pub[2] = { fmt_round(p == PREC_FLOAT ? (double)ONB_FRISVAD_TF : ONB_FRISVAD_T, p),
@@ -231,8 +231,8 @@ static int th_write(th_state *s, const char *out, int threads)
 				const int b = index_of_t(s, p, pub[q]);
 				printf("%-7s %-10s %-26a %-14.6g %-12.4g %-12.4g %-12.4g  published (%s)\n", pn, "published", pub[q],
 				       1.0 + pub[q], mN[b], mO[b], mB[b], who[q]);
-				fprintf(o.f, "# published %s: t = %a (%.9g), max_normality %.6g, max_orthogonality %.6g, max_both %.6g\n",
-				        who[q], pub[q], pub[q], mN[b], mO[b], mB[b]);
+				fprintf(o.f, "# published %s: t = %a (%.9g), one_plus_t %.6g, max_normality %.6g, max_orthogonality %.6g, max_both %.6g\n",
+				        who[q], pub[q], pub[q], 1.0 + pub[q], mN[b], mO[b], mB[b]);
 			}
 		}
 		free(mN); free(mO); free(mB);

@@ -1,0 +1,46 @@
+#!/bin/sh
+# reference-run.sh - regenerate results/reference/, the committed reference
+# run that the README's Findings quote, and then the README's Findings
+# (scripts/findings.sh).  Takes about two minutes on 2 cores; run it on a
+# quiet machine (the benchmark's figures are only as good as the machine is
+# idle).  Kept under 5 MB: the SVG charts are left to `make plots`.
+set -eu
+cd "$(dirname "$0")/.."
+OUT=results/reference
+make
+mkdir -p "$OUT"
+rm -f "$OUT"/*.csv "$OUT"/*.png "$OUT"/*.svg "$OUT"/*.txt
+rm -rf "$OUT/fma"
+echo "reference: sweep"
+./onbstudy sweep --grid 18x36 --quiet --out "$OUT" > "$OUT/sweep.txt" 2> "$OUT/sweep.log"
+echo "reference: sweep --fma (four methods, uniform and south)"
+mkdir -p "$OUT/fma"
+./onbstudy sweep --fma --methods naive,hughes_moeller,frisvad,duff_branchless --dists uniform,south \
+	--quiet --out "$OUT/fma" > "$OUT/fma/sweep.txt" 2> "$OUT/fma/sweep.log"
+echo "reference: threshold"
+./onbstudy threshold --consecutive 1024 --logspaced 2048 --azimuths 64 --out "$OUT" > "$OUT/threshold.txt" 2> "$OUT/threshold.log"
+echo "reference: bench"
+./onbstudy bench --out "$OUT" > "$OUT/bench.txt" 2> "$OUT/bench.log"
+./onbstudy table --bench "$OUT/bench.csv" --summary "$OUT/summary.csv" --out "$OUT" > "$OUT/table.txt" 2> "$OUT/table.log"
+echo "reference: plots"
+sh scripts/plots.sh "$OUT"
+rm -f "$OUT"/*.svg
+echo "reference: renders"
+make render > /dev/null
+{
+	echo "# results/reference: the machine and build of the committed reference run"
+	echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+	echo "revision: $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- 2>/dev/null || echo -dirty)"
+	echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')"
+	echo "cores: $(nproc)"
+	echo "cpu flags (vector): $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -E '^(sse2|avx|avx2|fma|avx512f|avx512vl|constant_tsc|nonstop_tsc)$' | tr '\n' ' ')"
+	echo "os: $(. /etc/os-release && echo "$PRETTY_NAME"), $(uname -r)"
+	echo "compiler: $(cc --version | head -1)"
+	echo "mpfr: $(grep -m1 '^# mpfr:' "$OUT/summary.csv" | sed 's/^# mpfr: //')"
+	echo "flags: $(grep -m1 '^# flags:' "$OUT/summary.csv" | sed 's/^# flags: //')"
+	echo "batch isa: $(grep -m1 '^# cpu:' "$OUT/summary.csv" | sed 's/.*batch isa: //')"
+	echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+	echo "commands: scripts/reference-run.sh (sweep --grid 18x36; sweep --fma on four methods; threshold --consecutive 1024 --logspaced 2048 --azimuths 64; bench; table; plots; make render)"
+} > "$OUT/machine.txt"
+sh scripts/findings.sh --update README.md
+echo "reference: $(du -sh "$OUT" | cut -f1) in $OUT"

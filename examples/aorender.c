@@ -78,8 +78,10 @@ static int chunk(FILE *f, const char *type, const unsigned char *d, size_t n)
 	be32(t, c);
 	return fwrite(h, 1, 8, f) != 8 || (n && fwrite(d, 1, n, f) != n) || fwrite(t, 1, 4, f) != 4;
 }
-/* pix: w*h*ch bytes, ch 1 (grey) or 3 (RGB) */
-static int write_png(const char *path, const unsigned char *rgb, int w, int h, int ch)
+/* pix: w*h*ch bytes, ch 1 (grey, or palette indices when plte is given:
+   256 RGB entries) or 3 (RGB).  The deflate blocks are stored, not
+   compressed, so palette images are a third of the size of RGB ones. */
+static int write_png(const char *path, const unsigned char *rgb, int w, int h, int ch, const unsigned char *plte)
 {
 	size_t raw_n = (size_t)h * (size_t)(1 + ch * w), nblk = (raw_n + 65534) / 65535, i, z = 0;
 	unsigned char *raw = malloc(raw_n), *zb = malloc(2 + raw_n + 5 * nblk + 4), hdr[13];
@@ -104,11 +106,13 @@ static int write_png(const char *path, const unsigned char *rgb, int w, int h, i
 	be32(zb + z, (b << 16) | a);
 	z += 4;
 	be32(hdr, (unsigned long)w); be32(hdr + 4, (unsigned long)h);
-	hdr[8] = 8; hdr[9] = ch == 3 ? 2 : 0; hdr[10] = 0; hdr[11] = 0; hdr[12] = 0; /* 8-bit RGB or grey */
+	hdr[8] = 8; hdr[9] = ch == 3 ? 2 : plte ? 3 : 0; hdr[10] = 0; hdr[11] = 0; hdr[12] = 0; /* 8-bit RGB, palette or grey */
 	f = fopen(path, "wb");
 	if (!f) { free(raw); free(zb); return -1; }
 	bad = fwrite("\x89PNG\r\n\x1a\n", 1, 8, f) != 8;
 	bad |= chunk(f, "IHDR", hdr, 13);
+	if (plte && ch == 1)
+		bad |= chunk(f, "PLTE", plte, 768);
 	bad |= chunk(f, "IDAT", zb, z);
 	bad |= chunk(f, "IEND", NULL, 0);
 	bad |= fclose(f) != 0;
@@ -255,8 +259,17 @@ static void colour(double v, unsigned char *c)
 	c[0] = (unsigned char)(255 * r + 0.5); c[1] = (unsigned char)(255 * g + 0.5); c[2] = (unsigned char)(255 * b + 0.5);
 }
 
+/* the palette entry of a value of the colour scale (NaN: the top) */
+static unsigned char pal_index(double v)
+{
+	if (!(v >= 0)) v = 1;
+	if (v > 1) v = 1;
+	return (unsigned char)(255 * v + 0.5);
+}
+
 int main(int argc, char **argv)
 {
+	static unsigned char plte[768];
 	const char *name = NULL, *out = NULL, *diff = NULL;
 	int fl = 1, spp = 256, k, i;
 	const onb_method *m;
@@ -301,7 +314,7 @@ int main(int argc, char **argv)
 		unsigned char g = (unsigned char)(v >= 0 ? 255 * (v > 1 ? 1 : v) + 0.5 : 0);
 		rgb[i] = g;
 	}
-	if (write_png(out, rgb, W, H, 1) != 0) {
+	if (write_png(out, rgb, W, H, 1, NULL) != 0) {
 		fprintf(stderr, "aorender: cannot write '%s'\n", out);
 		return 1;
 	}
@@ -313,11 +326,13 @@ int main(int argc, char **argv)
 			double d = fabs(img[i] - ref[i]);
 			if (d != d) nan++;
 			else { if (d > maxd) maxd = d; sumd += d; over += d > DIFF_MAX / 2; }
-			colour(d / DIFF_MAX, rgb + 3 * i);
+			rgb[i] = pal_index(d / DIFF_MAX);
 		}
 		for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to DIFF_MAX at the right */
-			colour((double)(i % W) / (W - 1), rgb + 3 * i);
-		if (write_png(diff, rgb, W, H, 3) != 0) {
+			rgb[i] = pal_index((double)(i % W) / (W - 1));
+		for (k = 0; k < 256; k++) /* the colour scale as a 256-entry palette */
+			colour(k / 255.0, plte + 3 * k);
+		if (write_png(diff, rgb, W, H, 1, plte) != 0) {
 			fprintf(stderr, "aorender: cannot write '%s'\n", diff);
 			return 1;
 		}

@@ -49,7 +49,7 @@ STUDY_OBJ = $(STUDY_SRC:src/study/%.c=$(B)/study/%.o)
 STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
 TEST_BIN  = $(TEST_SRC:tests/%.c=$(B)/tests/%)
-GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- 2>/dev/null || echo -dirty)
+GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo -dirty)
 PROV     = -DONB_GIT_REV='"$(GIT_REV)"' -DONB_CC='"$(shell $(CC) --version | head -1)"' \
            -DONB_CFLAGS='"$(BASE)"'
 
@@ -74,6 +74,17 @@ libonb.a: $(LIB_OBJ)
 $(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h src/study/*.inc) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+
+# Provenance: output.o and main.o carry the git revision and the flags.
+# rev.stamp changes whenever they do (checked on every make), so a result
+# file never names a stale revision.
+$(B)/rev.stamp: FORCE
+	@mkdir -p $(B)
+	@echo '$(GIT_REV) $(BASE)' > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+$(B)/study/output.o $(B)/study/main.o: $(B)/rev.stamp
+.PHONY: FORCE
+FORCE:
 
 # The FMA copy of the kernels for `sweep --fma`: contraction on, on purpose.
 ifeq ($(shell uname -m),x86_64)

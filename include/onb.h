@@ -170,7 +170,12 @@ static inline float onb__rsqf(float x, int norm)
    code of the listing does.
    The kernel is split at the normalization (pre/post) so that the batch
    loops can vectorize the hardware rsqrt; the scalar function chains the
-   same three steps, so both give the same bits. */
+   same three steps, so both give the same bits.
+   Bound (tests/test_lib.c; u = 2^-24 or 2^-53): defect D <= 12u (1 +
+   1/sqrt(1 - (n.e)^2)) for unit-to-rounding n, e the chosen axis.  The
+   variants: _invsqrt adds 1.76e-3 to the lengths (Lomont 2003), _rsqrt
+   1.5 * 2^-12, _rsqrt_nr 1.5 (1.5 * 2^-12)^2 + 3u; _nonorm's lengths are
+   the unnormalized ones. */
 static inline double onb__naive_pre(onb_vec3 n, onb_vec3 *b1)
 {
 	double bx, by, bz, d;
@@ -243,7 +248,9 @@ static inline void onb_naive_nonormf    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *
    Threshold: |n.x| = |n.z| (the frame jumps there).  No singular unit
    direction: the chosen vector has squared length >= 1/2 - O(eps) for
    unit n.  Note this is Frisvad's listing, which compares x with z only;
-   the 1999 paper's "smallest component" variant is not this one. */
+   the 1999 paper's "smallest component" variant is not this one.
+   Bound (tests/test_lib.c): D <= 12u; the normalization variants add to
+   the lengths what naive's do. */
 static inline double onb__hughes_moeller_pre(onb_vec3 n, onb_vec3 *b2)
 {
 	double bx, by, bz;
@@ -312,7 +319,10 @@ static inline void onb_hughes_moeller_nonormf   (onb_vec3f n, onb_vec3f *b1, onb
    Singular: none exactly (the fallback covers n.z = -1), but the formula
    loses all precision as n.z -> -1: its error grows like eps/(1 + n.z),
    and in float it reaches O(1) just above the threshold.  That failure is
-   the published behaviour and is kept. */
+   the published behaviour and is kept.
+   Bound (tests/test_lib.c): D <= 12u (1 + 2/(1 + n.z)) above t (from
+   |b1|^2 - 1 = nx^2 delta/(1 + n.z)^2 with |n|^2 = 1 + delta), and
+   sqrt(1 - n.z^2) + 12u for the fallback below t. */
 static inline void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2)
 {
 	double a, b;
@@ -396,7 +406,9 @@ static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float
    b2 = (b, n.y*n.y*a - 1, -n.y).  Handedness +1 in both branches.
    Threshold: the sign of n.z (n.z = -0 takes the n.z >= 0 branch, since
    -0 < 0 is false).  No singular unit direction: 1 +- n.z >= 1.  The
-   frame is discontinuous across n.z = 0 (b2 flips sign in y). */
+   frame is discontinuous across n.z = 0 (b2 flips sign in y).
+   Bound (tests/test_lib.c): D <= 12u on unit-to-rounding n, n = +-z
+   included. */
 static inline void onb_duff(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	if (n.z < 0.0) {
@@ -431,7 +443,8 @@ static inline void onb_dufff(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    a = -1/(sign + n.z), b = n.x*n.y*a,
    b1 = (1 + sign*n.x*n.x*a, sign*b, -sign*n.x), b2 = (b, sign + n.y*n.y*a, -n.y).
    Handedness +1.  Threshold: the sign bit of n.z, so n.z = -0 takes the
-   lower branch (unlike `duff`).  No singular unit direction. */
+   lower branch (unlike `duff`).  No singular unit direction.
+   Bound (tests/test_lib.c): D <= 12u, as duff. */
 static inline void onb_duff_branchless(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	const double sign = copysign(1.0, n.z);
@@ -461,7 +474,8 @@ static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
    Then (our completion, as the
    issue reads it) b1 = p / |p| with 1/sqrt, b2 = cross(n, b1).
    Handedness +1.  Thresholds: |x| = |y|, |x| = |z|, |y| = |z|.  No
-   singular unit direction: |p|^2 >= 2/3 - O(eps). */
+   singular unit direction: |p|^2 >= 2/3 - O(eps).
+   Bound (tests/test_lib.c): D <= 12u. */
 static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p)
 {
 	const double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
@@ -506,7 +520,8 @@ static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    else:            b1 = (0, v.z, -v.y) / sqrt(v.y^2 + v.z^2)
    b2 = cross(v, b1).  pbrt-v3's Vector3 operator/ multiplies by
    inv = 1/f, which we keep.  Handedness +1.  Threshold: |x| = |y|.
-   No singular unit direction (squared length >= 1/2 - O(eps)). */
+   No singular unit direction (squared length >= 1/2 - O(eps)).
+   Bound (tests/test_lib.c): D <= 12u. */
 static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 u;
@@ -542,7 +557,8 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    u = cross(unit_w, v).  Returned in the book's axis order: b1 = u,
    b2 = v, with unit_w (not n) as the implied third axis.  Handedness -1:
    u x v = -w.  The only method here that normalizes its input.
-   Threshold: |w.x| = 0.9.  Singular: w = 0 only. */
+   Threshold: |w.x| = 0.9.  Singular: w = 0 only.
+   Bound (tests/test_lib.c): D <= 12u, measured against unit(w). */
 static inline void onb_rtow(onb_vec3 w, onb_vec3 *b1, onb_vec3 *b2)
 {
 	double inv = 1.0 / sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
@@ -591,7 +607,8 @@ static inline void onb_rtowf(onb_vec3f w, onb_vec3f *b1, onb_vec3f *b2)
    so b1 = tangent, b2 = binormal.  Handedness -1.
    Singular: n = +z and n = -z exactly (cross(n, t) = 0, 0/0 = NaN), and
    in float any n with n.x^2 + n.y^2 below the smallest subnormal, where
-   the squared length underflows. */
+   the squared length underflows.
+   Bound (tests/test_lib.c): D <= 12u away from +-z. */
 static inline void onb_tangent_cross_z(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	const double tx = n.x, ty = n.y, tz = n.z + 1.0;

@@ -34,7 +34,7 @@ build/tests/test_sampling > "$OUT/sampling.txt"
 {
 	echo "# results/reference: the machine and build of the committed reference run"
 	echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-	echo "revision: $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- 2>/dev/null || echo -dirty)"
+	echo "revision: $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo -dirty)"
 	echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')"
 	echo "cores: $(nproc)"
 	echo "cpu flags (vector): $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -E '^(sse2|avx|avx2|fma|avx512f|avx512vl|constant_tsc|nonstop_tsc)$' | tr '\n' ' ')"

@@ -13,6 +13,7 @@
 #   {{X method precision column}}  a tradeoff.csv value
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
+#   {{PARETO precision}}  the methods tradeoff.csv marks on the Pareto front
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
 #   {{TABLE tradeoff}}              the speed-accuracy table
 set -eu
@@ -68,6 +69,15 @@ generate() {
 		}
 		close(f)
 		print "findings: no render " m " " field > "/dev/stderr"; bad = 1; return "?"
+	}
+	function PARETO(p,   i, m, out) {
+		out = ""
+		for (i = 1; i <= nmeth; i++) {
+			m = meth[i]
+			if (TRD[m SUBSEP p, "pareto"] == "1") out = out (out == "" ? "" : ", ") "`" m "`"
+		}
+		if (out == "") { print "findings: empty Pareto front for " p > "/dev/stderr"; bad = 1; return "?" }
+		return out
 	}
 	function X(m, p, c,   k) {
 		k = m SUBSEP p
@@ -150,6 +160,7 @@ generate() {
 			if (a[1] == "S" && nt == 5) rep = S(a[2], a[3], a[4], a[5])
 			else if (a[1] == "X" && nt == 4) rep = X(a[2], a[3], a[4])
 			else if (a[1] == "F" && nt == 5) rep = F(a[2], a[3], a[4], a[5])
+			else if (a[1] == "PARETO" && nt == 2) rep = PARETO(a[2])
 			else if (a[1] == "R" && nt == 3) rep = RN(a[2], a[3])
 			else if (a[1] == "TH" && nt == 4) rep = TH(a[2], a[3], a[4])
 			else if (a[1] == "TABLE" && a[2] == "accuracy") rep = table_accuracy(a[3])

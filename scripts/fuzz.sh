@@ -27,7 +27,7 @@ rm -rf "$out/obj" "$out/artifacts" "$out/scratch"
 mkdir -p "$out/obj" "$out/artifacts/mesh" "$out/artifacts/cli" "$out/scratch/mesh" "$out/scratch/cli"
 # -fsanitize=fuzzer on the harness only; fuzzer-no-link (coverage) on the rest
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-CFL="-std=c99 -O1 -g -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc/study -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
+CFL="-std=c99 -O1 -g -fopenmp -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc/study -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
 objs=""
 for src in src/lib/*.c src/study/*.c; do
 	case "$src" in src/study/main.c) continue;; esac
@@ -41,7 +41,7 @@ done
 for h in mesh cli; do
 	# shellcheck disable=SC2086
 	$CLANG $CFL $SAN -fsanitize=fuzzer -o "$out/fuzz_$h" "tests/fuzz/fuzz_$h.c" $objs \
-		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lm
+		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -fopenmp -lm
 done
 echo "fuzz.sh: built $out/fuzz_mesh and $out/fuzz_cli with $($CLANG --version | head -1)"
 

@@ -8,7 +8,7 @@ set -eu
 #   which holds libclang_rt.fuzzer-x86_64.a) is named explicitly.
 # valgrind: memcheck of a short sweep and scene run in .ci/run.
 # cppcheck: static analysis of src/lib in .ci/run.
-PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck"
+PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck libomp-dev"
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -1,7 +1,7 @@
 #!/bin/sh
 # tradeoff-data.sh TRADEOFF_CSV PREC DIR COLORS - the data of tradeoff.gp,
 # from `onbstudy table`'s tradeoff.csv, for one precision:
-#   DIR/tradeoff_PREC.dat  speed, error, colour (integer), method, on the front (0/1)
+#   DIR/tradeoff_PREC.dat  speed, error, colour (integer), method, on the front (0/1), RMSE on uniform
 #   DIR/front_PREC.dat     the Pareto front, by speed (the staircase)
 # speed = batch_mbases_1t; error = max_defect_worst, drawn at 10 when a
 # method gave non-finite output on those inputs (the table counts that as
@@ -17,7 +17,8 @@ awk -F, -v p="$P" -v C="$colors" -v fl="$floor" '
 	$2 == p && $12 != "na" && $3 != "nan" {
 		e = ($11 + 0 > 0 || $10 == "nan" || $10 == "inf") ? 10 : ($10 + 0 == 0 ? fl : $10)
 		b = $1; sub(/\+fma$/, "", b)
-		print $3, e, hex(col[b] ? col[b] : "#000000"), $1, $12 }' "$csv" > "$W/tradeoff_$P.dat"
+		r = ($7 == "nan" || $7 == "inf") ? 10 : ($7 + 0 == 0 ? fl : $7)
+		print $3, e, hex(col[b] ? col[b] : "#000000"), $1, $12, r }' "$csv" > "$W/tradeoff_$P.dat"
 [ -s "$W/tradeoff_$P.dat" ] || exit 1
 awk '$5 == 1' "$W/tradeoff_$P.dat" | sort -g > "$W/front_$P.dat"
 [ -s "$W/front_$P.dat" ] || exit 1

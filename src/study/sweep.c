@@ -307,6 +307,10 @@ int cmd_sweep(int argc, char **argv)
 	}
 	if (sweep_alloc(&st) != 0)
 		return 1;
+	if (total > 1000000000ull)
+		fprintf(stderr, "onbstudy: %llu referenced evaluations ahead (hours at about a million per second per core);"
+		        " inputs are generated %d at a time, so memory stays flat; SIGINT keeps partial figures\n",
+		        total, CHUNK);
 
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);

@@ -411,6 +411,8 @@ int sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fm
 		rc |= write_grid(s, outdir, partial ? "grid.partial.csv" : "grid.csv", threads, seconds, partial);
 	if (rc)
 		return -1;
+	if (partial)
+		return 0; /* the partial files say what was done; no table of half a run on stdout */
 	if (!fmt || !strcmp(fmt, "table"))
 		print_table(s);
 	else

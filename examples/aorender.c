@@ -5,6 +5,12 @@
  *
  *   aorender --method NAME [--precision float|double] --out FILE.png
  *            [--diff DIFF.png] [--spp N (256)] [--list]
+ *            [--obj FILE.obj [--up z|y|x] [--no-renormalize]]
+ *
+ * --obj renders a mesh read by the scene reader (src/study/meshio.c,
+ * compiled into this program: it needs only libc and libm) instead of the
+ * scene below; see "--obj" further down for the camera and the shading
+ * normals.  Bad input (a missing or malformed file) exits 2 with one line.
  *
  * Scene (z up), built so that only the basis can change the picture.  A
  * floor z = 0 (normal exactly +z) under a ceiling 1.4 above it: the
@@ -513,7 +519,55 @@ static void mscene_free(mscene *s)
 	memset(s, 0, sizeof *s);
 }
 
-static void render_mesh(const mscene *s, const onb_method *m, int fl, int spp, double *img)
+/* The reference of --obj --diff: the method's own frame made exact.  A
+   correct frame may be any rotation of another about n, and on a mesh
+   (unlike the default scene) a rotation changes which samples are
+   occluded: against duff_branchless every method would differ by noise.
+   So the reference keeps the method's orientation and drops its error:
+   nh = n / |n|, b1' = b1 - (b1.nh) nh normalized, b2' = +-nh x b1' (the
+   sign of the method's b2), all in double; where b1 is not finite or
+   parallel to n, duff_branchless's frame in double.  The difference then
+   shows only what the method's frame (and, with --no-renormalize, a
+   non-unit n) costs. */
+static v3 frame_dir_exact(const onb_method *m, int fl, v3 n, double lx, double ly, double lz)
+{
+	v3 b1, b2, nh, c, w;
+	double l = sqrt(dot(n, n)), k;
+	nh = mul(n, 1.0 / l);
+	if (fl) {
+		onb_vec3f nf, f1, f2;
+		nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+		m->basisf(nf, &f1, &f2);
+		b1.x = f1.x; b1.y = f1.y; b1.z = f1.z;
+		b2.x = f2.x; b2.y = f2.y; b2.z = f2.z;
+	} else {
+		onb_vec3 nd, d1, d2;
+		nd.x = n.x; nd.y = n.y; nd.z = n.z;
+		m->basis(nd, &d1, &d2);
+		b1.x = d1.x; b1.y = d1.y; b1.z = d1.z;
+		b2.x = d2.x; b2.y = d2.y; b2.z = d2.z;
+	}
+	b1 = add(b1, mul(nh, -dot(b1, nh)));
+	k = sqrt(dot(b1, b1));
+	if (!(k > 1e-3) || !isfinite(k)) {
+		onb_vec3 nd, d1, d2;
+		nd.x = nh.x; nd.y = nh.y; nd.z = nh.z;
+		onb_find("duff_branchless")->basis(nd, &d1, &d2);
+		b1.x = d1.x; b1.y = d1.y; b1.z = d1.z;
+		b2.x = d2.x; b2.y = d2.y; b2.z = d2.z;
+	} else {
+		b1 = mul(b1, 1.0 / k);
+		c.x = nh.y * b1.z - nh.z * b1.y; c.y = nh.z * b1.x - nh.x * b1.z; c.z = nh.x * b1.y - nh.y * b1.x;
+		b2 = dot(c, b2) < 0 ? mul(c, -1.0) : c;
+	}
+	w.x = b1.x * lx + b2.x * ly + nh.x * lz;
+	w.y = b1.y * lx + b2.y * ly + nh.y * lz;
+	w.z = b1.z * lx + b2.z * ly + nh.z * lz;
+	return w;
+}
+
+/* exact: render the reference of frame_dir_exact instead */
+static void render_mesh(const mscene *s, const onb_method *m, int fl, int exact, int spp, double *img)
 {
 	const mesh_geom *g = s->g;
 	int x, y, sm;
@@ -551,7 +605,7 @@ static void render_mesh(const mscene *s, const onb_method *m, int fl, int spp, d
 			for (sm = 0; sm < spp; sm++) {
 				double u1 = u01(&seed), u2 = u01(&seed), r = sqrt(u1), ph = 2.0 * 3.14159265358979323846 * u2;
 				double lx = r * cos(ph), ly = r * sin(ph), lz = sqrt(1.0 - u1), tt, uu, vv;
-				v3 w = frame_dir(m, fl, n, lx, ly, lz), o;
+				v3 w = exact ? frame_dir_exact(m, fl, n, lx, ly, lz) : frame_dir(m, fl, n, lx, ly, lz), o;
 				size_t tj;
 				if (!isfinite(w.x) || !isfinite(w.y) || !isfinite(w.z)) {
 					sum = NAN;
@@ -656,7 +710,7 @@ int main(int argc, char **argv)
 			mscene_free(&sc); mesh_geom_free(&mg); mesh_free(&mn);
 			return 2;
 		}
-		render_mesh(&sc, m, fl, spp, img);
+		render_mesh(&sc, m, fl, 0, spp, img);
 	} else
 		render(m, fl, spp, img);
 	for (i = 0; i < W * H; i++) {
@@ -672,7 +726,7 @@ int main(int argc, char **argv)
 		double maxd = 0, sumd = 0;
 		int nan = 0, over = 0;
 		if (obj)
-			render_mesh(&sc, onb_find("duff_branchless"), 0, spp, ref);
+			render_mesh(&sc, m, fl, 1, spp, ref);
 		else
 			render(onb_find("duff_branchless"), 0, spp, ref);
 		for (i = 0; i < W * H; i++) {

@@ -4,6 +4,9 @@
 # (normals computed by the scene reader).  Each is rendered with two
 # methods; the PNG must be valid (signature, IHDR 160x120).  The cube seen
 # from below must show the NaN of tangent_cross_z at n = -z (and duff none).
+# --diff compares with the method's own frame made exact (the same
+# orientation): duff_branchless must match it, naive_nonorm (a frame that is
+# not orthonormal) must not, on the octahedron.
 # Bad input (missing file, malformed OBJ, no faces, bad --up) must give
 # exit 2 and one line on stderr, and write no image.
 set -u
@@ -69,7 +72,7 @@ png() {
 }
 
 for mesh in cube octa; do
-	for m in duff_branchless tangent_cross_z; do
+	for m in duff_branchless tangent_cross_z naive_nonorm; do
 		out="$tmp/$mesh-$m.png"
 		$R --obj "$tmp/$mesh.obj" --method $m --spp 16 --out "$out" --diff "$tmp/$mesh-$m-diff.png" > "$tmp/sum" 2> "$tmp/err"
 		rc=$?
@@ -77,7 +80,15 @@ for mesh in cube octa; do
 		png "$out" && ok || bad "$mesh $m: not a 160x120 PNG"
 		png "$tmp/$mesh-$m-diff.png" && ok || bad "$mesh $m: diff is not a 160x120 PNG"
 		nan=$(sed -n 's/.*NaN pixels \([0-9]*\)$/\1/p' "$tmp/sum")
-		[ -n "$nan" ] && ok || bad "$mesh $m: no summary line: $(cat "$tmp/sum")"
+		mean=$(sed -n 's/.*mean |diff| \([0-9.]*\) .*/\1/p' "$tmp/sum")
+		over=$(sed -n 's/.*pixels > [0-9.]*: *\([0-9]*\) .*/\1/p' "$tmp/sum")
+		[ -n "$nan" ] && [ -n "$mean" ] && [ -n "$over" ] && ok || bad "$mesh $m: no summary line: $(cat "$tmp/sum")"
+		case $m in
+		duff_branchless)
+			awk -v x="${mean:-1}" 'BEGIN { exit !(x < 0.001) }' && ok || bad "$mesh $m: mean |diff| ${mean:-none} against its exact frame";;
+		naive_nonorm) # on the octahedron's slanted normals (the cube's are axes)
+			[ $mesh = cube ] || [ "${over:-0}" -ge 20 ] && ok || bad "$mesh $m: only ${over:-none} pixels differ from its exact frame";;
+		esac
 		if [ "$mesh" = cube ]; then
 			# the bottom face, n = -z exactly, faces the camera
 			if [ $m = tangent_cross_z ]; then

@@ -9,8 +9,10 @@
  *
  * --obj renders a mesh read by the scene reader (src/study/meshio.c,
  * compiled into this program: it needs only libc and libm) instead of the
- * scene below; see "--obj" further down for the camera and the shading
- * normals.  Bad input (a missing or malformed file) exits 2 with one line.
+ * scene below; see "--obj" further down for the camera, the shading
+ * normals, the hidden floor and the reference of --diff (there: the
+ * method's own frame made exact, not duff_branchless).  Bad input (a
+ * missing or malformed file) exits 2 with one line on stderr.
  *
  * Scene (z up), built so that only the basis can change the picture.  A
  * floor z = 0 (normal exactly +z) under a ceiling 1.4 above it: the

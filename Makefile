@@ -140,9 +140,9 @@ clean:
 	rm -rf $(B) libonb.a onbstudy onb.pc
 
 # The example renderer links only libonb.a and libm, as a user's would.
-$(B)/aorender: examples/aorender.c libonb.a include/onb.h
+$(B)/aorender: examples/aorender.c src/study/meshio.c src/study/meshio.h libonb.a include/onb.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -Iinclude -o $@ examples/aorender.c libonb.a -lm
+	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc/study -o $@ examples/aorender.c src/study/meshio.c libonb.a -lm
 RENDERS = results/reference/renders
 .PHONY: render
 render: $(B)/aorender

@@ -5,6 +5,14 @@
  *
  *   aorender --method NAME [--precision float|double] --out FILE.png
  *            [--diff DIFF.png] [--spp N (256)] [--list]
+ *            [--obj FILE.obj [--up z|y|x] [--no-renormalize]]
+ *
+ * --obj renders a mesh read by the scene reader (src/study/meshio.c,
+ * compiled into this program: it needs only libc and libm) instead of the
+ * scene below; see "--obj" further down for the camera, the shading
+ * normals, the hidden floor and the reference of --diff (there: the
+ * method's own frame made exact, not duff_branchless).  Bad input (a
+ * missing or malformed file) exits 2 with one line on stderr.
  *
  * Scene (z up), built so that only the basis can change the picture.  A
  * floor z = 0 (normal exactly +z) under a ceiling 1.4 above it: the
@@ -36,8 +44,10 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include "onb.h"
+#include "meshio.h"
 
 #define W 160
 #define H 120
@@ -145,6 +155,8 @@ static v3 norm(v3 a) { return mul(a, 1.0 / sqrt(dot(a, a))); }
 #define EXTENT 50.0
 #define AO_DIST 2.0
 #define DIFF_MAX 0.05 /* top of the difference colour scale */
+#define MESH_AO 0.3   /* --obj: AO distance, in bounding-sphere radii */
+#define MESH_FLOOR 0.1 /* --obj: the hidden floor, this far below the mesh */
 static const v3 C = { 0.0, 0.0, HC + R };
 
 /* Nearest hit with t in (1e-6, tmax); fills point and unit normal. */
@@ -195,6 +207,31 @@ static unsigned long long mix(unsigned long long x)
 }
 static double u01(unsigned long long *s) { *s = mix(*s + 0x9e3779b97f4a7c15ULL); return (double)(*s >> 11) * 0x1p-53; }
 
+/* The cosine-weighted local direction (lx, ly, lz) turned into the world
+   by the method's frame around n: w = b1 lx + b2 ly + n lz, in float
+   (fl: n and the local direction rounded to float first) or double. */
+static v3 frame_dir(const onb_method *m, int fl, v3 n, double lx, double ly, double lz)
+{
+	v3 w;
+	if (fl) {
+		onb_vec3f nf, b1, b2;
+		float fx = (float)lx, fy = (float)ly, fz = (float)lz;
+		nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+		m->basisf(nf, &b1, &b2);
+		w.x = b1.x * fx + b2.x * fy + nf.x * fz;
+		w.y = b1.y * fx + b2.y * fy + nf.y * fz;
+		w.z = b1.z * fx + b2.z * fy + nf.z * fz;
+	} else {
+		onb_vec3 nd, b1, b2;
+		nd.x = n.x; nd.y = n.y; nd.z = n.z;
+		m->basis(nd, &b1, &b2);
+		w.x = b1.x * lx + b2.x * ly + nd.x * lz;
+		w.y = b1.y * lx + b2.y * ly + nd.y * lz;
+		w.z = b1.z * lx + b2.z * ly + nd.z * lz;
+	}
+	return w;
+}
+
 static void render(const onb_method *m, int fl, int spp, double *img)
 {
 	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 };
@@ -215,23 +252,7 @@ static void render(const onb_method *m, int fl, int spp, double *img)
 			for (s = 0; s < spp; s++) {
 				double u1 = u01(&seed), u2 = u01(&seed), r = sqrt(u1), ph = 2.0 * 3.14159265358979323846 * u2;
 				double lx = r * cos(ph), ly = r * sin(ph), lz = sqrt(1.0 - u1), tt;
-				v3 w, pp, nn, o;
-				if (fl) {
-					onb_vec3f nf, b1, b2;
-					float fx = (float)lx, fy = (float)ly, fz = (float)lz;
-					nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
-					m->basisf(nf, &b1, &b2);
-					w.x = b1.x * fx + b2.x * fy + nf.x * fz;
-					w.y = b1.y * fx + b2.y * fy + nf.y * fz;
-					w.z = b1.z * fx + b2.z * fy + nf.z * fz;
-				} else {
-					onb_vec3 nd, b1, b2;
-					nd.x = n.x; nd.y = n.y; nd.z = n.z;
-					m->basis(nd, &b1, &b2);
-					w.x = b1.x * lx + b2.x * ly + nd.x * lz;
-					w.y = b1.y * lx + b2.y * ly + nd.y * lz;
-					w.z = b1.z * lx + b2.z * ly + nd.z * lz;
-				}
+				v3 w = frame_dir(m, fl, n, lx, ly, lz), pp, nn, o;
 				if (!isfinite(w.x) || !isfinite(w.y) || !isfinite(w.z)) {
 					sum = NAN;
 					continue;
@@ -241,6 +262,364 @@ static void render(const onb_method *m, int fl, int spp, double *img)
 				   stretched frame partly cancels the change of direction.) */
 				o = add(p, mul(n, 1e-4));
 				if (dot(w, w) > 0 && !hit(o, norm(w), AO_DIST, &tt, &pp, &nn))
+					sum += 1.0;
+			}
+			img[y * W + x] = sum / spp;
+		}
+}
+
+/* ---- --obj: a mesh from the scene reader (src/study/meshio.c) ----
+   The file's positions and normals are turned so that the --up axis is z
+   (the cyclic permutation of `onbstudy scene`: y: (x,y,z) -> (z,x,y),
+   x: (x,y,z) -> (y,z,x)), so the normals the method sees have that axis
+   as n.z.  The camera sits below and to the side of the bounding box's
+   centre, looking at it, far enough for the bounding sphere to fit the
+   view: the undersides (normals near -z) face it.  Triangles are found
+   through a bounding volume hierarchy (median splits, up to 4 triangles
+   a leaf) and intersected with Moller-Trumbore in double.  The shading
+   normal at a hit is the barycentric blend of the corners' normals from
+   the file, renormalized (or, --no-renormalize, passed to the method as
+   it is); a triangle with a corner without a normal is shaded with its
+   flat face normal.  A floor MESH_FLOOR radii below the mesh occludes the
+   AO rays but not the camera's: it gives the undersides, where normals
+   come near -z, a horizon within reach, as the default scene's floor
+   gives its ceiling, so that a frame that is not orthonormal there
+   changes the picture. */
+/* a leaf has count > 0 triangles tid[first ..]; an inner node, children */
+typedef struct { double lo[3], hi[3]; size_t first, count, left, right; } bnode;
+typedef struct {
+	const mesh_geom *g;
+	double *P, *N;          /* turned positions and normals                 */
+	size_t *tid;            /* triangle order of the leaves                 */
+	bnode *node;
+	size_t nnode;
+	double ao_dist, eps, floor_z;
+	v3 eye, fw, rt, up;
+	int renorm;
+} mscene;
+
+static const double *g_cen; /* centroids, for the qsort comparator */
+static int g_axis;
+static int cmp_cen(const void *a, const void *b)
+{
+	double x = g_cen[3 * *(const size_t *)a + g_axis], y = g_cen[3 * *(const size_t *)b + g_axis];
+	return (x > y) - (x < y);
+}
+
+static size_t bvh_build(mscene *s, const double *cen, size_t first, size_t count)
+{
+	size_t me = s->nnode++, i, k;
+	bnode *nd = &s->node[me];
+	double clo[3], chi[3];
+	int a;
+	for (a = 0; a < 3; a++) {
+		nd->lo[a] = clo[a] = INFINITY;
+		nd->hi[a] = chi[a] = -INFINITY;
+	}
+	for (i = first; i < first + count; i++) {
+		const uint32_t *t = s->g->tri + 3 * s->tid[i];
+		for (k = 0; k < 3; k++)
+			for (a = 0; a < 3; a++) {
+				double v = s->P[3 * t[k] + a];
+				if (v < nd->lo[a]) nd->lo[a] = v;
+				if (v > nd->hi[a]) nd->hi[a] = v;
+			}
+		for (a = 0; a < 3; a++) {
+			double v = cen[3 * s->tid[i] + a];
+			if (v < clo[a]) clo[a] = v;
+			if (v > chi[a]) chi[a] = v;
+		}
+	}
+	nd->first = first;
+	nd->count = count;
+	nd->left = nd->right = 0;
+	if (count > 4) {
+		size_t half = count / 2, l, r;
+		g_axis = chi[1] - clo[1] > chi[0] - clo[0] ? 1 : 0;
+		if (chi[2] - clo[2] > chi[g_axis] - clo[g_axis])
+			g_axis = 2;
+		g_cen = cen;
+		qsort(s->tid + first, count, sizeof *s->tid, cmp_cen);
+		l = bvh_build(s, cen, first, half);
+		r = bvh_build(s, cen, first + half, count - half);
+		s->node[me].left = l; /* s->node is never reallocated: nd stays valid, */
+		s->node[me].right = r; /* but say which node is meant */
+		s->node[me].count = 0;
+	}
+	return me;
+}
+
+static int box_hit(const bnode *nd, v3 o, v3 inv, double tmax)
+{
+	double t0 = 0, t1 = tmax, oo[3], ii[3];
+	int a;
+	oo[0] = o.x; oo[1] = o.y; oo[2] = o.z;
+	ii[0] = inv.x; ii[1] = inv.y; ii[2] = inv.z;
+	for (a = 0; a < 3; a++) {
+		double ta = (nd->lo[a] - oo[a]) * ii[a], tb = (nd->hi[a] - oo[a]) * ii[a];
+		if (ta > tb) { double tt = ta; ta = tb; tb = tt; }
+		if (ta > t0) t0 = ta; /* NaN (0 * inf) leaves the bound as it was */
+		if (tb < t1) t1 = tb;
+		if (t0 > t1)
+			return 0;
+	}
+	return 1;
+}
+
+/* Moller-Trumbore: t in (tmin, *t), barycentrics (u, v) of corners 1, 2. */
+static int tri_hit(const mscene *s, size_t ti, v3 o, v3 d, double *t, double *u, double *v)
+{
+	const uint32_t *c = s->g->tri + 3 * ti;
+	const double *a = s->P + 3 * c[0], *b = s->P + 3 * c[1], *e = s->P + 3 * c[2];
+	double e1[3], e2[3], pv[3], tv[3], qv[3], det, inv, uu, vv, tt;
+	int k;
+	for (k = 0; k < 3; k++) { e1[k] = b[k] - a[k]; e2[k] = e[k] - a[k]; }
+	pv[0] = d.y * e2[2] - d.z * e2[1]; pv[1] = d.z * e2[0] - d.x * e2[2]; pv[2] = d.x * e2[1] - d.y * e2[0];
+	det = e1[0] * pv[0] + e1[1] * pv[1] + e1[2] * pv[2];
+	if (det == 0 || !isfinite(det))
+		return 0;
+	inv = 1.0 / det;
+	tv[0] = o.x - a[0]; tv[1] = o.y - a[1]; tv[2] = o.z - a[2];
+	uu = (tv[0] * pv[0] + tv[1] * pv[1] + tv[2] * pv[2]) * inv;
+	if (uu < 0 || uu > 1)
+		return 0;
+	qv[0] = tv[1] * e1[2] - tv[2] * e1[1]; qv[1] = tv[2] * e1[0] - tv[0] * e1[2]; qv[2] = tv[0] * e1[1] - tv[1] * e1[0];
+	vv = (d.x * qv[0] + d.y * qv[1] + d.z * qv[2]) * inv;
+	if (vv < 0 || uu + vv > 1)
+		return 0;
+	tt = (e2[0] * qv[0] + e2[1] * qv[1] + e2[2] * qv[2]) * inv;
+	if (!(tt > s->eps * 1e-3 && tt < *t))
+		return 0;
+	*t = tt; *u = uu; *v = vv;
+	return 1;
+}
+
+/* Nearest hit (any = 0) or any hit (any = 1) with t < tmax. */
+static int mesh_hit(const mscene *s, v3 o, v3 d, double tmax, int any, double *t, size_t *ti, double *u, double *v)
+{
+	size_t stack[128], sp = 0;
+	v3 inv;
+	int found = 0;
+	inv.x = 1.0 / d.x; inv.y = 1.0 / d.y; inv.z = 1.0 / d.z;
+	*t = tmax;
+	stack[sp++] = 0;
+	while (sp) {
+		const bnode *nd = &s->node[stack[--sp]];
+		if (!box_hit(nd, o, inv, *t))
+			continue;
+		if (nd->count) {
+			size_t i;
+			for (i = nd->first; i < nd->first + nd->count; i++)
+				if (tri_hit(s, s->tid[i], o, d, t, u, v)) {
+					*ti = s->tid[i];
+					found = 1;
+					if (any)
+						return 1;
+				}
+		} else if (sp + 2 <= sizeof stack / sizeof stack[0]) {
+			stack[sp++] = nd->right;
+			stack[sp++] = nd->left;
+		}
+	}
+	return found;
+}
+
+static void turn(char up, const double *in, double *out)
+{
+	double x = in[0], y = in[1], z = in[2];
+	if (up == 'y') { out[0] = z; out[1] = x; out[2] = y; }
+	else if (up == 'x') { out[0] = y; out[1] = z; out[2] = x; }
+	else { out[0] = x; out[1] = y; out[2] = z; }
+}
+
+/* Builds the scene; 0, or -1 with a message in err. */
+static int mscene_init(mscene *s, const mesh_geom *g, char up, int renorm, char *err, size_t errlen)
+{
+	double *cen, lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY }, r, dist;
+	size_t i;
+	int a, k;
+	v3 c, dir, wup = { 0.0, 0.0, 1.0 };
+	memset(s, 0, sizeof *s);
+	s->g = g;
+	s->renorm = renorm;
+	if (g->ntris == 0) {
+		snprintf(err, errlen, "no faces to render (%zu vertices)", g->nverts);
+		return -1;
+	}
+	s->P = malloc(3 * g->nverts * sizeof *s->P);
+	s->N = malloc(3 * (g->nnormals ? g->nnormals : 1) * sizeof *s->N);
+	s->tid = malloc(g->ntris * sizeof *s->tid);
+	s->node = malloc(2 * g->ntris * sizeof *s->node); /* at most 2n - 1 nodes */
+	cen = malloc(3 * g->ntris * sizeof *cen);
+	if (!s->P || !s->N || !s->tid || !s->node || !cen) {
+		free(cen);
+		snprintf(err, errlen, "out of memory for %zu triangles", g->ntris);
+		return -1;
+	}
+	for (i = 0; i < g->nverts; i++)
+		turn(up, g->pos + 3 * i, s->P + 3 * i);
+	for (i = 0; i < g->nnormals; i++)
+		turn(up, g->nrm + 3 * i, s->N + 3 * i);
+	for (i = 0; i < g->ntris; i++) {
+		s->tid[i] = i;
+		for (a = 0; a < 3; a++)
+			cen[3 * i + a] = 0;
+		for (k = 0; k < 3; k++) {
+			const double *p = s->P + 3 * g->tri[3 * i + k];
+			for (a = 0; a < 3; a++) {
+				if (!isfinite(p[a])) {
+					free(cen);
+					snprintf(err, errlen, "line %llu: a face uses a vertex with a non-finite coordinate",
+					         (unsigned long long)g->tri_line[i]);
+					return -1;
+				}
+				cen[3 * i + a] += p[a] / 3;
+				if (p[a] < lo[a]) lo[a] = p[a];
+				if (p[a] > hi[a]) hi[a] = p[a];
+			}
+		}
+	}
+	bvh_build(s, cen, 0, g->ntris);
+	free(cen);
+	c.x = (lo[0] + hi[0]) / 2; c.y = (lo[1] + hi[1]) / 2; c.z = (lo[2] + hi[2]) / 2;
+	r = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+	if (!(r > 0) || !isfinite(r)) {
+		snprintf(err, errlen, "the faces span no volume or area (bounding box radius %g)", r);
+		return -1;
+	}
+	/* from below and to the side, towards the centre; the distance puts
+	   every corner of the box inside the view (half-angles: tan 1.0
+	   across, 0.75 up) with a 5% margin */
+	dir.x = 0.55; dir.y = -0.7; dir.z = -0.45;
+	s->fw = norm(mul(dir, -1.0));
+	s->rt.x = s->fw.y * wup.z - s->fw.z * wup.y; s->rt.y = s->fw.z * wup.x - s->fw.x * wup.z; s->rt.z = s->fw.x * wup.y - s->fw.y * wup.x;
+	s->rt = norm(s->rt);
+	s->up.x = s->rt.y * s->fw.z - s->rt.z * s->fw.y; s->up.y = s->rt.z * s->fw.x - s->rt.x * s->fw.z; s->up.z = s->rt.x * s->fw.y - s->rt.y * s->fw.x;
+	dist = 0;
+	for (k = 0; k < 8; k++) {
+		v3 q;
+		double ahead, need;
+		q.x = (k & 1 ? hi[0] : lo[0]) - c.x; q.y = (k & 2 ? hi[1] : lo[1]) - c.y; q.z = (k & 4 ? hi[2] : lo[2]) - c.z;
+		ahead = dot(q, s->fw);
+		need = fabs(dot(q, s->rt)) * H / (0.75 * W);
+		if (fabs(dot(q, s->up)) / 0.75 > need)
+			need = fabs(dot(q, s->up)) / 0.75;
+		need = 1.05 * need - ahead;
+		if (need > dist)
+			dist = need;
+	}
+	s->eye = add(c, mul(s->fw, -dist));
+	s->ao_dist = MESH_AO * r;
+	s->floor_z = lo[2] - MESH_FLOOR * r;
+	s->eps = 1e-6 * r;
+	return 0;
+}
+
+static void mscene_free(mscene *s)
+{
+	free(s->P); free(s->N); free(s->tid); free(s->node);
+	memset(s, 0, sizeof *s);
+}
+
+/* The reference of --obj --diff: the method's own frame made exact.  A
+   correct frame may be any rotation of another about n, and on a mesh
+   (unlike the default scene) a rotation changes which samples are
+   occluded: against duff_branchless every method would differ by noise.
+   So the reference keeps the method's orientation and drops its error:
+   nh = n / |n|, b1' = b1 - (b1.nh) nh normalized, b2' = +-nh x b1' (the
+   sign of the method's b2), all in double; where b1 is not finite or
+   parallel to n, duff_branchless's frame in double.  The difference then
+   shows only what the method's frame (and, with --no-renormalize, a
+   non-unit n) costs. */
+static v3 frame_dir_exact(const onb_method *m, int fl, v3 n, double lx, double ly, double lz)
+{
+	v3 b1, b2, nh, c, w;
+	double l = sqrt(dot(n, n)), k;
+	nh = mul(n, 1.0 / l);
+	if (fl) {
+		onb_vec3f nf, f1, f2;
+		nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+		m->basisf(nf, &f1, &f2);
+		b1.x = f1.x; b1.y = f1.y; b1.z = f1.z;
+		b2.x = f2.x; b2.y = f2.y; b2.z = f2.z;
+	} else {
+		onb_vec3 nd, d1, d2;
+		nd.x = n.x; nd.y = n.y; nd.z = n.z;
+		m->basis(nd, &d1, &d2);
+		b1.x = d1.x; b1.y = d1.y; b1.z = d1.z;
+		b2.x = d2.x; b2.y = d2.y; b2.z = d2.z;
+	}
+	b1 = add(b1, mul(nh, -dot(b1, nh)));
+	k = sqrt(dot(b1, b1));
+	if (!(k > 1e-3) || !isfinite(k)) {
+		onb_vec3 nd, d1, d2;
+		nd.x = nh.x; nd.y = nh.y; nd.z = nh.z;
+		onb_find("duff_branchless")->basis(nd, &d1, &d2);
+		b1.x = d1.x; b1.y = d1.y; b1.z = d1.z;
+		b2.x = d2.x; b2.y = d2.y; b2.z = d2.z;
+	} else {
+		b1 = mul(b1, 1.0 / k);
+		c.x = nh.y * b1.z - nh.z * b1.y; c.y = nh.z * b1.x - nh.x * b1.z; c.z = nh.x * b1.y - nh.y * b1.x;
+		b2 = dot(c, b2) < 0 ? mul(c, -1.0) : c;
+	}
+	w.x = b1.x * lx + b2.x * ly + nh.x * lz;
+	w.y = b1.y * lx + b2.y * ly + nh.y * lz;
+	w.z = b1.z * lx + b2.z * ly + nh.z * lz;
+	return w;
+}
+
+/* exact: render the reference of frame_dir_exact instead */
+static void render_mesh(const mscene *s, const onb_method *m, int fl, int exact, int spp, double *img)
+{
+	const mesh_geom *g = s->g;
+	int x, y, sm;
+	for (y = 0; y < H; y++)
+		for (x = 0; x < W; x++) {
+			double sx = (2.0 * (x + 0.5) / W - 1.0) * 0.75 * W / H, sy = (1.0 - 2.0 * (y + 0.5) / H) * 0.75, t, u, v, sum = 0, side;
+			v3 d = norm(add(s->fw, add(mul(s->rt, sx), mul(s->up, sy)))), p, ng, n, e1, e2;
+			unsigned long long seed = mix((unsigned long long)(y * W + x) + 12345);
+			size_t ti;
+			const uint32_t *c, *cn;
+			if (!mesh_hit(s, s->eye, d, 1e300, 0, &t, &ti, &u, &v)) {
+				img[y * W + x] = 0.75;
+				continue;
+			}
+			c = g->tri + 3 * ti;
+			cn = g->tri_n + 3 * ti;
+			p = add(s->eye, mul(d, t));
+			e1.x = s->P[3 * c[1]] - s->P[3 * c[0]]; e1.y = s->P[3 * c[1] + 1] - s->P[3 * c[0] + 1]; e1.z = s->P[3 * c[1] + 2] - s->P[3 * c[0] + 2];
+			e2.x = s->P[3 * c[2]] - s->P[3 * c[0]]; e2.y = s->P[3 * c[2] + 1] - s->P[3 * c[0] + 1]; e2.z = s->P[3 * c[2] + 2] - s->P[3 * c[0] + 2];
+			ng.x = e1.y * e2.z - e1.z * e2.y; ng.y = e1.z * e2.x - e1.x * e2.z; ng.z = e1.x * e2.y - e1.y * e2.x;
+			ng = norm(ng);
+			if (cn[0] != MESH_NO_NORMAL && cn[1] != MESH_NO_NORMAL && cn[2] != MESH_NO_NORMAL) {
+				const double *n0 = s->N + 3 * cn[0], *n1 = s->N + 3 * cn[1], *n2 = s->N + 3 * cn[2];
+				double w0 = 1 - u - v, l2;
+				n.x = w0 * n0[0] + u * n1[0] + v * n2[0];
+				n.y = w0 * n0[1] + u * n1[1] + v * n2[1];
+				n.z = w0 * n0[2] + u * n1[2] + v * n2[2];
+				l2 = dot(n, n);
+				if (s->renorm && l2 > 0 && isfinite(l2))
+					n = mul(n, 1.0 / sqrt(l2));
+			} else
+				n = ng;
+			/* leave the surface on the side the shading normal faces */
+			side = dot(ng, n) >= 0 ? 1.0 : -1.0;
+			for (sm = 0; sm < spp; sm++) {
+				double u1 = u01(&seed), u2 = u01(&seed), r = sqrt(u1), ph = 2.0 * 3.14159265358979323846 * u2;
+				double lx = r * cos(ph), ly = r * sin(ph), lz = sqrt(1.0 - u1), tt, uu, vv;
+				v3 w = exact ? frame_dir_exact(m, fl, n, lx, ly, lz) : frame_dir(m, fl, n, lx, ly, lz), o;
+				size_t tj;
+				if (!isfinite(w.x) || !isfinite(w.y) || !isfinite(w.z)) {
+					sum = NAN;
+					continue;
+				}
+				o = add(p, mul(ng, side * s->eps * 100));
+				if (!(dot(w, w) > 0))
+					continue;
+				w = norm(w);
+				if (w.z < 0 && (s->floor_z - o.z) / w.z < s->ao_dist)
+					continue; /* the hidden floor */
+				if (!mesh_hit(s, o, w, s->ao_dist, 1, &tt, &tj, &uu, &vv))
 					sum += 1.0;
 			}
 			img[y * W + x] = sum / spp;
@@ -270,9 +649,13 @@ static unsigned char pal_index(double v)
 int main(int argc, char **argv)
 {
 	static unsigned char plte[768];
-	const char *name = NULL, *out = NULL, *diff = NULL;
-	int fl = 1, spp = 256, k, i;
+	const char *name = NULL, *out = NULL, *diff = NULL, *obj = NULL;
+	int fl = 1, spp = 256, k, i, renorm = 1;
+	char up = 'z';
 	const onb_method *m;
+	mesh_normals mn;
+	mesh_geom mg;
+	mscene sc;
 	static double img[W * H], ref[W * H];
 	static unsigned char rgb[W * H * 3];
 	crc_init();
@@ -286,6 +669,16 @@ int main(int argc, char **argv)
 		} else if (k + 1 < argc && !strcmp(argv[k], "--method")) name = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--out")) out = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--diff")) diff = argv[++k];
+		else if (k + 1 < argc && !strcmp(argv[k], "--obj")) obj = argv[++k];
+		else if (!strcmp(argv[k], "--no-renormalize")) renorm = 0;
+		else if (k + 1 < argc && !strcmp(argv[k], "--up")) {
+			k++;
+			if (strlen(argv[k]) != 1 || !strchr("zyx", argv[k][0])) {
+				fprintf(stderr, "aorender: --up must be z, y or x, got '%s'\n", argv[k]);
+				return 2;
+			}
+			up = argv[k][0];
+		}
 		else if (k + 1 < argc && !strcmp(argv[k], "--spp")) {
 			spp = atoi(argv[++k]);
 			if (spp < 1 || spp > 100000) { fprintf(stderr, "aorender: --spp must be 1..100000\n"); return 2; }
@@ -295,7 +688,7 @@ int main(int argc, char **argv)
 			else if (!strcmp(argv[k], "double")) fl = 0;
 			else { fprintf(stderr, "aorender: --precision must be float or double\n"); return 2; }
 		} else {
-			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] --out FILE.png [--diff DIFF.png] | --list\n");
+			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] [--obj FILE [--up z|y|x] [--no-renormalize]] --out FILE.png [--diff DIFF.png] | --list\n");
 			return 2;
 		}
 	}
@@ -308,7 +701,20 @@ int main(int argc, char **argv)
 		fprintf(stderr, "aorender: unknown method '%s' (--list names them)\n", name);
 		return 2;
 	}
-	render(m, fl, spp, img);
+	if (obj) {
+		char err[600], msg[700];
+		if (mesh_read_geom_file(obj, &mn, &mg, err, sizeof err) != 0) {
+			fprintf(stderr, "aorender: %s\n", err);
+			return 2;
+		}
+		if (mscene_init(&sc, &mg, up, renorm, msg, sizeof msg) != 0) {
+			fprintf(stderr, "aorender: %s: %s\n", obj, msg);
+			mscene_free(&sc); mesh_geom_free(&mg); mesh_free(&mn);
+			return 2;
+		}
+		render_mesh(&sc, m, fl, 0, spp, img);
+	} else
+		render(m, fl, spp, img);
 	for (i = 0; i < W * H; i++) {
 		double v = img[i];
 		unsigned char g = (unsigned char)(v >= 0 ? 255 * (v > 1 ? 1 : v) + 0.5 : 0);
@@ -321,7 +727,10 @@ int main(int argc, char **argv)
 	if (diff) {
 		double maxd = 0, sumd = 0;
 		int nan = 0, over = 0;
-		render(onb_find("duff_branchless"), 0, spp, ref);
+		if (obj)
+			render_mesh(&sc, m, fl, 1, spp, ref);
+		else
+			render(onb_find("duff_branchless"), 0, spp, ref);
 		for (i = 0; i < W * H; i++) {
 			double d = fabs(img[i] - ref[i]);
 			if (d != d) nan++;
@@ -338,6 +747,9 @@ int main(int argc, char **argv)
 		}
 		printf("%-24s %-6s mean |diff| %.4f  max %.3f  pixels > %.3f: %5d  NaN pixels %d\n", name, fl ? "float" : "double",
 		       sumd / (W * H - nan), maxd, DIFF_MAX / 2, over, nan);
+	}
+	if (obj) {
+		mscene_free(&sc); mesh_geom_free(&mg); mesh_free(&mn);
 	}
 	return 0;
 }

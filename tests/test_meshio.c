@@ -381,12 +381,56 @@ static void test_file(void)
 	rmdir(dir);
 }
 
+/* The optional geometry (mesh_read_geom_mem): positions, fan triangles,
+   per-corner normal indices, and nothing on error. */
+static void test_geom(void)
+{
+	mesh_normals m;
+	mesh_geom g;
+	char err[512];
+	/* a quad (two triangles) with vn per corner, and a triangle without */
+	const char *a = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+	                "vn 0 0 1\nvn 0 0 -1\n"
+	                "f 1//1 2//1 3//2 4//2\nf 1 2 5\n";
+	/* no vn: computed normals, indexed like the positions */
+	const char *b = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 9 9 9\nf 1 2 3\n";
+	int rc = mesh_read_geom_mem("a.obj", (const unsigned char *)a, strlen(a), &m, &g, err, sizeof err);
+	CHECK(rc == 0, "geom a: %s", err);
+	if (rc == 0) {
+		CHECK(g.nverts == 5 && g.ntris == 3 && g.nnormals == 2 && m.count == 2, "geom a: counts %zu %zu %zu", g.nverts, g.ntris, g.nnormals);
+		CHECK(g.tri[0] == 0 && g.tri[1] == 1 && g.tri[2] == 2 && g.tri[3] == 0 && g.tri[4] == 2 && g.tri[5] == 3,
+		      "geom a: fan triangulation %u %u %u / %u %u %u", g.tri[0], g.tri[1], g.tri[2], g.tri[3], g.tri[4], g.tri[5]);
+		CHECK(g.tri_n[0] == 0 && g.tri_n[1] == 0 && g.tri_n[2] == 1 && g.tri_n[3] == 0 && g.tri_n[4] == 1 && g.tri_n[5] == 1,
+		      "geom a: corner normals");
+		CHECK(g.tri_n[6] == MESH_NO_NORMAL && g.tri_n[7] == MESH_NO_NORMAL && g.tri_n[8] == MESH_NO_NORMAL, "geom a: corners without vn");
+		CHECK(g.pos[3 * 4 + 2] == 1 && g.nrm[3 * 1 + 2] == -1, "geom a: values");
+		CHECK(g.tri_line[0] == 8 && g.tri_line[1] == 8 && g.tri_line[2] == 9, "geom a: face lines");
+	}
+	mesh_geom_free(&g);
+	mesh_free(&m);
+	rc = mesh_read_geom_mem("b.obj", (const unsigned char *)b, strlen(b), &m, &g, err, sizeof err);
+	CHECK(rc == 0, "geom b: %s", err);
+	if (rc == 0) {
+		CHECK(g.nverts == 4 && g.ntris == 1 && g.nnormals == 4, "geom b: counts");
+		CHECK(g.tri_n[0] == 0 && g.tri_n[1] == 1 && g.tri_n[2] == 2, "geom b: normal indices are the vertices");
+		CHECK(g.nrm[2] == 1 && g.nrm[5] == 1 && g.nrm[8] == 1 && g.nrm[11] == 0, "geom b: computed normals (+z), unreferenced 0");
+	}
+	mesh_geom_free(&g);
+	mesh_free(&m);
+	/* errors: the same messages, nothing left behind */
+	rc = mesh_read_geom_mem("c.obj", (const unsigned char *)"v 0 0 0\nf 1 2 3\n", 16, &m, &g, err, sizeof err);
+	CHECK(rc == -1 && strstr(err, "line 2") && g.tri == NULL && g.pos == NULL && g.ntris == 0 && m.x == NULL, "geom c: %s", err);
+	rc = mesh_read_geom_mem("d.ply", (const unsigned char *)"ply\n", 4, &m, &g, err, sizeof err);
+	CHECK(rc == -1 && strstr(err, "OBJ files only") && g.tri == NULL, "geom d: %s", err);
+}
+
 int main(void)
 {
 	test_obj();
 	test_ply();
 	test_mutations();
 	test_file();
+	test_geom();
 	printf("%d passed, %d failed\n", pass, failed);
 	return failed != 0;
 }

@@ -285,9 +285,60 @@ static int obj_index(mctx *c, uint64_t line, const char *what, const unsigned ch
 	return fail(c, "line %llu: %s index %lld out of range (%zu defined so far)", (unsigned long long)line, what, v, n);
 }
 
-static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m)
+void mesh_geom_free(mesh_geom *g)
 {
-	gvec pos, vwhere, vn, vnwhere, corners, faces;
+	if (!g)
+		return;
+	free(g->pos); free(g->nrm); free(g->tri); free(g->tri_n); free(g->tri_line);
+	memset(g, 0, sizeof *g);
+}
+
+/* The geometry of a parsed OBJ (see meshio.h); m holds its normals.
+   cnorm: per corner, the `vn` index or MESH_NO_NORMAL. */
+static int obj_geom(mctx *c, const mesh_normals *m, const gvec *pos, const gvec *vn,
+                    const gvec *corners, const gvec *cnorm, const gvec *faces, mesh_geom *g)
+{
+	const face_rec *fr = faces->p;
+	const uint32_t *cv = corners->p, *cn = cnorm->p;
+	size_t f, i, t = 0, nn = vn->n > 0 ? vn->n : pos->n;
+	g->nverts = pos->n;
+	g->nnormals = nn;
+	g->ntris = m->ntriangles;
+	g->pos = xcalloc(pos->n, 3 * sizeof *g->pos);
+	g->nrm = xcalloc(nn, 3 * sizeof *g->nrm);
+	g->tri = xcalloc(g->ntris, 3 * sizeof *g->tri);
+	g->tri_n = xcalloc(g->ntris, 3 * sizeof *g->tri_n);
+	g->tri_line = xcalloc(g->ntris, sizeof *g->tri_line);
+	if (!g->pos || !g->nrm || !g->tri || !g->tri_n || !g->tri_line)
+		return fail(c, "out of memory for the geometry (%zu vertices, %zu triangles)", pos->n, g->ntris);
+	if (pos->n)
+		memcpy(g->pos, pos->p, pos->n * 3 * sizeof *g->pos);
+	if (vn->n > 0)
+		memcpy(g->nrm, vn->p, vn->n * 3 * sizeof *g->nrm);
+	else
+		for (i = 0; i < m->count; i++) {
+			size_t v = m->index[i];
+			g->nrm[3 * v] = m->x[i]; g->nrm[3 * v + 1] = m->y[i]; g->nrm[3 * v + 2] = m->z[i];
+		}
+	for (f = 0; f < faces->n; f++) {
+		size_t a = fr[f].first;
+		for (i = 1; i + 1 < fr[f].count; i++, t++) {
+			size_t b = a + i, d = a + i + 1;
+			g->tri[3 * t] = cv[a]; g->tri[3 * t + 1] = cv[b]; g->tri[3 * t + 2] = cv[d];
+			if (vn->n > 0) {
+				g->tri_n[3 * t] = cn[a]; g->tri_n[3 * t + 1] = cn[b]; g->tri_n[3 * t + 2] = cn[d];
+			} else {
+				g->tri_n[3 * t] = cv[a]; g->tri_n[3 * t + 1] = cv[b]; g->tri_n[3 * t + 2] = cv[d];
+			}
+			g->tri_line[t] = fr[f].where;
+		}
+	}
+	return 0;
+}
+
+static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
+{
+	gvec pos, vwhere, vn, vnwhere, corners, cnorm, faces;
 	const unsigned char *p = buf, *end = buf + len;
 	uint64_t line = 0;
 	size_t nvt = 0;
@@ -296,6 +347,7 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 	gvec_init(&pos, 3 * sizeof(double)); gvec_init(&vwhere, sizeof(uint64_t));
 	gvec_init(&vn, 3 * sizeof(double)); gvec_init(&vnwhere, sizeof(uint64_t));
 	gvec_init(&corners, sizeof(uint32_t)); gvec_init(&faces, sizeof(face_rec));
+	gvec_init(&cnorm, sizeof(uint32_t));
 	m->format = MESH_OBJ;
 	if (len >= 2 && ((buf[0] == 0xfe && buf[1] == 0xff) || (buf[0] == 0xff && buf[1] == 0xfe))) {
 		fail(c, "line 1: UTF-16 text (byte-order mark %02x %02x) is not supported; convert to UTF-8", buf[0], buf[1]);
@@ -360,7 +412,7 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 			while (next_tok(&q, le, &t, &tl)) {
 				const unsigned char *s1 = memchr(t, '/', tl), *s2 = NULL;
 				size_t vi, other;
-				uint32_t u;
+				uint32_t u, un = MESH_NO_NORMAL;
 				if (s1)
 					s2 = memchr(s1 + 1, '/', tl - (size_t)(s1 + 1 - t));
 				if (s2 && memchr(s2 + 1, '/', tl - (size_t)(s2 + 1 - t))) {
@@ -379,9 +431,11 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 					}
 					if (s2 && obj_index(c, line, "normal", s2 + 1, (size_t)(t + tl - s2 - 1), vn.n, &other) != 0)
 						goto out;
+					if (s2)
+						un = (uint32_t)other;
 				}
 				u = (uint32_t)vi;
-				if (gvec_push(&corners, &u) != 0) {
+				if (gvec_push(&corners, &u) != 0 || (geom && gvec_push(&cnorm, &un) != 0)) {
 					fail(c, "line %llu: too many face corners, or out of memory", (unsigned long long)line);
 					goto out;
 				}
@@ -433,9 +487,11 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 		fail(c, "no normals: no 'vn' lines and no faces to compute them from (%llu lines, %zu vertices)",
 		     (unsigned long long)line, pos.n);
 	}
+	if (rc == 0 && geom)
+		rc = obj_geom(c, m, &pos, &vn, &corners, &cnorm, &faces, geom);
 out:
 	gvec_free(&pos); gvec_free(&vwhere); gvec_free(&vn); gvec_free(&vnwhere);
-	gvec_free(&corners); gvec_free(&faces);
+	gvec_free(&corners); gvec_free(&cnorm); gvec_free(&faces);
 	return rc;
 }
 
@@ -966,12 +1022,20 @@ static int has_ext(const char *name, const char *ext)
 int mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
                   mesh_normals *out, char *err, size_t errlen)
 {
+	return mesh_read_geom_mem(name, buf, len, out, NULL, err, errlen);
+}
+
+int mesh_read_geom_mem(const char *name, const unsigned char *buf, size_t len,
+                       mesh_normals *out, mesh_geom *geom, char *err, size_t errlen)
+{
 	mctx c;
 	int rc, ply;
 	c.err = err; c.errlen = errlen; c.name = name;
 	if (err && errlen)
 		err[0] = '\0';
 	memset(out, 0, sizeof *out);
+	if (geom)
+		memset(geom, 0, sizeof *geom);
 	if (!buf && len)
 		return fail(&c, "no data");
 	if (len == 0)
@@ -982,13 +1046,22 @@ int mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
 		ply = 0;
 	else
 		ply = len >= 4 && memcmp(buf, "ply", 3) == 0 && (buf[3] == '\n' || buf[3] == '\r');
-	rc = ply ? read_ply(&c, buf, len, out) : read_obj(&c, buf, len, out);
-	if (rc != 0)
+	if (ply && geom)
+		return fail(&c, "geometry is read from OBJ files only, and this is a PLY file");
+	rc = ply ? read_ply(&c, buf, len, out) : read_obj(&c, buf, len, out, geom);
+	if (rc != 0) {
 		mesh_free(out);
+		mesh_geom_free(geom);
+	}
 	return rc;
 }
 
 int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen)
+{
+	return mesh_read_geom_file(path, out, NULL, err, errlen);
+}
+
+int mesh_read_geom_file(const char *path, mesh_normals *out, mesh_geom *geom, char *err, size_t errlen)
 {
 	mctx c;
 	FILE *f;
@@ -997,6 +1070,8 @@ int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen
 	int rc;
 	c.err = err; c.errlen = errlen; c.name = path;
 	memset(out, 0, sizeof *out);
+	if (geom)
+		memset(geom, 0, sizeof *geom);
 	f = fopen(path, "rb");
 	if (!f)
 		return fail(&c, "cannot open: %s", strerror(errno));
@@ -1044,7 +1119,7 @@ int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen
 		return fail(&c, "read error");
 	}
 	fclose(f);
-	rc = mesh_read_mem(path, buf, len, out, err, errlen);
+	rc = mesh_read_geom_mem(path, buf, len, out, geom, err, errlen);
 	free(buf);
 	return rc;
 }

@@ -57,6 +57,38 @@ int  mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
 int  mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen);
 void mesh_free(mesh_normals *m);
 
+/* Optional geometry, for a renderer (OBJ only).
+ *   pos      the `v` positions (x, y, z; any 4th to 7th number dropped).
+ *   nrm      the normals the corners refer to: with `vn` lines, exactly the
+ *            `vn` values in file order (the same as mesh_normals x, y, z);
+ *            without, one computed normal per vertex, indexed like pos (the
+ *            same values as mesh_normals; unreferenced vertices get 0 0 0).
+ *   tri      3 position indices per triangle; polygons are fan-triangulated
+ *            (a b c d ...) -> (a b c) (a c d) ..., in file order.
+ *   tri_n    3 normal indices per triangle, one per corner: the corner's
+ *            `v//vn` or `v/vt/vn`, or the vertex's computed normal; a
+ *            corner without one in a file that has `vn` lines gets
+ *            MESH_NO_NORMAL (a renderer then uses the flat face normal).
+ *   tri_line the OBJ line of each triangle's face.
+ * The same checks and errors as mesh_read_mem; on failure both outputs are
+ * empty.  geom == NULL reads normals only (what mesh_read_mem does). */
+#define MESH_NO_NORMAL UINT32_MAX
+typedef struct {
+	size_t nverts;      /* positions                                     */
+	double *pos;        /* 3 * nverts                                    */
+	size_t nnormals;    /* normals the corners index                     */
+	double *nrm;        /* 3 * nnormals                                  */
+	size_t ntris;       /* triangles                                     */
+	uint32_t *tri;      /* 3 * ntris position indices                    */
+	uint32_t *tri_n;    /* 3 * ntris normal indices, or MESH_NO_NORMAL   */
+	uint64_t *tri_line; /* ntris: line of the face                       */
+} mesh_geom;
+int  mesh_read_geom_mem(const char *name, const unsigned char *buf, size_t len,
+                        mesh_normals *out, mesh_geom *geom, char *err, size_t errlen);
+int  mesh_read_geom_file(const char *path, mesh_normals *out, mesh_geom *geom,
+                         char *err, size_t errlen);
+void mesh_geom_free(mesh_geom *g);
+
 #define MESH_MAX_FILE ((size_t)1 << 31)
 /* Most normals, vertices or face corners accepted (before any allocation). */
 #define MESH_MAX_ITEMS ((uint64_t)1 << 28)

@@ -12,6 +12,23 @@
 static onb_vec3  plain_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
 static onb_vec3f plain_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
 
+/* The reference's family of a registry method, or -1 if it has none. */
+static int kernels_family(const onb_method *m)
+{
+	static const struct { const char *name; int id; } fam[] = {
+		{ "naive", FAM_NAIVE }, { "hughes_moeller", FAM_HUGHES_MOELLER }, { "frisvad", FAM_FRISVAD },
+		{ "duff", FAM_DUFF }, { "duff_branchless", FAM_DUFF_BRANCHLESS }, { "stark", FAM_STARK },
+		{ "pbrt_v3", FAM_PBRT_V3 }, { "rtow", FAM_RTOW }, { "tangent_cross_z", FAM_TANGENT_CROSS_Z },
+	};
+	size_t i;
+	if (!m)
+		return FAM_ROTATE;
+	for (i = 0; i < sizeof fam / sizeof fam[0]; i++)
+		if (strcmp(m->family, fam[i].name) == 0)
+			return fam[i].id;
+	return -1;
+}
+
 static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int *k)
 {
 	study_kernel *s;
@@ -28,6 +45,11 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 	memset(s, 0, sizeof *s);
 	snprintf(s->name, sizeof s->name, "%s%s", name, fma ? "+fma" : "");
 	s->m = m;
+	s->family = kernels_family(m);
+	if (s->family < 0) {
+		study_error("method '%s': no MPFR reference for its family '%s' (src/study/reference.c)", name, m->family);
+		return -1;
+	}
 	s->fma = fma;
 	if (fma) {
 		if (fma_lookup(name, &s->basis, &s->basisf, &s->rot, &s->rotf) != 0) {

@@ -11,12 +11,20 @@
 
 enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
 
+/* The formula families the MPFR reference knows (onb_method.family),
+   resolved once per kernel so that the sweep loop switches on an int. */
+enum { FAM_ROTATE = 0, FAM_NAIVE, FAM_HUGHES_MOELLER, FAM_FRISVAD, FAM_DUFF, FAM_DUFF_BRANCHLESS,
+       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z };
+
+struct study_kernel;
+
 typedef onb_vec3  (*rotate_fn) (onb_vec3  n, double x, double y, double z);
 typedef onb_vec3f (*rotatef_fn)(onb_vec3f n, float x, float y, float z);
 
 typedef struct study_kernel {
 	char name[64];          /* registry name, "+fma" appended for FMA copies */
 	const onb_method *m;    /* registry entry; NULL for frisvad_rotate       */
+	int family;             /* FAM_*, from m->family (FAM_ROTATE without m)   */
 	int fma;                /* compiled with -mfma -ffp-contract=fast        */
 	onb_basis_fn  basis;    /* NULL for frisvad_rotate                       */
 	onb_basisf_fn basisf;
@@ -25,7 +33,7 @@ typedef struct study_kernel {
 	/* The branch the kernel takes on n (see reference.c for the ids).  For
 	   the FMA copies it is evaluated in the FMA translation unit, since
 	   rtow's branch depends on rounded intermediates. */
-	int (*branch)(const onb_method *m, int prec, const double n[3]);
+	int (*branch)(const struct study_kernel *k, int prec, const double n[3]);
 } study_kernel;
 
 /* Fill out[] (capacity cap) with the kernels named in the comma-separated
@@ -35,11 +43,11 @@ typedef struct study_kernel {
 int kernels_select(const char *names, int fma, study_kernel *out, int cap);
 
 /* Branch ids, plain arithmetic. */
-int kernels_branch(const onb_method *m, int prec, const double n[3]);
+int kernels_branch(const study_kernel *k, int prec, const double n[3]);
 
 /* fma_kernels.c: 1 when the CPU can run the FMA copies. */
 int fma_available(void);
 int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rotate_fn *rot, rotatef_fn *rotf);
-int fma_branch(const onb_method *m, int prec, const double n[3]);
+int fma_branch(const study_kernel *k, int prec, const double n[3]);
 
 #endif

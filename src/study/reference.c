@@ -212,7 +212,6 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 {
 	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
 	const onb_method *m = k->m;
-	const char *f;
 	if (!m) { /* frisvad_rotate, Equation 3 */
 		mpfr_add_ui(t[3], n[2], 1, R);
 		if (mpfr_zero_p(t[3])) {
@@ -237,8 +236,8 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		}
 		return;
 	}
-	f = m->family;
-	if (!strcmp(f, "naive")) {
+	switch (k->family) {
+	case FAM_NAIVE: {
 		/* u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
 		mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
 		mpfr_mul(r1[0], n[0], t[0], R);
@@ -250,7 +249,9 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		if (m->norm != ONB__NORM_NONE)
 			normalize(c, r1);
 		cross(c, r2, n, r1);
-	} else if (!strcmp(f, "hughes_moeller")) {
+		break;
+	}
+	case FAM_HUGHES_MOELLER:
 		/* b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
 		if (br) {
 			mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
@@ -260,14 +261,16 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		if (m->norm != ONB__NORM_NONE)
 			normalize(c, r2);
 		cross(c, r1, r2, n);
-	} else if (!strcmp(f, "frisvad")) {
+		break;
+	case FAM_FRISVAD:
 		if (br) {
 			set3(r1, 0.0, -1.0, 0.0);
 			set3(r2, -1.0, 0.0, 0.0);
 		} else {
 			frisvad_formula(c, n, r1, r2);
 		}
-	} else if (!strcmp(f, "duff")) {
+		break;
+	case FAM_DUFF:
 		if (br) { /* a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
 			mpfr_ui_sub(t[0], 1, n[2], R);
 			mpfr_ui_div(t[0], 1, t[0], R);
@@ -286,7 +289,8 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		} else {
 			frisvad_formula(c, n, r1, r2);
 		}
-	} else if (!strcmp(f, "duff_branchless")) {
+		break;
+	case FAM_DUFF_BRANCHLESS: {
 		/* s = +-1, a = -1/(s + z), b = x y a,
 		   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
 		const int s = br ? -1 : 1;
@@ -305,13 +309,16 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		mpfr_mul(t[2], t[2], t[0], R);
 		mpfr_add_si(r2[1], t[2], s, R);
 		mpfr_neg(r2[2], n[1], R);
-	} else if (!strcmp(f, "stark")) {
+		break;
+	}
+	case FAM_STARK:
 		/* p = n x e_k, b1 = p/|p|, b2 = n x b1 */
 		set3(u, br == 0, br == 1, br == 2);
 		cross(c, r1, n, u);
 		normalize(c, r1);
 		cross(c, r2, n, r1);
-	} else if (!strcmp(f, "pbrt_v3")) {
+		break;
+	case FAM_PBRT_V3:
 		if (br) {
 			mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
 		} else {
@@ -319,7 +326,8 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		}
 		normalize(c, r1);
 		cross(c, r2, n, r1);
-	} else if (!strcmp(f, "rtow")) {
+		break;
+	case FAM_RTOW:
 		/* uw = w/|w|; a = e_y if br else e_x; v = unit(uw x a); b1 = uw x v; b2 = v */
 		copy3(c->w, n);
 		normalize(c, c->w);
@@ -327,7 +335,8 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		cross(c, r2, c->w, u);
 		normalize(c, r2);
 		cross(c, r1, c->w, r2);
-	} else { /* tangent_cross_z: t = (x, y, z+1); b2 = unit(n x t); b1 = n x b2 */
+		break;
+	default: /* FAM_TANGENT_CROSS_Z: t = (x, y, z+1); b2 = unit(n x t); b1 = n x b2 */
 		mpfr_set(u[0], n[0], R);
 		mpfr_set(u[1], n[1], R);
 		mpfr_add_ui(u[2], n[2], 1, R);
@@ -429,7 +438,7 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 	memset(s, 0, sizeof *s);
 	s->has_basis = k->m != NULL;
 	s->ncomp = k->m ? 6 : 3;
-	s->branch = k->branch(k->m, prec, n);
+	s->branch = k->branch(k, prec, n);
 	s->in_norm = NAN;
 	for (i = 0; i < NDEF; i++)
 		s->d[i] = NAN;

@@ -8,7 +8,9 @@ set -eu
 #   which holds libclang_rt.fuzzer-x86_64.a) is named explicitly.
 # valgrind: memcheck of a short sweep and scene run in .ci/run.
 # cppcheck: static analysis of src/lib in .ci/run.
-PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck libomp-dev"
+# libcjson-dev: the glTF 2.0 reader parses JSON with cJSON (issue 12).
+# libopenmpi-dev, openmpi-bin: `make mpi` builds onbstudy-mpi (issue 13).
+PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck libomp-dev libcjson-dev libopenmpi-dev openmpi-bin"
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

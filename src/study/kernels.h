@@ -42,6 +42,14 @@ typedef struct study_kernel {
    message naming the unknown method. */
 int kernels_select(const char *names, int fma, study_kernel *out, int cap);
 
+/* 0 when the kernel has no code in that precision: the float-only
+   registry methods (ONB_FLOAT_ONLY, NULL basis) in double.  Every loop
+   over kernels and precisions skips those pairs. */
+static inline int kernel_runs(const study_kernel *k, int prec)
+{
+	return prec == PREC_FLOAT || !k->m || k->basis != NULL;
+}
+
 /* Branch ids, plain arithmetic. */
 int kernels_branch(const study_kernel *k, int prec, const double n[3]);
 

@@ -293,7 +293,8 @@ int cmd_sweep(int argc, char **argv)
 			if (dist_prepare(&ds) != 0)
 				return 1;
 			cfg->counts[p][d] = ds.count;
-			total += ds.count * (unsigned long long)nk;
+			for (i = 0; i < nk; i++)
+				total += kernel_runs(&st.kernels[i], p) ? ds.count : 0;
 			dist_free(&ds);
 		}
 	}
@@ -325,6 +326,7 @@ int cmd_sweep(int argc, char **argv)
 				dist_spec ds;
 				uint64_t nchunks;
 				long long c;
+				int nk_run;
 				const size_t GG = (size_t)cfg->grid_rows * (size_t)cfg->grid_cols;
 				if (!cfg->prec_on[p] || !cfg->dist_on[d])
 					continue;
@@ -337,6 +339,8 @@ int cmd_sweep(int argc, char **argv)
 				ds.grid_rows = cfg->grid_rows; ds.grid_cols = cfg->grid_cols;
 				if (dist_prepare(&ds) != 0) { fail = 1; break; }
 				ds.count = cfg->counts[p][d];
+				for (nk_run = 0, i = 0; i < nk; i++)
+					nk_run += kernel_runs(&st.kernels[i], p);
 				nchunks = (ds.count + CHUNK - 1) / CHUNK;
 #pragma omp parallel num_threads(threads) reduction(|:fail)
 				{
@@ -362,6 +366,8 @@ int cmd_sweep(int argc, char **argv)
 							dist_sample(&ds, idx, n, lv, &aux);
 							for (k = 0; k < nk; k++) {
 								sample_metrics m;
+								if (!kernel_runs(&st.kernels[k], p))
+									continue;
 								ref_eval(rc1, &st.kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
 								my_evals++;
 								if (idx % (uint64_t)cfg->check_every == 0) {
@@ -388,7 +394,7 @@ int cmd_sweep(int argc, char **argv)
 							}
 						}
 #pragma omp atomic
-						done += (unsigned long long)(i1 - i0) * (unsigned long long)nk;
+						done += (unsigned long long)(i1 - i0) * (unsigned long long)nk_run;
 						if (bar
 #ifdef _OPENMP
 						    && omp_get_thread_num() == 0

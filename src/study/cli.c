@@ -190,16 +190,14 @@ int cli_choice(const char *opt, const char *arg, const char *const *names, int c
 	return -1;
 }
 
-int cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count)
+int cli_name_order(const char *opt, const char *arg, int *idx, const char *const *names, int count)
 {
-	char buf[512], *tok, *save = NULL, all[512];
-	int i;
+	char buf[2048], *tok, *save = NULL, all[2048];
+	int i, j, n = 0;
 	if (strlen(arg) >= sizeof buf) {
 		study_error("%s: list too long", opt);
 		return -1;
 	}
-	for (i = 0; i < count; i++)
-		on[i] = 0;
 	strcpy(buf, arg);
 	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
 		for (i = 0; i < count && strcmp(tok, names[i]); i++)
@@ -209,13 +207,31 @@ int cli_name_list(const char *opt, const char *arg, int *on, const char *const *
 			study_error("%s: unknown name '%s' (valid: %s)", opt, tok, all);
 			return -1;
 		}
-		on[i] = 1;
+		for (j = 0; j < n && idx[j] != i; j++)
+			;
+		if (j == n)
+			idx[n++] = i;
 	}
+	if (n == 0)
+		study_error("%s: empty list", opt);
+	return n ? n : -1;
+}
+
+int cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count)
+{
+	int idx[256], i, n;
+	if (count > 256) {
+		study_error("%s: too many names", opt);
+		return -1;
+	}
+	n = cli_name_order(opt, arg, idx, names, count);
+	if (n < 0)
+		return -1;
 	for (i = 0; i < count; i++)
-		if (on[i])
-			return 0;
-	study_error("%s: empty list", opt);
-	return -1;
+		on[i] = 0;
+	for (i = 0; i < n; i++)
+		on[idx[i]] = 1;
+	return 0;
 }
 
 int cli_precision(const char *opt, const char *arg, int on[2])

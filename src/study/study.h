@@ -73,6 +73,9 @@ void cli_end(cli_args *c);
 /* One of names[count]: its index, or -1 after "OPT: expected a, b or c, not 'x'". */
 int  cli_choice(const char *opt, const char *arg, const char *const *names, int count);
 /* A comma-separated list of names into on[count]; unknown names get the list of valid ones. */
+/* The same, keeping the order given: idx[] (room for count) gets each name's
+   index once; returns how many, or -1 after a message. */
+int  cli_name_order(const char *opt, const char *arg, int *idx, const char *const *names, int count);
 int  cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count);
 int  cli_precision(const char *opt, const char *arg, int on[2]);   /* float, double or both */
 int  cli_shard(const char *opt, const char *arg, int *k, int *n);  /* K/N, 0-based */

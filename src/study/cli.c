@@ -198,6 +198,10 @@ int cli_name_order(const char *opt, const char *arg, int *idx, const char *const
 		study_error("%s: list too long", opt);
 		return -1;
 	}
+	if (arg[0] == ',' || (arg[0] && arg[strlen(arg) - 1] == ',') || strstr(arg, ",,")) {
+		study_error("%s: empty name in the list '%s'", opt, arg);
+		return -1;
+	}
 	strcpy(buf, arg);
 	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
 		for (i = 0; i < count && strcmp(tok, names[i]); i++)

@@ -49,6 +49,14 @@ static inline int kernel_runs(const study_kernel *k, int prec)
 {
 	return prec == PREC_FLOAT || !k->m || k->basis != NULL;
 }
+/* How many of the nk kernels run in precision prec. */
+static inline int kernels_running(const study_kernel *k, int nk, int prec)
+{
+	int i, n = 0;
+	for (i = 0; i < nk; i++)
+		n += kernel_runs(&k[i], prec);
+	return n;
+}
 
 /* Branch ids, plain arithmetic. */
 int kernels_branch(const study_kernel *k, int prec, const double n[3]);

@@ -3,6 +3,7 @@
 #   make test       every test (installs missing packages via scripts/install-deps.sh)
 #   make bench      the default benchmark run
 #   make plots      charts of the newest run
+#   make robustness the hardening checks, then results/robustness.md
 #   make install    PREFIX=/usr/local DESTDIR=  (header, libonb.a, onb.pc)
 #   make uninstall, make clean
 
@@ -126,6 +127,16 @@ bench: onbstudy
 RUN ?= results/latest
 plots: onbstudy
 	sh scripts/plots.sh $(RUN)
+
+# # make robustness: the hardening run (scripts/harden.sh, ~10 min on 2 cores),
+# then the committed results/robustness.md and the README's copy of its
+# summary from that run's logs.  CI runs the same checks but writes its
+# table to build/harden/ only, so it changes no tracked file.
+FUZZ_SECS ?= 120
+.PHONY: robustness
+robustness:
+	sh scripts/harden.sh $(FUZZ_SECS)
+	sh scripts/robustness.sh
 
 # onb.pc is written for the PREFIX of this very `make install`, every time,
 # straight into the destination: no generated file in the tree to go stale.

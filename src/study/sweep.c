@@ -456,11 +456,7 @@ int cmd_sweep(int argc, char **argv)
 	if (rc)
 		return 1;
 	if (!o.out) {
-		/* results/latest -> the new run, replaced atomically */
-		const char *base = strrchr(outbuf, '/');
-		unlink("results/latest.tmp");
-		if (base && symlink(base + 1, "results/latest.tmp") == 0)
-			rename("results/latest.tmp", "results/latest");
+		study_point_latest(outbuf); /* results/latest -> the new run */
 	}
 	fprintf(stderr, "onbstudy: wrote %s/summary.csv, by_nz.csv, worst.csv%s\n", outbuf, cfg->dist_on[DIST_GRID] ? ", grid.csv" : "");
 	if (o.plots) {

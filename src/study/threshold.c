@@ -426,7 +426,7 @@ int cmd_threshold(int argc, char **argv)
 	threads = 1;
 #endif
 	if (out) snprintf(outbuf, sizeof outbuf, "%s", out);
-	else study_default_run_dir(outbuf, sizeof outbuf);
+	else study_current_run_dir(outbuf, sizeof outbuf); /* the run of results/latest */
 	if (study_mkdir_p(outbuf) != 0)
 		return ONB_EXIT_USAGE;
 	for (p = 0; p < 2; p++) {

@@ -602,7 +602,7 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	*b1 = u;
 	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
 		   difference rounded to double, then converted to float */
-		const double vx = n.x, vy = n.y, vz = n.z, wx = u.x, wy = u.y, wz = u.z;
+		const double vx = (double)n.x, vy = (double)n.y, vz = (double)n.z, wx = (double)u.x, wy = (double)u.y, wz = (double)u.z;
 		b2->x = (float)(vy * wz - vz * wy);
 		b2->y = (float)(vz * wx - vx * wz);
 		b2->z = (float)(vx * wy - vy * wx);

@@ -31,6 +31,9 @@ cat > "$tmp/all.c" <<'C'
 	{ onb_##m(n, b, b + 1); onb_##m##f(nf, bf, bf + 1); }
 ONB_METHOD_LIST(USE)
 #undef USE
+#define USEF(m) static void usef_##m(onb_vec3f nf, onb_vec3f *bf) { onb_##m##f(nf, bf, bf + 1); }
+ONB_FLOAT_METHOD_LIST(USEF)
+#undef USEF
 int main(void)
 {
 	onb_vec3 n = { 0.0, 0.6, 0.8 }, b[2];
@@ -38,6 +41,9 @@ int main(void)
 #define CALL(m) use_##m(n, nf, b, bf);
 	ONB_METHOD_LIST(CALL)
 #undef CALL
+#define CALLF(m) usef_##m(nf, bf);
+	ONB_FLOAT_METHOD_LIST(CALLF)
+#undef CALLF
 	onb_frisvad_threshold(n, -0.5, b, b + 1);
 	onb_frisvad_thresholdf(nf, -0.5f, bf, bf + 1);
 	b[0] = onb_frisvad_rotate(n, 1.0, 0.0, 0.0);

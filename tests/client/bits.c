@@ -106,15 +106,57 @@ static void run(size_t k, double x, double y, double z)
 	(void)m;
 }
 
+/* The float-only methods (ONB_FLOAT_METHOD_LIST): float lines only. */
+#define FNAMES(m) #m,
+static const char *const fnames[] = { ONB_FLOAT_METHOD_LIST(FNAMES) };
+#undef FNAMES
+static void runf(size_t k, double x, double y, double z)
+{
+	float nf[3], f1[3], f2[3];
+	double w1[3], w2[3];
+	size_t i_ = 0;
+	int c;
+	nf[0] = (float)x; nf[1] = (float)y; nf[2] = (float)z;
+#if defined(MODE_REF) || defined(MODE_OUTLINE)
+	{
+		onb_vec3f vf = { nf[0], nf[1], nf[2] }, g1, g2;
+#ifdef MODE_REF
+#define CALL(mm) if (k == i_) onb_##mm##f(vf, &g1, &g2); i_++;
+#else
+#define CALL(mm) if (k == i_) onb_##mm##_outlinef(vf, &g1, &g2); i_++;
+#endif
+		ONB_FLOAT_METHOD_LIST(CALL)
+#undef CALL
+		f1[0] = g1.x; f1[1] = g1.y; f1[2] = g1.z; f2[0] = g2.x; f2[1] = g2.y; f2[2] = g2.z;
+	}
+#else
+	{
+		my_vec3f nnf, d1, d2;
+		memcpy(nnf, nf, sizeof nnf);
+#define CALL(mm) if (k == i_) onb_##mm##_arrayf(nnf, f1, f2); i_++;
+		ONB_FLOAT_METHOD_LIST(CALL)
+#undef CALL
+		if (onb_basis_arrayf(onb_find(fnames[k]), nnf, d1, d2) != ONB_OK || memcmp(f1, d1, sizeof d1) || memcmp(f2, d2, sizeof d2)) {
+			fprintf(stderr, "%s: onb_basis_arrayf differs from onb_%s_arrayf\n", fnames[k], fnames[k]);
+			exit(1);
+		}
+	}
+#endif
+	for (c = 0; c < 3; c++) { w1[c] = (double)f1[c]; w2[c] = (double)f2[c]; }
+	put(fnames[k], "float", (double)nf[0], (double)nf[1], (double)nf[2], w1, w2);
+}
+
 int main(void)
 {
 	char line[256];
-	size_t k, nm = sizeof names / sizeof names[0];
+	size_t k, nm = sizeof names / sizeof names[0], nf = sizeof fnames / sizeof fnames[0];
 	while (fgets(line, sizeof line, stdin)) {
 		char *e;
 		double x = strtod(line, &e), y = strtod(e, &e), z = strtod(e, &e);
 		for (k = 0; k < nm; k++)
 			run(k, x, y, z);
+		for (k = 0; k < nf; k++)
+			runf(k, x, y, z);
 	}
 	return 0;
 }

@@ -24,7 +24,7 @@ static const char *const fmt_names[] = { "table", "csv", "json" };
 
 /* Refuse an unusable output directory before hours of work (and only once
    every option has been checked, so a refused run creates nothing). */
-static int sweep_outdir(const char *out)
+int sweep_outdir(const char *out)
 {
 	if (study_mkdir_p(out) != 0)
 		return -1;
@@ -107,7 +107,7 @@ static void sweep_latest(const char *out)
 }
 
 /* The files: a shard's state, or the whole run's CSV files. */
-static int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
+int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 {
 	const sweep_cfg *cfg = &st->cfg;
 	if (cfg->shard_n > 1) {

@@ -359,6 +359,15 @@ static int run_batch(run_t *r, sweep_state *st, int64_t b)
 
 /* ---- rank 0: checkpoints, hand-out, progress ----------------------------- */
 
+static int write_checkpoint(run_t *r);
+
+/* After an add (under r->mu): the checkpoint, when due. */
+static void maybe_checkpoint(run_t *r)
+{
+	if (r->dirty && engine_now() - r->t_ckpt >= r->mo.ckpt_every && write_checkpoint(r) != 0)
+		r->fail = 1;
+}
+
 static int write_checkpoint(run_t *r)
 {
 	const size_t n = sizeof(ckpt_hdr) + r->nbatches;
@@ -454,8 +463,8 @@ static void *local_worker(void *arg)
 		pthread_mutex_lock(&r->mu);
 		if (rc != ENGINE_OK)
 			r->fail = rc == ENGINE_STOPPED ? 0 : 1;
-		else
-			unpack_add(r, buf, n);
+		else if (unpack_add(r, buf, n) >= 0)
+			maybe_checkpoint(r);
 		pthread_mutex_unlock(&r->mu);
 		if (rc != ENGINE_OK)
 			break;
@@ -504,6 +513,7 @@ static void serve(run_t *r, MPI_Status *s, unsigned char **buf, size_t *cap, int
 		study_error("rank %d sent a malformed result", s->MPI_SOURCE);
 		r->fail = 1;
 	}
+	maybe_checkpoint(r);
 	b = take_batch(r);
 	pthread_mutex_unlock(&r->mu);
 	MPI_Send(&b, 1, MPI_INT64_T, s->MPI_SOURCE, TAG_WORK, MPI_COMM_WORLD);
@@ -531,16 +541,16 @@ static int master(run_t *r)
 			continue;
 		}
 		pthread_mutex_lock(&r->mu);
-		if (r->dirty && engine_now() - r->t_ckpt >= r->mo.ckpt_every && write_checkpoint(r) != 0)
-			r->fail = 1;
+		maybe_checkpoint(r);
 		local = r->local_active;
 		fail = r->fail;
 		progress(r, 0);
 		pthread_mutex_unlock(&r->mu);
 		if (fail || engine_stop) {
 			if (r->dirty) write_checkpoint(r);
-			fprintf(stderr, "onbstudy-mpi: %s; the checkpoint in %s keeps every finished batch: rerun with --resume %s\n",
-			        fail ? "stopped after an error" : "interrupted", r->pl.out, r->pl.out);
+			fprintf(stderr, "onbstudy-mpi: %s; the checkpoint in %s keeps every batch finished so far (%llu of %llu "
+			        "evaluations): rerun with --resume %s\n", fail ? "stopped after an error" : "interrupted",
+			        r->pl.out, r->evals_done, r->pl.evals, r->pl.out);
 			die_all(fail ? 1 : 130);
 		}
 		if (!local && active == 0)
@@ -643,6 +653,9 @@ static int run(run_t *r, int argc, char **argv)
 	MPI_Allreduce(&rc, &all, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 	if (all)
 		return all;
+	/* the batch size is rank 0's (a resumed run keeps the checkpoint's) */
+	MPI_Bcast(&r->B, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+	r->nbatches = (r->pl.chunks + r->B - 1) / r->B;
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	r->t0 = r->t_progress = engine_now();

@@ -22,6 +22,8 @@
  *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
  *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
  *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
+ *     (float only)         onb_duff_widef         this project: Duff in double
+ *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
  *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
  *                      onb_basis_checked[f]      normalize + status + method
@@ -42,8 +44,22 @@
  *     defect max(|b1|-1, |b2|-1, b1.n, b2.n, b1.b2) measured by
  *     `onbstudy sweep` against MPFR; tests/test_lib.c checks the bounds.
  *
- * Build with -ffp-contract=off for results that match the study; the
- * header refuses -ffast-math, under which none of the analysis holds.
+ * Floating-point flags (README "Using libonb in your renderer"):
+ *   - Contraction: the inline functions are wrapped in per-function
+ *     pragmas that keep a*b+c from fusing into an FMA, whatever the
+ *     client's -ffp-contract.  GCC honours `#pragma GCC optimize
+ *     ("fp-contract=off")`, but then will not inline them into a caller
+ *     built with other FP-contract settings (they become calls, with the
+ *     studied bits).  Clang honours `#pragma clang fp contract(off)` under
+ *     its default -ffp-contract=on, and ignores it under
+ *     -ffp-contract=fast (clang 14).  Define ONB_INLINE_FOLLOWS_CLIENT_FP
+ *     to drop the pragmas: the inline functions then follow your flags.
+ *   - -ffast-math stops at #error unless ONB_ALLOW_FAST_MATH is defined.
+ *     WARNING: with it, the inline functions follow -ffast-math
+ *     (reassociation, reciprocal approximations, no NaN/inf): none of the
+ *     study's error figures hold for them.  The out-of-line calls in
+ *     libonb.a (onb_NAME_outline[f], onb_NAME_array[f], method->basis)
+ *     were compiled with the library's own flags and keep the studied bits.
  */
 #ifndef ONB_H
 #define ONB_H
@@ -53,8 +69,22 @@
 #include <stdint.h>
 #include <string.h>
 
-#if defined(__FAST_MATH__)
-#error "onb.h: -ffast-math breaks the published error behaviour of every method; build without it"
+#if defined(__FAST_MATH__) && !defined(ONB_ALLOW_FAST_MATH)
+#error "onb.h: -ffast-math breaks the published error behaviour of every inline method; build without it, or define ONB_ALLOW_FAST_MATH and call the out-of-line onb_NAME_outline/onb_NAME_array functions for the studied bits"
+#endif
+
+/* No contraction into FMA inside the header's functions (see above).
+   Popped by ONB__FP_END at the end of the header. */
+#if !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__clang__)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#define ONB__FP_PRAGMAS 1
+#elif !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__GNUC__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#define ONB__FP_PRAGMAS 2
+#else
+#define ONB__FP_PRAGMAS 0
 #endif
 
 #if (defined(__SSE__) || defined(_M_X64) || defined(__x86_64__)) && !defined(ONB_NO_HW_RSQRT)
@@ -378,7 +408,7 @@ static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double
 {
 	onb_vec3 w;
 	double s = 1.0 + n.z, a, b;
-	if (s == 0.0) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	if (s <= 0.0 && s >= 0.0) { w.x = -y; w.y = -x; w.z = -z; return w; } /* s == 0, without -Wfloat-equal */
 	a = 1.0 / s;
 	b = -n.x * n.y * a;
 	w.x = x * (1.0 - n.x * n.x * a) + y * b + z * n.x;
@@ -390,7 +420,7 @@ static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float
 {
 	onb_vec3f w;
 	float s = 1.0f + n.z, a, b;
-	if (s == 0.0f) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	if (s <= 0.0f && s >= 0.0f) { w.x = -y; w.y = -x; w.z = -z; return w; } /* s == 0 */
 	a = 1.0f / s;
 	b = -n.x * n.y * a;
 	w.x = x * (1.0f - n.x * n.x * a) + y * b + z * n.x;
@@ -574,7 +604,7 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	*b1 = u;
 	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
 		   difference rounded to double, then converted to float */
-		const double vx = n.x, vy = n.y, vz = n.z, wx = u.x, wy = u.y, wz = u.z;
+		const double vx = (double)n.x, vy = (double)n.y, vz = (double)n.z, wx = (double)u.x, wy = (double)u.y, wz = (double)u.z;
 		b2->x = (float)(vy * wz - vz * wy);
 		b2->y = (float)(vz * wx - vx * wz);
 		b2->z = (float)(vx * wy - vy * wx);
@@ -669,6 +699,75 @@ static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 }
 
 /* ------------------------------------------------------------------ */
+/* This project's own methods (issue 16), not published ones: Duff's   */
+/* branchless formula pushed to the accuracy floor, float only         */
+/* ------------------------------------------------------------------ */
+/* The floor: the exact duff_branchless basis of the float input, rounded
+   once to float, still has a defect (the output roundings, plus the
+   input's own distance from the unit sphere); `onbstudy sweep` reports it
+   per input (README, "The accuracy floor").  Float duff_branchless sits up
+   to about 2x above it, because its products and its 1 + s x^2 a round
+   before the output does.  These two methods remove those intermediate
+   roundings.  Same branch and handedness as duff_branchless (the sign bit
+   of n.z; -0 takes the lower branch), same exact formula, so the MPFR
+   reference family is duff_branchless.  Float only: for double input the
+   analogue needs double-double arithmetic (see the README).
+   There is no double version: the registry's basis and batch are NULL
+   and its flags carry ONB_FLOAT_ONLY. */
+
+/* duff_wide: the float input widened to double, duff_branchless's formula
+   in double, each output rounded once to float.  Each output component
+   before its final rounding is within a few 2^-53 of the exact formula,
+   so it is the correctly rounded exact value except within a few 2^-53 of
+   a float rounding boundary.
+   Bound (tests/test_lib.c): D <= 12u (u = 2^-24); measured (onbstudy sweep):
+   largest defect within 1.05x of the floor's largest on every distribution. */
+static inline void onb_duff_widef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const double x = (double)n.x, y = (double)n.y, z = (double)n.z;
+	const double sign = copysign(1.0, z);
+	const double a = -1.0 / (sign + z);
+	const double b = x * y * a;
+	b1->x = (float)(1.0 + sign * x * x * a); b1->y = (float)(sign * b); b1->z = (float)(-sign * x);
+	b2->x = (float)b; b2->y = (float)(sign + y * y * a); b2->z = (float)(-y);
+}
+
+/* duff_comp: the same formula in float arithmetic, with each rounding
+   before the output compensated by error-free transformations: h = s + z
+   and its error (Fast2Sum, |s| >= |z|), a = -1/h with the division's exact
+   residual fma(a, h, 1), the products x x, x y, y y and their products
+   with a split by fma into hi + lo, and 1 + s x^2 a, s + y^2 a by
+   Fast2Sum; the lo parts are summed (in float) and added once at the end.
+   Each output is then within about u + O(u^2) relative of the exact
+   formula (faithful, correctly rounded in most cases).  Seven fmaf()
+   calls: built without an FMA target (as libonb.a's scalar code is, see
+   the Makefile) they are libm calls; the batch runs an FMA clone when the
+   CPU has FMA.  fma is correctly rounded everywhere, so the bits do not
+   depend on which.
+   Bound (tests/test_lib.c): D <= 12u. */
+static inline void onb_duff_compf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float x = n.x, y = n.y, z = n.z;
+	const float s = copysignf(1.0f, z);
+	const float h = s + z, hl = (s - h) + z;         /* s + z = h + hl          */
+	const float a = -1.0f / h;
+	const float e = fmaf(a, h, 1.0f);                /* a h + 1, exactly        */
+	const float al = a * (e + a * hl);               /* -1/(h + hl) ~ a + al    */
+	const float xx = x * x, xxl = fmaf(x, x, -xx);
+	const float xy = x * y, xyl = fmaf(x, y, -xy);
+	const float yy = y * y, yyl = fmaf(y, y, -yy);
+	const float p = xx * a, pl = fmaf(xx, a, -p) + (xx * al + xxl * a); /* x^2 a */
+	const float b = xy * a, bl = fmaf(xy, a, -b) + (xy * al + xyl * a); /* x y a */
+	const float q = yy * a, ql = fmaf(yy, a, -q) + (yy * al + yyl * a); /* y^2 a */
+	const float sp = s * p;
+	const float t1 = 1.0f + sp, t1l = (1.0f - t1) + sp; /* 1 + s x^2 a          */
+	const float t2 = s + q, t2l = (s - t2) + q;          /* s + y^2 a            */
+	const float bb = b + bl;
+	b1->x = t1 + (t1l + s * pl); b1->y = s * bb; b1->z = -s * x;
+	b2->x = bb; b2->y = t2 + (t2l + ql); b2->z = -y;
+}
+
+/* ------------------------------------------------------------------ */
 /* Out-of-line library: batch kernels and registry                     */
 /* ------------------------------------------------------------------ */
 
@@ -693,6 +792,7 @@ typedef void (*onb_batchf_fn)(size_t count,
 #define ONB_FELL_BACK    0x2u /* ...which this build lacks: runs 1/sqrt instead */
 #define ONB_APPROX_NORM  0x4u /* normalization is approximate or absent        */
 #define ONB_NORMALIZES_N 0x8u /* the method normalizes n itself (rtow)        */
+#define ONB_FLOAT_ONLY   0x10u /* float only: basis and batch (double) are NULL */
 
 typedef struct onb_method {
 	const char   *name;       /* e.g. "duff_branchless"                        */
@@ -704,9 +804,9 @@ typedef struct onb_method {
 	unsigned      flags;      /* ONB_* above                                   */
 	double        threshold;  /* Frisvad-family t, or NAN                      */
 	int           norm;       /* normalization variant, for the reference      */
-	onb_basis_fn  basis;      /* out-of-line scalar, double                    */
+	onb_basis_fn  basis;      /* out-of-line scalar, double (NULL: float only) */
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
-	onb_batch_fn  batch;      /* SoA batch, double                             */
+	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
 } onb_method;
 
@@ -724,7 +824,7 @@ typedef enum {
 	ONB_RENORMALIZED,    /* n was finite, non-zero, not unit: normalized    */
 	ONB_ZERO,            /* n was zero (or too small to normalize)          */
 	ONB_NONFINITE,       /* n had a NaN or an infinity                      */
-	ONB_BAD_METHOD       /* method was NULL                                 */
+	ONB_BAD_METHOD       /* method was NULL, or has no double (float only) */
 } onb_status;
 
 /* Relative tolerance on |n|^2 - 1 under which n is used unchanged. */
@@ -759,8 +859,44 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 ONB_METHOD_LIST(ONB__DECLARE)
 #undef ONB__DECLARE
 
+/* The float-only methods (ONB_FLOAT_ONLY), after the others in the
+   registry: out-of-line copy and batch kernel in float only. */
+#define ONB_FLOAT_METHOD_LIST(X) X(duff_wide) X(duff_comp)
+#define ONB__DECLARE_F(m) \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2); \
+	void onb_##m##_batchf(size_t count, const float *nx, const float *ny, const float *nz, \
+		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
+#undef ONB__DECLARE_F
+
+/* Array entry points, for renderers with their own vector types: n[3] in,
+   b1[3] and b2[3] out (they may alias nothing).  Out of line in libonb.a,
+   so they keep the studied bits whatever the caller's flags:
+   onb_NAME_array[f](n, b1, b2) per method, or by registry entry. */
+#define ONB__DECLARE_ARRAY(m) \
+	void onb_##m##_array (const double n[3], double b1[3], double b2[3]); \
+	void onb_##m##_arrayf(const float  n[3], float  b1[3], float  b2[3]);
+ONB_METHOD_LIST(ONB__DECLARE_ARRAY)
+#undef ONB__DECLARE_ARRAY
+/* method->basis(f) on arrays; a NULL method (or function: a float-only
+   method in double) leaves b1, b2 untouched and
+   returns ONB_BAD_METHOD, else ONB_OK (no check of n: see
+   onb_basis_checked). */
+onb_status onb_basis_array (const onb_method *method, const double n[3], double b1[3], double b2[3]);
+onb_status onb_basis_arrayf(const onb_method *method, const float  n[3], float  b1[3], float  b2[3]);
+#define ONB__DECLARE_ARRAY_F(m) \
+	void onb_##m##_arrayf(const float n[3], float b1[3], float b2[3]);
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)
+#undef ONB__DECLARE_ARRAY_F
+
 #ifdef __cplusplus
 }
+#endif
+
+#if ONB__FP_PRAGMAS == 1
+#pragma float_control(pop)
+#elif ONB__FP_PRAGMAS == 2
+#pragma GCC pop_options
 #endif
 
 #endif /* ONB_H */

@@ -71,7 +71,7 @@ static const char usage_text[] =
 	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
 	"  --precision P          float, double or both (default both)\n"
 	"  --threads N            threads of the all-threads runs (default: OpenMP's maximum)\n"
-	"  --out DIR              output directory (default results/run-<UTC date>)\n"
+	"  --out DIR              output directory (default: the current run, results/latest)\n"
 	"  --quick                a check, not a measurement: 3 short repetitions and a 16 MiB\n"
 	"                         'stream' set (under 15 s); the default run takes about a minute\n"
 	"  --stream-mib M         smallest float working set of the stream size (default 64)\n"
@@ -292,6 +292,8 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 	for (mi = -1; mi < o->nmeth; mi++) {
 		const bench_yardstick *y = NULL;
 		int v;
+		if (mi >= 0 && dbl && !o->meth[mi]->batch)
+			continue; /* float only (ONB_FLOAT_ONLY) */
 		if (mi >= 0)
 			for (i = 0; i < ny; i++)
 				if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
@@ -373,6 +375,8 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 		for (mi = 0; mi < o->nmeth; mi++) {
 			const bench_call *c = bench_call_find(o->meth[mi]->name);
 			bench_row *r;
+			if (dbl && !o->meth[mi]->basis)
+				continue; /* float only */
 			if (!c) {
 				study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
 				goto fail;
@@ -500,6 +504,8 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 		       "roof%", "vsYard", "vec", "call ns", "lat ns", "lat-ch");
 		for (mi = -1; mi < o->nmeth; mi++) {
 			const char *name = mi < 0 ? "copy" : o->meth[mi]->name;
+			if (mi >= 0 && p && !o->meth[mi]->batch)
+				continue; /* float only */
 			const char *mode = mi < 0 ? "roofline" : "batch";
 			const bench_row *a = find_row(rs, name, p, mode, "l2", 0);
 			const bench_row *b = find_row(rs, name, p, mode, "l2", 1);
@@ -541,7 +547,7 @@ int cmd_bench(int argc, char **argv)
 	if (o.out)
 		out = o.out;
 	else {
-		study_default_run_dir(outbuf, sizeof outbuf);
+		study_current_run_dir(outbuf, sizeof outbuf); /* the run of results/latest */
 		out = outbuf;
 	}
 	if (study_mkdir_p(out) != 0)

@@ -135,6 +135,8 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 	dist_sample(&e->ds[p][d], idx, n, lv, &aux);
 	for (k = 0; k < cfg->nk; k++) {
 		sample_metrics m;
+		if (!kernel_runs(&st->kernels[k], p))
+			continue; /* a float-only method, in double */
 		ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
 		w->evals++;
 		if (idx % (uint64_t)cfg->check_every == 0) {
@@ -176,7 +178,7 @@ static unsigned long long run_chunk(engine *e, worker *w, sweep_state *st, uint6
 		i1 = e->ds[p][d].count;
 	for (idx = i0; idx < i1; idx++)
 		eval_one(e, w, st, p, d, idx);
-	return (unsigned long long)(i1 - i0) * (unsigned long long)st->cfg.nk;
+	return (unsigned long long)(i1 - i0) * (unsigned long long)kernels_running(st->kernels, st->cfg.nk, p);
 }
 
 static void print_eta(double s)

@@ -172,6 +172,10 @@ int cmd_eval(int argc, char **argv)
 			for (k = 0; k < nk; k++) {
 				sample_metrics m, m2;
 				char why[256];
+				if (!kernel_runs(&ks[k], p)) {
+					printf("\n%s (%s): float only (no double version)\n", ks[k].name, pn);
+					continue;
+				}
 				ref_eval(rc, &ks[k], p, n, lv, 0, &m);
 				ref_eval(rc2, &ks[k], p, n, lv, 0, &m2);
 				printf("\n%s (%s), branch %d\n", ks[k].name, pn, m.branch);

@@ -41,6 +41,7 @@ int cmd_list(int argc, char **argv)
 	printf("%-24s %4s  %-52s %s\n", "name", "hand", "singular directions", "source");
 	for (i = 0; i < n; i++)
 		printf("%-24s %+4d  %-52s %s%s\n", m[i].name, m[i].handedness, m[i].singular, m[i].source,
-		       (m[i].flags & ONB_FELL_BACK) ? " [FELL BACK: no hardware rsqrt]" : "");
+		       (m[i].flags & ONB_FELL_BACK) ? " [FELL BACK: no hardware rsqrt]" :
+		       (m[i].flags & ONB_FLOAT_ONLY) ? " [float only]" : "");
 	return 0;
 }

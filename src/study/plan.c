@@ -306,7 +306,7 @@ int plan_build(sweep_plan *pl)
 			dist_free(&ds);
 			pl->nchunks[p][d] = (ds.count + PLAN_CHUNK - 1) / PLAN_CHUNK;
 			pl->chunks += pl->nchunks[p][d];
-			pl->evals += shard_inputs(pl, p, d) * (unsigned long long)cfg->nk;
+			pl->evals += shard_inputs(pl, p, d) * (unsigned long long)kernels_running(pl->kernels, cfg->nk, p);
 		}
 	return 0;
 }

@@ -17,7 +17,8 @@
  *     onb_frisvad_max      onb_frisvad_maxf       Max 2017 threshold
  *     onb_duff             onb_dufff              Duff et al. 2017 Listing 2
  *     onb_duff_branchless  onb_duff_branchlessf   Duff et al. 2017 Listing 3
- *     onb_stark            onb_starkf             Stark 2009
+ *     onb_stark            onb_starkf             Stark 2009, as published
+ *     onb_stark_fixed      onb_stark_fixedf         + Hill 2011's zm fix
  *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
  *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
  *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
@@ -464,36 +465,38 @@ static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 
 /* ------------------------------------------------------------------ */
 /* stark (Stark 2009, JGT 14(1), "Efficient construction of            */
-/* perpendicular vectors without branching")                           */
+/* perpendicular vectors without branching"), as published             */
 /* ------------------------------------------------------------------ */
-/* p = cross(n, e_k), where e_k is the axis of n's smallest |component|,
-   chosen by Stark's comparisons on differences of absolute values:
-   xm = (|x| - |y| < 0) && (|x| - |z| < 0), ym = (|y| - |z| < 0) ^ xm
-   restricted to !xm, zm = !(xm | ym), made 0.0 or 1.0 by a select (not
-   an int-to-float conversion, which keeps GCC's SSE2 double loop scalar).
-   Then (our completion, as the
-   issue reads it) b1 = p / |p| with 1/sqrt, b2 = cross(n, b1).
-   Handedness +1.  Thresholds: |x| = |y|, |x| = |z|, |y| = |z|.  No
-   singular unit direction: |p|^2 >= 2/3 - O(eps).
-   Bound (tests/test_lib.c): D <= 12u. */
-static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p)
+/* p = cross(n, (xm, ym, zm)) with Stark's branch-free listing:
+   uyx = SIGNBIT(|x| - |y|), uzx = SIGNBIT(|x| - |z|), uzy = SIGNBIT(|y| -
+   |z|), xm = uyx & uzx, ym = (1^xm) & uzy, zm = 1^(xm & ym).  Since xm and
+   ym are never both 1, the published zm is always 1 (Hill 2011, "Perpendicular
+   Possibilities", points this out: the intent is 1^(xm | ym), which is
+   `stark_fixed`).  So e = (1,0,1) when |x| is smallest, (0,1,1) when |y|
+   is, (0,0,1) otherwise.  SIGNBIT of a difference of two absolute values
+   is `< 0` (x - x = +0); the uint-to-float conversion of 0 and 1 is a
+   select.  Then (our completion, as the issue reads it) b1 = p / |p| with
+   1/sqrt, b2 = cross(n, b1).  Handedness +1.  Thresholds: |x| = |y|,
+   |x| = |z|, |y| = |z|.  No singular unit direction: |p|^2 >= 2/3 -
+   O(eps).  Bound (tests/test_lib.c): D <= 12u. */
+static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p, int fixed)
 {
 	const double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
 	const int xm = (ax - ay < 0.0) & (ax - az < 0.0);
 	const int ym = (ay - az < 0.0) & !xm;
-	const int zm = !(xm | ym);
+	const int zm = fixed ? !(xm | ym) : !(xm & ym);
 	const double ex = xm ? 1.0 : 0.0, ey = ym ? 1.0 : 0.0, ez = zm ? 1.0 : 0.0;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
 	p->z = n.x * ey - n.y * ex;
 	return p->x * p->x + p->y * p->y + p->z * p->z;
 }
-static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
+static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p, int fixed)
 {
 	const float ax = fabsf(n.x), ay = fabsf(n.y), az = fabsf(n.z);
 	const int xm = (ax - ay < 0.0f) & (ax - az < 0.0f);
 	const int ym = (ay - az < 0.0f) & !xm;
-	const int zm = !(xm | ym);
+	const int zm = fixed ? !(xm | ym) : !(xm & ym);
 	const float ex = xm ? 1.0f : 0.0f, ey = ym ? 1.0f : 0.0f, ez = zm ? 1.0f : 0.0f;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
@@ -503,13 +506,30 @@ static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
 static inline void onb_stark(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 p;
-	const double s = 1.0 / sqrt(onb__stark_pre(n, &p));
+	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 0));
 	onb__naive_post(n, p, s, b1, b2);
 }
 static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3f p;
-	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p));
+	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 0));
+	onb__naive_postf(n, p, s, b1, b2);
+}
+
+/* stark_fixed: Stark's listing with zm = 1^(xm | ym), the correction of
+   Hill 2011 (blog.selfshadow.com/2011/10/17/perp-vectors, after Listing 3),
+   so that e_k is the axis of n's smallest |component| as Stark's text
+   says.  Otherwise as `stark`.  |p|^2 >= 2/3 - O(eps).  Bound: D <= 12u. */
+static inline void onb_stark_fixed(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 1));
+	onb__naive_post(n, p, s, b1, b2);
+}
+static inline void onb_stark_fixedf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 1));
 	onb__naive_postf(n, p, s, b1, b2);
 }
 
@@ -519,7 +539,12 @@ static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 /* if |v.x| > |v.y|: b1 = (-v.z, 0, v.x) / sqrt(v.x^2 + v.z^2)
    else:            b1 = (0, v.z, -v.y) / sqrt(v.y^2 + v.z^2)
    b2 = cross(v, b1).  pbrt-v3's Vector3 operator/ multiplies by
-   inv = 1/f, which we keep.  Handedness +1.  Threshold: |x| = |y|.
+   inv = (Float)1/f, which we keep.  pbrt-v3's Cross widens both operands
+   to double, subtracts the (exact, for float operands) products in double
+   and converts the result to the vector's type: the float variant does
+   the same (the double variant is pbrt-v3 built with
+   PBRT_FLOAT_AS_DOUBLE, where the widening is a no-op).  Handedness +1.
+   Threshold: |x| = |y|.
    No singular unit direction (squared length >= 1/2 - O(eps)).
    Bound (tests/test_lib.c): D <= 12u. */
 static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
@@ -546,7 +571,14 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 		inv = 1.0f / sqrtf(n.y * n.y + n.z * n.z);
 		u.x = 0.0f * inv; u.y = n.z * inv; u.z = -n.y * inv;
 	}
-	onb__naive_postf(n, u, 1.0f, b1, b2);
+	*b1 = u;
+	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
+		   difference rounded to double, then converted to float */
+		const double vx = n.x, vy = n.y, vz = n.z, wx = u.x, wy = u.y, wz = u.z;
+		b2->x = (float)(vy * wz - vz * wy);
+		b2->y = (float)(vz * wx - vx * wz);
+		b2->z = (float)(vx * wy - vy * wx);
+	}
 }
 
 /* ------------------------------------------------------------------ */
@@ -714,7 +746,7 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	X(naive) X(naive_invsqrt) X(naive_rsqrt) X(naive_rsqrt_nr) X(naive_nonorm) \
 	X(hughes_moeller) X(hughes_moeller_invsqrt) X(hughes_moeller_rsqrt) \
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
-	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(pbrt_v3) \
+	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z)
 
 #define ONB__DECLARE(m) \

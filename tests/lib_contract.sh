@@ -50,7 +50,9 @@ int main(void)
 	}
 	onb_duff_branchless(v, &b1, &b2); /* the inline function */
 	printf("%zu methods, %zu calls, isa %s\n", n, calls, onb_batch_isa());
-	return n == 18 ? 0 : 1;
+	/* the registry has one row per method of the header's list */
+#define ONE(m) + 1
+	return n == (size_t)(0 ONB_METHOD_LIST(ONE)) ? 0 : 1;
 }
 C
 if (cd "$tmp/app" && cc -std=c99 -Wall -Wextra -O2 -ffp-contract=off $SAN app.c libonb.a -lm -o app && ./app); then ok; else bad "standalone program against onb.h + libonb.a"; fi
@@ -73,7 +75,8 @@ if cc -std=c99 -ffast-math -Iinclude -c "$tmp/fm.c" -o "$tmp/fm.o" 2>"$tmp/fm.er
 elif grep -q "ffast-math" "$tmp/fm.err"; then ok; else bad "-ffast-math failed without the #error"; fi
 
 # 5. onbstudy list names every method; --help works; a bad command exits 2
-if [ "$(./onbstudy list --format csv | tail -n +2 | wc -l)" -eq 18 ]; then ok; else bad "onbstudy list"; fi
+nmeth=$(sed -n '/define ONB_METHOD_LIST/,/^$/p' include/onb.h | grep -o 'X([a-z0-9_]*)' | wc -l)
+if [ "$nmeth" -ge 18 ] && [ "$(./onbstudy list --format csv | tail -n +2 | wc -l)" -eq "$nmeth" ]; then ok; else bad "onbstudy list (want $nmeth methods)"; fi
 ./onbstudy --help >/dev/null && ok || bad "onbstudy --help"
 ./onbstudy frobnicate 2>/dev/null; [ $? -eq 2 ] && ok || bad "unknown command must exit 2"
 

@@ -18,6 +18,7 @@ static int kernels_family(const onb_method *m)
 	static const struct { const char *name; int id; } fam[] = {
 		{ "naive", FAM_NAIVE }, { "hughes_moeller", FAM_HUGHES_MOELLER }, { "frisvad", FAM_FRISVAD },
 		{ "duff", FAM_DUFF }, { "duff_branchless", FAM_DUFF_BRANCHLESS }, { "stark", FAM_STARK },
+		{ "stark_fixed", FAM_STARK_FIXED },
 		{ "pbrt_v3", FAM_PBRT_V3 }, { "rtow", FAM_RTOW }, { "tangent_cross_z", FAM_TANGENT_CROSS_Z },
 	};
 	size_t i;

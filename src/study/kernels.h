@@ -14,7 +14,7 @@ enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
 /* The formula families the MPFR reference knows (onb_method.family),
    resolved once per kernel so that the sweep loop switches on an int. */
 enum { FAM_ROTATE = 0, FAM_NAIVE, FAM_HUGHES_MOELLER, FAM_FRISVAD, FAM_DUFF, FAM_DUFF_BRANCHLESS,
-       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z };
+       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z, FAM_STARK_FIXED };
 
 struct study_kernel;
 

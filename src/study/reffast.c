@@ -42,20 +42,19 @@ struct reffast_ctx {
 	double last[3];           /* cache: the last input, its |n|-1 and 1/|n| */
 	double last_norm;
 	int have_last, last_ok, last_inv_ok;
-	double inv_h, inv_l, inv_e;
+	long double inv_h, inv_l;
+	double inv_e;
 };
 
-typedef struct { double h, l, e; } xv;
-
 #define INFL (1.0 + 0x1p-40)     /* inflation of every computed bound        */
-#define DDREL 0x1p-100           /* relative rounding of a double-double op  */
+#define DDREL 0x1p-124           /* relative rounding of a pair operation    */
 #define TINY 0x1p-900            /* smallest magnitude allowed (no underflow) */
 #define FLOOR 0x1p-1000          /* absolute floor added to inexact bounds   */
 
 int reffast_usable(int ref_bits, const char **why)
 {
-	if (ref_bits < 120) {
-		*why = "the fast reference's bounds assume an MPFR reference of at least 120 bits";
+	if (ref_bits < 127) {
+		*why = "the fast reference's bounds assume an MPFR reference of at least 127 bits";
 		return 0;
 	}
 #if defined(__FMA__)
@@ -113,76 +112,158 @@ static inline void two_prod(double a, double b, double *p, double *t)
 #endif
 }
 
-/* ---- double-double arithmetic ---- */
+/* ---- double-long-double arithmetic ----
+   The formula runs in pairs of x87 long doubles (u = 2^-64): a pair
+   carries 128 bits, so one operation rounds at 2^-124 relative or less,
+   below MPFR's own 2^-127 only by a few bits, which is what a forward
+   error needs: E - cv cancels 53 bits of E, and Ziv's test on it needs E
+   to about 2^-115.  The algorithms and their bounds hold for any binary
+   precision p (Joldes, Muller, Popescu 2017); TwoProd is Dekker's, with
+   Veltkamp's split at 2^32 + 1 (exact for p = 64 without overflow). */
+typedef long double ld;
 
-/* AccurateDWPlusDW (Joldes, Muller, Popescu 2017, Algorithm 6): relative
-   error <= 3u^2/(1 - 4u) < 2^-104. */
-static inline void dd_add(double xh, double xl, double yh, double yl, double *zh, double *zl)
+static inline void two_sum_l(ld a, ld b, ld *s, ld *t)
 {
-	double sh, sl, th, tl, c, vh, vl, w;
-	two_sum(xh, yh, &sh, &sl);
-	two_sum(xl, yl, &th, &tl);
+	const ld x = a + b, z = x - a;
+	*t = (a - (x - z)) + (b - z);
+	*s = x;
+}
+
+static inline void fast_two_sum_l(ld a, ld b, ld *s, ld *t)
+{
+	const ld x = a + b;
+	*t = b - (x - a);
+	*s = x;
+}
+
+static inline void two_prod_l(ld a, ld b, ld *p, ld *t)
+{
+	const ld ca = 4294967297.0L * a, cb = 4294967297.0L * b;
+	const ld ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
+	*p = a * b;
+	*t = ((ah * bh - *p) + ah * bl + al * bh) + al * bl;
+}
+
+/* AccurateDWPlusDW (ibid., Algorithm 6): relative error
+   <= 3u^2/(1 - 4u) < 2^-126. */
+static inline void dd_add(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
+{
+	ld sh, sl, th, tl, c, vh, vl, w;
+	two_sum_l(xh, yh, &sh, &sl);
+	two_sum_l(xl, yl, &th, &tl);
 	c = sl + th;
-	fast_two_sum(sh, c, &vh, &vl);
+	fast_two_sum_l(sh, c, &vh, &vl);
 	w = tl + vl;
-	fast_two_sum(vh, w, zh, zl);
+	fast_two_sum_l(vh, w, zh, zl);
 }
 
 /* DWTimesDW1 (ibid., Algorithm 10: the low parts' cross products in
-   plain double; relative error <= 7u^2 < 2^-103).  No underflow: the
+   plain arithmetic; relative error <= 7u^2 < 2^-125).  No underflow: the
    callers check the result. */
-static inline void dd_mul(double xh, double xl, double yh, double yl, double *zh, double *zl)
+static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
 {
-	double ch, cl1, cl2, cl3;
-	two_prod(xh, yh, &ch, &cl1);
+	ld ch, cl1, cl2, cl3;
+	two_prod_l(xh, yh, &ch, &cl1);
 	cl2 = xh * yl + xl * yh;
 	cl3 = cl1 + cl2;
-	fast_two_sum(ch, cl3, zh, zl);
+	fast_two_sum_l(ch, cl3, zh, zl);
 }
 
-static inline xv xc(double d) { xv r = { d, 0.0, 0.0 }; return r; }
+typedef struct { ld h, l; double e; } xv;
+
+static inline xv xc(double d) { xv r = { d, 0.0L, 0.0 }; return r; }
 
 /* An upper bound of |X| from v and e. */
-static inline double mag(xv a) { return fabs(a.h) * (1.0 + 0x1p-50) + a.e; }
+static inline double mag(xv a) { return (double)fabsl(a.h) * (1.0 + 0x1p-50) + a.e; }
 
 static inline int ok(xv r)
 {
-	const double a = fabs(r.h);
-	return isfinite(r.h) && isfinite(r.e) && (a == 0.0 || a >= TINY);
+	const ld a = fabsl(r.h);
+	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0L || a >= TINY);
 }
 
 static inline xv xneg(xv a) { xv r = { -a.h, -a.l, a.e }; return r; }
 
-static inline int is_zero(xv a) { return a.h == 0.0 && a.e == 0.0; }
+static inline int is_zero(xv a) { return a.h == 0.0L && a.e == 0.0; }
 
-/* a + b (mpfr_add). */
+/* The exponents of the highest and lowest set bits of a nonzero a. */
+static void bit_span(ld a, int *hi, int *lo)
+{
+	int ex;
+	uint64_t m = (uint64_t)ldexpl(fabsl(frexpl(a, &ex)), 64);
+	int tz = 0;
+	while (!(m & 1u)) { m >>= 1; tz++; }
+	*hi = ex - 1;
+	*lo = ex - 64 + tz;
+}
+
+/* The sum of two exact pairs, when it is an exact pair again and fits
+   MPFR's precision (then MPFR's sum is exact too): 1 and *r, else 0.
+   Two VecSum passes over the four parts; the sum is a pair when the two
+   lowest are then zero. */
+static int exact_pair_sum(xv a, xv b, xv *r)
+{
+	ld t[4];
+	int i, pass, h0, l0, h1, l1;
+	t[0] = a.l; t[1] = b.l; t[2] = a.h; t[3] = b.h;
+	for (pass = 0; pass < 2; pass++)
+		for (i = 1; i < 4; i++)
+			two_sum_l(t[i], t[i - 1], &t[i], &t[i - 1]);
+	if (t[0] != 0.0L || t[1] != 0.0L)
+		return 0;
+	fast_two_sum_l(t[3], t[2], &r->h, &r->l);
+	if (r->h == 0.0L) {
+		if (r->l != 0.0L)
+			return 0;
+		r->h = 0.0L; /* x + (-x) = +0 in RN, in IEEE as in MPFR */
+		r->e = 0.0;
+		return 1;
+	}
+	bit_span(r->h, &h0, &l0);
+	if (r->l != 0.0L) {
+		bit_span(r->l, &h1, &l1);
+		l0 = l1;
+	}
+	if (h0 - l0 + 1 > 127 || !ok(*r))
+		return 0;
+	r->e = 0.0;
+	return 1;
+}
+
+/* a + b (mpfr_add).  Relative rounding: pair < 2^-126, MPFR <= 2^-127 of
+   |X_mpfr| <= |r| + 2(ea + eb): DDREL |r| and the inflation cover both. */
 static xv xadd(xv a, xv b, int *bad)
 {
 	xv r;
-	if (is_zero(b) && a.h != 0.0) /* MPFR: x + 0 = x exactly */
+	if (is_zero(b) && a.h != 0.0L) /* MPFR: x + 0 = x exactly */
 		return a;
-	if (is_zero(a) && b.h != 0.0)
+	if (is_zero(a) && b.h != 0.0L)
 		return b;
-	if (a.l == 0.0 && b.l == 0.0) {
+	if (a.l == 0.0L && b.l == 0.0L) {
 		/* TwoSum: exact.  IEEE and MPFR give zeros the same sign in RN. */
-		two_sum(a.h, b.h, &r.h, &r.l);
+		two_sum_l(a.h, b.h, &r.h, &r.l);
 		if (a.e == 0.0 && b.e == 0.0) {
-			int ea, eb;
-			/* Exact in MPFR when the sum spans at most 53 + 60 + 1 <= p bits. */
-			(void)frexp(a.h, &ea);
-			(void)frexp(b.h, &eb);
-			if (r.l == 0.0 || a.h == 0.0 || b.h == 0.0 || abs(ea - eb) <= 60) {
+			int ha, la, hb, lb;
+			if (a.h == 0.0L || b.h == 0.0L) {
+				r.e = 0.0;
+				if (!ok(r)) *bad = 1;
+				return r;
+			}
+			bit_span(a.h, &ha, &la);
+			bit_span(b.h, &hb, &lb);
+			/* exact in MPFR when the sum's bits fit its precision */
+			if ((ha > hb ? ha : hb) + 1 - (la < lb ? la : lb) + 1 <= 127) {
 				r.e = 0.0;
 				if (!ok(r)) *bad = 1;
 				return r;
 			}
 		}
+	} else if (a.e == 0.0 && b.e == 0.0 && exact_pair_sum(a, b, &r)) {
+		return r;
 	} else {
 		dd_add(a.h, a.l, b.h, b.l, &r.h, &r.l);
 	}
-	/* propagation a.e + b.e; rounding of the dd sum (< 2^-104 |r|) and of
-	   MPFR's sum (2^-p |X_mpfr| <= 2^-p (|r| + 2(a.e + b.e))) */
-	r.e = ((a.e + b.e) * INFL + DDREL * fabs(r.h)) * INFL + FLOOR;
+	r.e = ((a.e + b.e) * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
@@ -195,94 +276,106 @@ static xv xmul(xv a, xv b, int *bad)
 	xv r;
 	double prop;
 	if (is_zero(a) || is_zero(b)) { /* exact zero, sign of the product */
-		r = xc(a.h * b.h);
-		if (!isfinite(r.h)) *bad = 1;
+		r.h = a.h * b.h; r.l = 0.0L; r.e = 0.0;
+		if (!isfinite((double)r.h)) *bad = 1;
 		return r;
 	}
-	if (a.l == 0.0 && b.l == 0.0) {
-		two_prod(a.h, b.h, &r.h, &r.l); /* exact: no underflow (ok() below) */
-		if (fabs(r.h) < 0x1p-960) { *bad = 1; return r; }
-		if (a.e == 0.0 && b.e == 0.0) { /* 106 bits: exact in MPFR too */
-			r.e = 0.0;
-			if (!ok(r)) *bad = 1;
-			return r;
+	if (a.l == 0.0L && b.l == 0.0L) {
+		two_prod_l(a.h, b.h, &r.h, &r.l); /* exact: no underflow (checked) */
+		if (r.h != 0.0L && fabsl(r.h) < 0x1p-960L) { *bad = 1; r.e = 0.0; return r; }
+		if (a.e == 0.0 && b.e == 0.0) {
+			int ha, la, hb, lb;
+			bit_span(a.h, &ha, &la);
+			bit_span(b.h, &hb, &lb);
+			if ((ha - la + 1) + (hb - lb + 1) <= 127) { /* exact in MPFR too */
+				r.e = 0.0;
+				if (!ok(r)) *bad = 1;
+				return r;
+			}
 		}
 	} else {
 		dd_mul(a.h, a.l, b.h, b.l, &r.h, &r.l);
 	}
 	/* |ab - a'b'| <= |a| eb + |b| ea + ea eb */
 	prop = mag(a) * b.e + mag(b) * a.e + a.e * b.e;
-	r.e = (prop * INFL + DDREL * fabs(r.h)) * INFL + FLOOR;
+	r.e = (prop * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
 
-/* 1/b (mpfr_ui_div(1, b)).  y0 = RN(1/bh), one Newton step in dd, and an
-   a posteriori bound: with rho = 1 - b y1 (dd, error < 2^-99 since
-   b y1 ~ 1), |y1 - 1/b| = |rho|/|b|. */
+static int is_pow2(ld a, int *ex)
+{
+	const ld f = frexpl(a, ex);
+	return f == 0.5L || f == -0.5L;
+}
+
+/* 1/b (mpfr_ui_div(1, b)).  y0 = RN(1/bh), one Newton step, and an a
+   posteriori bound: with rho = 1 - b y1 (error < 2^-122 since b y1 ~ 1),
+   |y1 - 1/b| = |rho|/|b|.  Propagation eb/bmin^2; MPFR 2^-127/bmin. */
 static xv xrecip(xv b, int *bad)
 {
 	xv r;
-	double bmin, y0, ph, pl, rh, rl, rho;
+	ld y0, ph, pl, rh, rl;
+	double bmin, rho;
 	int ex;
-	if (b.l == 0.0 && b.e == 0.0 && frexp(b.h, &ex) == (b.h > 0 ? 0.5 : -0.5)) {
-		r = xc(1.0 / b.h); /* a power of two: exact */
+	if (b.l == 0.0L && b.e == 0.0 && b.h != 0.0L && is_pow2(b.h, &ex)) {
+		r.h = 1.0L / b.h; r.l = 0.0L; r.e = 0.0; /* a power of two: exact */
 		if (!ok(r)) *bad = 1;
 		return r;
 	}
-	bmin = fabs(b.h) * (1.0 - 0x1p-50) - 2.0 * b.e;
-	if (!(bmin > 0.5 * fabs(b.h)) || !(fabs(b.h) < 0x1p500)) {
+	bmin = (double)fabsl(b.h) * (1.0 - 0x1p-50) - 2.0 * b.e;
+	if (!(bmin > 0.5 * (double)fabsl(b.h)) || !(fabsl(b.h) < 0x1p500L)) {
 		*bad = 1;
 		return b;
 	}
-	y0 = 1.0 / b.h;
-	dd_mul(b.h, b.l, y0, 0.0, &ph, &pl);
-	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
-	fast_two_sum(y0, y0 * rh, &r.h, &r.l);
+	y0 = 1.0L / b.h;
+	dd_mul(b.h, b.l, y0, 0.0L, &ph, &pl);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	fast_two_sum_l(y0, y0 * rh, &r.h, &r.l);
 	dd_mul(b.h, b.l, r.h, r.l, &ph, &pl);
-	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
-	rho = fabs(rh) + 0x1p-99;
-	/* propagation eb/bmin^2; dd error rho/bmin; MPFR rounding 2^-p/bmin */
-	r.e = ((b.e / bmin / bmin) * INFL + rho / bmin * INFL + 0x1p-119 / bmin) * INFL + FLOOR;
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	rho = (double)fabsl(rh) + 0x1p-121;
+	r.e = ((b.e / bmin / bmin) * INFL + rho / bmin * INFL + 0x1p-126 / bmin) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
 
 /* 1/sqrt(s) (mpfr_rec_sqrt).  y0 = RN(1/sqrt(sh)), one Newton step, and
-   a posteriori: rho = 1 - s y1^2 (dd, error < 2^-98), y1 = (1 + d)/sqrt(s)
-   with |d| <= 0.51 |rho| for |rho| < 2^-40. */
+   a posteriori: rho = 1 - s y1^2 (error < 2^-121), y1 = (1 + d)/sqrt(s)
+   with |d| <= 0.51 |rho| for |rho| < 2^-40.  Propagation
+   0.5 es smin^-1.5; MPFR 2^-127/sqrt(smin). */
 static xv xrsqrt(xv s, int *bad)
 {
 	xv r;
-	double smin, y0, qh, ql, ph, pl, rh, rl, rho;
+	ld y0, qh, ql, ph, pl, rh, rl;
+	double smin, rho;
 	int ex;
-	if (s.l == 0.0 && s.e == 0.0 && s.h > 0.0 && frexp(s.h, &ex) == 0.5 && (ex & 1)) {
-		r = xc(1.0 / sqrt(s.h)); /* 4^k: exact */
+	if (s.l == 0.0L && s.e == 0.0 && s.h > 0.0L && is_pow2(s.h, &ex) && (ex & 1)) {
+		r.h = 1.0L / sqrtl(s.h); r.l = 0.0L; r.e = 0.0; /* 4^k: exact */
 		if (!ok(r)) *bad = 1;
 		return r;
 	}
-	smin = s.h * (1.0 - 0x1p-50) - 2.0 * s.e;
-	if (!(smin > 0.5 * s.h) || !(s.h < 0x1p500)) {
+	smin = (double)s.h * (1.0 - 0x1p-50) - 2.0 * s.e;
+	if (!(smin > 0.5 * (double)s.h) || !(s.h < 0x1p500L)) {
 		*bad = 1;
 		return s;
 	}
-	y0 = 1.0 / sqrt(s.h);
-	two_prod(y0, y0, &qh, &ql);
+	y0 = 1.0L / sqrtl(s.h);
+	two_prod_l(y0, y0, &qh, &ql);
 	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
-	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
-	fast_two_sum(y0, 0.5 * y0 * rh, &r.h, &r.l);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	fast_two_sum_l(y0, 0.5L * y0 * rh, &r.h, &r.l);
 	dd_mul(r.h, r.l, r.h, r.l, &qh, &ql);
 	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
-	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
-	rho = fabs(rh) + 0x1p-98;
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	rho = (double)fabsl(rh) + 0x1p-120;
 	if (!(rho < 0x1p-40)) {
 		*bad = 1;
 		return s;
 	}
 	{
 		const double is = 1.0 / sqrt(smin) * (1.0 + 0x1p-50);  /* >= 1/sqrt(s) */
-		/* propagation 0.5 es smin^-1.5; dd 0.51 |y1| rho; MPFR 2^-p / sqrt(smin) */
-		r.e = ((0.5 * s.e * is * is * is) * INFL + 0.52 * fabs(r.h) * rho + 0x1p-119 * is) * INFL + FLOOR;
+		r.e = ((0.5 * s.e * is * is * is) * INFL + 0.52 * (double)fabsl(r.h) * rho + 0x1p-126 * is) * INFL + FLOOR;
 	}
 	if (!ok(r)) *bad = 1;
 	return r;
@@ -290,70 +383,59 @@ static xv xrsqrt(xv s, int *bad)
 
 /* ---- Ziv's rounding test ---- */
 
-/* RN to double of every real within 2e of v (X and X_mpfr both are): 1 and
-   *out when they all round to the same double, strictly inside its
-   rounding interval; else 0. */
-static int ziv_d(xv v, double *out)
+/* RN to the format (53 or 24 bits) of every real within 2e of v (X and
+   X_mpfr both are): 1 and *out when they all round to the same value,
+   strictly inside its rounding interval; else 0.  c = RN(h) is the
+   candidate; off = v - c = (h - c) + l, h - c exact, one rounding. */
+static int ziv(xv v, int bits, double *out)
 {
-	double a, ulp, upg, dng, off, m, t;
+	double c, a, ulp, upg, dng, m, t;
+	ld off;
 	int ex;
-	if (!isfinite(v.h))
+	if (!isfinite((double)v.h))
 		return 0;
-	if (v.e == 0.0) { /* exact: v = X = X_mpfr, and h = RN(v) */
-		*out = v.h;
+	c = bits == 24 ? (double)(float)v.h : (double)v.h;
+	if (v.e == 0.0 && v.l == 0.0L && (ld)c == v.h) { /* exact, and representable */
+		*out = c;
 		return 1;
 	}
-	a = fabs(v.h);
-	if (a < TINY)
+	a = fabs(c);
+	if (a < (bits == 24 ? 0x1p-126 : TINY) || !isfinite(c))
 		return 0;
 	(void)frexp(a, &ex);
-	ulp = ldexp(1.0, ex - 53);
-	upg = 0.5 * ulp;                                   /* half the gap above |h| */
+	ulp = ldexp(1.0, ex - bits);
+	upg = 0.5 * ulp;                                   /* half the gap above |c| */
 	dng = a == ldexp(0.5, ex) ? 0.25 * ulp : 0.5 * ulp; /* half the gap below     */
-	off = v.h > 0 ? v.l : -v.l;                        /* offset away from zero  */
-	m = 2.0 * v.e * INFL;
-	t = off + m;
+	if (v.e == 0.0) {
+		/* Exact v = h + l, |l| <= ulp(h)/2 of a long double, far below
+		   the format's gaps: RN(v) = c = RN(h) (ties to even) unless h is
+		   exactly a midpoint of the format and l breaks the tie. */
+		const ld dh = v.h - (ld)c; /* exact */
+		const double half = (dh > 0) == (c > 0) ? upg : dng; /* toward h's side */
+		if (v.l != 0.0L && dh != 0.0L && fabsl(dh) == (ld)half) {
+			if ((v.l > 0) == (dh > 0))
+				c = bits == 24 ? (double)nextafterf((float)c, dh > 0 ? INFINITY : -INFINITY)
+				               : nextafter(c, dh > 0 ? INFINITY : -INFINITY);
+		}
+		*out = c;
+		return 1;
+	}
+	off = (v.h - (ld)c) + v.l;
+	if (c < 0)
+		off = -off;                                    /* offset away from zero  */
+	m = 2.0 * v.e * INFL + (double)fabsl(off) * 0x1p-62;
+	t = (double)off + m;
 	if (t > 0 && t * (1.0 + 0x1p-50) >= upg)
 		return 0;
-	t = m - off;
+	t = m - (double)off;
 	if (t > 0 && t * (1.0 + 0x1p-50) >= dng)
 		return 0;
-	*out = v.h;
+	*out = c;
 	return 1;
 }
 
-/* The same for RN to float (mpfr_get_flt), into a double. */
-static int ziv_f(xv v, double *out)
-{
-	const float f = (float)v.h;
-	double a, ulp, upg, dng, off, m, t;
-	int ex;
-	if (!isfinite(v.h) || !isfinite(f))
-		return 0;
-	if (v.e == 0.0 && v.l == 0.0) { /* one rounding of an exact double */
-		*out = f;
-		return 1;
-	}
-	a = fabs((double)f);
-	if (a < 0x1p-126)
-		return 0;
-	(void)frexp(a, &ex);
-	ulp = ldexp(1.0, ex - 24);
-	upg = 0.5 * ulp;
-	dng = a == ldexp(0.5, ex) ? 0.25 * ulp : 0.5 * ulp;
-	off = (v.h - (double)f) + v.l;         /* h - f exact (Sterbenz); one rounding */
-	if (f < 0)
-		off = -off;
-	m = 2.0 * v.e * INFL + fabs(off) * 0x1p-52;
-	t = off + m;
-	if (t > 0 && t * (1.0 + 0x1p-50) >= upg)
-		return 0;
-	t = m - off;
-	if (t > 0 && t * (1.0 + 0x1p-50) >= dng)
-		return 0;
-	*out = f;
-	return 1;
-}
+static int ziv_d(xv v, double *out) { return ziv(v, 53, out); }
+static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
 
 /* ---- exact sums of products (reference.c's exact_sum) ---- */
 
@@ -363,7 +445,8 @@ static int ziv_f(xv v, double *out)
    Our value: VecSum passes (Ogita, Rump, Oishi 2005) leave the exact sum
    unchanged and move it into t[k-1]; the rest is added in double with an
    error <= k u sum|t[i<k-1]|, and the pair is made a dd by TwoSum.
-   Passes repeat (at most 4) until that bound is below 2^-95 of the sum.
+   Passes repeat (at most 4) until that bound is below 2^-95 of the sum;
+   it is 0 when the last pass's TwoSums were all exact.
    MPFR's error: its sequential path adds k terms at p bits (error
    <= (k-1) 2^-p sum|terms| <= 4 2^-p S, S <= bound (1 + 2^-40)); it
    refines with mpfr_sum (error <= 2^-p |X|) when |X_mpfr| < 2^(E-59),
@@ -373,34 +456,60 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 {
 	xv r;
 	double lo = 0.0, sabs = 0.0, err = 0.0, V, merr;
-	int pass, i, E;
+	int pass, i, E, minlsb = 100000, exact = 1;
 	if (!isfinite(bound)) { *bad = 1; return xc(0.0); }
+	for (i = 0; i < k; i++)
+		if (t[i] != 0.0) {
+			int ex;
+			{
+				uint64_t m = (uint64_t)ldexp(fabs(frexp(t[i], &ex)), 53);
+				int tz = 0;
+				while (!(m & 1u)) { m >>= 1; tz++; }
+				if (ex - 53 + tz < minlsb)
+					minlsb = ex - 53 + tz;
+			}
+		}
 	for (pass = 0; pass < 4; pass++) {
 		for (i = 1; i < k; i++)
 			two_sum(t[i], t[i - 1], &t[i], &t[i - 1]);
+		/* lo = t[0] + ... + t[k-2] by TwoSum, noting whether it is exact */
 		lo = 0.0;
 		sabs = 0.0;
+		exact = 1;
 		for (i = 0; i < k - 1; i++) {
-			lo += t[i];
+			double q;
+			two_sum(lo, t[i], &lo, &q);
+			exact &= q == 0.0;
 			sabs += fabs(t[i]);
 		}
-		err = (double)k * 0x1p-53 * sabs * INFL;
+		err = exact ? 0.0 : (double)k * 0x1p-53 * sabs * INFL;
 		if (err <= 0x1p-95 * fabs(t[k - 1]))
 			break;
 	}
-	two_sum(t[k - 1], lo, &r.h, &r.l);
-	if (sabs == 0.0 && r.h == 0.0) { /* exact zero */
+	{
+		double sh, sl;
+		two_sum(t[k - 1], lo, &sh, &sl);
+		fast_two_sum_l(sh, sl, &r.h, &r.l); /* normalized as a pair of long doubles */
+	}
+	if (sabs == 0.0 && r.h == 0.0L) { /* exact zero */
 		r = xc(allneg0 ? -0.0 : 0.0);
 		return r;
 	}
 	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
 	(void)frexp(bound, &E);
-	V = fabs(r.h) * (1.0 + 0x1p-50) + err;
-	if (V <= ldexp(1.0, E - 61))
-		merr = c->up * V;
-	else
-		merr = 4.0 * c->up * bound * INFL + c->up * V;
-	r.e = (err + merr) * INFL + FLOOR;
+	if (E + 1 - minlsb <= c->prec) {
+		/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
+		   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
+		   sum is exact, and so is ours when no TwoSum above lost a bit */
+		merr = 0.0;
+	} else {
+		V = (double)fabsl(r.h) * (1.0 + 0x1p-50) + err;
+		if (V <= ldexp(1.0, E - 61))
+			merr = c->up * V;
+		else
+			merr = 4.0 * c->up * bound * INFL + c->up * V;
+	}
+	r.e = err == 0.0 && merr == 0.0 ? 0.0 : (err + merr) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
@@ -588,7 +697,9 @@ static void xreference(const study_kernel *k, int br, const double loc[3], const
 		xduff(n, br ? -1 : 1, 1, r1, r2, bad);
 		break;
 	case FAM_STARK:
-		xset3(u, br == 0, br == 1, br == 2);
+	case FAM_STARK_FIXED:
+		/* as published zm = 1; fixed (Hill 2011) e_k */
+		xset3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
 		xcross(r1, n, u, bad);
 		xnormalize(r1, bad);
 		xcross(r2, n, r1, bad);
@@ -646,24 +757,49 @@ static double float_distance(double a, double b, int prec)
 	}
 }
 
-/* forward(): the forward error of component cv against E. */
-static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd)
+/* forward(): the forward error of component cv against E.  1 when every
+   figure is determined, 2 when ref[] is not (then NaN), 0 when MPFR must
+   decide.  A diff = |RN(E - cv)| that stays undetermined (E - cv within
+   MPFR's rounding noise of a double, as when the kernel is exact and
+   MPFR's E carries 2^-127 of noise) enters only the maxima abs_eps_max
+   and ulp_max: its upper bound goes to undet[0] (in eps) and undet[1]
+   (in ulps), and the caller checks that neither reaches the maxima. */
+static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
 {
 	const int p = prec == PREC_FLOAT ? 24 : 53;
 	const int emin = prec == PREC_FLOAT ? -125 : -1021;
 	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
-	double diff, rounded, bits;
-	int bad = 0;
+	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
+	const int tiny = (double)fabsl(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
+	double diff, rounded, bits, ulp = 0.0, upper = 0.0;
+	int bad = 0, rc = 1, have_diff;
 	xv D;
-	if (!ziv_d(E, refd))
-		return 0;
+	if (!ziv_d(E, refd)) {
+		/* The exact double of E is undetermined (an exact zero that MPFR
+		   computes as rounding noise, say).  When tiny, it takes part in
+		   no other figure: only ref[] is left to MPFR, and only if the
+		   sample is kept among the worst. */
+		if (!tiny)
+			return 0;
+		*refd = NAN;
+		rc = 2;
+	}
 	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
-	if (bad || !ziv_d(D, &diff))
+	if (bad)
 		return 0;
-	diff = fabs(diff);
-	if (diff / eps > s->abs_eps_max)
-		s->abs_eps_max = diff / eps;
-	if (prec == PREC_FLOAT) {
+	have_diff = ziv_d(D, &diff);
+	if (have_diff) {
+		diff = fabs(diff);
+		if (diff / eps > s->abs_eps_max)
+			s->abs_eps_max = diff / eps;
+	} else {
+		upper = ((double)fabsl(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
+		if (upper / eps > undet[0])
+			undet[0] = upper / eps;
+	}
+	if (tiny) {
+		rounded = 0.0;
+	} else if (prec == PREC_FLOAT) {
 		if (!ziv_f(E, &rounded))
 			return 0;
 	} else {
@@ -671,11 +807,14 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd)
 	}
 	if (rounded != 0.0 && fabs(rounded) >= eps) {
 		int ex;
-		double ulp;
 		(void)frexp(rounded, &ex);
 		ulp = ldexp(1.0, (ex < emin ? emin : ex) - p);
-		if (diff / ulp > s->ulp_max)
+		if (!have_diff) {
+			if (upper / ulp > undet[1])
+				undet[1] = upper / ulp;
+		} else if (diff / ulp > s->ulp_max) {
 			s->ulp_max = diff / ulp;
+		}
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
 			const double dist = float_distance(cv, rounded, prec);
@@ -686,7 +825,7 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd)
 		if (bits > s->bits_max)
 			s->bits_max = bits;
 	}
-	return 1;
+	return rc;
 }
 
 /* ref_eval's first half, unchanged: the input as the kernel receives it,
@@ -819,10 +958,11 @@ int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n
 {
 	double n[3];
 	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
-	int i, bad = 0;
+	int i, bad = 0, rc = REFFAST_DONE;
+	double undet[2] = { 0.0, 0.0 };
 	run_kernel(k, prec, n_in, loc, n, s);
 	if (!input_terms(c, n, normalize_n, &inv))
-		return 0;
+		return REFFAST_MPFR;
 	s->in_norm = c->last_norm;
 	for (i = 0; i < s->ncomp; i++)
 		if (!isfinite(s->out[i]))
@@ -833,7 +973,7 @@ int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n
 		s->dir_norm = s->dir_cos = NAN;
 		for (i = 0; i < 6; i++)
 			s->ref[i] = NAN;
-		return 1;
+		return REFFAST_DONE;
 	}
 	if (k->m && !basis_defects(c, k, n, normalize_n, inv, s))
 		return 0;
@@ -843,13 +983,17 @@ int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n
 	if (bad)
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
-	for (i = 0; i < 3; i++)
-		if (!xforward(r1[i], s->out[i], prec, s, &s->ref[i]))
+	for (i = 0; i < s->ncomp; i++) {
+		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+		if (!f)
 			return 0;
-	if (k->m)
-		for (i = 0; i < 3; i++)
-			if (!xforward(r2[i], s->out[3 + i], prec, s, &s->ref[3 + i]))
-				return 0;
+		if (f == 2)
+			rc = REFFAST_NOREF;
+	}
+	/* an undetermined diff no larger than the determined maxima (in the
+	   same units: eps and ulps are powers of two) leaves them unchanged */
+	if (!(undet[0] <= s->abs_eps_max) || !(undet[1] <= s->ulp_max))
+		return 0;
 
 	/* Direction error: | |w| - 1 | and | w.n - z |. */
 	if (!norm_m1_fast(c, s->w, &s->dir_norm))
@@ -864,5 +1008,5 @@ int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n
 			return 0;
 		s->dir_cos = fabs(s->dir_cos);
 	}
-	return 1;
+	return rc;
 }

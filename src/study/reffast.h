@@ -27,9 +27,13 @@ void reffast_free(reffast_ctx *c);
    the reason in why. */
 int reffast_usable(int ref_bits, const char **why);
 
-/* Same arguments and output as ref_eval.  1 when every field of s is
-   determined (and then equal to what ref_eval at ref_bits writes); 0 when
-   the caller must call ref_eval (s is then unspecified). */
+/* Same arguments and output as ref_eval.  REFFAST_DONE when every field
+   of s is determined (and then equal to what ref_eval at ref_bits
+   writes); REFFAST_NOREF when every field but ref[] is (ref[] holds NaN
+   where not: it only matters for a sample kept among the worst, and the
+   caller must then run ref_eval); REFFAST_MPFR when the caller must call
+   ref_eval (s is then unspecified). */
+enum { REFFAST_MPFR = 0, REFFAST_DONE = 1, REFFAST_NOREF = 2 };
 int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n[3],
                  const double loc[3], int normalize_n, sample_metrics *s);
 

@@ -22,6 +22,8 @@
  *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
  *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
  *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
+ *     (float only)         onb_duff_widef         this project: Duff in double
+ *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
  *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
  *                      onb_basis_checked[f]      normalize + status + method
@@ -669,6 +671,75 @@ static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 }
 
 /* ------------------------------------------------------------------ */
+/* This project's own methods (issue 16), not published ones: Duff's   */
+/* branchless formula pushed to the accuracy floor, float only         */
+/* ------------------------------------------------------------------ */
+/* The floor: the exact duff_branchless basis of the float input, rounded
+   once to float, still has a defect (the output roundings, plus the
+   input's own distance from the unit sphere); `onbstudy sweep` reports it
+   per input (README, "The accuracy floor").  Float duff_branchless sits up
+   to about 2x above it, because its products and its 1 + s x^2 a round
+   before the output does.  These two methods remove those intermediate
+   roundings.  Same branch and handedness as duff_branchless (the sign bit
+   of n.z; -0 takes the lower branch), same exact formula, so the MPFR
+   reference family is duff_branchless.  Float only: for double input the
+   analogue needs double-double arithmetic (see the README).
+   There is no double version: the registry's basis and batch are NULL
+   and its flags carry ONB_FLOAT_ONLY. */
+
+/* duff_wide: the float input widened to double, duff_branchless's formula
+   in double, each output rounded once to float.  Each output component
+   before its final rounding is within a few 2^-53 of the exact formula,
+   so it is the correctly rounded exact value except within a few 2^-53 of
+   a float rounding boundary.
+   Bound (tests/test_lib.c): D <= 12u (u = 2^-24); measured (onbstudy sweep):
+   largest defect within 1.05x of the floor's largest on every distribution. */
+static inline void onb_duff_widef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const double x = (double)n.x, y = (double)n.y, z = (double)n.z;
+	const double sign = copysign(1.0, z);
+	const double a = -1.0 / (sign + z);
+	const double b = x * y * a;
+	b1->x = (float)(1.0 + sign * x * x * a); b1->y = (float)(sign * b); b1->z = (float)(-sign * x);
+	b2->x = (float)b; b2->y = (float)(sign + y * y * a); b2->z = (float)(-y);
+}
+
+/* duff_comp: the same formula in float arithmetic, with each rounding
+   before the output compensated by error-free transformations: h = s + z
+   and its error (Fast2Sum, |s| >= |z|), a = -1/h with the division's exact
+   residual fma(a, h, 1), the products x x, x y, y y and their products
+   with a split by fma into hi + lo, and 1 + s x^2 a, s + y^2 a by
+   Fast2Sum; the lo parts are summed (in float) and added once at the end.
+   Each output is then within about u + O(u^2) relative of the exact
+   formula (faithful, correctly rounded in most cases).  Seven fmaf()
+   calls: built without an FMA target (as libonb.a's scalar code is, see
+   the Makefile) they are libm calls; the batch runs an FMA clone when the
+   CPU has FMA.  fma is correctly rounded everywhere, so the bits do not
+   depend on which.
+   Bound (tests/test_lib.c): D <= 12u. */
+static inline void onb_duff_compf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float x = n.x, y = n.y, z = n.z;
+	const float s = copysignf(1.0f, z);
+	const float h = s + z, hl = (s - h) + z;         /* s + z = h + hl          */
+	const float a = -1.0f / h;
+	const float e = fmaf(a, h, 1.0f);                /* a h + 1, exactly        */
+	const float al = a * (e + a * hl);               /* -1/(h + hl) ~ a + al    */
+	const float xx = x * x, xxl = fmaf(x, x, -xx);
+	const float xy = x * y, xyl = fmaf(x, y, -xy);
+	const float yy = y * y, yyl = fmaf(y, y, -yy);
+	const float p = xx * a, pl = fmaf(xx, a, -p) + (xx * al + xxl * a); /* x^2 a */
+	const float b = xy * a, bl = fmaf(xy, a, -b) + (xy * al + xyl * a); /* x y a */
+	const float q = yy * a, ql = fmaf(yy, a, -q) + (yy * al + yyl * a); /* y^2 a */
+	const float sp = s * p;
+	const float t1 = 1.0f + sp, t1l = (1.0f - t1) + sp; /* 1 + s x^2 a          */
+	const float t2 = s + q, t2l = (s - t2) + q;          /* s + y^2 a            */
+	const float bb = b + bl;
+	b1->x = t1 + (t1l + s * pl); b1->y = s * bb; b1->z = -s * x;
+	b2->x = bb; b2->y = t2 + (t2l + ql); b2->z = -y;
+}
+
+/* ------------------------------------------------------------------ */
 /* Out-of-line library: batch kernels and registry                     */
 /* ------------------------------------------------------------------ */
 
@@ -693,6 +764,7 @@ typedef void (*onb_batchf_fn)(size_t count,
 #define ONB_FELL_BACK    0x2u /* ...which this build lacks: runs 1/sqrt instead */
 #define ONB_APPROX_NORM  0x4u /* normalization is approximate or absent        */
 #define ONB_NORMALIZES_N 0x8u /* the method normalizes n itself (rtow)        */
+#define ONB_FLOAT_ONLY   0x10u /* float only: basis and batch (double) are NULL */
 
 typedef struct onb_method {
 	const char   *name;       /* e.g. "duff_branchless"                        */
@@ -704,9 +776,9 @@ typedef struct onb_method {
 	unsigned      flags;      /* ONB_* above                                   */
 	double        threshold;  /* Frisvad-family t, or NAN                      */
 	int           norm;       /* normalization variant, for the reference      */
-	onb_basis_fn  basis;      /* out-of-line scalar, double                    */
+	onb_basis_fn  basis;      /* out-of-line scalar, double (NULL: float only) */
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
-	onb_batch_fn  batch;      /* SoA batch, double                             */
+	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
 } onb_method;
 
@@ -724,7 +796,7 @@ typedef enum {
 	ONB_RENORMALIZED,    /* n was finite, non-zero, not unit: normalized    */
 	ONB_ZERO,            /* n was zero (or too small to normalize)          */
 	ONB_NONFINITE,       /* n had a NaN or an infinity                      */
-	ONB_BAD_METHOD       /* method was NULL                                 */
+	ONB_BAD_METHOD       /* method was NULL, or has no double (float only) */
 } onb_status;
 
 /* Relative tolerance on |n|^2 - 1 under which n is used unchanged. */
@@ -758,6 +830,16 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
 ONB_METHOD_LIST(ONB__DECLARE)
 #undef ONB__DECLARE
+
+/* The float-only methods (ONB_FLOAT_ONLY), after the others in the
+   registry: out-of-line copy and batch kernel in float only. */
+#define ONB_FLOAT_METHOD_LIST(X) X(duff_wide) X(duff_comp)
+#define ONB__DECLARE_F(m) \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2); \
+	void onb_##m##_batchf(size_t count, const float *nx, const float *ny, const float *nz, \
+		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
+#undef ONB__DECLARE_F
 
 #ifdef __cplusplus
 }

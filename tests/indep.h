@@ -217,6 +217,42 @@ static void ind_duff_bld(Vec3d n, Vec3d *b1, Vec3d *b2)
 	*b2 = vd(b, sign + n.y * n.y * a, -n.y);
 }
 
+/* ---- this project's float-only methods (issue 16; README "The methods"),
+   written from their description, not from onb.h ---- */
+/* duff_wide: Listing 3 on the float input in double, rounded once. */
+static void ind_duff_widef(Vec3f n, Vec3f *b1, Vec3f *b2)
+{
+	Vec3d d = vd(n.x, n.y, n.z), c1, c2;
+	ind_duff_bld(d, &c1, &c2);
+	*b1 = vf((float)c1.x, (float)c1.y, (float)c1.z);
+	*b2 = vf((float)c2.x, (float)c2.y, (float)c2.z);
+}
+/* duff_comp: Fast2Sum (|a| >= |b|): s + e = a + b exactly */
+static float ind_fast2sum(float a, float b, float *e) { float s = a + b; *e = (a - s) + b; return s; }
+/* two-product by fma: p + e = a b exactly */
+static float ind_2prod(float a, float b, float *e) { float p = a * b; *e = fmaf(a, b, -p); return p; }
+/* (u + ul) times the reciprocal a + al, as hi p and lo pl */
+static float ind_scale(float u, float ul, float a, float al, float *pl)
+{
+	float e, p = ind_2prod(u, a, &e);
+	*pl = e + (u * al + ul * a);
+	return p;
+}
+static void ind_duff_compf(Vec3f n, Vec3f *b1, Vec3f *b2)
+{
+	const float s = copysignf(1.0f, n.z);
+	float hl, xxl, xyl, yyl, pl, bl, ql, t1l, t2l;
+	const float h = ind_fast2sum(s, n.z, &hl);
+	const float a = -1.0f / h;
+	const float al = a * (fmaf(a, h, 1.0f) + a * hl); /* -1/(h + hl) ~ a + al */
+	const float xx = ind_2prod(n.x, n.x, &xxl), xy = ind_2prod(n.x, n.y, &xyl), yy = ind_2prod(n.y, n.y, &yyl);
+	const float p = ind_scale(xx, xxl, a, al, &pl), b = ind_scale(xy, xyl, a, al, &bl), q = ind_scale(yy, yyl, a, al, &ql);
+	const float t1 = ind_fast2sum(1.0f, s * p, &t1l), t2 = ind_fast2sum(s, q, &t2l);
+	const float bb = b + bl;
+	*b1 = vf(t1 + (t1l + s * pl), s * bb, -s * n.x);
+	*b2 = vf(bb, t2 + (t2l + ql), -n.y);
+}
+
 /* ---- Stark 2009, branch-free perpendicular; our completion ---- */
 #define IND_SIGNBIT(X) ((unsigned)(signbit(X) != 0))
 static void ind_starkf(Vec3f u, Vec3f *b1, Vec3f *b2, int fixed)
@@ -323,7 +359,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 
 /* One entry per registry method: name, and both precisions by an id. */
 enum { IM_NAIVE, IM_HM, IM_FRISVAD, IM_FRISVAD_MAX, IM_DUFF, IM_DUFF_BL, IM_STARK, IM_STARK_FIXED,
-       IM_PBRT3, IM_RTOW, IM_BLOG };
+       IM_PBRT3, IM_RTOW, IM_BLOG, IM_DUFF_WIDE, IM_DUFF_COMP };
 static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
 	switch (id) {
@@ -337,6 +373,8 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IM_STARK_FIXED: ind_starkf(n, b1, b2, 1); break;
 	case IM_PBRT3:       ind_pbrt3f(n, b1, b2); break;
 	case IM_RTOW:        ind_rtowf(n, b1, b2); break;
+	case IM_DUFF_WIDE:   ind_duff_widef(n, b1, b2); break;
+	case IM_DUFF_COMP:   ind_duff_compf(n, b1, b2); break;
 	default:             ind_blogf(n, b1, b2); break;
 	}
 }

@@ -12,6 +12,7 @@
 #endif
 
 #define ONB__PTRS(m) onb_##m##_outline, onb_##m##_outlinef, onb_##m##_batch, onb_##m##_batchf
+#define ONB__PTRS_F(m) NULL, onb_##m##_outlinef, NULL, onb_##m##_batchf
 
 #define SRC_L1 "Frisvad 2012, JGT 16(3), Listing 1"
 #define SRC_HM "Hughes & Moller 1999, JGT 4(4), as Frisvad 2012 Listing 1"
@@ -60,6 +61,12 @@ static const onb_method onb__table[] = {
 	  "n = 0 only (normalizes its input)", "|n.x| > 0.9", -1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(rtow) },
 	{ "tangent_cross_z", "tangent_cross_z", "sydneyzh blog, Vector transformation using projection between ONBs, get_onb",
 	  "n = +z and n = -z (0/0 = NaN); float n.x^2+n.y^2 underflow", "none", -1, 0, NAN, 0, ONB__PTRS(tangent_cross_z) },
+	/* This project's own methods (issue 16), float only: Duff's formula at
+	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
+	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_wide) },
+	{ "duff_comp", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 in float, fma-compensated products and sums",
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp) },
 };
 
 const onb_method *onb_methods(size_t *count)

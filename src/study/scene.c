@@ -375,6 +375,15 @@ int cmd_scene(int argc, char **argv)
 		study_error("scene: out of memory");
 		goto out;
 	}
+	if (!fl) { /* the float-only methods (ONB_FLOAT_ONLY) have no double code */
+		static onb_method dbl_ms[128];
+		size_t j = 0;
+		for (i = 0; i < nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
+			if (ms[i].basis)
+				dbl_ms[j++] = ms[i];
+		ms = dbl_ms;
+		nm = j;
+	}
 	res = calloc(2 * nm, sizeof *res);
 	ores = calloc(2 * nm, sizeof *ores);
 	if (!res || !ores || buf_alloc(&b, mn.count, fl) != 0) {

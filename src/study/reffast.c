@@ -34,6 +34,7 @@
 #include <string.h>
 #include <math.h>
 #include <stdint.h>
+#include <float.h>
 #include "reffast.h"
 
 struct reffast_ctx {
@@ -53,6 +54,11 @@ struct reffast_ctx {
 
 int reffast_usable(int ref_bits, const char **why)
 {
+#if LDBL_MANT_DIG != 64
+	*why = "the fast reference needs the x87 80-bit long double";
+	(void)ref_bits;
+	return 0;
+#endif
 	if (ref_bits < 127) {
 		*why = "the fast reference's bounds assume an MPFR reference of at least 127 bits";
 		return 0;
@@ -78,6 +84,54 @@ reffast_ctx *reffast_new(int ref_bits)
 }
 
 void reffast_free(reffast_ctx *c) { free(c); }
+
+/* ---- exponents by bit pattern (no libm call on the fast path) ---- */
+
+/* Trailing zeros of m != 0. */
+static inline int ctz64(uint64_t m)
+{
+#if defined(__GNUC__)
+	return __builtin_ctzll(m);
+#else
+	int tz = 0;
+	while (!(m & 1u)) { m >>= 1; tz++; }
+	return tz;
+#endif
+}
+
+/* floor(log2 |a|) of a normal double. */
+static inline int dexp(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	return (int)((u >> 52) & 0x7ff) - 1023;
+}
+
+/* The exponent of the lowest set bit of a normal nonzero double. */
+static inline int dlsb(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	u = (u & ((1ull << 52) - 1)) | (1ull << 52);
+	return dexp(a) - 52 + ctz64(u);
+}
+
+/* 1 when the normal double a is a power of two. */
+static inline int dpow2(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	return (u & ((1ull << 52) - 1)) == 0;
+}
+
+/* 2^e for -1022 <= e <= 1023. */
+static inline double pow2(int e)
+{
+	const uint64_t u = (uint64_t)(e + 1023) << 52;
+	double d;
+	memcpy(&d, &u, 8);
+	return d;
+}
 
 /* ---- error-free transformations (exact: no bound) ---- */
 
@@ -189,12 +243,16 @@ static inline int is_zero(xv a) { return a.h == 0.0L && a.e == 0.0; }
 /* The exponents of the highest and lowest set bits of a nonzero a. */
 static void bit_span(ld a, int *hi, int *lo)
 {
-	int ex;
-	uint64_t m = (uint64_t)ldexpl(fabsl(frexpl(a, &ex)), 64);
-	int tz = 0;
-	while (!(m & 1u)) { m >>= 1; tz++; }
-	*hi = ex - 1;
-	*lo = ex - 64 + tz;
+	/* the x87 format: 64-bit significand with its leading 1, then sign and
+	   15-bit exponent (reffast_usable checks LDBL_MANT_DIG == 64) */
+	unsigned char b[sizeof(ld)];
+	uint64_t m;
+	uint16_t se;
+	memcpy(b, &a, sizeof b);
+	memcpy(&m, b, 8);
+	memcpy(&se, b + 8, 2);
+	*hi = (int)(se & 0x7fff) - 16383;
+	*lo = *hi - 63 + ctz64(m);
 }
 
 /* The sum of two exact pairs, when it is an exact pair again and fits
@@ -303,10 +361,12 @@ static xv xmul(xv a, xv b, int *bad)
 	return r;
 }
 
+/* 1 when a (nonzero, normal) is a power of two; *ex = floor(log2 |a|). */
 static int is_pow2(ld a, int *ex)
 {
-	const ld f = frexpl(a, ex);
-	return f == 0.5L || f == -0.5L;
+	int lo;
+	bit_span(a, ex, &lo);
+	return lo == *ex;
 }
 
 /* 1/b (mpfr_ui_div(1, b)).  y0 = RN(1/bh), one Newton step, and an a
@@ -350,7 +410,7 @@ static xv xrsqrt(xv s, int *bad)
 	ld y0, qh, ql, ph, pl, rh, rl;
 	double smin, rho;
 	int ex;
-	if (s.l == 0.0L && s.e == 0.0 && s.h > 0.0L && is_pow2(s.h, &ex) && (ex & 1)) {
+	if (s.l == 0.0L && s.e == 0.0 && s.h > 0.0L && is_pow2(s.h, &ex) && !(ex & 1)) {
 		r.h = 1.0L / sqrtl(s.h); r.l = 0.0L; r.e = 0.0; /* 4^k: exact */
 		if (!ok(r)) *bad = 1;
 		return r;
@@ -402,10 +462,10 @@ static int ziv(xv v, int bits, double *out)
 	a = fabs(c);
 	if (a < (bits == 24 ? 0x1p-126 : TINY) || !isfinite(c))
 		return 0;
-	(void)frexp(a, &ex);
-	ulp = ldexp(1.0, ex - bits);
-	upg = 0.5 * ulp;                                   /* half the gap above |c| */
-	dng = a == ldexp(0.5, ex) ? 0.25 * ulp : 0.5 * ulp; /* half the gap below     */
+	ex = dexp(a);
+	ulp = pow2(ex + 1 - bits);
+	upg = 0.5 * ulp;                            /* half the gap above |c| */
+	dng = dpow2(a) ? 0.25 * ulp : 0.5 * ulp;    /* half the gap below     */
 	if (v.e == 0.0) {
 		/* Exact v = h + l, |l| <= ulp(h)/2 of a long double, far below
 		   the format's gaps: RN(v) = c = RN(h) (ties to even) unless h is
@@ -460,14 +520,9 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 	if (!isfinite(bound)) { *bad = 1; return xc(0.0); }
 	for (i = 0; i < k; i++)
 		if (t[i] != 0.0) {
-			int ex;
-			{
-				uint64_t m = (uint64_t)ldexp(fabs(frexp(t[i], &ex)), 53);
-				int tz = 0;
-				while (!(m & 1u)) { m >>= 1; tz++; }
-				if (ex - 53 + tz < minlsb)
-					minlsb = ex - 53 + tz;
-			}
+			if (fabs(t[i]) < 0x1p-1000) { *bad = 1; return xc(0.0); }
+			if (dlsb(t[i]) < minlsb)
+				minlsb = dlsb(t[i]);
 		}
 	for (pass = 0; pass < 4; pass++) {
 		for (i = 1; i < k; i++)
@@ -496,7 +551,7 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 		return r;
 	}
 	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
-	(void)frexp(bound, &E);
+	E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
 	if (E + 1 - minlsb <= c->prec) {
 		/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
 		   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
@@ -504,7 +559,7 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 		merr = 0.0;
 	} else {
 		V = (double)fabsl(r.h) * (1.0 + 0x1p-50) + err;
-		if (V <= ldexp(1.0, E - 61))
+		if (V <= pow2(E - 61))
 			merr = c->up * V;
 		else
 			merr = 4.0 * c->up * bound * INFL + c->up * V;
@@ -807,8 +862,8 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	}
 	if (rounded != 0.0 && fabs(rounded) >= eps) {
 		int ex;
-		(void)frexp(rounded, &ex);
-		ulp = ldexp(1.0, (ex < emin ? emin : ex) - p);
+		ex = dexp(rounded) + 1; /* frexp's exponent */
+		ulp = pow2((ex < emin ? emin : ex) - p);
 		if (!have_diff) {
 			if (upper / ulp > undet[1])
 				undet[1] = upper / ulp;

@@ -17,6 +17,7 @@
 #include "engine.h"
 #include "sweep.h"
 #include "study.h"
+#include "reffast.h"
 
 static void on_signal(int sig) { (void)sig; engine_stop = 1; }
 
@@ -24,7 +25,7 @@ static const char *const fmt_names[] = { "table", "csv", "json" };
 
 /* Refuse an unusable output directory before hours of work (and only once
    every option has been checked, so a refused run creates nothing). */
-static int sweep_outdir(const char *out)
+int sweep_outdir(const char *out)
 {
 	if (study_mkdir_p(out) != 0)
 		return -1;
@@ -97,17 +98,8 @@ static int sweep_plots(const char *out)
 	return 0;
 }
 
-/* results/latest -> the new run, replaced atomically */
-static void sweep_latest(const char *out)
-{
-	const char *base = strrchr(out, '/');
-	unlink("results/latest.tmp");
-	if (base && symlink(base + 1, "results/latest.tmp") == 0)
-		rename("results/latest.tmp", "results/latest");
-}
-
 /* The files: a shard's state, or the whole run's CSV files. */
-static int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
+int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 {
 	const sweep_cfg *cfg = &st->cfg;
 	if (cfg->shard_n > 1) {
@@ -122,7 +114,7 @@ static int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 	if (sweep_finish(st, pl->out, pl->threads, fmt_names[pl->fmt], seconds, 0) != 0)
 		return 1;
 	if (!pl->out_given)
-		sweep_latest(pl->out);
+		study_point_latest(pl->out);
 	fprintf(stderr, "onbstudy: wrote %s/summary.csv, by_nz.csv, worst.csv%s\n", pl->out,
 	        cfg->dist_on[DIST_GRID] ? ", grid.csv" : "");
 	return pl->plots ? sweep_plots(pl->out) : 0;
@@ -138,6 +130,13 @@ int cmd_sweep(int argc, char **argv)
 		return rc == 1 ? 0 : rc;
 	if ((rc = plan_build(&pl)) != 0)
 		return rc;
+	if (!pl.cfg.ref_mpfr) {
+		const char *why;
+		if (!reffast_usable(pl.cfg.ref_bits, &why)) {
+			fprintf(stderr, "onbstudy: %s: the reference is MPFR only (as --ref mpfr)\n", why);
+			pl.cfg.ref_mpfr = 1;
+		}
+	}
 	if (pl.dry_run)
 		return sweep_dry_run(&pl);
 	if (sweep_outdir(pl.out) != 0)
@@ -154,6 +153,7 @@ int cmd_sweep(int argc, char **argv)
 		        (unsigned long long)st.cfg.evals, seconds, (double)st.cfg.evals / seconds,
 		        (double)st.cfg.evals / seconds / pl.threads, pl.threads, st.cfg.ref_bits,
 		        (unsigned long long)st.cfg.checked, st.cfg.ref_bits + 64);
+		sweep_print_reference(stderr, &st, "onbstudy: ", 0);
 		rc = sweep_write(&pl, &st, seconds);
 	}
 	sweep_free(&st);

@@ -5,6 +5,7 @@
 #ifndef ONB_SWEEP_H
 #define ONB_SWEEP_H
 
+#include <stdio.h>
 #include <stdint.h>
 #include "fx.h"
 #include "inputs.h"
@@ -59,6 +60,12 @@ typedef struct {
 	int shard_k, shard_n;
 	uint64_t counts[2][NDIST];    /* inputs per distribution (before the walk) */
 	uint64_t evals, checked;      /* referenced evaluations; two-precision checks */
+	/* the reference path (issue 14): 0 the certified fast path (reffast.c)
+	   with MPFR where it cannot decide, 1 MPFR only (--ref mpfr); per
+	   precision and kernel, the evaluations, those that fell back to MPFR,
+	   and those whose ref[] MPFR filled in for the worst rows */
+	int ref_mpfr;                 /* default 1 (plan.c) */
+	uint64_t ref_evals[2][SWEEP_MAX_KERNELS], ref_fallback[2][SWEEP_MAX_KERNELS], ref_worst[2][SWEEP_MAX_KERNELS];
 } sweep_cfg;
 
 typedef struct {
@@ -74,6 +81,8 @@ cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
 void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
+/* 1 when cell_add would keep this sample among the cell's worst. */
+int  cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source);
 
 int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
 void sweep_free(sweep_state *s);
@@ -82,9 +91,16 @@ int  sweep_kernels_from_names(sweep_state *s);
 
 int  sweep_save_state(const sweep_state *s, const char *dir, const char *name);
 int  sweep_load_state(sweep_state *s, const char *path);
+/* The same with extra bytes after the state (the MPI driver's checkpoint:
+   its done list); load returns them in a malloc'd buffer. */
+int  sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len);
+int  sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len);
 int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
 
 /* Worst-case walk, then every CSV file; fmt is the stdout format. */
 int  sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial);
+/* The reference path and its fallback rates, one line (prefix first), and
+   per method and precision when per_method != 0. */
+void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, int per_method);
 
 #endif

@@ -95,6 +95,23 @@ static void bin_add(bin_t *b, double e)
 
 static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
+/* cell_add's key of a sample. */
+static double sample_key(const sample_metrics *m)
+{
+	if (m->nonfinite)
+		return INFINITY;
+	return m->has_basis ? m->defect : dmax(m->dir_norm, m->dir_cos);
+}
+
+int cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source)
+{
+	worst_t w;
+	w.key = sample_key(m);
+	w.index = index;
+	w.source = source;
+	return worse(&w, &c->worst[NWORST - 1]);
+}
+
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
 {
 	worst_t w;
@@ -220,6 +237,11 @@ static int rd(FILE *f, void *p, size_t n) { return fread(p, 1, n, f) == n ? 0 : 
 
 int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 {
+	return sweep_save_state_x(s, dir, name, NULL, 0);
+}
+
+int sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len)
+{
 	study_out o;
 	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	sweep_cfg cfg = s->cfg;
@@ -228,7 +250,8 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 		return -1;
 	if (wr(o.f, &cfg, sizeof cfg) || wr(o.f, s->cells, nc * sizeof *s->cells) ||
 	    wr(o.f, s->g_err, g * sizeof *s->g_err) || wr(o.f, s->g_bits, g * sizeof *s->g_bits) ||
-	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s))) {
+	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s)) ||
+	    (len && wr(o.f, extra, len))) {
 		study_error("%s: write failed: %s", o.path, strerror(errno));
 		study_out_abort(&o);
 		return -1;
@@ -237,6 +260,32 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 }
 
 int sweep_load_state(sweep_state *s, const char *path)
+{
+	return sweep_load_state_x(s, path, NULL, NULL);
+}
+
+/* The bytes after the state, up to EOF: 0, or -1 (out of memory, read error). */
+static int read_rest(FILE *f, unsigned char **extra, size_t *len)
+{
+	size_t cap = 4096, n = 0, r;
+	unsigned char *b = malloc(cap), *t;
+	if (!b)
+		return -1;
+	while ((r = fread(b + n, 1, cap - n, f)) > 0) {
+		n += r;
+		if (n == cap) {
+			if (!(t = realloc(b, 2 * cap))) { free(b); return -1; }
+			b = t;
+			cap *= 2;
+		}
+	}
+	if (ferror(f)) { free(b); return -1; }
+	*extra = b;
+	*len = n;
+	return 0;
+}
+
+int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len)
 {
 	FILE *f = fopen(path, "rb");
 	size_t nc, g;
@@ -270,7 +319,7 @@ int sweep_load_state(sweep_state *s, const char *path)
 	g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	if (rd(f, s->cells, nc * sizeof *s->cells) || rd(f, s->g_err, g * sizeof *s->g_err) ||
 	    rd(f, s->g_bits, g * sizeof *s->g_bits) || rd(f, s->g_b1, 3 * g * sizeof *s->g_b1) ||
-	    rd(f, s->g_done, 2 * grid_cells(s)) || fgetc(f) != EOF) {
+	    rd(f, s->g_done, 2 * grid_cells(s)) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
 		study_error("%s: truncated or oversized state file", path);
 		fclose(f);
 		sweep_free(s);
@@ -288,6 +337,11 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 	/* everything but the shard index and the counters must agree */
 	a.shard_k = b.shard_k = 0;
 	a.evals = b.evals = a.checked = b.checked = 0;
+	/* nor the reference path (both give the same bytes) and its counters */
+	a.ref_mpfr = b.ref_mpfr = 0;
+	memset(a.ref_evals, 0, sizeof a.ref_evals); memset(b.ref_evals, 0, sizeof b.ref_evals);
+	memset(a.ref_fallback, 0, sizeof a.ref_fallback); memset(b.ref_fallback, 0, sizeof b.ref_fallback);
+	memset(a.ref_worst, 0, sizeof a.ref_worst); memset(b.ref_worst, 0, sizeof b.ref_worst);
 	memset(a.magic, 0, sizeof a.magic);
 	memset(b.magic, 0, sizeof b.magic);
 	if (memcmp(&a, &b, sizeof a) != 0) {
@@ -309,5 +363,12 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 			}
 	d->cfg.evals += s->cfg.evals;
 	d->cfg.checked += s->cfg.checked;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < d->cfg.nk; k++) {
+			d->cfg.ref_evals[p][k] += s->cfg.ref_evals[p][k];
+			d->cfg.ref_fallback[p][k] += s->cfg.ref_fallback[p][k];
+			d->cfg.ref_worst[p][k] += s->cfg.ref_worst[p][k];
+		}
+	d->cfg.ref_mpfr |= s->cfg.ref_mpfr; /* mixed shards: say MPFR took part */
 	return 0;
 }

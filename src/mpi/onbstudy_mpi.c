@@ -558,7 +558,9 @@ static int master(run_t *r)
 		progress(r, 0);
 		pthread_mutex_unlock(&r->mu);
 		if (fail || engine_stop) {
-			if (r->dirty) write_checkpoint(r);
+			pthread_mutex_lock(&r->mu); /* the local worker may be adding a batch */
+			if (r->dirty)
+				write_checkpoint(r);
 			fprintf(stderr, "onbstudy-mpi: %s; the checkpoint in %s keeps every batch finished so far (%llu of %llu "
 			        "evaluations): rerun with --resume %s\n", fail ? "stopped after an error" : "interrupted",
 			        r->pl.out, r->evals_done, r->pl.evals, r->pl.out);

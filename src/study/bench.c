@@ -450,7 +450,21 @@ static void put_num(FILE *f, double v)
 
 #define BENCH_COLUMNS "method,precision,mode,threads,size_class,size,bytes,reps,passes," \
 	"mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best," \
-	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum"
+	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum,flag"
+
+/* A figure not to take at face value (the "flag" column): "load" for an
+   all-threads row begun at a 1-minute load average of BENCH_BUSY_LOAD or
+   more (other processes took CPU time from the threads); "spread" when the
+   median time exceeds the minimum by more than BENCH_WIDE_SPREAD. */
+#define BENCH_BUSY_LOAD   0.5
+#define BENCH_WIDE_SPREAD 1.2
+static int bench_busy; /* the load average at the start was BENCH_BUSY_LOAD or more */
+static const char *row_flag(const bench_row *r)
+{
+	const int load = bench_busy && r->r.threads > 1;
+	const int spread = r->r.median_s > BENCH_WIDE_SPREAD * r->r.min_s;
+	return load ? (spread ? "load+spread" : "load") : spread ? "spread" : "ok";
+}
 
 static void write_row(FILE *f, const bench_row *r, int tsc)
 {
@@ -466,7 +480,7 @@ static void write_row(FILE *f, const bench_row *r, int tsc)
 	put_num(f, r->chain_ns);
 	put_num(f, r->frac_roof);
 	put_num(f, r->vs_yard);
-	fprintf(f, ",%s,%s,%.17g\n", r->isa, r->vec ? r->vec : "unknown", r->checksum);
+	fprintf(f, ",%s,%s,%.17g,%s\n", r->isa, r->vec ? r->vec : "unknown", r->checksum, row_flag(r));
 }
 
 static const bench_row *find_row(const bench_rows *rs, const char *method, int dbl, const char *mode,
@@ -485,6 +499,30 @@ static const bench_row *find_row(const bench_rows *rs, const char *method, int d
 static double mbs(const bench_row *r)
 {
 	return r ? (double)r->r.n / r->r.median_s * 1e-6 : NAN;
+}
+/* '*' after a flagged figure (see row_flag) */
+static char star(const bench_row *r)
+{
+	return r && strcmp(row_flag(r), "ok") != 0 ? '*' : ' ';
+}
+
+/* After the table: what the '*' marks mean, and --quick's caveat. */
+static void flag_notes(const bench_opts *o, const bench_rows *rs, const char *load0)
+{
+	size_t i, nload = 0, nspread = 0;
+	for (i = 0; i < rs->n; i++) {
+		const char *fl = row_flag(&rs->v[i]);
+		nload += strstr(fl, "load") != NULL;
+		nspread += strstr(fl, "spread") != NULL;
+	}
+	if (nload)
+		printf("\n* %zu all-threads figures were taken under load (load average %s at the start, >= %g): "
+		       "other processes shared the CPUs, so read them as lower bounds\n", nload, load0, BENCH_BUSY_LOAD);
+	if (nspread)
+		printf("%s* %zu figures have a wide spread (median > %g x the best of %d repetitions): noisy\n",
+		       nload ? "" : "\n", nspread, BENCH_WIDE_SPREAD, o->reps);
+	if (o->quick)
+		printf("--quick: a check, not a measurement (%d short repetitions)\n", o->reps);
 }
 
 static void print_table(const bench_opts *o, const bench_rows *rs)
@@ -513,8 +551,9 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 			const bench_row *d = find_row(rs, name, p, mode, "stream", 1);
 			const bench_row *tp = find_row(rs, name, p, "call_throughput", "l2", 0);
 			const bench_row *lat = find_row(rs, name, p, "call_latency", "l2", 0);
-			printf("%-24s %8.0f %8.0f %8.0f %8.0f %5.0f%% %6.2f %6s %7.2f %7.2f %7.2f\n", mi < 0 ? "(copy roofline)" : name,
-			       mbs(a), mbs(b), mbs(c), mbs(d), c ? 100.0 * c->frac_roof : NAN, a ? a->vs_yard : NAN,
+			printf("%-24s %7.0f%c %7.0f%c %7.0f%c %7.0f%c %5.0f%% %6.2f %6s %7.2f %7.2f %7.2f\n", mi < 0 ? "(copy roofline)" : name,
+			       mbs(a), star(a), mbs(b), star(b), mbs(c), star(c), mbs(d), star(d),
+			       c ? 100.0 * c->frac_roof : NAN, a ? a->vs_yard : NAN,
 			       a && a->vec ? a->vec : "-", tp ? tp->r.median_s / (double)tp->r.n * 1e9 : NAN,
 			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 : NAN,
 			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 - lat->chain_ns : NAN);
@@ -567,6 +606,7 @@ int cmd_bench(int argc, char **argv)
 		n_stream *= 2;
 
 	loadavg(load0, sizeof load0);
+	bench_busy = atof(load0) >= BENCH_BUSY_LOAD;
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
 	for (p = 0; p < 2; p++)
@@ -587,6 +627,9 @@ int cmd_bench(int argc, char **argv)
 	              "no constant TSC: cycle columns are nan");
 	fprintf(f.f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
 	             "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
+	fprintf(f.f, "# flag: load = an all-threads row begun at a 1-minute load average >= %g (other processes took CPU "
+	             "time: a lower bound)%s; spread = median time > %g x the minimum over the repetitions; ok otherwise\n",
+	        BENCH_BUSY_LOAD, bench_busy ? ", as in this run" : "", BENCH_WIDE_SPREAD);
 	if (tsc)
 		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
 	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
@@ -623,6 +666,7 @@ int cmd_bench(int argc, char **argv)
 		       onb_batch_isa(), bench_yardstick_isa(), bench_calls_isa(), o.threads,
 		       tsc ? "constant" : "not constant (no cycles)", load0, load1);
 		print_table(&o, &rs);
+		flag_notes(&o, &rs, load0);
 	}
 	fprintf(stderr, "onbstudy: wrote %s/bench.csv (%zu rows, %.1f s)\n", out, rs.n, bench_now() - t0);
 	free(rs.v);

@@ -27,33 +27,17 @@
 #include "indep.h"
 
 #define IND_PI 3.14159265358979323846
-typedef void (*fn_d)(onb_vec3, onb_vec3 *, onb_vec3 *);
-typedef void (*fn_f)(onb_vec3f, onb_vec3f *, onb_vec3f *);
-static const struct { const char *name; fn_d d; fn_f f; int id, k; } T[] = {
-	{ "naive", onb_naive, onb_naivef, IM_NAIVE, IND_RSQRT },
-	{ "naive_invsqrt", onb_naive_invsqrt, onb_naive_invsqrtf, IM_NAIVE, IND_INVSQRT },
-	{ "naive_rsqrt", onb_naive_rsqrt, onb_naive_rsqrtf, IM_NAIVE, IND_SSE },
-	{ "naive_rsqrt_nr", onb_naive_rsqrt_nr, onb_naive_rsqrt_nrf, IM_NAIVE, IND_SSE_1N },
-	{ "naive_nonorm", onb_naive_nonorm, onb_naive_nonormf, IM_NAIVE, IND_NONE },
-	{ "hughes_moeller", onb_hughes_moeller, onb_hughes_moellerf, IM_HM, IND_RSQRT },
-	{ "hughes_moeller_invsqrt", onb_hughes_moeller_invsqrt, onb_hughes_moeller_invsqrtf, IM_HM, IND_INVSQRT },
-	{ "hughes_moeller_rsqrt", onb_hughes_moeller_rsqrt, onb_hughes_moeller_rsqrtf, IM_HM, IND_SSE },
-	{ "hughes_moeller_rsqrt_nr", onb_hughes_moeller_rsqrt_nr, onb_hughes_moeller_rsqrt_nrf, IM_HM, IND_SSE_1N },
-	{ "hughes_moeller_nonorm", onb_hughes_moeller_nonorm, onb_hughes_moeller_nonormf, IM_HM, IND_NONE },
-	{ "frisvad", onb_frisvad, onb_frisvadf, IM_FRISVAD, 0 },
-	{ "frisvad_max", onb_frisvad_max, onb_frisvad_maxf, IM_FRISVAD_MAX, 0 },
-	{ "duff", onb_duff, onb_dufff, IM_DUFF, 0 },
-	{ "duff_branchless", onb_duff_branchless, onb_duff_branchlessf, IM_DUFF_BL, 0 },
-	{ "stark", onb_stark, onb_starkf, IM_STARK, 0 },
-	{ "stark_fixed", onb_stark_fixed, onb_stark_fixedf, IM_STARK_FIXED, 0 },
-	{ "pbrt_v3", onb_pbrt_v3, onb_pbrt_v3f, IM_PBRT3, 0 },
-	{ "rtow", onb_rtow, onb_rtowf, IM_RTOW, 0 },
-	{ "tangent_cross_z", onb_tangent_cross_z, onb_tangent_cross_zf, IM_BLOG, 0 },
-	/* float only (ONB_FLOAT_ONLY): no double function */
-	{ "duff_wide", NULL, onb_duff_widef, IM_DUFF_WIDE, 0 },
-	{ "duff_comp", NULL, onb_duff_compf, IM_DUFF_COMP, 0 },
-};
-#define NT (sizeof T / sizeof T[0])
+#ifdef INDEP_SPLIT
+/* scripts/mutate.sh: the table comes from tests/indep_lib.c, built against
+   the mutated header, and this file is compiled once */
+#include "indep_table.h"
+const indep_row *indep_rows(size_t *n);
+static const indep_row *T;
+static size_t NT;
+#else
+#define INDEP_TABLE_DEFINE
+#include "indep_table.h"
+#endif
 
 /* ---- inputs ---- */
 typedef struct { double *x, *y, *z; size_t n, cap; int fl; } inset;
@@ -325,6 +309,9 @@ int main(int argc, char **argv)
 	double *bod;
 	long fails = 0;
 	size_t t, i;
+#ifdef INDEP_SPLIT
+	T = indep_rows(&NT);
+#endif
 	if (coverage())
 		return 1;
 	if (quick)

@@ -107,6 +107,12 @@ generate() {
 		}
 		print "findings: no threshold " p " " key " " field > "/dev/stderr"; bad = 1; return "?"
 	}
+	# " [lo, hi]" when summary.csv has the 95% interval columns (issue 11)
+	function CI(m, p, d, c,   k) {
+		k = m SUBSEP p SUBSEP d
+		if (!((k, c "_lo") in SUM) || SUM[k, c "_lo"] == "" || SUM[k, c "_lo"] ~ /nan/) return ""
+		return " [" fmt(SUM[k, c "_lo"]) ", " fmt(SUM[k, c "_hi"]) "]"
+	}
 	function table_accuracy(p,   out, k, m, dl, nd, i, d, nf, wr, line) {
 		nd = split("uniform north south exhaustive threshold nonunit", dl, " ")
 		out = "| method | RMSE, uniform | max uniform | max north | max south | max exhaustive | max threshold | max non-unit | max ulp, uniform | non-finite | wrong-handed |\n"
@@ -114,7 +120,7 @@ generate() {
 		for (i = 1; i <= nmeth; i++) {
 			m = meth[i]
 			if (!((m SUBSEP p SUBSEP "uniform", "rmse") in SUM)) continue
-			line = "| `" m "` | " S(m, p, "uniform", "rmse")
+			line = "| `" m "` | " S(m, p, "uniform", "rmse") CI(m, p, "uniform", "rmse")
 			nf = 0; wr = 0
 			for (k = 1; k <= nd; k++) {
 				d = dl[k]

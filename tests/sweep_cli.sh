@@ -100,5 +100,21 @@ echo "garbage" > "$T/g.bin"
 [ $rc -eq 3 ] && grep -q "disagrees" "$T/err" && ok || bad "--ref-bits 64 must fail the two-precision check (exit $rc)"
 [ ! -e "$T/rb/summary.csv" ] && ok || bad "a failed precision check wrote summary.csv"
 
+# 95% intervals (issue 11): two seeds at a reduced size agree within their
+# intervals (they overlap) for frisvad, whose uniform error is heavy-tailed
+# near -z, and duff; the interval holds its estimate
+for s in 1 2; do
+	./onbstudy sweep --methods frisvad,duff --precision float --dists uniform --samples 6144 --seed $s --quiet \
+		--out "$T/ci$s" >/dev/null 2>"$T/eci" || bad "sweep --seed $s failed: $(cat "$T/eci")"
+done
+ci_col() { awk -F, -v m="$2" -v c="$3" '/^#/ { next } $1 == "method" { for (i = 1; i <= NF; i++) h[$i] = i; next } $1 == m { print $h[c] }' "$1/summary.csv"; }
+for m in frisvad duff; do
+	e1=$(ci_col "$T/ci1" $m rmse); l1=$(ci_col "$T/ci1" $m rmse_lo); h1=$(ci_col "$T/ci1" $m rmse_hi)
+	e2=$(ci_col "$T/ci2" $m rmse); l2=$(ci_col "$T/ci2" $m rmse_lo); h2=$(ci_col "$T/ci2" $m rmse_hi)
+	if awk -v e1="$e1" -v l1="$l1" -v h1="$h1" -v e2="$e2" -v l2="$l2" -v h2="$h2" 'BEGIN {
+		exit !(l1 + 0 > 0 && l1 + 0 <= e1 + 0 && e1 + 0 <= h1 + 0 && l2 + 0 <= e2 + 0 && e2 + 0 <= h2 + 0 && l1 + 0 <= h2 + 0 && l2 + 0 <= h1 + 0 && (h1 - l1) / 2 <= 0.25 * e1) }'
+	then ok; else bad "$m float uniform rmse: seed 1 $e1 [$l1, $h1], seed 2 $e2 [$l2, $h2] do not agree"; fi
+done
+
 echo "sweep_cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

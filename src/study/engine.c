@@ -175,6 +175,7 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 				e->fail = ENGINE_DISAGREE;
 			}
 		}
+		m.stratum = dist_stratum(&e->ds[p][d], idx);
 		cell_add(&w->loc[k], idx, &m, n, 0);
 		if (d == DIST_GRID) {
 			const size_t j = ((size_t)p * (size_t)cfg->nk + (size_t)k) * GG + (size_t)aux;

@@ -240,6 +240,24 @@ static void on_sphere(long double z, long double phi, long double scale, int pre
 
 #define TWO_PI 6.283185307179586476925L
 
+static void strat_edges(int h, long double *lo, long double *hi)
+{
+	*lo = h ? ldexpl(1.0L, h - NSTRAT + 1) : 0.0L;
+	*hi = ldexpl(1.0L, h - NSTRAT + 2);
+}
+int dist_stratum(const dist_spec *d, uint64_t i)
+{
+	return d->dist == DIST_UNIFORM ? (int)(i % NSTRAT) : 0;
+}
+double dist_stratum_weight(int dist, int h)
+{
+	long double lo, hi;
+	if (dist != DIST_UNIFORM)
+		return h == 0 ? 1.0 : 0.0;
+	strat_edges(h, &lo, &hi);
+	return (double)((hi - lo) / 2.0L);
+}
+
 void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], double *aux)
 {
 	const uint64_t S = d->seed;
@@ -247,9 +265,13 @@ void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], dou
 	const double eps = P == PREC_FLOAT ? FLT_EPSILON : DBL_EPSILON;
 	*aux = 0.0;
 	switch (d->dist) {
-	case DIST_UNIFORM:
-		on_sphere(1.0L - 2.0L * rng_u01(S, 1, i), TWO_PI * rng_u01(S, 2, i), 1.0L, P, n);
+	case DIST_UNIFORM: {
+		/* stratified in 1 + n.z (inputs.h): uniform within stratum i mod NSTRAT */
+		long double lo, hi;
+		strat_edges((int)(i % NSTRAT), &lo, &hi);
+		on_sphere(lo + (hi - lo) * rng_u01(S, 1, i) - 1.0L, TWO_PI * rng_u01(S, 2, i), 1.0L, P, n);
 		break;
+	}
 	case DIST_NORTH:
 	case DIST_SOUTH: {
 		const double lo = log10(eps), hi = -1.0;

@@ -46,6 +46,16 @@ void dist_free(dist_spec *d);
    error (cosine-weighted, rounded), and aux (nonunit: d; grid: cell). */
 void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], double *aux);
 
+/* Strata of the uniform distribution (issue 11): input i lies in stratum
+   i mod NSTRAT of u = 1 + n.z, [2^(h-NSTRAT+1), 2^(h-NSTRAT+2)) for h >= 1
+   and [0, 2^(2-NSTRAT)) for h = 0, uniform within it: finer towards -z,
+   where Frisvad's error lives.  Estimates combine the strata with their
+   exact probabilities (dist_stratum_weight).  Other distributions are one
+   stratum of weight 1. */
+#define NSTRAT 24
+int dist_stratum(const dist_spec *d, uint64_t i);
+double dist_stratum_weight(int dist, int h);
+
 /* The value k representable steps above x in the format (k may be < 0). */
 double fmt_step(double x, int64_t k, int prec);
 double fmt_round(double x, int prec);

@@ -30,6 +30,7 @@ enum { DEF_N1 = 0, DEF_N2, DEF_D1N, DEF_D2N, DEF_D12, NDEF };
 
 typedef struct {
 	int branch;          /* branch id the kernel took (branch.inc)               */
+	int stratum;         /* the input's stratum (inputs.h), set by the engine    */
 	int nonfinite;       /* an output was NaN or infinite: no other metric       */
 	int wrong_hand;      /* det(b1, b2, n) * handedness <= 0                     */
 	int has_basis;       /* 0 for frisvad_rotate (direction metrics only)        */

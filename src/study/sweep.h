@@ -39,12 +39,23 @@ typedef struct {
 	double defect, ulp, bits_max, dir_norm, dir_cos;
 } worst_t;
 
+/* Per stratum (inputs.h NSTRAT) sums for the estimates and their 95%
+   intervals: the per-input quantities Q_* (their sum s and sum of squares
+   s2), and for mean_bits the ratio's x = bits, y = components. */
+enum { Q_SQ = 0, Q_DEF2, Q_DIRC2, Q_DUFF, NQ };
+typedef struct {
+	uint64_t n, by, by2;  /* finite inputs; sum of y and y^2 (integers)   */
+	fx s[NQ], s2[NQ];
+	fx bx, bx2, bxy;      /* bits: sum of x, x^2, x y                      */
+} stratum_t;
+
 typedef struct {
 	uint64_t count, finite, nonfinite, wrong, comps;
 	fx sumsq, sumdef2, bits, dirn2, dirc2;
 	double max_defect, max_ulp, max_abs_eps, max_bits, max_in_norm, max_dir_norm, max_dir_cos;
 	fx duffms;           /* Duff et al. 2017 footnote 1: sum of the per-input mean squares */
 	double max_duff_rms; /* ... and the largest per-input root of it                     */
+	stratum_t st[NSTRAT];
 	worst_t worst[NWORST];
 	bin_t bins[NBINS];
 } cell_t;

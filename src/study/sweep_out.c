@@ -210,9 +210,61 @@ static void header(FILE *f, const sweep_state *s, int threads, double seconds, i
 		fprintf(f, "# PARTIAL: the run was interrupted; these figures cover only the inputs done before the signal\n");
 }
 
-static double sqrt_mean(const fx *sum, uint64_t n)
+/* The stratified estimate of the mean of quantity q (Q_*) over the cell's
+   finite inputs, each stratum with its exact weight (inputs.h), and the
+   half-width of its 95% interval (normal, from the strata variances:
+   var = sum w_h^2 s_h^2 / n_h).  Strata with no input are left out and the
+   weights renormalized.  One stratum of weight 1 gives the plain mean. */
+static double st_mean(const cell_t *c, int d, int q, double *hw)
 {
-	return n ? sqrt(fx_value(sum) / (double)n) : NAN;
+	double W = 0.0, m = 0.0, v = 0.0;
+	int h;
+	for (h = 0; h < NSTRAT; h++) {
+		const stratum_t *t = &c->st[h];
+		const double w = dist_stratum_weight(d, h), n = (double)t->n;
+		double mh, vh;
+		if (!t->n || w == 0.0)
+			continue;
+		mh = fx_value(&t->s[q]) / n;
+		vh = t->n > 1 ? fmax(0.0, fx_value(&t->s2[q]) / n - mh * mh) * n / (n - 1.0) : 0.0;
+		W += w; m += w * mh; v += w * w * vh / n;
+	}
+	*hw = W > 0.0 ? 1.96 * sqrt(v) / W : NAN;
+	return W > 0.0 ? m / W : NAN;
+}
+/* The same for mean_bits = bits / components, a ratio per stratum
+   (variance of x - R y, the delta method) */
+static double st_bits(const cell_t *c, int d, double *hw)
+{
+	double W = 0.0, m = 0.0, v = 0.0;
+	int h;
+	for (h = 0; h < NSTRAT; h++) {
+		const stratum_t *t = &c->st[h];
+		const double w = dist_stratum_weight(d, h), n = (double)t->n, y = (double)t->by;
+		double r, vh;
+		if (!t->n || !t->by || w == 0.0)
+			continue;
+		r = fx_value(&t->bx) / y;
+		vh = fmax(0.0, fx_value(&t->bx2) - 2.0 * r * fx_value(&t->bxy) + r * r * (double)t->by2);
+		vh = t->n > 1 ? vh / (n - 1.0) / ((y / n) * (y / n)) : 0.0;
+		W += w; m += w * r; v += w * w * vh / n;
+	}
+	*hw = W > 0.0 ? 1.96 * sqrt(v) / W : NAN;
+	return W > 0.0 ? m / W : NAN;
+}
+/* root of a stratified mean, with the interval's ends as roots too */
+static double st_root(const cell_t *c, int d, int q, double *lo, double *hi)
+{
+	double hw, m = st_mean(c, d, q, &hw);
+	*lo = sqrt(fmax(0.0, m - hw));
+	*hi = sqrt(m + hw);
+	return sqrt(m);
+}
+
+static double st_rmse(const cell_t *c, int d)
+{
+	double lo, hi;
+	return st_root(c, d, Q_SQ, &lo, &hi);
 }
 
 static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, double jump)
@@ -220,18 +272,23 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
 	const int basis = s->kernels[k].m != NULL;
 	const double nan = NAN;
-	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+	double r[4], lo[4], hi[4], bits, bhw;
+	int q;
+	for (q = 0; q < 4; q++)
+		r[q] = st_root(c, d, q == 0 ? Q_SQ : q == 1 ? Q_DEF2 : q == 2 ? Q_DIRC2 : Q_DUFF, &lo[q], &hi[q]);
+	if (!basis)
+		r[0] = lo[0] = hi[0] = r[1] = lo[1] = hi[1] = r[3] = lo[3] = hi[3] = nan;
+	bits = st_bits(c, d, &bhw);
+	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,"
+	           "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
 	        s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count,
-	        basis ? sqrt_mean(&c->sumsq, 5 * c->finite) : nan,
-	        basis ? (c->finite ? c->max_defect : nan) : nan,
-	        c->finite ? c->max_ulp : nan,
-	        c->comps ? fx_value(&c->bits) / (double)c->comps : nan,
-	        (unsigned long long)c->wrong, (unsigned long long)c->nonfinite,
-	        basis ? sqrt_mean(&c->sumdef2, c->finite) : nan,
+	        r[0], basis ? (c->finite ? c->max_defect : nan) : nan,
+	        c->finite ? c->max_ulp : nan, bits,
+	        (unsigned long long)c->wrong, (unsigned long long)c->nonfinite, r[1],
 	        c->finite ? c->max_abs_eps : nan, c->finite ? c->max_bits : nan, c->max_in_norm,
 	        c->finite ? c->max_dir_norm : nan, c->finite ? c->max_dir_cos : nan,
-	        sqrt_mean(&c->dirc2, c->finite), jump,
-	        basis ? sqrt_mean(&c->duffms, c->finite) : nan, basis && c->finite ? c->max_duff_rms : nan);
+	        r[2], jump, r[3], basis && c->finite ? c->max_duff_rms : nan,
+	        lo[0], hi[0], lo[1], hi[1], bits - bhw, bits + bhw, lo[2], hi[2], lo[3], hi[3]);
 }
 
 /* reference.csv: the fast reference's fallback rate per method and precision. */
@@ -255,7 +312,8 @@ static int write_reference(const sweep_state *s, const char *dir, const char *na
 }
 
 #define SUMMARY_COLUMNS "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite," \
-	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump,duff_rms,max_duff_rms"
+	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump,duff_rms,max_duff_rms," \
+	"rmse_lo,rmse_hi,rms_defect_lo,rms_defect_hi,mean_bits_lo,mean_bits_hi,rms_dir_cos_lo,rms_dir_cos_hi,duff_rms_lo,duff_rms_hi"
 
 static int write_summary(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
 {
@@ -267,6 +325,7 @@ static int write_summary(const sweep_state *s, const char *dir, const char *name
 	fprintf(o.f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
 	fprintf(o.f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
 	fprintf(o.f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
+	fprintf(o.f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns)\n", NSTRAT, NSTRAT);
 	fprintf(o.f, "%s\n", SUMMARY_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
@@ -405,7 +464,7 @@ static void print_table(const sweep_state *s)
 			if (!on(s, p, k))
 				continue;
 			printf("%-28s %-6s %10.3g", s->kernels[k].name, prec_name(p),
-			       basis && s->cfg.dist_on[DIST_UNIFORM] ? sqrt_mean(&u->sumsq, 5 * u->finite) : NAN);
+			       basis && s->cfg.dist_on[DIST_UNIFORM] ? st_rmse(u, DIST_UNIFORM) : NAN);
 			for (d = 0; d < NDIST; d++) {
 				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
 				if (!s->cfg.dist_on[d])
@@ -440,7 +499,7 @@ static void print_csv(const sweep_state *s, int json)
 					continue;
 				if (json) {
 					const int basis = s->kernels[k].m != NULL;
-					const double rmse = basis ? sqrt_mean(&c->sumsq, 5 * c->finite) : NAN;
+					const double rmse = basis ? st_rmse(c, d) : NAN;
 					const double mx = basis ? c->max_defect : NAN;
 					printf("%s  {\"method\": \"%s\", \"precision\": \"%s\", \"distribution\": \"%s\", \"samples\": %llu, ",
 					       first ? "" : ",\n", s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count);

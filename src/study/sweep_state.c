@@ -59,6 +59,35 @@ static void worst_insert(cell_t *c, const worst_t *w)
 
 static double dmax(double a, double b) { return b > a ? b : a; }
 
+static void stratum_merge(stratum_t *d, const stratum_t *s)
+{
+	int q;
+	d->n += s->n; d->by += s->by; d->by2 += s->by2;
+	for (q = 0; q < NQ; q++) { fx_add(&d->s[q], &s->s[q]); fx_add(&d->s2[q], &s->s2[q]); }
+	fx_add(&d->bx, &s->bx); fx_add(&d->bx2, &s->bx2); fx_add(&d->bxy, &s->bxy);
+}
+
+/* One finite input into its stratum: the estimates' per-input quantities */
+static void stratum_add(stratum_t *t, const sample_metrics *m)
+{
+	double q[NQ];
+	int k;
+	t->n++;
+	q[Q_SQ] = m->has_basis ? m->sumsq / 5.0 : 0.0;
+	q[Q_DEF2] = m->has_basis ? m->defect * m->defect : 0.0;
+	q[Q_DIRC2] = m->dir_cos * m->dir_cos;
+	q[Q_DUFF] = m->has_basis ? (m->in_norm * m->in_norm + m->sumsq) / 6.0 : 0.0;
+	for (k = 0; k < NQ; k++) {
+		fx_add_double(&t->s[k], q[k]);
+		fx_add_double(&t->s2[k], q[k] * q[k]);
+	}
+	t->by += (uint64_t)m->nbits;
+	t->by2 += (uint64_t)m->nbits * (uint64_t)m->nbits;
+	fx_add_double(&t->bx, m->bits_sum);
+	fx_add_double(&t->bx2, m->bits_sum * m->bits_sum);
+	fx_add_double(&t->bxy, m->bits_sum * m->nbits);
+}
+
 void cell_merge(cell_t *d, const cell_t *s)
 {
 	int i;
@@ -75,6 +104,8 @@ void cell_merge(cell_t *d, const cell_t *s)
 	d->max_dir_cos = dmax(d->max_dir_cos, s->max_dir_cos);
 	fx_add(&d->duffms, &s->duffms);
 	d->max_duff_rms = dmax(d->max_duff_rms, s->max_duff_rms);
+	for (i = 0; i < NSTRAT; i++)
+		stratum_merge(&d->st[i], &s->st[i]);
 	for (i = 0; i < NWORST; i++)
 		if (s->worst[i].index != UINT64_MAX)
 			worst_insert(d, &s->worst[i]);
@@ -138,6 +169,8 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		}
 		c->comps += (uint64_t)m->nbits;
 		fx_add_double(&c->bits, m->bits_sum);
+		if (m->stratum >= 0 && m->stratum < NSTRAT)
+			stratum_add(&c->st[m->stratum], m);
 		c->max_ulp = dmax(c->max_ulp, m->ulp_max);
 		c->max_abs_eps = dmax(c->max_abs_eps, m->abs_eps_max);
 		c->max_bits = dmax(c->max_bits, m->bits_max);

@@ -411,12 +411,12 @@ static int sparse(gltf *g, long long ai, const cJSON *sp, size_t count, int nc, 
 	int rc = -1;
 	if (!cJSON_IsObject(sp) || !cJSON_IsObject(io) || !cJSON_IsObject(vo))
 		return mio_fail(g->c, "accessor %lld: sparse needs objects 'indices' and 'values'", ai);
-	if (jint(g, sp, "accessor", (long)ai, "sparse.count", -1, 1, (long long)count, &n) != 0
-	    || jint(g, io, "accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &ibv) != 0
-	    || jint(g, io, "accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &ioff) != 0
-	    || jint(g, io, "accessor", (long)ai, "componentType", -1, 5120, 5126, &ict) != 0
-	    || jint(g, vo, "accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &vbv) != 0
-	    || jint(g, vo, "accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &voff) != 0)
+	if (jint(g, sp, "sparse of accessor", (long)ai, "count", -1, 1, (long long)count, &n) != 0
+	    || jint(g, io, "sparse.indices of accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &ibv) != 0
+	    || jint(g, io, "sparse.indices of accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &ioff) != 0
+	    || jint(g, io, "sparse.indices of accessor", (long)ai, "componentType", -1, 5120, 5126, &ict) != 0
+	    || jint(g, vo, "sparse.values of accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &vbv) != 0
+	    || jint(g, vo, "sparse.values of accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &voff) != 0)
 		return -1;
 	if (ct_ok(ACC_INDEX, ict, 0))
 		return mio_fail(g->c, "accessor %lld: sparse indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT", ai);

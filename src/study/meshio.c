@@ -1353,9 +1353,9 @@ void mesh_where(const mesh_normals *m, size_t i, char *buf, size_t n)
 		snprintf(buf, n, "line %llu%s", (unsigned long long)m->where[i],
 		         m->origin == MESH_COMPUTED ? " (the 'v' of a vertex with a computed normal)" : "");
 	else if (m->format == MESH_GLTF)
-		snprintf(buf, n, "%s %llu primitive %llu vertex %llu%s", m->world ? "node" : "mesh",
+		snprintf(buf, n, "%s %llu primitive %llu vertex %llu", m->world ? "node" : "mesh",
 		         (unsigned long long)(m->where[i] >> 40), (unsigned long long)((m->where[i] >> 32) & 0xff),
-		         (unsigned long long)(m->where[i] & 0xffffffffu), m->index[i] ? " (computed)" : "");
+		         (unsigned long long)(m->where[i] & 0xffffffffu));
 	else
 		snprintf(buf, n, "%s %zu at byte %llu", m->element[0] ? m->element : "element", m->index[i],
 		         (unsigned long long)m->where[i]);

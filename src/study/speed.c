@@ -238,7 +238,7 @@ static int measure(int dbl, int reps, speed_table *t)
 	for (i = 0; i < nm; i++) {
 		s.batch = ms[i].batch;
 		s.batchf = ms[i].batchf;
-		inner[i] = bench_calibrate(bench_soa_kernel, &s, SPEED_N, 1, 0.005, 100000);
+		inner[i] = bench_calibrate(bench_soa_kernel, &s, SPEED_N, 1, 0.02, 100000);
 	}
 	for (r = 0; r < reps; r++)
 		for (i = 0; i < nm; i++) {
@@ -284,7 +284,7 @@ static int write_cache(const char *path, int dbl, int reps, const speed_table *t
 	study_provenance(o.f, "scene --refresh-speed", 1, 1);
 	fprintf(o.f, "# what: batch kernel throughput, %s, 1 thread, %d uniform directions (L2-resident), M bases/s\n",
 	        dbl ? "double" : "float", SPEED_N);
-	fprintf(o.f, "# repetitions: %d (round-robin over the methods, each >= 5 ms after a warm-up pass)\n", reps);
+	fprintf(o.f, "# repetitions: %d (round-robin over the methods, each >= 20 ms after a warm-up pass)\n", reps);
 	fprintf(o.f, "# interval: lo, hi = order statistics %d and %d of %d: a distribution-free confidence interval of the median (>= 95%% for 6 or more repetitions)\n",
 	        speed_ci_rank(reps), reps + 1 - speed_ci_rank(reps), reps);
 	fprintf(o.f, "method,precision,mode,threads,size_class,reps,mbases_per_s,lo,hi\n");

@@ -56,6 +56,11 @@ static void geom(const uint8_t *data, size_t size)
 	size_t i;
 	int rc = mesh_read_geom_mem("fuzz.obj", data, size, &m, &g, err, sizeof err);
 	int rc2 = mesh_read_mem("fuzz.obj", data, size, &m2, err2, sizeof err2);
+	if (rc != 0 && rc2 == 0 && strstr(err, "geometry is read from")) {
+		/* content that is PLY: no geometry from it */
+		mesh_free(&m2);
+		return;
+	}
 	if (rc != rc2)
 		abort();
 	if (rc != 0) {

@@ -17,10 +17,13 @@
  *     onb_frisvad_max      onb_frisvad_maxf       Max 2017 threshold
  *     onb_duff             onb_dufff              Duff et al. 2017 Listing 2
  *     onb_duff_branchless  onb_duff_branchlessf   Duff et al. 2017 Listing 3
- *     onb_stark            onb_starkf             Stark 2009
+ *     onb_stark            onb_starkf             Stark 2009, as published
+ *     onb_stark_fixed      onb_stark_fixedf         + Hill 2011's zm fix
  *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
  *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
  *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
+ *     (float only)         onb_duff_widef         this project: Duff in double
+ *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
  *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
  *                      onb_basis_checked[f]      normalize + status + method
@@ -464,36 +467,38 @@ static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 
 /* ------------------------------------------------------------------ */
 /* stark (Stark 2009, JGT 14(1), "Efficient construction of            */
-/* perpendicular vectors without branching")                           */
+/* perpendicular vectors without branching"), as published             */
 /* ------------------------------------------------------------------ */
-/* p = cross(n, e_k), where e_k is the axis of n's smallest |component|,
-   chosen by Stark's comparisons on differences of absolute values:
-   xm = (|x| - |y| < 0) && (|x| - |z| < 0), ym = (|y| - |z| < 0) ^ xm
-   restricted to !xm, zm = !(xm | ym), made 0.0 or 1.0 by a select (not
-   an int-to-float conversion, which keeps GCC's SSE2 double loop scalar).
-   Then (our completion, as the
-   issue reads it) b1 = p / |p| with 1/sqrt, b2 = cross(n, b1).
-   Handedness +1.  Thresholds: |x| = |y|, |x| = |z|, |y| = |z|.  No
-   singular unit direction: |p|^2 >= 2/3 - O(eps).
-   Bound (tests/test_lib.c): D <= 12u. */
-static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p)
+/* p = cross(n, (xm, ym, zm)) with Stark's branch-free listing:
+   uyx = SIGNBIT(|x| - |y|), uzx = SIGNBIT(|x| - |z|), uzy = SIGNBIT(|y| -
+   |z|), xm = uyx & uzx, ym = (1^xm) & uzy, zm = 1^(xm & ym).  Since xm and
+   ym are never both 1, the published zm is always 1 (Hill 2011, "Perpendicular
+   Possibilities", points this out: the intent is 1^(xm | ym), which is
+   `stark_fixed`).  So e = (1,0,1) when |x| is smallest, (0,1,1) when |y|
+   is, (0,0,1) otherwise.  SIGNBIT of a difference of two absolute values
+   is `< 0` (x - x = +0); the uint-to-float conversion of 0 and 1 is a
+   select.  Then (our completion, as the issue reads it) b1 = p / |p| with
+   1/sqrt, b2 = cross(n, b1).  Handedness +1.  Thresholds: |x| = |y|,
+   |x| = |z|, |y| = |z|.  No singular unit direction: |p|^2 >= 2/3 -
+   O(eps).  Bound (tests/test_lib.c): D <= 12u. */
+static inline double onb__stark_pre(onb_vec3 n, onb_vec3 *p, int fixed)
 {
 	const double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
 	const int xm = (ax - ay < 0.0) & (ax - az < 0.0);
 	const int ym = (ay - az < 0.0) & !xm;
-	const int zm = !(xm | ym);
+	const int zm = fixed ? !(xm | ym) : !(xm & ym);
 	const double ex = xm ? 1.0 : 0.0, ey = ym ? 1.0 : 0.0, ez = zm ? 1.0 : 0.0;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
 	p->z = n.x * ey - n.y * ex;
 	return p->x * p->x + p->y * p->y + p->z * p->z;
 }
-static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
+static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p, int fixed)
 {
 	const float ax = fabsf(n.x), ay = fabsf(n.y), az = fabsf(n.z);
 	const int xm = (ax - ay < 0.0f) & (ax - az < 0.0f);
 	const int ym = (ay - az < 0.0f) & !xm;
-	const int zm = !(xm | ym);
+	const int zm = fixed ? !(xm | ym) : !(xm & ym);
 	const float ex = xm ? 1.0f : 0.0f, ey = ym ? 1.0f : 0.0f, ez = zm ? 1.0f : 0.0f;
 	p->x = n.y * ez - n.z * ey;
 	p->y = n.z * ex - n.x * ez;
@@ -503,13 +508,30 @@ static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p)
 static inline void onb_stark(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 p;
-	const double s = 1.0 / sqrt(onb__stark_pre(n, &p));
+	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 0));
 	onb__naive_post(n, p, s, b1, b2);
 }
 static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3f p;
-	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p));
+	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 0));
+	onb__naive_postf(n, p, s, b1, b2);
+}
+
+/* stark_fixed: Stark's listing with zm = 1^(xm | ym), the correction of
+   Hill 2011 (blog.selfshadow.com/2011/10/17/perp-vectors, after Listing 3),
+   so that e_k is the axis of n's smallest |component| as Stark's text
+   says.  Otherwise as `stark`.  |p|^2 >= 2/3 - O(eps).  Bound: D <= 12u. */
+static inline void onb_stark_fixed(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 1));
+	onb__naive_post(n, p, s, b1, b2);
+}
+static inline void onb_stark_fixedf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 1));
 	onb__naive_postf(n, p, s, b1, b2);
 }
 
@@ -519,7 +541,12 @@ static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 /* if |v.x| > |v.y|: b1 = (-v.z, 0, v.x) / sqrt(v.x^2 + v.z^2)
    else:            b1 = (0, v.z, -v.y) / sqrt(v.y^2 + v.z^2)
    b2 = cross(v, b1).  pbrt-v3's Vector3 operator/ multiplies by
-   inv = 1/f, which we keep.  Handedness +1.  Threshold: |x| = |y|.
+   inv = (Float)1/f, which we keep.  pbrt-v3's Cross widens both operands
+   to double, subtracts the (exact, for float operands) products in double
+   and converts the result to the vector's type: the float variant does
+   the same (the double variant is pbrt-v3 built with
+   PBRT_FLOAT_AS_DOUBLE, where the widening is a no-op).  Handedness +1.
+   Threshold: |x| = |y|.
    No singular unit direction (squared length >= 1/2 - O(eps)).
    Bound (tests/test_lib.c): D <= 12u. */
 static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
@@ -546,7 +573,14 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 		inv = 1.0f / sqrtf(n.y * n.y + n.z * n.z);
 		u.x = 0.0f * inv; u.y = n.z * inv; u.z = -n.y * inv;
 	}
-	onb__naive_postf(n, u, 1.0f, b1, b2);
+	*b1 = u;
+	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
+		   difference rounded to double, then converted to float */
+		const double vx = n.x, vy = n.y, vz = n.z, wx = u.x, wy = u.y, wz = u.z;
+		b2->x = (float)(vy * wz - vz * wy);
+		b2->y = (float)(vz * wx - vx * wz);
+		b2->z = (float)(vx * wy - vy * wx);
+	}
 }
 
 /* ------------------------------------------------------------------ */
@@ -637,6 +671,75 @@ static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 }
 
 /* ------------------------------------------------------------------ */
+/* This project's own methods (issue 16), not published ones: Duff's   */
+/* branchless formula pushed to the accuracy floor, float only         */
+/* ------------------------------------------------------------------ */
+/* The floor: the exact duff_branchless basis of the float input, rounded
+   once to float, still has a defect (the output roundings, plus the
+   input's own distance from the unit sphere); `onbstudy sweep` reports it
+   per input (README, "The accuracy floor").  Float duff_branchless sits up
+   to about 2x above it, because its products and its 1 + s x^2 a round
+   before the output does.  These two methods remove those intermediate
+   roundings.  Same branch and handedness as duff_branchless (the sign bit
+   of n.z; -0 takes the lower branch), same exact formula, so the MPFR
+   reference family is duff_branchless.  Float only: for double input the
+   analogue needs double-double arithmetic (see the README).
+   There is no double version: the registry's basis and batch are NULL
+   and its flags carry ONB_FLOAT_ONLY. */
+
+/* duff_wide: the float input widened to double, duff_branchless's formula
+   in double, each output rounded once to float.  Each output component
+   before its final rounding is within a few 2^-53 of the exact formula,
+   so it is the correctly rounded exact value except within a few 2^-53 of
+   a float rounding boundary.
+   Bound (tests/test_lib.c): D <= 12u (u = 2^-24); measured (onbstudy sweep):
+   largest defect within 1.05x of the floor's largest on every distribution. */
+static inline void onb_duff_widef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const double x = (double)n.x, y = (double)n.y, z = (double)n.z;
+	const double sign = copysign(1.0, z);
+	const double a = -1.0 / (sign + z);
+	const double b = x * y * a;
+	b1->x = (float)(1.0 + sign * x * x * a); b1->y = (float)(sign * b); b1->z = (float)(-sign * x);
+	b2->x = (float)b; b2->y = (float)(sign + y * y * a); b2->z = (float)(-y);
+}
+
+/* duff_comp: the same formula in float arithmetic, with each rounding
+   before the output compensated by error-free transformations: h = s + z
+   and its error (Fast2Sum, |s| >= |z|), a = -1/h with the division's exact
+   residual fma(a, h, 1), the products x x, x y, y y and their products
+   with a split by fma into hi + lo, and 1 + s x^2 a, s + y^2 a by
+   Fast2Sum; the lo parts are summed (in float) and added once at the end.
+   Each output is then within about u + O(u^2) relative of the exact
+   formula (faithful, correctly rounded in most cases).  Seven fmaf()
+   calls: built without an FMA target (as libonb.a's scalar code is, see
+   the Makefile) they are libm calls; the batch runs an FMA clone when the
+   CPU has FMA.  fma is correctly rounded everywhere, so the bits do not
+   depend on which.
+   Bound (tests/test_lib.c): D <= 12u. */
+static inline void onb_duff_compf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float x = n.x, y = n.y, z = n.z;
+	const float s = copysignf(1.0f, z);
+	const float h = s + z, hl = (s - h) + z;         /* s + z = h + hl          */
+	const float a = -1.0f / h;
+	const float e = fmaf(a, h, 1.0f);                /* a h + 1, exactly        */
+	const float al = a * (e + a * hl);               /* -1/(h + hl) ~ a + al    */
+	const float xx = x * x, xxl = fmaf(x, x, -xx);
+	const float xy = x * y, xyl = fmaf(x, y, -xy);
+	const float yy = y * y, yyl = fmaf(y, y, -yy);
+	const float p = xx * a, pl = fmaf(xx, a, -p) + (xx * al + xxl * a); /* x^2 a */
+	const float b = xy * a, bl = fmaf(xy, a, -b) + (xy * al + xyl * a); /* x y a */
+	const float q = yy * a, ql = fmaf(yy, a, -q) + (yy * al + yyl * a); /* y^2 a */
+	const float sp = s * p;
+	const float t1 = 1.0f + sp, t1l = (1.0f - t1) + sp; /* 1 + s x^2 a          */
+	const float t2 = s + q, t2l = (s - t2) + q;          /* s + y^2 a            */
+	const float bb = b + bl;
+	b1->x = t1 + (t1l + s * pl); b1->y = s * bb; b1->z = -s * x;
+	b2->x = bb; b2->y = t2 + (t2l + ql); b2->z = -y;
+}
+
+/* ------------------------------------------------------------------ */
 /* Out-of-line library: batch kernels and registry                     */
 /* ------------------------------------------------------------------ */
 
@@ -661,6 +764,7 @@ typedef void (*onb_batchf_fn)(size_t count,
 #define ONB_FELL_BACK    0x2u /* ...which this build lacks: runs 1/sqrt instead */
 #define ONB_APPROX_NORM  0x4u /* normalization is approximate or absent        */
 #define ONB_NORMALIZES_N 0x8u /* the method normalizes n itself (rtow)        */
+#define ONB_FLOAT_ONLY   0x10u /* float only: basis and batch (double) are NULL */
 
 typedef struct onb_method {
 	const char   *name;       /* e.g. "duff_branchless"                        */
@@ -672,9 +776,9 @@ typedef struct onb_method {
 	unsigned      flags;      /* ONB_* above                                   */
 	double        threshold;  /* Frisvad-family t, or NAN                      */
 	int           norm;       /* normalization variant, for the reference      */
-	onb_basis_fn  basis;      /* out-of-line scalar, double                    */
+	onb_basis_fn  basis;      /* out-of-line scalar, double (NULL: float only) */
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
-	onb_batch_fn  batch;      /* SoA batch, double                             */
+	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
 } onb_method;
 
@@ -692,7 +796,7 @@ typedef enum {
 	ONB_RENORMALIZED,    /* n was finite, non-zero, not unit: normalized    */
 	ONB_ZERO,            /* n was zero (or too small to normalize)          */
 	ONB_NONFINITE,       /* n had a NaN or an infinity                      */
-	ONB_BAD_METHOD       /* method was NULL                                 */
+	ONB_BAD_METHOD       /* method was NULL, or has no double (float only) */
 } onb_status;
 
 /* Relative tolerance on |n|^2 - 1 under which n is used unchanged. */
@@ -714,7 +818,7 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	X(naive) X(naive_invsqrt) X(naive_rsqrt) X(naive_rsqrt_nr) X(naive_nonorm) \
 	X(hughes_moeller) X(hughes_moeller_invsqrt) X(hughes_moeller_rsqrt) \
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
-	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(pbrt_v3) \
+	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z)
 
 #define ONB__DECLARE(m) \
@@ -726,6 +830,16 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
 ONB_METHOD_LIST(ONB__DECLARE)
 #undef ONB__DECLARE
+
+/* The float-only methods (ONB_FLOAT_ONLY), after the others in the
+   registry: out-of-line copy and batch kernel in float only. */
+#define ONB_FLOAT_METHOD_LIST(X) X(duff_wide) X(duff_comp)
+#define ONB__DECLARE_F(m) \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2); \
+	void onb_##m##_batchf(size_t count, const float *nx, const float *ny, const float *nz, \
+		float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
+#undef ONB__DECLARE_F
 
 #ifdef __cplusplus
 }

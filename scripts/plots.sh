@@ -48,13 +48,15 @@ for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
 	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; else FLOOR=1e-20; EPS=2.22e-16; fi
 	CEIL=10
-	first=$(echo "$methods" | head -1)
+	# the methods run in this precision (the float-only ones have no double rows)
+	pmethods=$(awk -F, -v p="$P" '!/^#/ && NR > 1 && $1 != "method" && $2 == p && !seen[$1]++ { print $1 }' "$RUN/summary.csv")
+	first=$(echo "$pmethods" | head -1)
 
 	# 1. error against n.z (uniform), max and RMS
 	# 2. near the south pole, max over south, exhaustive and uniform
 	# 6. against | |n| - 1 | (nonunit)
 	files1=""; files2=""; files6=""; names=""; colors=""; dashes=""
-	for m in $methods; do
+	for m in $pmethods; do
 		f1="$W/nz_${P}_$m.dat"; f2="$W/sp_${P}_$m.dat"; f6="$W/nu_${P}_$m.dat"
 		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
@@ -86,7 +88,7 @@ for P in float double; do
 	# 3. maps and continuity, from grid.csv
 	if [ -f "$RUN/grid.csv" ]; then
 		mfiles=""; mnames=""; k=0
-		for m in $methods; do
+		for m in $pmethods; do
 			f="$W/map_${P}_$m.dat"
 			awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 				function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }

@@ -14,9 +14,11 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 cols="method,precision,mode,threads,size_class,size,bytes,reps,passes,mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best,chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum"
 
-# check_csv FILE NMETHODS NYARD NPREC: prints problems, returns non-zero on any
+# check_csv FILE NMETHODS NYARD NPREC [NFLOATONLY]: prints problems, returns
+# non-zero on any.  NFLOATONLY of the methods (ONB_FLOAT_ONLY, flag 16) have
+# no double rows.
 check_csv() {
-	f=$1; nm=$2; ny=$3; np=$4
+	f=$1; nm=$2; ny=$3; np=$4; nfo=${5:-0}
 	[ -f "$f" ] || { echo "no $f"; return 1; }
 	for k in "# onbstudy" "# revision:" "# compiler:" "# flags:" "# cpu:" "# date:" "# threads:" "# command:" "# timer:" "# isa:" "# sizes:"; do
 		grep -q "^$k" "$f" || { echo "missing '$k' line"; return 1; }
@@ -26,7 +28,8 @@ check_csv() {
 	thr=$(sed -n 's/^# threads: //p' "$f")
 	tc=1; [ "$thr" -gt 1 ] && tc=2
 	# per precision: roofline 2*tc, batch nm*2*tc, yardstick ny*2*tc, calls 2*nm
-	want=$(( np * (2 * tc + nm * 2 * tc + ny * 2 * tc + 2 * nm) ))
+	# (float-only methods: float rows only)
+	want=$(( np * (2 * tc + nm * 2 * tc + ny * 2 * tc + 2 * nm) - (np - 1) * nfo * (2 * tc + 2) ))
 	grep -v '^#' "$f" | tail -n +2 | awk -F, -v want="$want" -v tc="$tc" '
 		function isnum(s) { return s ~ /^-?(nan|inf|[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?)$/ }
 		{
@@ -53,8 +56,10 @@ check_csv() {
 }
 
 nm=$(./onbstudy list --format csv | tail -n +2 | wc -l)
+nfo=$(./onbstudy list --format csv | tail -n +2 | awk -F, '{ if (int($4 / 16) % 2) n++ } END { print n + 0 }')
+[ "$nfo" -ge 2 ] && ok || bad "onbstudy list: want at least two float-only methods (flag 16), got $nfo"
 if ./onbstudy bench --quick --out "$tmp/q" >"$tmp/q.out" 2>"$tmp/q.err"; then ok; else bad "bench --quick failed: $(cat "$tmp/q.err")"; fi
-if msg=$(check_csv "$tmp/q/bench.csv" "$nm" 4 2); then ok; else bad "bench.csv (all methods, both precisions): $msg"; fi
+if msg=$(check_csv "$tmp/q/bench.csv" "$nm" 4 2 "$nfo"); then ok; else bad "bench.csv (all methods, both precisions): $msg"; fi
 grep -q 'duff_branchless' "$tmp/q.out" && ok || bad "the table on stdout lacks duff_branchless"
 ls -a "$tmp/q" | grep -q partial && bad "a temporary file was left behind" || ok
 

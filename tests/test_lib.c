@@ -62,7 +62,8 @@ typedef struct {
 	onb_basisf_fn ff;
 } inline_entry;
 #define ONB_T_INLINE(m) { #m, onb_##m, onb_##m##f },
-static const inline_entry inlines[] = { ONB_METHOD_LIST(ONB_T_INLINE) };
+#define ONB_T_INLINE_F(m) { #m, NULL, onb_##m##f },
+static const inline_entry inlines[] = { ONB_METHOD_LIST(ONB_T_INLINE) ONB_FLOAT_METHOD_LIST(ONB_T_INLINE_F) };
 #define NINLINE (sizeof inlines / sizeof inlines[0])
 
 /* splitmix64 */
@@ -197,9 +198,11 @@ static void test_random_and_axes(void)
 				if (strcmp(m->family, "tangent_cross_z") == 0 && n.z != 0.0)
 					continue;
 			}
-			m->basis(n, &b1, &b2);
-			b[0] = b1.x; b[1] = b1.y; b[2] = b1.z; b[3] = b2.x; b[4] = b2.y; b[5] = b2.z;
-			check_one(m, 1, n.x, n.y, n.z, b, 0x1p-53L, &rep_d);
+			if (m->basis) { /* NULL for the float-only methods */
+				m->basis(n, &b1, &b2);
+				b[0] = b1.x; b[1] = b1.y; b[2] = b1.z; b[3] = b2.x; b[4] = b2.y; b[5] = b2.z;
+				check_one(m, 1, n.x, n.y, n.z, b, 0x1p-53L, &rep_d);
+			}
 			nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
 			m->basisf(nf, &b1f, &b2f);
 			b[0] = b1f.x; b[1] = b1f.y; b[2] = b1f.z; b[3] = b2f.x; b[4] = b2f.y; b[5] = b2f.z;
@@ -252,23 +255,28 @@ static void test_bit_identity(void)
 		const onb_method *m = &ms[i];
 		int bad_d = 0, bad_f = 0, bad_i = 0;
 		CHECK(strcmp(m->name, inlines[i].name) == 0, "registry order %s vs header list %s", m->name, inlines[i].name);
-		m->batch(NB, nx, ny, nz, o[0], o[1], o[2], o[3], o[4], o[5]);
+		CHECK(!m->basis == !m->batch && !m->basis == !inlines[i].f && !m->basis == !!(m->flags & ONB_FLOAT_ONLY),
+		      "%s: float-only methods have neither double scalar nor double batch", m->name);
+		if (m->batch)
+			m->batch(NB, nx, ny, nz, o[0], o[1], o[2], o[3], o[4], o[5]);
 		m->batchf(NB, fx, fy, fz, of[0], of[1], of[2], of[3], of[4], of[5]);
 		for (k = 0; k < NB; k++) {
 			onb_vec3 n, b1, b2, c1, c2, w1, w2;
 			onb_vec3f nf, b1f, b2f, c1f, c2f, w1f, w2f;
 			n.x = nx[k]; n.y = ny[k]; n.z = nz[k];
 			nf.x = fx[k]; nf.y = fy[k]; nf.z = fz[k];
-			m->basis(n, &b1, &b2);
-			inlines[i].f(n, &c1, &c2);
-			w1.x = o[0][k]; w1.y = o[1][k]; w1.z = o[2][k]; w2.x = o[3][k]; w2.y = o[4][k]; w2.z = o[5][k];
-			if (!same3(b1, w1) || !same3(b2, w2)) {
-				if (!bad_d)
-					printf("  %s double batch differs at n=(%a,%a,%a): b1.x %a vs %a\n", m->name, n.x, n.y, n.z, w1.x, b1.x);
-				bad_d++;
+			if (m->basis) {
+				m->basis(n, &b1, &b2);
+				inlines[i].f(n, &c1, &c2);
+				w1.x = o[0][k]; w1.y = o[1][k]; w1.z = o[2][k]; w2.x = o[3][k]; w2.y = o[4][k]; w2.z = o[5][k];
+				if (!same3(b1, w1) || !same3(b2, w2)) {
+					if (!bad_d)
+						printf("  %s double batch differs at n=(%a,%a,%a): b1.x %a vs %a\n", m->name, n.x, n.y, n.z, w1.x, b1.x);
+					bad_d++;
+				}
+				if (!same3(b1, c1) || !same3(b2, c2))
+					bad_i++;
 			}
-			if (!same3(b1, c1) || !same3(b2, c2))
-				bad_i++;
 			m->basisf(nf, &b1f, &b2f);
 			inlines[i].ff(nf, &c1f, &c2f);
 			w1f.x = of[0][k]; w1f.y = of[1][k]; w1f.z = of[2][k]; w2f.x = of[3][k]; w2f.y = of[4][k]; w2f.z = of[5][k];
@@ -413,7 +421,14 @@ static void test_special(void)
 						continue;
 					if (strcmp(ms[i].family, "tangent_cross_z") == 0 && fabs(n.z) == 1.0)
 						continue;
-					ms[i].basis(n, &b1, &b2);
+					if (ms[i].basis) {
+						ms[i].basis(n, &b1, &b2);
+					} else { /* float only: the float frame, widened */
+						onb_vec3f vf, p1, p2;
+						vf.x = (float)n.x; vf.y = (float)n.y; vf.z = (float)n.z;
+						ms[i].basisf(vf, &p1, &p2);
+						b1.x = p1.x; b1.y = p1.y; b1.z = p1.z; b2.x = p2.x; b2.y = p2.y; b2.z = p2.z;
+					}
 					d = measure(b1.x, b1.y, b1.z, b2.x, b2.y, b2.z, n.x, n.y, n.z);
 					if (!(isfinite(b1.x) && isfinite(b1.y) && isfinite(b1.z) && isfinite(b2.x) && isfinite(b2.y) && isfinite(b2.z)
 					      && ((ms[i].flags & ONB_APPROX_NORM) || (d.len1 == 0 && d.len2 == 0)) && d.d1n == 0 && d.d2n == 0 && d.d12 == 0
@@ -486,6 +501,72 @@ static void test_checked(void)
 	CHECK(onb_find("no_such_method") == NULL && onb_find(NULL) == NULL, "onb_find: unknown names give NULL");
 }
 
+/* The float-only methods of issue 16 (this project's, not published):
+   duff_wide is duff_branchless's formula rounded once from double, so on
+   random float input it must match the formula evaluated in long double
+   and rounded once, except where a component lies within a few 2^-53 of a
+   float rounding boundary; both it and duff_comp must beat float
+   duff_branchless's largest defect clearly (the floor is about half of
+   it); the double entry points are absent and onb_basis_checked refuses
+   them. */
+#define NFLOOR 400000
+static void test_floor_methods(void)
+{
+	const onb_method *w = onb_find("duff_wide"), *c = onb_find("duff_comp"), *d0 = onb_find("duff_branchless");
+	long double mx[3] = { 0, 0, 0 };
+	int k, j, differ = 0, comp_differ = 0;
+	CHECK(w && c && d0, "duff_wide, duff_comp in the registry");
+	if (!w || !c || !d0)
+		return;
+	CHECK(!w->basis && !w->batch && !c->basis && !c->batch && (w->flags & ONB_FLOAT_ONLY) && (c->flags & ONB_FLOAT_ONLY)
+	      && !strcmp(w->family, "duff_branchless") && !strcmp(c->family, "duff_branchless"),
+	      "float-only entries: no double pointers, flag set, Duff's family");
+	{
+		onb_vec3 n = { 0.0, 0.0, 1.0 }, b1, b2;
+		CHECK(onb_basis_checked(w, n, &b1, &b2, NULL) == ONB_BAD_METHOD, "checked: float-only method in double is refused");
+	}
+	rng_state = 4242;
+	for (k = 0; k < NFLOOR; k++) {
+		onb_vec3 n = random_unit();
+		onb_vec3f nf, b1[3], b2[3];
+		long double x, y, z, s, a, want[6];
+		float got[6], gotc[6];
+		if (k < NFLOOR / 2) { /* half of them crowded near -z, as in the issue */
+			const double r = sqrt(fmax(0.0, 1.0 - n.z * n.z));
+			n.z = -1.0 + ldexp(uniform01(), -(int)(next_u64() % 24));
+			n.x = sqrt(fmax(0.0, 1.0 - n.z * n.z)) * (n.x / (r > 0.0 ? r : 1.0));
+			n.y = sqrt(fmax(0.0, 1.0 - n.z * n.z)) * (n.y / (r > 0.0 ? r : 1.0));
+		}
+		nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+		d0->basisf(nf, &b1[0], &b2[0]);
+		w->basisf(nf, &b1[1], &b2[1]);
+		c->basisf(nf, &b1[2], &b2[2]);
+		for (j = 0; j < 3; j++) {
+			defect e = measure(b1[j].x, b1[j].y, b1[j].z, b2[j].x, b2[j].y, b2[j].z, nf.x, nf.y, nf.z);
+			long double m = ldmax(fabsl(e.len1), ldmax(fabsl(e.len2), ldmax(fabsl(e.d1n), ldmax(fabsl(e.d2n), fabsl(e.d12)))));
+			mx[j] = ldmax(mx[j], m);
+		}
+		x = nf.x; y = nf.y; z = nf.z;
+		s = signbit(nf.z) ? -1.0L : 1.0L;
+		a = -1.0L / (s + z);
+		want[0] = 1.0L + s * x * x * a; want[1] = s * x * y * a; want[2] = -s * x;
+		want[3] = x * y * a; want[4] = s + y * y * a; want[5] = -y;
+		got[0] = b1[1].x; got[1] = b1[1].y; got[2] = b1[1].z; got[3] = b2[1].x; got[4] = b2[1].y; got[5] = b2[1].z;
+		gotc[0] = b1[2].x; gotc[1] = b1[2].y; gotc[2] = b1[2].z; gotc[3] = b2[2].x; gotc[4] = b2[2].y; gotc[5] = b2[2].z;
+		for (j = 0; j < 6; j++) {
+			differ += bits32(got[j]) != bits32((float)want[j]);
+			comp_differ += bits32(gotc[j]) != bits32(got[j]);
+		}
+	}
+	printf("  floor methods, %d float inputs: max defect duff_branchless %.3Lg, duff_wide %.3Lg, duff_comp %.3Lg;"
+	       " duff_wide != long double rounded once: %d of %d components; duff_comp != duff_wide: %d\n",
+	       NFLOOR, mx[0], mx[1], mx[2], differ, 6 * NFLOOR, comp_differ);
+	CHECK(differ <= 6 * NFLOOR / 10000, "duff_wide is the formula rounded once but for rare near-ties (%d differ)", differ);
+	CHECK(mx[1] <= 0.7L * mx[0], "duff_wide's largest defect %.3Lg well below duff_branchless's %.3Lg", mx[1], mx[0]);
+	CHECK(mx[2] <= 0.7L * mx[0], "duff_comp's largest defect %.3Lg well below duff_branchless's %.3Lg", mx[2], mx[0]);
+	CHECK(comp_differ <= 6 * NFLOOR / 10000, "duff_comp = duff_wide on all but a few components (%d differ)", comp_differ);
+}
+
 int main(void)
 {
 	printf("test_lib: libonb %s, batch isa %s, hw rsqrt %d\n", ONB_VERSION, onb_batch_isa(), ONB_HAVE_HW_RSQRT);
@@ -494,6 +575,7 @@ int main(void)
 	test_faithful();
 	test_special();
 	test_checked();
+	test_floor_methods();
 	printf("%d passed, %d failed\n", passed, failed);
 	return failed != 0;
 }

@@ -169,9 +169,14 @@ int main(void)
 			}
 		}
 		CHECK(bad == 0, "127 and 191 bits agree on 6000 uniform evaluations (%d disagree)", bad);
+		/* the change must be real: a defect of 0 scaled is still 0 */
 		m2 = m;
-		m2.d[DEF_D12] *= 1.0 + 0x1p-30;
-		CHECK(m2.d[DEF_D12] == m.d[DEF_D12] || !ref_agree(&m, &m2, why, sizeof why), "ref_agree notices a 2^-30 relative change");
+		m2.d[DEF_D12] = m.d[DEF_D12] != 0.0 ? m.d[DEF_D12] * (1.0 + 0x1p-30) : 0x1p-60;
+		CHECK(m2.d[DEF_D12] != m.d[DEF_D12] && !ref_agree(&m, &m2, why, sizeof why), "ref_agree notices a 2^-30 relative change");
+		m2 = m;
+		m2.ulp_max = m.ulp_max + 0.5;
+		CHECK(!ref_agree(&m, &m2, why, sizeof why), "ref_agree notices half an ulp more");
+		CHECK(ref_agree(&m, &m, why, sizeof why), "ref_agree accepts identical metrics");
 	}
 
 	/* 5. The exact accumulator: order-independent, exact on dyadic terms. */

@@ -148,9 +148,39 @@ ONB__BATCH_SIMPLE(frisvad_max)
 ONB__BATCH_SIMPLE(duff)
 ONB__BATCH_SIMPLE(duff_branchless)
 ONB__BATCH_SIMPLE(stark)
+ONB__BATCH_SIMPLE(stark_fixed)
 ONB__BATCH_SIMPLE(pbrt_v3)
 ONB__BATCH_SIMPLE(rtow)
 ONB__BATCH_SIMPLE(tangent_cross_z)
+
+/* The float-only methods of issue 16.  duff_wide converts to double and
+   back: an ordinary clone loop.  duff_comp calls fmaf(), a libm call
+   unless the code is compiled for an FMA target, so it dispatches by hand
+   to clones built with FMA (AVX-512F + FMA, AVX2 + FMA) when the CPU has
+   it, and to the baseline loop (libm fmaf) otherwise.  -ffp-contract=off
+   still holds in the FMA clones: only the explicit fmaf() calls fuse, and
+   fma is correctly rounded, so every clone gives the scalar bits. */
+ONB__BATCH_SIMPLE_F(duff_wide)
+#if ONB__HAVE_CLONES
+__attribute__((target("avx512f,fma"), noinline))
+static void onb__duff_comp_batchf_avx512f(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
+__attribute__((target("avx2,fma"), noinline))
+static void onb__duff_comp_batchf_avx2(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
+__attribute__((noinline))
+static void onb__duff_comp_batchf_default(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
+void onb_duff_comp_batchf(ONB__ARGS_F)
+{
+	__builtin_cpu_init();
+	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))
+		onb__duff_comp_batchf_avx512f(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
+	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+		onb__duff_comp_batchf_avx2(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
+	else
+		onb__duff_comp_batchf_default(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
+}
+#else
+ONB__BATCH_SIMPLE_F(duff_comp)
+#endif
 
 /* Methods with the hardware rsqrt: three passes per block, because GCC
    cannot vectorize a loop around the scalar rsqrtss intrinsic.  Pass 1
@@ -233,3 +263,7 @@ ONB__BATCH_RSQRT(hughes_moeller, _rsqrt_nr, 1)
 	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
 	{ onb_##m##f(n, b1, b2); }
 ONB_METHOD_LIST(ONB__OUTLINE)
+#define ONB__OUTLINE_F(m)                                                      \
+	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
+	{ onb_##m##f(n, b1, b2); }
+ONB_FLOAT_METHOD_LIST(ONB__OUTLINE_F)

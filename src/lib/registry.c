@@ -12,6 +12,7 @@
 #endif
 
 #define ONB__PTRS(m) onb_##m##_outline, onb_##m##_outlinef, onb_##m##_batch, onb_##m##_batchf
+#define ONB__PTRS_F(m) NULL, onb_##m##_outlinef, NULL, onb_##m##_batchf
 
 #define SRC_L1 "Frisvad 2012, JGT 16(3), Listing 1"
 #define SRC_HM "Hughes & Moller 1999, JGT 4(4), as Frisvad 2012 Listing 1"
@@ -50,14 +51,22 @@ static const onb_method onb__table[] = {
 	  "none", "n.z < 0 (-0 takes the upper branch)", +1, 0, NAN, 0, ONB__PTRS(duff) },
 	{ "duff_branchless", "duff_branchless", "Duff et al. 2017, JCGT 6(1), Listing 3 (branchlessONB; pbrt-v4, Mitsuba 3)",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, 0, ONB__PTRS(duff_branchless) },
-	{ "stark", "stark", "Stark 2009, JGT 14(1): branchless perpendicular, then 1/sqrt normalize and cross",
+	{ "stark", "stark", "Stark 2009, JGT 14(1): branch-free perpendicular as published (zm = 1^(xm & ym)), then 1/sqrt normalize and cross",
 	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark) },
+	{ "stark_fixed", "stark_fixed", "Stark 2009 with Hill 2011's fix zm = 1^(xm | ym) (axis of the smallest |component|)",
+	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark_fixed) },
 	{ "pbrt_v3", "pbrt_v3", "pbrt-v3 CoordinateSystem (src/core/geometry.h)",
 	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(pbrt_v3) },
 	{ "rtow", "rtow", "Shirley, Ray Tracing: The Rest of Your Life, onb::build_from_w",
 	  "n = 0 only (normalizes its input)", "|n.x| > 0.9", -1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(rtow) },
 	{ "tangent_cross_z", "tangent_cross_z", "sydneyzh blog, Vector transformation using projection between ONBs, get_onb",
 	  "n = +z and n = -z (0/0 = NaN); float n.x^2+n.y^2 underflow", "none", -1, 0, NAN, 0, ONB__PTRS(tangent_cross_z) },
+	/* This project's own methods (issue 16), float only: Duff's formula at
+	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
+	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_wide) },
+	{ "duff_comp", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 in float, fma-compensated products and sums",
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp) },
 };
 
 const onb_method *onb_methods(size_t *count)

@@ -67,7 +67,7 @@ typedef struct {
 } bench_opts;
 
 static const char usage_text[] =
-	"usage: onbstudy bench [options]\n"
+	"usage: onbstudy bench [options]   (options take '--opt value' or '--opt=value')\n"
 	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
 	"  --precision P          float, double or both (default both)\n"
 	"  --threads N            threads of the all-threads runs (default: OpenMP's maximum)\n"
@@ -78,118 +78,84 @@ static const char usage_text[] =
 	"  --seed S               input seed (default 1)\n"
 	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n";
 
+/* --methods a,b,...: registry methods, each once, in the order given. */
+static int bench_methods(const char *v, bench_opts *o)
+{
+	size_t nm, i;
+	int idx[64], k, n;
+	const onb_method *all = onb_methods(&nm);
+	const char *names[64];
+	if (nm > 64)
+		nm = 64;
+	for (i = 0; i < nm; i++)
+		names[i] = all[i].name;
+	if ((n = cli_name_order("--methods", v, idx, names, (int)nm)) < 0)
+		return -1;
+	o->nmeth = n;
+	for (k = 0; k < n; k++)
+		o->meth[k] = &all[idx[k]];
+	return 0;
+}
+
+static int bench_option(int v, const char *a, bench_opts *o)
+{
+	long t;
+	int on[2] = { 0, 0 };
+	switch (v) {
+	case 'q': o->quick = 1; return 0;
+	case 'm': return bench_methods(a, o);
+	case 'p': if (cli_precision("--precision", a, on)) return -1; o->prec_mask = on[0] | on[1] << 1; return 0;
+	case 't': if (parse_int("--threads", a, 1, 1024, &t) != 0) return -1; o->threads = (int)t; return 0;
+	case 'o':
+		if (!*a) {
+			study_error("--out: empty directory name");
+			return -1;
+		}
+		o->out = a;
+		return 0;
+	case 'f': return (o->csv = cli_format("--format", a, 0)) < 0 ? -1 : 0;
+	case 'S':
+		if (parse_double("--stream-mib", a, &o->stream_mib) != 0)
+			return -1;
+		if (!(o->stream_mib >= 1.0 && o->stream_mib <= 65536.0)) {
+			study_error("--stream-mib: %s is out of range [1, 65536]", a);
+			return -1;
+		}
+		return 0;
+	case 's': return parse_u64("--seed", a, 0, ~0ULL, &o->seed) != 0 ? -1 : 0;
+	}
+	return -1;
+}
+
 static int parse_opts(int argc, char **argv, bench_opts *o)
 {
-	int k;
+	static const struct option lo[] = {
+		{ "quick", no_argument, NULL, 'q' }, { "methods", required_argument, NULL, 'm' },
+		{ "precision", required_argument, NULL, 'p' }, { "threads", required_argument, NULL, 't' },
+		{ "out", required_argument, NULL, 'o' }, { "format", required_argument, NULL, 'f' },
+		{ "stream-mib", required_argument, NULL, 'S' }, { "seed", required_argument, NULL, 's' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
 	size_t nm, i;
 	const onb_method *all = onb_methods(&nm);
+	cli_args c;
+	int v, rc = 0;
 	memset(o, 0, sizeof *o);
 	o->prec_mask = 3;
 	o->threads = omp_get_max_threads();
 	o->stream_mib = -1.0;
 	o->seed = 1;
-	for (k = 0; k < argc; k++) {
-		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
-		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-			fputs(usage_text, stdout);
-			return 1;
-		} else if (strcmp(a, "--quick") == 0) {
-			o->quick = 1;
-			continue;
-		}
-		if (strcmp(a, "--methods") && strcmp(a, "--precision") && strcmp(a, "--threads") && strcmp(a, "--out") &&
-		    strcmp(a, "--format") && strcmp(a, "--stream-mib") && strcmp(a, "--seed")) {
-			study_error("bench: unknown argument '%s' (try 'onbstudy bench --help')", a);
-			return -1;
-		}
-		if (!v) {
-			study_error("bench: %s needs a value", a);
-			return -1;
-		}
-		k++;
-		if (strcmp(a, "--methods") == 0) {
-			const char *p = v;
-			if (!*p) {
-				study_error("bench: --methods: empty list");
-				return -1;
-			}
-			while (*p) {
-				char name[64];
-				size_t l = strcspn(p, ",");
-				const onb_method *m;
-				if (l == 0 || l >= sizeof name) {
-					study_error("bench: --methods: bad list '%s'", v);
-					return -1;
-				}
-				memcpy(name, p, l);
-				name[l] = '\0';
-				m = onb_find(name);
-				if (!m) {
-					study_error("bench: --methods: unknown method '%s' (see onbstudy list)", name);
-					return -1;
-				}
-				for (i = 0; i < (size_t)o->nmeth; i++)
-					if (o->meth[i] == m)
-						break;
-				if (i == (size_t)o->nmeth) {
-					if (o->nmeth == 64) {
-						study_error("bench: --methods: too many methods");
-						return -1;
-					}
-					o->meth[o->nmeth++] = m;
-				}
-				p += l;
-				if (*p == ',') {
-					p++;
-					if (!*p) {
-						study_error("bench: --methods: bad list '%s'", v);
-						return -1;
-					}
-				}
-			}
-		} else if (strcmp(a, "--precision") == 0) {
-			if (strcmp(v, "float") == 0)
-				o->prec_mask = 1;
-			else if (strcmp(v, "double") == 0)
-				o->prec_mask = 2;
-			else if (strcmp(v, "both") == 0)
-				o->prec_mask = 3;
-			else {
-				study_error("bench: --precision: expected float, double or both, got '%s'", v);
-				return -1;
-			}
-		} else if (strcmp(a, "--threads") == 0) {
-			long t;
-			if (parse_int("bench: --threads", v, 1, 1024, &t) != 0)
-				return -1;
-			o->threads = (int)t;
-		} else if (strcmp(a, "--out") == 0) {
-			if (!*v) {
-				study_error("bench: --out: empty directory name");
-				return -1;
-			}
-			o->out = v;
-		} else if (strcmp(a, "--format") == 0) {
-			if (strcmp(v, "csv") == 0)
-				o->csv = 1;
-			else if (strcmp(v, "table") == 0)
-				o->csv = 0;
-			else {
-				study_error("bench: --format: expected table or csv, got '%s'", v);
-				return -1;
-			}
-		} else if (strcmp(a, "--stream-mib") == 0) {
-			if (parse_double("bench: --stream-mib", v, &o->stream_mib) != 0)
-				return -1;
-			if (!(o->stream_mib >= 1.0 && o->stream_mib <= 65536.0)) {
-				study_error("bench: --stream-mib: %s is out of range [1, 65536]", v);
-				return -1;
-			}
-		} else if (strcmp(a, "--seed") == 0) {
-			if (parse_u64("bench: --seed", v, 0, ~0ULL, &o->seed) != 0)
-				return -1;
-		}
+	if (cli_begin(&c, "bench", argc, argv))
+		return -1;
+	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
+		if (v == CLI_HELP) { fputs(usage_text, stdout); rc = 1; }
+		else if (v == CLI_ERROR || bench_option(v, c.arg, o) != 0) rc = -1;
 	}
+	if (rc == 0 && cli_no_rest(&c) != 0)
+		rc = -1;
+	cli_end(&c);
+	if (rc)
+		return rc;
 	if (o->nmeth == 0)
 		for (i = 0; i < nm && i < 64; i++)
 			o->meth[o->nmeth++] = &all[i];
@@ -326,6 +292,8 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 	for (mi = -1; mi < o->nmeth; mi++) {
 		const bench_yardstick *y = NULL;
 		int v;
+		if (mi >= 0 && dbl && !o->meth[mi]->batch)
+			continue; /* float only (ONB_FLOAT_ONLY) */
 		if (mi >= 0)
 			for (i = 0; i < ny; i++)
 				if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
@@ -407,6 +375,8 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 		for (mi = 0; mi < o->nmeth; mi++) {
 			const bench_call *c = bench_call_find(o->meth[mi]->name);
 			bench_row *r;
+			if (dbl && !o->meth[mi]->basis)
+				continue; /* float only */
 			if (!c) {
 				study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
 				goto fail;
@@ -534,6 +504,8 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 		       "roof%", "vsYard", "vec", "call ns", "lat ns", "lat-ch");
 		for (mi = -1; mi < o->nmeth; mi++) {
 			const char *name = mi < 0 ? "copy" : o->meth[mi]->name;
+			if (mi >= 0 && p && !o->meth[mi]->batch)
+				continue; /* float only */
 			const char *mode = mi < 0 ? "roofline" : "batch";
 			const bench_row *a = find_row(rs, name, p, mode, "l2", 0);
 			const bench_row *b = find_row(rs, name, p, mode, "l2", 1);

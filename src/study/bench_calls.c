@@ -71,10 +71,37 @@ static inline void onb_chainf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { *b1 =
 ONB_METHOD_LIST(BENCH_CALLS)
 BENCH_CALLS(chain)
 
+/* The float-only methods: the float loops of BENCH_CALLS only. */
+#define BENCH_CALLS_F(m)                                                        \
+	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out);      \
+	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out)       \
+	{                                                                           \
+		size_t i;                                                               \
+		for (i = 0; i < n; i++)                                                 \
+			onb_##m##f(in[i], &out[i].b1, &out[i].b2);                          \
+	}                                                                           \
+	double bench_lat_##m##f(size_t n, const onb_vec3f *in);                     \
+	double bench_lat_##m##f(size_t n, const onb_vec3f *in)                      \
+	{                                                                           \
+		onb_vec3f b1 = { 0.0f, 0.0f, 0.0f }, b2 = { 0.0f, 0.0f, 0.0f }, v;      \
+		double s = 0.0;                                                         \
+		size_t i;                                                               \
+		for (i = 0; i < n; i++) {                                               \
+			const float t = (b1.x + b2.x) * 0.0f;                               \
+			v.x = in[i].x + t; v.y = in[i].y + t; v.z = in[i].z + t;            \
+			onb_##m##f(v, &b1, &b2);                                            \
+			s += (((double)b1.x + b1.y) + b1.z) + (((double)b2.x + b2.y) + b2.z); \
+		}                                                                       \
+		return s;                                                               \
+	}
+ONB_FLOAT_METHOD_LIST(BENCH_CALLS_F)
+
 #define BENCH_ROW(m) { #m, bench_tp_##m, bench_tp_##m##f, bench_lat_##m, bench_lat_##m##f },
 static const bench_call bench_calls[] = {
 	ONB_METHOD_LIST(BENCH_ROW)
 	BENCH_ROW(chain)
+#define BENCH_ROW_F(m) { #m, NULL, bench_tp_##m##f, NULL, bench_lat_##m##f },
+	ONB_FLOAT_METHOD_LIST(BENCH_ROW_F)
 };
 
 const bench_call *bench_call_find(const char *name)

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
+#include <ctype.h>
 #include "study.h"
 #include "kernels.h"
 #include "reference.h"
@@ -25,51 +26,128 @@ static void show3(const char *label, const double *v)
 	printf("  %-6s (%-24a %-24a %-24a)\n         (%-24.17g %-24.17g %-24.17g)\n", label, v[0], v[1], v[2], v[0], v[1], v[2]);
 }
 
+typedef struct {
+	const char *methods;
+	int prec_on[2], fma, npos;
+	long bits;
+	double in[3], loc[3];
+} eval_opts;
+
+/* A negative number ("-0.5", "-0x1p-3", "-inf") is an operand, not an option. */
+static int is_negative_number(const char *a)
+{
+	return a[0] == '-' && (isdigit((unsigned char)a[1]) || a[1] == '.' || a[1] == 'i' || a[1] == 'I' ||
+	                       a[1] == 'n' || a[1] == 'N');
+}
+
+/* Whether "--name" (a unique prefix, as getopt_long allows) needs the next argument. */
+static int takes_value(const struct option *lo, const char *a)
+{
+	size_t len;
+	int hits = 0, value = 0;
+	if (a[0] != '-' || a[1] != '-' || strchr(a, '='))
+		return 0;
+	a += 2;
+	len = strlen(a);
+	for (; lo->name; lo++)
+		if (!strncmp(lo->name, a, len)) {
+			if (strlen(lo->name) == len)
+				return lo->has_arg == required_argument;
+			hits++;
+			value = lo->has_arg == required_argument;
+		}
+	return hits == 1 && value;
+}
+
+static int eval_option(int v, const char *a, eval_opts *o)
+{
+	char tail;
+	switch (v) {
+	case 'm': o->methods = a; return 0;
+	case 'b': return parse_int("--ref-bits", a, 64, 4096, &o->bits);
+	case 'f': o->fma = 1; return 0;
+	case 'p': return cli_precision("--precision", a, o->prec_on);
+	case 'l':
+		if (sscanf(a, "%lf,%lf,%lf%c", &o->loc[0], &o->loc[1], &o->loc[2], &tail) != 3 || !isfinite(o->loc[0]) ||
+		    !isfinite(o->loc[1]) || !isfinite(o->loc[2])) {
+			study_error("--local: expected x,y,z (finite numbers), not '%s'", a);
+			return -1;
+		}
+		return 0;
+	}
+	return -1;
+}
+
+static int eval_operand(const char *a, eval_opts *o)
+{
+	if (o->npos >= 3) {
+		study_error("eval: expected exactly three numbers X Y Z");
+		return -1;
+	}
+	if (parse_double("eval", a, &o->in[o->npos]))
+		return -1;
+	o->npos++;
+	return 0;
+}
+
+/* Options and the operands X Y Z.  0; 1 after --help; ONB_EXIT_USAGE. */
+static int eval_parse(int argc, char **argv, eval_opts *o)
+{
+	static const struct option lo[] = {
+		{ "precision", required_argument, NULL, 'p' }, { "methods", required_argument, NULL, 'm' },
+		{ "ref-bits", required_argument, NULL, 'b' }, { "local", required_argument, NULL, 'l' },
+		{ "fma", no_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
+	char **opts = malloc(((size_t)argc + 1) * sizeof *opts), **rest;
+	int i, n = 0, v, rc = 0, dashdash = 0;
+	cli_args c;
+	if (!opts) { study_error("out of memory"); return 1; }
+	/* Operands (negative numbers too) are taken out in order before
+	   getopt_long sees the options; an option's value stays with it. */
+	for (i = 0; i < argc && rc == 0; i++) {
+		const char *a = argv[i];
+		if (dashdash || !(a[0] == '-' && a[1]) || is_negative_number(a)) {
+			rc = eval_operand(a, o) ? ONB_EXIT_USAGE : 0;
+		} else if (!strcmp(a, "--")) {
+			dashdash = 1;
+		} else {
+			opts[n++] = argv[i];
+			if (takes_value(lo, a) && i + 1 < argc)
+				opts[n++] = argv[++i];
+		}
+	}
+	if (rc == 0 && cli_begin(&c, "eval", n, opts) == 0) {
+		while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
+			if (v == CLI_HELP) { usage(stdout); rc = 1; }
+			else if (v == CLI_ERROR || eval_option(v, c.arg, o) != 0) rc = ONB_EXIT_USAGE;
+		}
+		rest = cli_rest(&c, &n);
+		for (i = 0; i < n && rc == 0; i++)
+			rc = eval_operand(rest[i], o) ? ONB_EXIT_USAGE : 0;
+		cli_end(&c);
+	}
+	free(opts);
+	if (rc == 0 && o->npos != 3) {
+		study_error("eval: expected three numbers X Y Z, got %d (try 'onbstudy eval --help')", o->npos);
+		rc = ONB_EXIT_USAGE;
+	}
+	return rc;
+}
+
 int cmd_eval(int argc, char **argv)
 {
-	const char *methods = NULL;
-	int prec_on[2] = { 1, 1 }, fma = 0, i, p, k, nk, npos = 0;
-	long bits = 127;
-	double in[3], loc[3] = { 0.6, 0.0, 0.8 };
+	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
+	const char *methods;
+	int prec_on[2], fma, i, p, k, nk;
+	long bits;
+	double in[3], loc[3];
 	study_kernel ks[64];
-	for (i = 0; i < argc; i++) {
-		const char *a = argv[i];
-		if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
-		if (!strcmp(a, "--precision") || !strcmp(a, "--methods") || !strcmp(a, "--ref-bits") || !strcmp(a, "--local")) {
-			const char *v;
-			if (i + 1 >= argc) { study_error("%s needs a value", a); return ONB_EXIT_USAGE; }
-			v = argv[++i];
-			if (!strcmp(a, "--methods")) methods = v;
-			else if (!strcmp(a, "--ref-bits")) { if (parse_int(a, v, 64, 4096, &bits)) return ONB_EXIT_USAGE; }
-			else if (!strcmp(a, "--local")) {
-				char tail;
-				if (sscanf(v, "%lf,%lf,%lf%c", &loc[0], &loc[1], &loc[2], &tail) != 3 || !isfinite(loc[0]) ||
-				    !isfinite(loc[1]) || !isfinite(loc[2])) {
-					study_error("--local: expected x,y,z (finite numbers), not '%s'", v);
-					return ONB_EXIT_USAGE;
-				}
-			} else {
-				prec_on[0] = !strcmp(v, "float") || !strcmp(v, "both");
-				prec_on[1] = !strcmp(v, "double") || !strcmp(v, "both");
-				if (!prec_on[0] && !prec_on[1]) { study_error("--precision: expected float, double or both, not '%s'", v); return ONB_EXIT_USAGE; }
-			}
-			continue;
-		}
-		if (!strcmp(a, "--fma")) { fma = 1; continue; }
-		if (!strcmp(a, "--")) { /* the rest are numbers */
-			for (i++; i < argc; i++) {
-				if (npos >= 3) { study_error("eval: expected exactly three numbers X Y Z"); return ONB_EXIT_USAGE; }
-				if (parse_double("eval", argv[i], &in[npos])) return ONB_EXIT_USAGE;
-				npos++;
-			}
-			break;
-		}
-		if (a[0] == '-' && a[1] == '-') { study_error("eval: unknown option '%s'", a); return ONB_EXIT_USAGE; }
-		if (npos >= 3) { study_error("eval: expected exactly three numbers X Y Z"); return ONB_EXIT_USAGE; }
-		if (parse_double("eval", a, &in[npos])) return ONB_EXIT_USAGE;
-		npos++;
-	}
-	if (npos != 3) { usage(stderr); return ONB_EXIT_USAGE; }
+	if ((i = eval_parse(argc, argv, &o)) != 0)
+		return i == 1 ? 0 : i;
+	methods = o.methods; fma = o.fma; bits = o.bits;
+	prec_on[0] = o.prec_on[0]; prec_on[1] = o.prec_on[1];
+	memcpy(in, o.in, sizeof in);
+	memcpy(loc, o.loc, sizeof loc);
 	if (fma && !fma_available()) { study_error("--fma: this CPU (or build) has no FMA"); return ONB_EXIT_USAGE; }
 	nk = kernels_select(methods, fma, ks, 64);
 	if (nk < 0)
@@ -94,6 +172,10 @@ int cmd_eval(int argc, char **argv)
 			for (k = 0; k < nk; k++) {
 				sample_metrics m, m2;
 				char why[256];
+				if (!kernel_runs(&ks[k], p)) {
+					printf("\n%s (%s): float only (no double version)\n", ks[k].name, pn);
+					continue;
+				}
 				ref_eval(rc, &ks[k], p, n, lv, 0, &m);
 				ref_eval(rc2, &ks[k], p, n, lv, 0, &m2);
 				printf("\n%s (%s), branch %d\n", ks[k].name, pn, m.branch);

@@ -18,6 +18,10 @@
 	static void fma_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_##m##f(n, b1, b2); }
 ONB_METHOD_LIST(FMA_DEF)
 #undef FMA_DEF
+#define FMA_DEF_F(m) \
+	static void fma_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_##m##f(n, b1, b2); }
+ONB_FLOAT_METHOD_LIST(FMA_DEF_F)
+#undef FMA_DEF_F
 
 static onb_vec3  fma_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
 static onb_vec3f fma_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
@@ -30,6 +34,9 @@ static const struct {
 #define FMA_ROW(m) { #m, fma_##m, fma_##m##f },
 	ONB_METHOD_LIST(FMA_ROW)
 #undef FMA_ROW
+#define FMA_ROW_F(m) { #m, NULL, fma_##m##f },
+	ONB_FLOAT_METHOD_LIST(FMA_ROW_F)
+#undef FMA_ROW_F
 };
 
 int fma_available(void)

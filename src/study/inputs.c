@@ -14,6 +14,8 @@ static const char *const names[NDIST] = {
 	"uniform", "north", "south", "threshold", "exhaustive", "nonunit", "grid"
 };
 
+const char *const *dist_names(void) { return names; }
+
 const char *dist_name(int d) { return d >= 0 && d < NDIST ? names[d] : "?"; }
 
 int dist_find(const char *name)

@@ -35,6 +35,7 @@ typedef struct {
 
 const char *dist_name(int d);
 int dist_find(const char *name);            /* -1 if unknown */
+const char *const *dist_names(void);       /* the NDIST names, in enum order */
 
 /* Build what the distribution needs (the threshold list); count is set
    here for threshold, exhaustive and grid.  0, or -1 after a message. */

@@ -18,6 +18,7 @@ static int kernels_family(const onb_method *m)
 	static const struct { const char *name; int id; } fam[] = {
 		{ "naive", FAM_NAIVE }, { "hughes_moeller", FAM_HUGHES_MOELLER }, { "frisvad", FAM_FRISVAD },
 		{ "duff", FAM_DUFF }, { "duff_branchless", FAM_DUFF_BRANCHLESS }, { "stark", FAM_STARK },
+		{ "stark_fixed", FAM_STARK_FIXED },
 		{ "pbrt_v3", FAM_PBRT_V3 }, { "rtow", FAM_RTOW }, { "tangent_cross_z", FAM_TANGENT_CROSS_Z },
 	};
 	size_t i;
@@ -34,7 +35,13 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 	study_kernel *s;
 	const onb_method *m = onb_find(name);
 	if (!m && strcmp(name, "frisvad_rotate") != 0) {
-		study_error("unknown method '%s' (see 'onbstudy list'; frisvad_rotate is also accepted)", name);
+		char all[2048];
+		size_t i, n, len = 0;
+		const onb_method *ms = onb_methods(&n);
+		all[0] = '\0';
+		for (i = 0; i < n && len + 64 < sizeof all; i++)
+			len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", ms[i].name);
+		study_error("unknown method '%s' (valid: %sfrisvad_rotate, or all; 'onbstudy list' describes them)", name, all);
 		return -1;
 	}
 	if (*k >= cap) {

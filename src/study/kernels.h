@@ -14,7 +14,7 @@ enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
 /* The formula families the MPFR reference knows (onb_method.family),
    resolved once per kernel so that the sweep loop switches on an int. */
 enum { FAM_ROTATE = 0, FAM_NAIVE, FAM_HUGHES_MOELLER, FAM_FRISVAD, FAM_DUFF, FAM_DUFF_BRANCHLESS,
-       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z };
+       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z, FAM_STARK_FIXED };
 
 struct study_kernel;
 
@@ -41,6 +41,22 @@ typedef struct study_kernel {
    plus FMA copies when fma != 0.  Returns the count, or -1 after a
    message naming the unknown method. */
 int kernels_select(const char *names, int fma, study_kernel *out, int cap);
+
+/* 0 when the kernel has no code in that precision: the float-only
+   registry methods (ONB_FLOAT_ONLY, NULL basis) in double.  Every loop
+   over kernels and precisions skips those pairs. */
+static inline int kernel_runs(const study_kernel *k, int prec)
+{
+	return prec == PREC_FLOAT || !k->m || k->basis != NULL;
+}
+/* How many of the nk kernels run in precision prec. */
+static inline int kernels_running(const study_kernel *k, int nk, int prec)
+{
+	int i, n = 0;
+	for (i = 0; i < nk; i++)
+		n += kernel_runs(&k[i], prec);
+	return n;
+}
 
 /* Branch ids, plain arithmetic. */
 int kernels_branch(const study_kernel *k, int prec, const double n[3]);

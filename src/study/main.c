@@ -35,11 +35,47 @@ static void usage(FILE *f)
 	fprintf(f, "\n'onbstudy COMMAND --help' describes a command's options.\n");
 }
 
+/* Top-level options (stop at the command: "+"), then the command. */
+static int dispatch(int argc, char **argv)
+{
+	static const struct option lo[] = {
+		{ "help", no_argument, NULL, 'h' }, { "version", no_argument, NULL, 'V' }, { NULL, 0, NULL, 0 }
+	};
+	size_t i;
+	int v;
+	opterr = 0;
+	while ((v = getopt_long(argc, argv, "+h", lo, NULL)) != -1) {
+		if (v == 'h') {
+			usage(stdout);
+			return 0;
+		}
+		if (v == 'V') {
+			printf("onbstudy %s (%s)\n", ONB_VERSION, ONB_GIT_REV);
+			return 0;
+		}
+		study_error("unknown option '%s' (try 'onbstudy --help')", argv[optind - 1]);
+		return ONB_EXIT_USAGE;
+	}
+	if (optind >= argc) {
+		usage(stderr);
+		return ONB_EXIT_USAGE;
+	}
+	if (strcmp(argv[optind], "help") == 0) {
+		usage(stdout);
+		return 0;
+	}
+	for (i = 0; i < NCOMMANDS; i++)
+		if (strcmp(argv[optind], commands[i].name) == 0)
+			return commands[i].fn(argc - optind - 1, argv + optind + 1);
+	study_error("unknown command '%s' (try 'onbstudy --help')", argv[optind]);
+	return ONB_EXIT_USAGE;
+}
+
 static char cmdline_buf[4096];
 
 int main(int argc, char **argv)
 {
-	size_t i, len = 0;
+	size_t len = 0;
 	int k;
 	for (k = 0; k < argc && len + 2 < sizeof cmdline_buf; k++) {
 		int w = snprintf(cmdline_buf + len, sizeof cmdline_buf - len, "%s%s", k ? " " : "", argv[k]);
@@ -50,21 +86,5 @@ int main(int argc, char **argv)
 			len = sizeof cmdline_buf - 1;
 	}
 	study_cmdline = cmdline_buf;
-	if (argc < 2) {
-		usage(stderr);
-		return ONB_EXIT_USAGE;
-	}
-	if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
-		usage(stdout);
-		return 0;
-	}
-	if (strcmp(argv[1], "--version") == 0) {
-		printf("onbstudy %s (%s)\n", ONB_VERSION, ONB_GIT_REV);
-		return 0;
-	}
-	for (i = 0; i < NCOMMANDS; i++)
-		if (strcmp(argv[1], commands[i].name) == 0)
-			return commands[i].fn(argc - 2, argv + 2);
-	study_error("unknown command '%s' (try 'onbstudy --help')", argv[1]);
-	return ONB_EXIT_USAGE;
+	return dispatch(argc, argv);
 }

@@ -312,8 +312,10 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		break;
 	}
 	case FAM_STARK:
-		/* p = n x e_k, b1 = p/|p|, b2 = n x b1 */
-		set3(u, br == 0, br == 1, br == 2);
+	case FAM_STARK_FIXED:
+		/* p = n x (xm, ym, zm), b1 = p/|p|, b2 = n x b1; as published
+		   zm = 1^(xm & ym) = 1, fixed zm = 1^(xm | ym) (e_k) */
+		set3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
 		cross(c, r1, n, u);
 		normalize(c, r1);
 		cross(c, r2, n, r1);

@@ -45,7 +45,6 @@
  * --up is y or x, y when it is z), with the errors measured again.
  */
 #include <float.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -265,71 +264,54 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 		{ "up", required_argument, NULL, 'u' }, { "renormalize", no_argument, NULL, 'r' },
 		{ "repeats", required_argument, NULL, 'n' }, { "out", required_argument, NULL, 'o' },
 		{ "world", no_argument, NULL, 'w' }, { "speed", required_argument, NULL, 's' },
-		{ "refresh-speed", no_argument, NULL, 'R' }, { "help", no_argument, NULL, 'h' },
-		{ NULL, 0, NULL, 0 }
+		{ "refresh-speed", no_argument, NULL, 'R' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
-	char **av = malloc(((size_t)argc + 2) * sizeof *av);
-	int c, k, rc = -1;
-	if (!av) {
-		study_error("scene: out of memory");
+	static const char *const precs[] = { "float", "double" }, *const ups[] = { "z", "y", "x" };
+	cli_args c;
+	char **rest;
+	int v, nrest, rc = -1;
+	if (cli_begin(&c, "scene", argc, argv) != 0)
 		return -1;
-	}
-	av[0] = (char *)"scene";
-	for (k = 0; k < argc; k++)
-		av[k + 1] = argv[k];
-	av[argc + 1] = NULL;
-	optind = 0;
-	opterr = 0;
-	while ((c = getopt_long(argc + 1, av, ":h", lo, NULL)) != -1) {
-		switch (c) {
-		case 'h': usage(stdout); rc = 1; goto out;
+	while ((v = cli_next(&c, lo)) != -1) {
+		switch (v) {
+		case CLI_HELP: usage(stdout); rc = 1; goto out;
+		case CLI_ERROR: goto out;
 		case 'r': o->renorm_head = 1; break;
 		case 'w': o->world = 1; break;
 		case 'R': o->refresh = 1; break;
-		case 'o': o->outdir = optarg; break;
-		case 's': o->speed_file = optarg; break;
+		case 'o': o->outdir = c.arg; break;
+		case 's': o->speed_file = c.arg; break;
 		case 'n':
-			if (parse_int("--repeats", optarg, 1, 64, &o->repeats) != 0)
+			if (parse_int("--repeats", c.arg, 1, 64, &o->repeats) != 0)
 				goto out;
 			break;
 		case 't':
-			if (parse_double("--tolerance", optarg, &o->tol) != 0)
+			if (parse_double("--tolerance", c.arg, &o->tol) != 0)
 				goto out;
 			if (!(o->tol > 0)) {
-				study_error("scene: --tolerance must be a positive finite number, got '%s'", optarg);
+				study_error("scene: --tolerance must be a positive finite number, got '%s'", c.arg);
 				goto out;
 			}
 			o->tol_given = 1;
 			break;
 		case 'p':
-			if (!strcmp(optarg, "float")) o->fl = 1;
-			else if (!strcmp(optarg, "double")) o->fl = 0;
-			else {
-				study_error("scene: --precision must be float or double, got '%s'", optarg);
+			if ((v = cli_choice("--precision", c.arg, precs, 2)) < 0)
 				goto out;
-			}
+			o->fl = v == 0;
 			break;
 		case 'u':
-			if (strlen(optarg) != 1 || !strchr("xyz", optarg[0])) {
-				study_error("scene: --up must be z, y or x, got '%s'", optarg);
+			if ((v = cli_choice("--up", c.arg, ups, 3)) < 0)
 				goto out;
-			}
-			o->up = optarg[0];
+			o->up = ups[v][0];
 			break;
-		case ':':
-			study_error("scene: %s needs a value", av[optind - 1]);
-			goto out;
-		default:
-			study_error("scene: unknown option '%s' (try 'onbstudy scene --help')", av[optind - 1]);
-			goto out;
 		}
 	}
-	if (optind < argc + 1)
-		o->file = av[optind++];
-	if (optind < argc + 1) {
-		study_error("scene: one FILE only (got '%s' and '%s')", o->file, av[optind]);
+	rest = cli_rest(&c, &nrest);
+	if (nrest > 1) {
+		study_error("scene: one FILE only (got '%s' and '%s')", rest[0], rest[1]);
 		goto out;
 	}
+	o->file = nrest ? rest[0] : NULL;
 	if (!o->file && !o->refresh) {
 		study_error("scene: no FILE given (try 'onbstudy scene --help')");
 		goto out;
@@ -340,7 +322,7 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 	}
 	rc = 0;
 out:
-	free(av);
+	cli_end(&c);
 	return rc;
 }
 
@@ -826,6 +808,15 @@ int cmd_scene(int argc, char **argv)
 	if (!o.tol_given)
 		o.tol = o.fl ? 1e-6 : 1e-14;
 	o.other = o.up == 'z' ? 'y' : 'z';
+	if (!o.fl) { /* the float-only methods (ONB_FLOAT_ONLY) have no double code */
+		static onb_method dbl_ms[128];
+		size_t j = 0;
+		for (i = 0; i < nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
+			if (ms[i].basis && ms[i].batch)
+				dbl_ms[j++] = ms[i];
+		ms = dbl_ms;
+		nm = j;
+	}
 	if (!o.file)
 		return refresh_only(&o);
 	memset(&mo, 0, sizeof mo);

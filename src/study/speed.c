@@ -236,6 +236,8 @@ static int measure(int dbl, int reps, speed_table *t)
 		}
 	}
 	for (i = 0; i < nm; i++) {
+		if (dbl ? !ms[i].batch : !ms[i].batchf)
+			continue; /* float-only methods in double */
 		s.batch = ms[i].batch;
 		s.batchf = ms[i].batchf;
 		inner[i] = bench_calibrate(bench_soa_kernel, &s, SPEED_N, 1, 0.02, 100000);
@@ -244,6 +246,8 @@ static int measure(int dbl, int reps, speed_table *t)
 		for (i = 0; i < nm; i++) {
 			bench_cfg cfg;
 			bench_result br;
+			if (!inner[i])
+				continue;
 			cfg.threads = 1; cfg.warmup = 1; cfg.reps = 1; cfg.inner = inner[i];
 			s.batch = ms[i].batch;
 			s.batchf = ms[i].batchf;
@@ -255,6 +259,8 @@ static int measure(int dbl, int reps, speed_table *t)
 		}
 	for (i = 0; i < nm; i++) {
 		double *v = mb + i * (size_t)reps;
+		if (!inner[i])
+			continue;
 		qsort(v, (size_t)reps, sizeof *v, cmp_d);
 		j = (size_t)reps / 2;
 		if (add_row(t, ms[i].name, reps % 2 ? v[j] : 0.5 * (v[j - 1] + v[j]), v[k - 1], v[reps - k]) != 0) {

@@ -45,6 +45,42 @@ int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned lo
 int parse_double(const char *opt, const char *s, double *out);
 int parse_int(const char *opt, const char *s, long lo, long hi, long *out);
 
+/* cli.c: getopt_long for every command, with the same messages for the same
+   mistakes.  Usage:
+	static const struct option lo[] = { { "samples", required_argument, NULL, 'n' }, ..., { 0, 0, 0, 0 } };
+	cli_args c; int v;
+	if (cli_begin(&c, "sweep", argc, argv)) return 1;
+	while ((v = cli_next(&c, lo)) != -1) switch (v) { case CLI_HELP: ...; case CLI_ERROR: ...; case 'n': c.arg ... }
+	then cli_rest() or cli_no_rest(), and cli_end().
+   Both '--opt value' and '--opt=value' work (getopt_long), '-h' and '--help' give
+   CLI_HELP when the table has "help" with val 'h'. */
+#include <getopt.h>
+#define CLI_HELP  (-'h')
+#define CLI_ERROR (-'?')
+#define CLI_HELP_OPTION { "help", no_argument, NULL, 'h' }
+typedef struct {
+	const char *cmd;      /* "sweep" */
+	char name[64];        /* "onbstudy sweep", argv[0] for getopt */
+	char **av;
+	int ac;
+	const char *arg;      /* the current option's value, or NULL */
+} cli_args;
+int  cli_begin(cli_args *c, const char *cmd, int argc, char **argv); /* 0, or -1 after a message */
+int  cli_next(cli_args *c, const struct option *lo); /* val, CLI_HELP, CLI_ERROR (message printed) or -1 at the end */
+char **cli_rest(cli_args *c, int *n);                 /* the operands, after the options */
+int  cli_no_rest(cli_args *c);                        /* -1 with a message if there are operands */
+void cli_end(cli_args *c);
+/* One of names[count]: its index, or -1 after "OPT: expected a, b or c, not 'x'". */
+int  cli_choice(const char *opt, const char *arg, const char *const *names, int count);
+/* A comma-separated list of names into on[count]; unknown names get the list of valid ones. */
+/* The same, keeping the order given: idx[] (room for count) gets each name's
+   index once; returns how many, or -1 after a message. */
+int  cli_name_order(const char *opt, const char *arg, int *idx, const char *const *names, int count);
+int  cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count);
+int  cli_precision(const char *opt, const char *arg, int on[2]);   /* float, double or both */
+int  cli_shard(const char *opt, const char *arg, int *k, int *n);  /* K/N, 0-based */
+int  cli_format(const char *opt, const char *arg, int with_json);  /* 0 table, 1 csv, 2 json; -1 */
+
 /* The command line as one string, for provenance lines. */
 extern const char *study_cmdline;
 

@@ -18,6 +18,13 @@ static const char *prec_name(int p) { return p == PREC_FLOAT ? "float" : "double
 
 static size_t G(const sweep_state *s) { return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols; }
 
+/* Precision p was run, and kernel k has code in it (not a float-only
+   method in double): the (p, k) pairs every file and table lists. */
+static int on(const sweep_state *s, int p, int k)
+{
+	return s->cfg.prec_on[p] && kernel_runs(&s->kernels[k], p);
+}
+
 static double grid_jump(const sweep_state *s, int p, int k, size_t cell)
 {
 	const size_t rows = (size_t)s->cfg.grid_rows, cols = (size_t)s->cfg.grid_cols;
@@ -139,7 +146,7 @@ static int walk(sweep_state *s, int threads)
 				fail = 1;
 #pragma omp for schedule(dynamic, 1)
 			for (k = 0; k < s->cfg.nk; k++)
-				if (rc)
+				if (rc && on(s, p, k))
 					walk_one(s, rc, p, k);
 			ref_free(rc);
 		}
@@ -214,7 +221,7 @@ static int write_summary(const sweep_state *s, const char *dir, const char *name
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++)
-				if (s->cfg.prec_on[p] && s->cfg.dist_on[d])
+				if (on(s, p, k) && s->cfg.dist_on[d])
 					summary_row(o.f, s, p, d, k, d == DIST_GRID && !partial ? max_grid_jump(s, p, k) : NAN);
 	return study_out_commit(&o);
 }
@@ -234,7 +241,7 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
 				/* threshold and grid are lists, not distributions over n.z:
 				   their errors are in worst.csv and grid.csv */
-				if (!s->cfg.prec_on[p] || !s->cfg.dist_on[d] || d == DIST_THRESHOLD || d == DIST_GRID)
+				if (!on(s, p, k) || !s->cfg.dist_on[d] || d == DIST_THRESHOLD || d == DIST_GRID)
 					continue;
 				for (b = 0; b < NBINS; b++) {
 					const bin_t *x = &c->bins[b];
@@ -271,7 +278,7 @@ static int write_worst(const sweep_state *s, const char *dir, const char *name, 
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
 				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
-				if (!s->cfg.prec_on[p] || !s->cfg.dist_on[d])
+				if (!on(s, p, k) || !s->cfg.dist_on[d])
 					continue;
 				for (i = 0; i < NWORST; i++) {
 					const worst_t *w = &c->worst[i];
@@ -305,7 +312,7 @@ static int write_grid(const sweep_state *s, const char *dir, const char *name, i
 	fprintf(o.f, "method,precision,row,col,nz,phi,error,mean_bits,b1_jump\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++) {
-			if (!s->cfg.prec_on[p])
+			if (!on(s, p, k))
 				continue;
 			for (i = 0; i < G(s); i++) {
 				const size_t j = ((size_t)p * (size_t)s->cfg.nk + (size_t)k) * G(s) + i;
@@ -343,6 +350,8 @@ static void print_table(const sweep_state *s)
 			const cell_t *u = sweep_cell((sweep_state *)s, p, DIST_UNIFORM, k);
 			uint64_t nf = 0, wr = 0;
 			const int basis = s->kernels[k].m != NULL;
+			if (!on(s, p, k))
+				continue;
 			printf("%-28s %-6s %10.3g", s->kernels[k].name, prec_name(p),
 			       basis && s->cfg.dist_on[DIST_UNIFORM] ? sqrt_mean(&u->sumsq, 5 * u->finite) : NAN);
 			for (d = 0; d < NDIST; d++) {
@@ -375,7 +384,7 @@ static void print_csv(const sweep_state *s, int json)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
 				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
-				if (!s->cfg.prec_on[p] || !s->cfg.dist_on[d])
+				if (!on(s, p, k) || !s->cfg.dist_on[d])
 					continue;
 				if (json) {
 					const int basis = s->kernels[k].m != NULL;

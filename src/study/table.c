@@ -340,57 +340,82 @@ static void print_cell(double v, const char *fmt, int w)
 		printf(fmt, w, v);
 }
 
+static void table_usage(void)
+{
+	printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--speed-tol T] [--format table|csv]\n"
+	       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
+	       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
+	       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"
+	       "  --speed-tol T    speeds within this fraction count as equal on the Pareto front (default 0.05)\n"
+	       "  --format F       table (default) or csv on stdout\n");
+}
+
+typedef struct {
+	const char *bench, *summary, *out;
+	int csv;
+	double tol;
+} table_opts;
+
+static int table_option(int v, const char *a, table_opts *o)
+{
+	if (!*a) {
+		study_error("--%s needs a value", v == 'b' ? "bench" : v == 's' ? "summary" : v == 'o' ? "out" :
+		            v == 't' ? "speed-tol" : "format");
+		return -1;
+	}
+	switch (v) {
+	case 'b': o->bench = a; return 0;
+	case 's': o->summary = a; return 0;
+	case 'o': o->out = a; return 0;
+	case 't':
+		if (parse_double("--speed-tol", a, &o->tol) != 0)
+			return -1;
+		if (!(o->tol >= 0.0 && o->tol < 1.0)) {
+			study_error("--speed-tol: %s is out of range [0, 1)", a);
+			return -1;
+		}
+		return 0;
+	case 'f': return (o->csv = cli_format("--format", a, 0)) < 0 ? -1 : 0;
+	}
+	return -1;
+}
+
+/* 0; 1 after --help; ONB_EXIT_USAGE after a message. */
+static int table_parse(int argc, char **argv, table_opts *o)
+{
+	static const struct option lo[] = {
+		{ "bench", required_argument, NULL, 'b' }, { "summary", required_argument, NULL, 's' },
+		{ "out", required_argument, NULL, 'o' }, { "speed-tol", required_argument, NULL, 't' },
+		{ "format", required_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
+	cli_args c;
+	int v, rc = 0;
+	memset(o, 0, sizeof *o);
+	o->tol = 0.05;
+	if (cli_begin(&c, "table", argc, argv))
+		return ONB_EXIT_USAGE;
+	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
+		if (v == CLI_HELP) { table_usage(); rc = 1; }
+		else if (v == CLI_ERROR || table_option(v, c.arg, o) != 0) rc = ONB_EXIT_USAGE;
+	}
+	if (rc == 0 && cli_no_rest(&c) != 0)
+		rc = ONB_EXIT_USAGE;
+	cli_end(&c);
+	return rc;
+}
+
 int cmd_table(int argc, char **argv)
 {
-	const char *bench = NULL, *summary = NULL, *out = NULL;
+	const char *bench, *summary, *out;
 	char bbuf[4096], sbuf[4096], obuf[4096];
 	tradeoff_row *rows;
-	int n, i, k, csv = 0, p;
-	double tol = 0.05;
+	int n, i, csv, p;
+	double tol;
 	study_out f;
-	for (k = 0; k < argc; k++) {
-		const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
-		if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-			printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--speed-tol T] [--format table|csv]\n"
-			       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
-			       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
-			       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"
-			       "  --speed-tol T    speeds within this fraction count as equal on the Pareto front (default 0.05)\n"
-			       "  --format F       table (default) or csv on stdout\n");
-			return 0;
-		}
-		if (strcmp(a, "--bench") && strcmp(a, "--summary") && strcmp(a, "--out") && strcmp(a, "--format") &&
-		    strcmp(a, "--speed-tol")) {
-			study_error("table: unknown argument '%s' (try 'onbstudy table --help')", a);
-			return ONB_EXIT_USAGE;
-		}
-		if (!v || !*v) {
-			study_error("table: %s needs a value", a);
-			return ONB_EXIT_USAGE;
-		}
-		k++;
-		if (strcmp(a, "--bench") == 0)
-			bench = v;
-		else if (strcmp(a, "--summary") == 0)
-			summary = v;
-		else if (strcmp(a, "--out") == 0)
-			out = v;
-		else if (strcmp(a, "--speed-tol") == 0) {
-			if (parse_double("table: --speed-tol", v, &tol) != 0)
-				return ONB_EXIT_USAGE;
-			if (!(tol >= 0.0 && tol < 1.0)) {
-				study_error("table: --speed-tol: %s is out of range [0, 1)", v);
-				return ONB_EXIT_USAGE;
-			}
-		} else if (strcmp(v, "csv") == 0)
-			csv = 1;
-		else if (strcmp(v, "table") == 0)
-			csv = 0;
-		else {
-			study_error("table: --format: expected table or csv, got '%s'", v);
-			return ONB_EXIT_USAGE;
-		}
-	}
+	table_opts o;
+	if ((i = table_parse(argc, argv, &o)) != 0)
+		return i == 1 ? 0 : i;
+	bench = o.bench; summary = o.summary; out = o.out; csv = o.csv; tol = o.tol;
 	if (!bench) {
 		if (default_path("bench.csv", bbuf, sizeof bbuf) != 0)
 			return ONB_EXIT_USAGE;

@@ -380,76 +380,111 @@ static void usage(FILE *f)
 	           "Nelson Max's analysis of Frisvad's threshold: for each t near -1, the largest\n"
 	           "normality and orthogonality error of Listing 2 with that t over inputs near -z;\n"
 	           "the minimax t of each criterion, the published thresholds beside them, and\n"
-	           "threshold.csv for plotting (default C = 4096, M = 8192, A = 64).\n");
+	           "threshold.csv for plotting (default C = 4096, M = 8192, A = 64).\n"
+	           "--shard K/N runs slice K of N (0-based, 0 <= K < N) and saves a state for\n"
+	           "'onbstudy merge'.  Options take '--opt value' or '--opt=value'.\n");
+}
+
+/* One option into the plan; 0 or -1 after a message. */
+static int th_option(th_state *s, int v, const char *a, int *threads, const char **out)
+{
+	long l;
+	unsigned long long u;
+	switch (v) {
+	case 'p': return cli_precision("--precision", a, s->cfg.prec_on);
+	case 'c': if (parse_int("--consecutive", a, 2, 1 << 24, &l)) return -1; s->cfg.consecutive = (int)l; return 0;
+	case 'l': if (parse_int("--logspaced", a, 0, 1 << 24, &l)) return -1; s->cfg.logspaced = (int)l; return 0;
+	case 'a': if (parse_int("--azimuths", a, 1, 4096, &l)) return -1; s->cfg.azimuths = (int)l; return 0;
+	case 's': if (parse_u64("--seed", a, 0, UINT64_MAX, &u)) return -1; s->cfg.seed = u; return 0;
+	case 't': if (parse_int("--threads", a, 0, 1024, &l)) return -1; *threads = (int)l; return 0;
+	case 'o': *out = a; return 0;
+	case 'k': return cli_shard("--shard", a, &s->cfg.shard_k, &s->cfg.shard_n);
+	}
+	return -1;
+}
+
+/* Options -> the plan (s->cfg), threads and output directory.  0; 1 after
+   --help; or ONB_EXIT_USAGE after a message. */
+static int th_parse(th_state *s, int argc, char **argv, int *threads, char *outbuf, size_t outlen)
+{
+	static const struct option lo[] = {
+		{ "precision", required_argument, NULL, 'p' }, { "consecutive", required_argument, NULL, 'c' },
+		{ "logspaced", required_argument, NULL, 'l' }, { "azimuths", required_argument, NULL, 'a' },
+		{ "seed", required_argument, NULL, 's' }, { "threads", required_argument, NULL, 't' },
+		{ "out", required_argument, NULL, 'o' }, { "shard", required_argument, NULL, 'k' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
+	const char *out = NULL;
+	cli_args c;
+	int v, rc = 0;
+	memset(s, 0, sizeof *s);
+	snprintf(s->cfg.magic, sizeof s->cfg.magic, "%s", TH_MAGIC);
+	s->cfg.seed = 1; s->cfg.prec_on[0] = s->cfg.prec_on[1] = 1;
+	s->cfg.consecutive = 4096; s->cfg.logspaced = 8192; s->cfg.azimuths = 64; s->cfg.ref_bits = 127;
+	s->cfg.shard_k = 0; s->cfg.shard_n = 1;
+	*threads = 0;
+	if (cli_begin(&c, "threshold", argc, argv))
+		return 1;
+	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
+		if (v == CLI_HELP) { usage(stdout); rc = 1; }
+		else if (v == CLI_ERROR || th_option(s, v, c.arg, threads, &out) != 0) rc = ONB_EXIT_USAGE;
+	}
+	if (rc == 0 && cli_no_rest(&c) != 0)
+		rc = ONB_EXIT_USAGE;
+	cli_end(&c);
+#ifdef _OPENMP
+	if (!*threads) *threads = omp_get_num_procs();
+#else
+	*threads = 1;
+#endif
+	if (out) snprintf(outbuf, outlen, "%s", out);
+	else study_default_run_dir(outbuf, outlen);
+	return rc;
+}
+
+/* Run every value of this shard; 0, or -1 (out of memory, after a message). */
+static int th_run(th_state *s, int threads)
+{
+	int p, fail = 0;
+	for (p = 0; p < 2; p++) {
+		int j;
+		if (!s->cfg.prec_on[p])
+			continue;
+		if (build_values(s, p) != 0)
+			return -1;
+#pragma omp parallel num_threads(threads) reduction(|:fail)
+		{
+			ref_ctx *rc = ref_new(s->cfg.ref_bits);
+			if (!rc) fail = 1;
+#pragma omp for schedule(dynamic, 16)
+			for (j = 0; j < s->cfg.count[p]; j++)
+				if (rc && j % s->cfg.shard_n == s->cfg.shard_k)
+					measure(s, rc, p, j);
+			ref_free(rc);
+		}
+	}
+	if (fail)
+		study_error("out of memory");
+	return fail ? -1 : 0;
 }
 
 int cmd_threshold(int argc, char **argv)
 {
 	th_state s;
-	const char *out = NULL;
 	char outbuf[4096];
-	int i, p, threads = 0, fail = 0;
-	memset(&s, 0, sizeof s);
-	snprintf(s.cfg.magic, sizeof s.cfg.magic, "%s", TH_MAGIC);
-	s.cfg.seed = 1; s.cfg.prec_on[0] = s.cfg.prec_on[1] = 1;
-	s.cfg.consecutive = 4096; s.cfg.logspaced = 8192; s.cfg.azimuths = 64; s.cfg.ref_bits = 127;
-	s.cfg.shard_k = 0; s.cfg.shard_n = 1;
-	for (i = 0; i < argc; i++) {
-		const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-		long l;
-		unsigned long long u;
-		if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(stdout); return 0; }
-		if (!v) { study_error("threshold: unknown option or missing value: '%s'", a); return ONB_EXIT_USAGE; }
-		i++;
-		if (!strcmp(a, "--precision")) {
-			s.cfg.prec_on[0] = !strcmp(v, "float") || !strcmp(v, "both");
-			s.cfg.prec_on[1] = !strcmp(v, "double") || !strcmp(v, "both");
-			if (!s.cfg.prec_on[0] && !s.cfg.prec_on[1]) { study_error("--precision: expected float, double or both, not '%s'", v); return ONB_EXIT_USAGE; }
-		} else if (!strcmp(a, "--consecutive")) { if (parse_int(a, v, 2, 1 << 24, &l)) return ONB_EXIT_USAGE; s.cfg.consecutive = (int)l; }
-		else if (!strcmp(a, "--logspaced")) { if (parse_int(a, v, 0, 1 << 24, &l)) return ONB_EXIT_USAGE; s.cfg.logspaced = (int)l; }
-		else if (!strcmp(a, "--azimuths")) { if (parse_int(a, v, 1, 4096, &l)) return ONB_EXIT_USAGE; s.cfg.azimuths = (int)l; }
-		else if (!strcmp(a, "--seed")) { if (parse_u64(a, v, 0, UINT64_MAX, &u)) return ONB_EXIT_USAGE; s.cfg.seed = u; }
-		else if (!strcmp(a, "--threads")) { if (parse_int(a, v, 0, 1024, &l)) return ONB_EXIT_USAGE; threads = (int)l; }
-		else if (!strcmp(a, "--out")) out = v;
-		else if (!strcmp(a, "--shard")) {
-			char tail;
-			if (sscanf(v, "%d/%d%c", &s.cfg.shard_k, &s.cfg.shard_n, &tail) != 2 || s.cfg.shard_n < 1 ||
-			    s.cfg.shard_k < 0 || s.cfg.shard_k >= s.cfg.shard_n) {
-				study_error("--shard: expected K/N with 0 <= K < N, not '%s'", v);
-				return ONB_EXIT_USAGE;
-			}
-		} else { study_error("threshold: unknown option '%s'", a); return ONB_EXIT_USAGE; }
-	}
-#ifdef _OPENMP
-	if (!threads) threads = omp_get_num_procs();
-#else
-	threads = 1;
-#endif
-	if (out) snprintf(outbuf, sizeof outbuf, "%s", out);
-	else study_default_run_dir(outbuf, sizeof outbuf);
+	int threads, rc = th_parse(&s, argc, argv, &threads, outbuf, sizeof outbuf);
+	if (rc != 0)
+		return rc == 1 ? 0 : rc;
 	if (study_mkdir_p(outbuf) != 0)
 		return ONB_EXIT_USAGE;
-	for (p = 0; p < 2; p++) {
-		int j;
-		if (!s.cfg.prec_on[p])
-			continue;
-		if (build_values(&s, p) != 0) { th_free(&s); return 1; }
-#pragma omp parallel num_threads(threads) reduction(|:fail)
-		{
-			ref_ctx *rc = ref_new(s.cfg.ref_bits);
-			if (!rc) fail = 1;
-#pragma omp for schedule(dynamic, 16)
-			for (j = 0; j < s.cfg.count[p]; j++)
-				if (rc && j % s.cfg.shard_n == s.cfg.shard_k)
-					measure(&s, rc, p, j);
-			ref_free(rc);
-		}
+	if (th_run(&s, threads) != 0) {
+		th_free(&s);
+		return 1;
 	}
-	if (fail) { study_error("out of memory"); th_free(&s); return 1; }
 	if (s.cfg.shard_n > 1)
-		fail = th_save(&s, outbuf);
+		rc = th_save(&s, outbuf);
 	else
-		fail = th_write(&s, outbuf, threads);
+		rc = th_write(&s, outbuf, threads);
 	th_free(&s);
-	return fail ? 1 : 0;
+	return rc ? 1 : 0;
 }

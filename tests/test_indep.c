@@ -1,0 +1,338 @@
+/*
+ * test_indep.c - every method of libonb against a second implementation
+ * written separately from include/onb.h (tests/indep.h, transliterated
+ * from each source), bit for bit, in float and double, for the inline
+ * function, the out-of-line copy and the batch kernel.
+ *
+ * Inputs, per precision (each a unit vector rounded to the format):
+ *   uniform    N directions uniform on the sphere (default 1,000,000;
+ *              --quick: 65,536)
+ *   poles      n.z = +-1 exactly and k ulps from it (k = 1..64), and 1 -+ n.z
+ *              log-uniform from eps to 0.1, with random azimuths
+ *   threshold  every branch threshold of every method, +-8 ulps: n.x =
+ *              +-0.9 (naive, rtow), n.z = Frisvad's and Max's t, n.z = +-0
+ *              and subnormals (duff, duff_branchless), |a| = |b| for the
+ *              pairs (x,y), (x,z), (y,z) (hughes_moeller, pbrt_v3, stark),
+ *              with random signs and azimuths; and the six axes.
+ * Exit 1 on any differing bit (NaN included: the bits must match too).
+ *
+ * -DINDEP_INLINE_ONLY builds the test against the header alone (no
+ * libonb.a): scripts/mutate.sh uses it to judge each mutant in seconds.
+ */
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "onb.h"
+#include "indep.h"
+
+#define IND_PI 3.14159265358979323846
+typedef void (*fn_d)(onb_vec3, onb_vec3 *, onb_vec3 *);
+typedef void (*fn_f)(onb_vec3f, onb_vec3f *, onb_vec3f *);
+static const struct { const char *name; fn_d d; fn_f f; int id, k; } T[] = {
+	{ "naive", onb_naive, onb_naivef, IM_NAIVE, IND_RSQRT },
+	{ "naive_invsqrt", onb_naive_invsqrt, onb_naive_invsqrtf, IM_NAIVE, IND_INVSQRT },
+	{ "naive_rsqrt", onb_naive_rsqrt, onb_naive_rsqrtf, IM_NAIVE, IND_SSE },
+	{ "naive_rsqrt_nr", onb_naive_rsqrt_nr, onb_naive_rsqrt_nrf, IM_NAIVE, IND_SSE_1N },
+	{ "naive_nonorm", onb_naive_nonorm, onb_naive_nonormf, IM_NAIVE, IND_NONE },
+	{ "hughes_moeller", onb_hughes_moeller, onb_hughes_moellerf, IM_HM, IND_RSQRT },
+	{ "hughes_moeller_invsqrt", onb_hughes_moeller_invsqrt, onb_hughes_moeller_invsqrtf, IM_HM, IND_INVSQRT },
+	{ "hughes_moeller_rsqrt", onb_hughes_moeller_rsqrt, onb_hughes_moeller_rsqrtf, IM_HM, IND_SSE },
+	{ "hughes_moeller_rsqrt_nr", onb_hughes_moeller_rsqrt_nr, onb_hughes_moeller_rsqrt_nrf, IM_HM, IND_SSE_1N },
+	{ "hughes_moeller_nonorm", onb_hughes_moeller_nonorm, onb_hughes_moeller_nonormf, IM_HM, IND_NONE },
+	{ "frisvad", onb_frisvad, onb_frisvadf, IM_FRISVAD, 0 },
+	{ "frisvad_max", onb_frisvad_max, onb_frisvad_maxf, IM_FRISVAD_MAX, 0 },
+	{ "duff", onb_duff, onb_dufff, IM_DUFF, 0 },
+	{ "duff_branchless", onb_duff_branchless, onb_duff_branchlessf, IM_DUFF_BL, 0 },
+	{ "stark", onb_stark, onb_starkf, IM_STARK, 0 },
+	{ "stark_fixed", onb_stark_fixed, onb_stark_fixedf, IM_STARK_FIXED, 0 },
+	{ "pbrt_v3", onb_pbrt_v3, onb_pbrt_v3f, IM_PBRT3, 0 },
+	{ "rtow", onb_rtow, onb_rtowf, IM_RTOW, 0 },
+	{ "tangent_cross_z", onb_tangent_cross_z, onb_tangent_cross_zf, IM_BLOG, 0 },
+	/* float only (ONB_FLOAT_ONLY): no double function */
+	{ "duff_wide", NULL, onb_duff_widef, IM_DUFF_WIDE, 0 },
+	{ "duff_comp", NULL, onb_duff_compf, IM_DUFF_COMP, 0 },
+};
+#define NT (sizeof T / sizeof T[0])
+
+/* ---- inputs ---- */
+typedef struct { double *x, *y, *z; size_t n, cap; int fl; } inset;
+static uint64_t rng_s = 0x696e646570ULL;
+static double urand(void)
+{
+	uint64_t z = (rng_s += 0x9e3779b97f4a7c15ULL);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+}
+static double rnd(const inset *s, double v) { return s->fl ? (double)(float)v : v; }
+static double step(const inset *s, double v, int k)
+{
+	for (; k > 0; k--) v = s->fl ? (double)nextafterf((float)v, 2.0f) : nextafter(v, 2.0);
+	for (; k < 0; k++) v = s->fl ? (double)nextafterf((float)v, -2.0f) : nextafter(v, -2.0);
+	return v;
+}
+static void push(inset *s, double x, double y, double z)
+{
+	if (s->n == s->cap) {
+		s->cap = s->cap ? 2 * s->cap : 4096;
+		s->x = realloc(s->x, s->cap * sizeof *s->x);
+		s->y = realloc(s->y, s->cap * sizeof *s->y);
+		s->z = realloc(s->z, s->cap * sizeof *s->z);
+		if (!s->x || !s->y || !s->z) { fprintf(stderr, "test_indep: out of memory\n"); exit(2); }
+	}
+	s->x[s->n] = rnd(s, x); s->y[s->n] = rnd(s, y); s->z[s->n] = rnd(s, z);
+	s->n++;
+}
+/* Component `c` fixed to v (already in the format), the other two on the
+   circle of radius sqrt(1 - v^2) at a random azimuth. */
+static void push_fixed(inset *s, int c, double v)
+{
+	double r = sqrt(fmax(0.0, 1.0 - v * v)), ph = 2.0 * IND_PI * urand();
+	double a = r * cos(ph), b = r * sin(ph), o[3];
+	o[c] = v; o[(c + 1) % 3] = a; o[(c + 2) % 3] = b;
+	push(s, o[0], o[1], o[2]);
+}
+static void gen_uniform(inset *s, size_t n)
+{
+	size_t i;
+	for (i = 0; i < n; i++) {
+		double z = 2.0 * urand() - 1.0, ph = 2.0 * IND_PI * urand(), r = sqrt(1.0 - z * z);
+		push(s, r * cos(ph), r * sin(ph), z);
+	}
+}
+static void gen_poles(inset *s)
+{
+	const double eps = s->fl ? FLT_EPSILON : DBL_EPSILON;
+	int sg, k, j;
+	for (sg = -1; sg <= 1; sg += 2) {
+		for (k = 0; k <= 64; k++)
+			for (j = 0; j < (k ? 16 : 1); j++)
+				push_fixed(s, 2, step(s, (double)sg, -sg * k));
+		push(s, 0.0, 0.0, (double)sg); push(s, -0.0, 0.0, (double)sg); push(s, 0.0, -0.0, (double)sg);
+		for (k = 0; k < 8192; k++)
+			push_fixed(s, 2, rnd(s, sg * (1.0 - eps * pow(0.1 / eps, urand()))));
+	}
+}
+/* |a| = |b| (components ca, cb) at magnitude v, b stepped k ulps. */
+static void gen_pair(inset *s, int ca, int cb, int reps)
+{
+	int r, k;
+	for (r = 0; r < reps; r++) {
+		const double v = rnd(s, urand() * 0.70710678118654752440);
+		for (k = -8; k <= 8; k++) {
+			double o[3], w = step(s, v, k);
+			int cc = 3 - ca - cb;
+			o[ca] = urand() < 0.5 ? -v : v;
+			o[cb] = urand() < 0.5 ? -w : w;
+			o[cc] = sqrt(fmax(0.0, 1.0 - v * v - w * w)) * (urand() < 0.5 ? -1.0 : 1.0);
+			push(s, o[0], o[1], o[2]);
+		}
+	}
+}
+static void gen_thresholds(inset *s)
+{
+	const double vals[] = { 0.9, -0.9, -0.9999999, -0.99998796 };
+	const int comp[] = { 0, 0, 2, 2 };
+	int i, k, r;
+	for (i = 0; i < 4; i++)
+		for (k = -8; k <= 8; k++)
+			for (r = 0; r < 64; r++) {
+				/* rtow compares |unit(w).x|: the same inputs serve */
+				push_fixed(s, comp[i], step(s, rnd(s, vals[i]), k));
+			}
+	for (k = 0; k <= 8; k++)
+		for (r = 0; r < 64; r++) {
+			const double tiny = s->fl ? 0x1p-149 : 0x1p-1074; /* the smallest subnormals */
+			const double nrm = s->fl ? (double)FLT_MIN : DBL_MIN;
+			push_fixed(s, 2, k * tiny); push_fixed(s, 2, -k * tiny);
+			push_fixed(s, 2, step(s, nrm, k)); push_fixed(s, 2, -step(s, nrm, k));
+			push_fixed(s, 2, step(s, s->fl ? FLT_EPSILON : DBL_EPSILON, k - 4));
+			push_fixed(s, 2, -step(s, s->fl ? FLT_EPSILON : DBL_EPSILON, k - 4));
+		}
+	gen_pair(s, 0, 1, 2048); gen_pair(s, 0, 2, 2048); gen_pair(s, 1, 2, 2048);
+	for (i = 0; i < 3; i++) {
+		double o[3] = { 0.0, 0.0, 0.0 };
+		o[i] = 1.0; push(s, o[0], o[1], o[2]);
+		o[i] = -1.0; push(s, o[0], o[1], o[2]);
+	}
+}
+
+/* ---- comparison ---- */
+static int same_d(double a, double b) { uint64_t x, y; memcpy(&x, &a, 8); memcpy(&y, &b, 8); return x == y; }
+static int same_f(float a, float b)   { uint32_t x, y; memcpy(&x, &a, 4); memcpy(&y, &b, 4); return x == y; }
+static int same6_d(const double *a, const double *b)
+{
+	int i;
+	for (i = 0; i < 6; i++) if (!same_d(a[i], b[i])) return 0;
+	return 1;
+}
+static int same6_f(const float *a, const float *b)
+{
+	int i;
+	for (i = 0; i < 6; i++) if (!same_f(a[i], b[i])) return 0;
+	return 1;
+}
+static long report(const char *name, const char *prec, const char *what, long bad, const double *n, const double *a, const double *b)
+{
+	if (bad <= 3)
+		printf("  %s/%s %s differs at n = (%a, %a, %a):\n    lib   %a %a %a | %a %a %a\n    indep %a %a %a | %a %a %a\n",
+		       name, prec, what, n[0], n[1], n[2], a[0], a[1], a[2], a[3], a[4], a[5], b[0], b[1], b[2], b[3], b[4], b[5]);
+	return bad;
+}
+
+/* One method in double: indep vs inline (and out-of-line, batch). */
+static long check_d(size_t t, const inset *s, double *bo)
+{
+	long bad = 0;
+	size_t i;
+#ifndef INDEP_INLINE_ONLY
+	const onb_method *m = onb_find(T[t].name);
+	m->batch(s->n, s->x, s->y, s->z, bo, bo + s->n, bo + 2 * s->n, bo + 3 * s->n, bo + 4 * s->n, bo + 5 * s->n);
+#else
+	(void)bo;
+#endif
+	for (i = 0; i < s->n; i++) {
+		onb_vec3 n, b1, b2;
+		Vec3d in = vd(s->x[i], s->y[i], s->z[i]), r1, r2;
+		double ref[6], got[6], nn[3] = { s->x[i], s->y[i], s->z[i] };
+		const char *what = NULL;
+		int j;
+		n.x = s->x[i]; n.y = s->y[i]; n.z = s->z[i];
+		indep_d(T[t].id, T[t].k, in, &r1, &r2);
+		ref[0] = r1.x; ref[1] = r1.y; ref[2] = r1.z; ref[3] = r2.x; ref[4] = r2.y; ref[5] = r2.z;
+		T[t].d(n, &b1, &b2);
+		got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
+		if (!same6_d(got, ref)) what = "inline";
+#ifndef INDEP_INLINE_ONLY
+		if (!what) {
+			m->basis(n, &b1, &b2);
+			got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
+			if (!same6_d(got, ref)) what = "out-of-line";
+		}
+		if (!what) {
+			for (j = 0; j < 6; j++) got[j] = bo[(size_t)j * s->n + i];
+			if (!same6_d(got, ref)) what = "batch";
+		}
+#endif
+		(void)j;
+		if (what)
+			report(T[t].name, "double", what, ++bad, nn, got, ref);
+	}
+	return bad;
+}
+
+/* The same in float; fx, fy, fz hold the inputs, bo the batch outputs. */
+static long check_f(size_t t, const inset *s, const float *fx, const float *fy, const float *fz, float *bo)
+{
+	long bad = 0;
+	size_t i;
+#ifndef INDEP_INLINE_ONLY
+	const onb_method *m = onb_find(T[t].name);
+	m->batchf(s->n, fx, fy, fz, bo, bo + s->n, bo + 2 * s->n, bo + 3 * s->n, bo + 4 * s->n, bo + 5 * s->n);
+#else
+	(void)bo;
+#endif
+	for (i = 0; i < s->n; i++) {
+		onb_vec3f n, b1, b2;
+		Vec3f in = vf(fx[i], fy[i], fz[i]), r1, r2;
+		float ref[6], got[6];
+		const char *what = NULL;
+		int j;
+		n.x = fx[i]; n.y = fy[i]; n.z = fz[i];
+		indep_f(T[t].id, T[t].k, in, &r1, &r2);
+		ref[0] = r1.x; ref[1] = r1.y; ref[2] = r1.z; ref[3] = r2.x; ref[4] = r2.y; ref[5] = r2.z;
+		T[t].f(n, &b1, &b2);
+		got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
+		if (!same6_f(got, ref)) what = "inline";
+#ifndef INDEP_INLINE_ONLY
+		if (!what) {
+			m->basisf(n, &b1, &b2);
+			got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
+			if (!same6_f(got, ref)) what = "out-of-line";
+		}
+		if (!what) {
+			for (j = 0; j < 6; j++) got[j] = bo[(size_t)j * s->n + i];
+			if (!same6_f(got, ref)) what = "batch";
+		}
+#endif
+		(void)j;
+		if (what) {
+			double nn[3] = { fx[i], fy[i], fz[i] }, g[6], r[6];
+			for (j = 0; j < 6; j++) { g[j] = got[j]; r[j] = ref[j]; }
+			report(T[t].name, "float", what, ++bad, nn, g, r);
+		}
+	}
+	return bad;
+}
+
+static void build(inset *s, int fl, size_t nuni)
+{
+	memset(s, 0, sizeof *s);
+	s->fl = fl;
+	gen_uniform(s, nuni);
+	gen_poles(s);
+	gen_thresholds(s);
+}
+
+/* Every method of the header's list (and of the registry) has a row. */
+static int coverage(void)
+{
+#define ONE(m) + 1
+	const size_t listed = 0 ONB_METHOD_LIST(ONE) ONB_FLOAT_METHOD_LIST(ONE);
+#undef ONE
+	size_t i, j;
+	if (listed != NT) {
+		printf("FAIL: %zu methods in ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST, %zu in this test\n", listed, (size_t)NT);
+		return 1;
+	}
+	for (i = 0; i < NT; i++)
+		for (j = 0; j < i; j++)
+			if (strcmp(T[i].name, T[j].name) == 0) { printf("FAIL: %s twice\n", T[i].name); return 1; }
+#ifndef INDEP_INLINE_ONLY
+	{
+		size_t nm;
+		const onb_method *m = onb_methods(&nm);
+		if (nm != NT) { printf("FAIL: registry has %zu methods, test %zu\n", nm, (size_t)NT); return 1; }
+		for (i = 0; i < nm; i++)
+			if (!onb_find(m[i].name)) return 1;
+		for (i = 0; i < NT; i++)
+			if (!onb_find(T[i].name)) { printf("FAIL: %s not in the registry\n", T[i].name); return 1; }
+	}
+#endif
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	const size_t nuni = (argc > 1 && strcmp(argv[1], "--quick") == 0) ? 65536 : 1000000;
+	inset sd, sf;
+	float *fx, *fy, *fz, *bof;
+	double *bod;
+	long fails = 0;
+	size_t t, i;
+	if (coverage())
+		return 1;
+	build(&sd, 0, nuni);
+	build(&sf, 1, nuni);
+	fx = malloc(sf.n * sizeof *fx); fy = malloc(sf.n * sizeof *fy); fz = malloc(sf.n * sizeof *fz);
+	bof = malloc(6 * sf.n * sizeof *bof); bod = malloc(6 * sd.n * sizeof *bod);
+	if (!fx || !fy || !fz || !bof || !bod) { fprintf(stderr, "test_indep: out of memory\n"); return 2; }
+	for (i = 0; i < sf.n; i++) { fx[i] = (float)sf.x[i]; fy[i] = (float)sf.y[i]; fz[i] = (float)sf.z[i]; }
+	printf("test_indep: %zu double and %zu float inputs (%zu uniform each, poles, thresholds +-8 ulps)\n", sd.n, sf.n, nuni);
+	for (t = 0; t < NT; t++) {
+		long bd = T[t].d ? check_d(t, &sd, bod) : 0, bf = check_f(t, &sf, fx, fy, fz, bof);
+		printf("  %-24s double %ld differ, float %ld differ%s\n", T[t].name, bd, bf,
+#ifdef INDEP_INLINE_ONLY
+		       " (inline only)"
+#else
+		       " (inline, out-of-line, batch)"
+#endif
+		       );
+		fails += bd + bf;
+	}
+	free(sd.x); free(sd.y); free(sd.z); free(sf.x); free(sf.y); free(sf.z);
+	free(fx); free(fy); free(fz); free(bof); free(bod);
+	printf("test_indep: %s\n", fails ? "FAILED" : "all methods agree bit for bit");
+	return fails ? 1 : 0;
+}

@@ -3,6 +3,7 @@
 #   make test       every test (installs missing packages via scripts/install-deps.sh)
 #   make bench      the default benchmark run
 #   make plots      charts of the newest run
+#   make mpi        onbstudy-mpi, the MPI driver of the sweep (needs Open MPI's mpicc)
 #   make robustness the hardening checks, then results/robustness.md
 #   make install    PREFIX=/usr/local DESTDIR=  (header, libonb.a, onb.pc)
 #   make uninstall, make clean
@@ -153,7 +154,19 @@ uninstall:
 	      $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc
 
 clean:
-	rm -rf $(B) libonb.a onbstudy onb.pc   # onb.pc: left by older Makefiles
+	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onb.pc   # onb.pc: left by older Makefiles
+
+# The MPI driver (issue 13): `make mpi` builds onbstudy-mpi with Open MPI's
+# mpicc; the default build does not need MPI.  It links the same study
+# library, so it runs the same engine as ./onbstudy.
+MPICC ?= mpicc
+.PHONY: mpi
+mpi: onbstudy-mpi
+$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(wildcard src/study/*.h) include/onb.h Makefile $(B)/rev.stamp
+	@mkdir -p $(@D)
+	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc/study -D_POSIX_C_SOURCE=200809L -c $< -o $@
+onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
+	$(MPICC) $(BASE) $(OMP) -o $@ $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
 
 # The example renderer links libonb.a and libm, as a user's would, and the
 # scene reader (meshio, whose glTF part links cJSON) for --obj.

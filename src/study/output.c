@@ -137,6 +137,8 @@ void study_default_run_dir(char *buf, size_t n)
 	snprintf(buf, n, "results/run-%s", stamp);
 }
 
+const char *study_provenance_note;
+
 /* results/latest -> dir (a directory under results/), replaced atomically. */
 void study_point_latest(const char *dir)
 {
@@ -183,4 +185,6 @@ void study_provenance(FILE *f, const char *what, unsigned long long seed, int th
 	fprintf(f, "# seed: %llu\n", seed);
 	fprintf(f, "# threads: %d\n", threads);
 	fprintf(f, "# command: %s\n", study_cmdline);
+	if (study_provenance_note)
+		fprintf(f, "# %s\n", study_provenance_note);
 }

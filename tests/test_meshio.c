@@ -423,7 +423,7 @@ static void test_geom(void)
 	rc = mesh_read_geom_mem("c.obj", (const unsigned char *)"v 0 0 0\nf 1 2 3\n", 16, &m, &g, err, sizeof err);
 	CHECK(rc == -1 && strstr(err, "line 2") && g.tri == NULL && g.pos == NULL && g.ntris == 0 && m.x == NULL, "geom c: %s", err);
 	rc = mesh_read_geom_mem("d.ply", (const unsigned char *)"ply\n", 4, &m, &g, err, sizeof err);
-	CHECK(rc == -1 && strstr(err, "geometry is read from OBJ") && g.tri == NULL, "geom d: %s", err);
+	CHECK(rc == -1 && strstr(err, "byte") && g.tri == NULL, "geom d: %s", err);
 }
 
 
@@ -508,6 +508,29 @@ static void test_gltf_files(void)
 			fclose(f);
 		expect_error("external.gltf", buf, n, "external", "refused");
 	}
+}
+
+/* geometry for a renderer from PLY and glTF (aorender --mesh) */
+static void test_geom_formats(void)
+{
+	static const char ply[] = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+	                          "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
+	                          "property list uchar int vertex_indices\nend_header\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0.6 0 0.8\n0 1 0 0 0 1\n4 0 1 2 3\n";
+	mesh_normals m;
+	mesh_geom g;
+	char err[512];
+	int rc = mesh_read_geom_mem("quad.ply", (const unsigned char *)ply, strlen(ply), &m, &g, err, sizeof err);
+	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nnormals == 4 && g.nrm[6] == (double)0.6f && g.tri[3] == 0
+	      && g.tri[4] == 2 && g.tri[5] == 3 && g.tri_n[5] == 3 && g.pos[6] == 1, "PLY geometry: %s", err);
+	if (rc == 0) { mesh_geom_free(&g); mesh_free(&m); }
+	rc = mesh_read_geom_file("tests/data/gltf/strided.gltf", &m, &g, err, sizeof err);
+	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nrm[0] == (double)0.6f && g.tri[3] == 0 && g.tri[4] == 2 && g.tri[5] == 3
+	      && g.pos[3] == 1 && g.tri_n[4] == 2, "glTF geometry: %s", err);
+	if (rc == 0) { mesh_geom_free(&g); mesh_free(&m); }
+	rc = mesh_read_geom_file("tests/data/gltf/sparse.gltf", &m, &g, err, sizeof err);
+	CHECK(rc == 0 && g.nverts == 12 && g.ntris == 4 && g.tri[6] == 8 && g.tri[11] == 11 && g.nrm[3 * 9 + 2] == 1
+	      && strstr(m.warning, "not a multiple of 3"), "glTF geometry, three primitives: %s (%zu %zu)", err, g.nverts, g.ntris);
+	if (rc == 0) { mesh_geom_free(&g); mesh_free(&m); }
 }
 
 static void test_gltf_errors(void)
@@ -609,6 +632,7 @@ int main(void)
 	test_geom();
 	test_gltf_files();
 	test_gltf_errors();
+	test_geom_formats();
 	test_detect();
 	printf("%d passed, %d failed\n", pass, failed);
 	return failed != 0;

@@ -133,6 +133,8 @@ static void warn(gltf *g, const char *fmt, ...)
 	va_start(ap, fmt);
 	vsnprintf(w + l, cap - l, fmt, ap);
 	va_end(ap);
+	if (l && strstr(w, w + l) < w + l - 2) /* said already (a geometry read) */
+		w[l - 2] = '\0';
 }
 
 /* ---- buffers ---------------------------------------------------------- */
@@ -615,6 +617,9 @@ static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_
 			}
 	}
 	g->m->nvertices += nv;
+	if (mode == 4 && (ii >= 0 ? nidx : nv) % 3)
+		warn(g, "mesh %lld primitive %lld: %zu vertices for TRIANGLES is not a multiple of 3 (the last %zu ignored)", mi, pi,
+		     ii >= 0 ? nidx : nv, (ii >= 0 ? nidx : nv) % 3);
 	if (ni < 0 && psi >= 0 && mode >= 4) {
 		size_t nc = ii >= 0 ? nidx : np, nt;
 		tri = mio_calloc(nc, 3 * sizeof *tri);
@@ -623,8 +628,6 @@ static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_
 			goto out;
 		}
 		nt = triangles(mode, ii >= 0 ? idx : NULL, nc, tri);
-		if (mode == 4 && nc % 3)
-			warn(g, "mesh %lld primitive %lld: %zu vertices for TRIANGLES is not a multiple of 3 (the last %zu ignored)", mi, pi, nc, nc % 3);
 		if (nt && computed(g, pos, np, tri, nt, &po->nrm, &po->vidx, &po->n) != 0)
 			goto out;
 		po->computed = nt > 0;
@@ -894,6 +897,142 @@ out:
 	return rc;
 }
 
+
+/* ---- geometry for a renderer (object space) ---------------------------------- */
+
+typedef struct {
+	double *pos, *nrm;
+	uint32_t *tri;
+	uint64_t *tag;
+	size_t nv, nt, capv, capt;
+} geo_acc;
+
+static int geo_room(gltf *g, geo_acc *a, size_t nv, size_t nt)
+{
+	size_t limit = (size_t)MESH_MAX_ITEMS;
+	if (g->inbytes < limit / 16)
+		limit = 16 * g->inbytes + 4096;
+	if (a->nv + nv > limit || a->nt + nt > limit)
+		return mio_fail(g->c, "more than %zu vertices or triangles (at most 16 per byte of input)", limit);
+	if (a->nv + nv > a->capv) {
+		size_t cap = a->capv ? a->capv : 1024;
+		double *p, *n;
+		while (cap < a->nv + nv)
+			cap *= 2;
+		if (!(p = realloc(a->pos, cap * 3 * sizeof *p)))
+			return mio_fail(g->c, "out of memory");
+		a->pos = p;
+		if (!(n = realloc(a->nrm, cap * 3 * sizeof *n)))
+			return mio_fail(g->c, "out of memory");
+		a->nrm = n;
+		a->capv = cap;
+	}
+	if (a->nt + nt > a->capt) {
+		size_t cap = a->capt ? a->capt : 1024;
+		uint32_t *t;
+		uint64_t *w;
+		while (cap < a->nt + nt)
+			cap *= 2;
+		if (!(t = realloc(a->tri, cap * 3 * sizeof *t)))
+			return mio_fail(g->c, "out of memory");
+		a->tri = t;
+		if (!(w = realloc(a->tag, cap * sizeof *w)))
+			return mio_fail(g->c, "out of memory");
+		a->tag = w;
+		a->capt = cap;
+	}
+	return 0;
+}
+
+/* One primitive's positions, per-vertex normals (stored, or computed; 0 0 0
+   for a vertex no triangle uses) and triangles, appended to a. */
+static int geo_prim(gltf *g, long long mi, long long pi, const cJSON *pr, geo_acc *a)
+{
+	const cJSON *at = item(pr, "attributes");
+	long long mode, psi, ii, ct;
+	double *pos = NULL, *idx = NULL;
+	size_t np = 0, nidx = 0, nt, i;
+	uint32_t *tri = NULL;
+	prim_out po;
+	int rc = -1;
+	if (jint(g, pr, "mesh primitive", (long)pi, "mode", 4, 0, 6, &mode) != 0
+	    || jint(g, at, "mesh primitive", (long)pi, "POSITION", -2, -2, 1 << 30, &psi) != 0
+	    || jint(g, pr, "mesh primitive", (long)pi, "indices", -2, -2, 1 << 30, &ii) != 0)
+		return -1;
+	if (psi < 0 || mode < 4)
+		return 0; /* nothing to draw */
+	if (primitive(g, mi, pi, pr, &po) != 0)
+		return -1;
+	if (accessor(g, psi, ACC_POSITION, &pos, &np, &ct) != 0 || (ii >= 0 && accessor(g, ii, ACC_INDEX, &idx, &nidx, &ct) != 0))
+		goto out;
+	tri = mio_calloc(ii >= 0 ? nidx : np, 3 * sizeof *tri);
+	if (!tri) {
+		mio_fail(g->c, "out of memory");
+		goto out;
+	}
+	nt = triangles(mode, idx, ii >= 0 ? nidx : np, tri);
+	if (a->nv + np > UINT32_MAX - 1) {
+		mio_fail(g->c, "more than %lu vertices", (unsigned long)(UINT32_MAX - 1));
+		goto out;
+	}
+	if (geo_room(g, a, np, nt) != 0)
+		goto out;
+	memcpy(a->pos + 3 * a->nv, pos, np * 3 * sizeof *pos);
+	memset(a->nrm + 3 * a->nv, 0, np * 3 * sizeof *a->nrm);
+	for (i = 0; i < po.n; i++) {
+		size_t v = po.vidx ? po.vidx[i] : i;
+		if (v < np)
+			memcpy(a->nrm + 3 * (a->nv + v), po.nrm + 3 * i, 3 * sizeof *po.nrm);
+	}
+	for (i = 0; i < 3 * nt; i++)
+		a->tri[3 * a->nt + i] = (uint32_t)(a->nv + tri[i]);
+	for (i = 0; i < nt; i++)
+		a->tag[a->nt + i] = tag_of(mi, pi) | (uint64_t)(i & 0xffffffffu);
+	a->nv += np;
+	a->nt += nt;
+	rc = 0;
+out:
+	free(po.nrm); free(po.vidx); free(pos); free(idx); free(tri);
+	return rc;
+}
+
+static int read_geom(gltf *g, mesh_geom *geom)
+{
+	geo_acc a;
+	long long mi;
+	memset(&a, 0, sizeof a);
+	for (mi = 0; mi < (long long)g->m->nmeshes; mi++) {
+		const cJSON *mo = top(g, "meshes", "mesh", mi), *ps, *pr;
+		long long pi = 0;
+		if (!mo || jarr(g, mo, "mesh", (long)mi, "primitives", &ps) != 0)
+			goto bad;
+		cJSON_ArrayForEach(pr, ps) {
+			if (geo_prim(g, mi, pi++, pr, &a) != 0)
+				goto bad;
+		}
+	}
+	if (a.nt == 0) {
+		mio_fail(g->c, "no geometry: no triangles to draw (points and lines only, or no POSITION)");
+		goto bad;
+	}
+	geom->nverts = geom->nnormals = a.nv;
+	geom->pos = a.pos;
+	geom->nrm = a.nrm;
+	geom->ntris = a.nt;
+	geom->tri = a.tri;
+	geom->tri_line = a.tag;
+	geom->tri_n = mio_calloc(a.nt, 3 * sizeof *geom->tri_n);
+	if (!geom->tri_n) {
+		mio_fail(g->c, "out of memory");
+		return -1; /* the caller frees geom */
+	}
+	memcpy(geom->tri_n, a.tri, a.nt * 3 * sizeof *a.tri);
+	return 0;
+bad:
+	free(a.pos); free(a.nrm); free(a.tri); free(a.tag);
+	return -1;
+}
+
 /* ---- the file ----------------------------------------------------------------- */
 
 static uint32_t le32(const unsigned char *p)
@@ -1005,8 +1144,8 @@ int mio_read_gltf(mctx *c, const unsigned char *buf, size_t len, const mesh_opts
 	g.c = c; g.o = o; g.m = m; g.inbytes = len;
 	m->format = MESH_GLTF;
 	m->world = o->world;
-	if (geom)
-		return mio_fail(c, "geometry is not read from glTF files yet");
+	if (geom && o->world)
+		return mio_fail(c, "geometry is read in object space only (no --world)");
 	if (len >= 4 && !memcmp(buf, "glTF", 4)) {
 		g.glb = m->gltf_binary = 1;
 		if (glb(&g, buf, len, &js, &jl) != 0)
@@ -1026,6 +1165,8 @@ int mio_read_gltf(mctx *c, const unsigned char *buf, size_t len, const mesh_opts
 		mio_fail(c, "the JSON is not an object: not a glTF file");
 	else
 		rc = read_all(&g);
+	if (rc == 0 && geom)
+		rc = read_geom(&g, geom);
 	if (rc == 0)
 		m->stored_type = g.ntypes == 1 ? MESH_T_FLOAT : g.ntypes == 2 ? MESH_T_QUANT : g.ntypes ? MESH_T_OTHER : MESH_T_DOUBLE;
 	m->origin = g.ntypes ? MESH_STORED : MESH_COMPUTED;

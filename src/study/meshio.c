@@ -662,7 +662,53 @@ static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long 
 	}
 }
 
-static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m)
+/* A renderer's view of a PLY mesh: positions, fan-triangulated faces, and
+   per-vertex normals (the vertex element's own, or the computed ones);
+   normals of another element (per face) are not used for shading. */
+static int ply_geom(mctx *c, const mesh_normals *m, const double *pos, size_t nv, const ply_elem *el, int vert_e,
+                    const gvec *corners, const gvec *faces, mesh_geom *g)
+{
+	const face_rec *fr = faces->p;
+	const uint32_t *cv = corners->p;
+	size_t f, i, t = 0, off = 0;
+	int j, pervertex = m->origin == MESH_COMPUTED || (el[vert_e].inx >= 0 && el[vert_e].iny >= 0 && el[vert_e].inz >= 0);
+	for (f = 0; f < faces->n; f++)
+		t += fr[f].count - 2;
+	if (t == 0)
+		return fail(c, "no geometry: no face has 3 or more vertices");
+	g->nverts = nv;
+	g->nnormals = pervertex ? nv : 0;
+	g->ntris = t;
+	g->pos = xcalloc(nv, 3 * sizeof *g->pos);
+	g->nrm = xcalloc(nv, 3 * sizeof *g->nrm);
+	g->tri = xcalloc(t, 3 * sizeof *g->tri);
+	g->tri_n = xcalloc(t, 3 * sizeof *g->tri_n);
+	g->tri_line = xcalloc(t, sizeof *g->tri_line);
+	if (!g->pos || !g->nrm || !g->tri || !g->tri_n || !g->tri_line)
+		return fail(c, "out of memory for the geometry (%zu vertices, %zu triangles)", nv, t);
+	memcpy(g->pos, pos, nv * 3 * sizeof *pos);
+	for (j = 0; j < vert_e && m->origin == MESH_STORED; j++)
+		if (el[j].inx >= 0 && el[j].iny >= 0 && el[j].inz >= 0)
+			off += (size_t)el[j].count;
+	if (pervertex)
+		for (i = 0; i < m->count; i++) {
+			size_t v = m->origin == MESH_COMPUTED ? m->index[i] : i - off;
+			if (m->origin == MESH_STORED && (i < off || i - off >= nv))
+				continue;
+			g->nrm[3 * v] = m->x[i]; g->nrm[3 * v + 1] = m->y[i]; g->nrm[3 * v + 2] = m->z[i];
+		}
+	for (f = 0, t = 0; f < faces->n; f++)
+		for (i = 1; i + 1 < fr[f].count; i++, t++) {
+			size_t a = fr[f].first, k;
+			g->tri[3 * t] = cv[a]; g->tri[3 * t + 1] = cv[a + i]; g->tri[3 * t + 2] = cv[a + i + 1];
+			for (k = 0; k < 3; k++)
+				g->tri_n[3 * t + k] = pervertex ? g->tri[3 * t + k] : MESH_NO_NORMAL;
+			g->tri_line[t] = fr[f].where;
+		}
+	return 0;
+}
+
+static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
 {
 	ply_elem *el = NULL;
 	int ne = 0, i, normal_elems = 0, rc = -1;
@@ -885,12 +931,6 @@ badprop:
 			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
 			goto out;
 		}
-		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
-		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
-		if (!pos || !vwhere) {
-			fail(c, "out of memory for %llu vertices", nvert);
-			goto out;
-		}
 	} else {
 		if (alloc_normals(m, (size_t)nnorm) != 0) {
 			fail(c, "out of memory for %llu normals", nnorm);
@@ -919,6 +959,24 @@ badprop:
 		m->origin = MESH_STORED;
 	}
 
+	/* positions and faces: for computed normals, and for a renderer */
+	if (compute || geom) {
+		if (geom && (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0)) {
+			fail(c, "no geometry: no 'vertex' element with x, y, z and 'face' element with vertex_indices");
+			goto out;
+		}
+		if (nvert > MESH_MAX_ITEMS) {
+			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
+			goto out;
+		}
+		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
+		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
+		if (!pos || !vwhere) {
+			fail(c, "out of memory for %llu vertices", nvert);
+			goto out;
+		}
+	}
+
 	/* body */
 	r.c = c; r.buf = buf; r.p = p; r.end = end; r.fmt = fmt; r.line = line + 1;
 	{
@@ -926,7 +984,7 @@ badprop:
 		for (i = 0; i < ne; i++) {
 			ply_elem *e = &el[i];
 			int isn = e->inx >= 0 && e->iny >= 0 && e->inz >= 0;
-			int isv = compute && i == vert_e, isf = compute && i == face_e;
+			int isv = (compute || geom) && i == vert_e, isf = (compute || geom) && i == face_e;
 			unsigned long long ei;
 			for (ei = 0; ei < e->count; ei++) {
 				unsigned long long at;
@@ -1037,6 +1095,8 @@ badprop:
 		m->stored_type = MESH_T_DOUBLE;
 		snprintf(m->element, sizeof m->element, "vertex");
 	}
+	if (geom && ply_geom(c, m, pos, (size_t)nvert, el, vert_e, &corners, &faces, geom) != 0)
+		goto out;
 	rc = 0;
 out:
 	if (rc != 0)
@@ -1098,7 +1158,7 @@ static int detect(const char *name, const unsigned char *b, size_t n, const char
 		nul += b[k] == 0;
 		ctl += b[k] < 0x20 && !is_space(b[k]) && b[k] != 0x1a;
 	}
-	if (look >= 6 && !memcmp(b + i, "solid", 5) && (look - i == 5 || is_space(b[i + 5])) && !nul) {
+	if (look - i >= 5 && !memcmp(b + i, "solid", 5) && (look - i == 5 || is_space(b[i + 5])) && !nul) {
 		*what = "STL (ascii)";
 		return 0;
 	}
@@ -1159,9 +1219,7 @@ static int read_mem(mctx *c, const unsigned char *buf, size_t len, const mesh_op
 	fmt = detect(c->name, buf, len, &what);
 	if (!fmt)
 		return fail(c, "%s, which is not read here; supported: OBJ, PLY, glTF 2.0 (.gltf, .glb)", what);
-	if (fmt == MESH_PLY && geom)
-		return fail(c, "geometry is read from OBJ and glTF files only, and this is a PLY file");
-	rc = fmt == MESH_PLY ? read_ply(c, buf, len, out) : fmt == MESH_GLTF ? mio_read_gltf(c, buf, len, o ? o : &defaults, out, geom)
+	rc = fmt == MESH_PLY ? read_ply(c, buf, len, out, geom) : fmt == MESH_GLTF ? mio_read_gltf(c, buf, len, o ? o : &defaults, out, geom)
 	     : read_obj(c, buf, len, out, geom);
 	if (rc != 0) {
 		mesh_free(out);

@@ -44,6 +44,21 @@ samples() { # samples METHOD PREC DIST
 	awk -F, -v m="$1" -v p="$2" -v d="$3" '!/^#/ && $1 == m && $2 == p && $3 == d { print $4; exit }' "$RUN/summary.csv"
 }
 
+# floor_band METHOD PREC "DISTS" AXIS lin|log: x, floor RMS, floor max per
+# bin of by_nz.csv (columns found by name; max over the distributions)
+floor_band() {
+	awk -F, -v m="$1" -v p="$2" -v ds="$3" -v ax="$4" -v sc="$5" '
+		BEGIN { n = split(ds, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+		/^#/ { next }
+		$1 == "method" { for (i = 1; i <= NF; i++) h[$i] = i; next }
+		!("floor_max" in h) { exit }
+		$1 == m && $2 == p && ($3 in want) && $4 == ax && $(h["floor_max"]) != "nan" && $(h["floor_max"]) + 0 > 0 {
+			k = $5; c[k] = ($5 + $6) / 2
+			if (!(k in hi) || $(h["floor_max"]) + 0 > hi[k]) hi[k] = $(h["floor_max"]) + 0
+			if (!(k in lo) || $(h["floor_rms"]) + 0 > lo[k]) lo[k] = $(h["floor_rms"]) + 0 }
+		END { for (k in hi) print (sc == "log" ? 10 ^ c[k] : c[k]), lo[k], hi[k] }' "$RUN/by_nz.csv" | sort -g
+}
+
 for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
 	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; else FLOOR=1e-20; EPS=2.22e-16; fi
@@ -72,17 +87,29 @@ for P in float double; do
 		files1="$files1 $f1"; files2="$files2 $f2"; files6="$files6 $f6"
 		names="$names $m"; colors="$colors $(colour "$m")"; dashes="$dashes $(dash "$m")"
 	done
-	common="files='$files1'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL"
+	# the accuracy floor band (issue 16): the floor of one method's family
+	# (duff_branchless when the run has it), its RMS to its max per bin;
+	# runs from before the floor have no floor columns and get no band
+	fm=$(echo "$pmethods" | grep -x duff_branchless || echo "$first")
+	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
+	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
+	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
+	bt="floor ($fm formula, exact, rounded once): RMS to max"
+	b1=""; b2=""; b6=""
+	[ -s "$W/fb1_$P.dat" ] && b1="band='$W/fb1_$P.dat'; bandtitle='$bt';"
+	[ -s "$W/fb2_$P.dat" ] && b2="band='$W/fb2_$P.dat'; bandtitle='$bt';"
+	[ -s "$W/fb6_$P.dat" ] && b6="band='$W/fb6_$P.dat'; bandtitle='$bt';"
+	common="$b1 files='$files1'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
 		gp lines.gp "$common; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='largest orthonormality defect in the bin (unitless)'; ttl='$P: max defect against n.z, uniform, $n inputs per method'"
 		gp lines.gp "$common; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='RMS orthonormality defect in the bin (unitless)'; ttl='$P: RMS defect against n.z, uniform, $n inputs per method'"
 	fi
 	n=$(samples "$first" "$P" south)
-	gp lines.gp "files='$files2'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$EPS/2; xmax=1; xl='1 + n.z (distance from the south pole, unitless)'; yl='largest orthonormality defect (unitless)'; ttl='$P: near n.z = -1, south (${n:-0}), exhaustive and uniform inputs'"
+	gp lines.gp "$b2 files='$files2'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$EPS/2; xmax=1; xl='1 + n.z (distance from the south pole, unitless)'; yl='largest orthonormality defect (unitless)'; ttl='$P: near n.z = -1, south (${n:-0}), exhaustive and uniform inputs'"
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
-		gp lines.gp "files='$files6'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=1e-9; xmax=0.1; xl='| |n| - 1 | of the input (unitless)'; yl='largest defect against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method'"
+		gp lines.gp "$b6 files='$files6'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=1e-9; xmax=0.1; xl='| |n| - 1 | of the input (unitless)'; yl='largest defect against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method'"
 	fi
 
 	# 3. maps and continuity, from grid.csv

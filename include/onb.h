@@ -44,8 +44,22 @@
  *     defect max(|b1|-1, |b2|-1, b1.n, b2.n, b1.b2) measured by
  *     `onbstudy sweep` against MPFR; tests/test_lib.c checks the bounds.
  *
- * Build with -ffp-contract=off for results that match the study; the
- * header refuses -ffast-math, under which none of the analysis holds.
+ * Floating-point flags (README "Using libonb in your renderer"):
+ *   - Contraction: the inline functions are wrapped in per-function
+ *     pragmas that keep a*b+c from fusing into an FMA, whatever the
+ *     client's -ffp-contract.  GCC honours `#pragma GCC optimize
+ *     ("fp-contract=off")`, but then will not inline them into a caller
+ *     built with other FP-contract settings (they become calls, with the
+ *     studied bits).  Clang honours `#pragma clang fp contract(off)` under
+ *     its default -ffp-contract=on, and ignores it under
+ *     -ffp-contract=fast (clang 14).  Define ONB_INLINE_FOLLOWS_CLIENT_FP
+ *     to drop the pragmas: the inline functions then follow your flags.
+ *   - -ffast-math stops at #error unless ONB_ALLOW_FAST_MATH is defined.
+ *     WARNING: with it, the inline functions follow -ffast-math
+ *     (reassociation, reciprocal approximations, no NaN/inf): none of the
+ *     study's error figures hold for them.  The out-of-line calls in
+ *     libonb.a (onb_NAME_outline[f], onb_NAME_array[f], method->basis)
+ *     were compiled with the library's own flags and keep the studied bits.
  */
 #ifndef ONB_H
 #define ONB_H
@@ -55,8 +69,22 @@
 #include <stdint.h>
 #include <string.h>
 
-#if defined(__FAST_MATH__)
-#error "onb.h: -ffast-math breaks the published error behaviour of every method; build without it"
+#if defined(__FAST_MATH__) && !defined(ONB_ALLOW_FAST_MATH)
+#error "onb.h: -ffast-math breaks the published error behaviour of every inline method; build without it, or define ONB_ALLOW_FAST_MATH and call the out-of-line onb_NAME_outline/onb_NAME_array functions for the studied bits"
+#endif
+
+/* No contraction into FMA inside the header's functions (see above).
+   Popped by ONB__FP_END at the end of the header. */
+#if !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__clang__)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#define ONB__FP_PRAGMAS 1
+#elif !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__GNUC__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#define ONB__FP_PRAGMAS 2
+#else
+#define ONB__FP_PRAGMAS 0
 #endif
 
 #if (defined(__SSE__) || defined(_M_X64) || defined(__x86_64__)) && !defined(ONB_NO_HW_RSQRT)
@@ -380,7 +408,7 @@ static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double
 {
 	onb_vec3 w;
 	double s = 1.0 + n.z, a, b;
-	if (s == 0.0) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	if (s <= 0.0 && s >= 0.0) { w.x = -y; w.y = -x; w.z = -z; return w; } /* s == 0, without -Wfloat-equal */
 	a = 1.0 / s;
 	b = -n.x * n.y * a;
 	w.x = x * (1.0 - n.x * n.x * a) + y * b + z * n.x;
@@ -392,7 +420,7 @@ static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float
 {
 	onb_vec3f w;
 	float s = 1.0f + n.z, a, b;
-	if (s == 0.0f) { w.x = -y; w.y = -x; w.z = -z; return w; }
+	if (s <= 0.0f && s >= 0.0f) { w.x = -y; w.y = -x; w.z = -z; return w; } /* s == 0 */
 	a = 1.0f / s;
 	b = -n.x * n.y * a;
 	w.x = x * (1.0f - n.x * n.x * a) + y * b + z * n.x;
@@ -576,7 +604,7 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	*b1 = u;
 	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
 		   difference rounded to double, then converted to float */
-		const double vx = n.x, vy = n.y, vz = n.z, wx = u.x, wy = u.y, wz = u.z;
+		const double vx = (double)n.x, vy = (double)n.y, vz = (double)n.z, wx = (double)u.x, wy = (double)u.y, wz = (double)u.z;
 		b2->x = (float)(vy * wz - vz * wy);
 		b2->y = (float)(vz * wx - vx * wz);
 		b2->z = (float)(vx * wy - vy * wx);
@@ -841,8 +869,34 @@ ONB_METHOD_LIST(ONB__DECLARE)
 ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
 #undef ONB__DECLARE_F
 
+/* Array entry points, for renderers with their own vector types: n[3] in,
+   b1[3] and b2[3] out (they may alias nothing).  Out of line in libonb.a,
+   so they keep the studied bits whatever the caller's flags:
+   onb_NAME_array[f](n, b1, b2) per method, or by registry entry. */
+#define ONB__DECLARE_ARRAY(m) \
+	void onb_##m##_array (const double n[3], double b1[3], double b2[3]); \
+	void onb_##m##_arrayf(const float  n[3], float  b1[3], float  b2[3]);
+ONB_METHOD_LIST(ONB__DECLARE_ARRAY)
+#undef ONB__DECLARE_ARRAY
+/* method->basis(f) on arrays; a NULL method (or function: a float-only
+   method in double) leaves b1, b2 untouched and
+   returns ONB_BAD_METHOD, else ONB_OK (no check of n: see
+   onb_basis_checked). */
+onb_status onb_basis_array (const onb_method *method, const double n[3], double b1[3], double b2[3]);
+onb_status onb_basis_arrayf(const onb_method *method, const float  n[3], float  b1[3], float  b2[3]);
+#define ONB__DECLARE_ARRAY_F(m) \
+	void onb_##m##_arrayf(const float n[3], float b1[3], float b2[3]);
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)
+#undef ONB__DECLARE_ARRAY_F
+
 #ifdef __cplusplus
 }
+#endif
+
+#if ONB__FP_PRAGMAS == 1
+#pragma float_control(pop)
+#elif ONB__FP_PRAGMAS == 2
+#pragma GCC pop_options
 #endif
 
 #endif /* ONB_H */

@@ -25,6 +25,9 @@ trap 'rm -rf "$W"' EXIT
 LOG="$W/gnuplot.log"
 : > "$LOG"
 made=0
+skipped=""
+skip() { skipped="$skipped
+  $1: $2"; }
 
 gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	script=$1; shift
@@ -104,12 +107,14 @@ for P in float double; do
 	if [ -n "$n" ]; then
 		gp lines.gp "$common; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='largest orthonormality defect in the bin (unitless)'; ttl='$P: max defect against n.z, uniform, $n inputs per method'"
 		gp lines.gp "$common; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='RMS orthonormality defect in the bin (unitless)'; ttl='$P: RMS defect against n.z, uniform, $n inputs per method'"
+	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
 	gp lines.gp "$b2 files='$files2'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$EPS/2; xmax=1; xl='1 + n.z (distance from the south pole, unitless)'; yl='largest orthonormality defect (unitless)'; ttl='$P: near n.z = -1, south (${n:-0}), exhaustive and uniform inputs'"
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
 		gp lines.gp "$b6 files='$files6'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=1e-9; xmax=0.1; xl='| |n| - 1 | of the input (unitless)'; yl='largest defect against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method'"
+	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
 	fi
 
 	# 3. maps and continuity, from grid.csv
@@ -141,6 +146,7 @@ for P in float double; do
 			cell=$(echo "$rows" | awk '{ r = $1; c = $2; dz = 2 / r; dphi = 6.283185307 / c; print (dz > dphi ? dz : dphi) }')
 			gp bars.gp "file='$W/bars_$P.dat'; cell=${cell:-0.1}; yl='largest |b1 - b1''| between neighbouring cells'; out='$RUN/continuity_$P'; ttl='$P: continuity of the frame field on the ${rows% *}x${rows#* } equal-area grid'"
 		fi
+	else skip "maps_$P, continuity_$P" "no grid.csv (sweep --dists with grid)"
 	fi
 
 	# 5. threshold
@@ -158,12 +164,16 @@ for P in float double; do
 				}
 			} }' > "$W/marks_$P.gp"
 		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") values of n.z near -1, $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths each'"
+	elif [ -f "$RUN/threshold.csv" ]; then skip "threshold_$P" "threshold.csv has no $P section"
+	else skip "threshold_$P" "no threshold.csv (run ./onbstudy threshold)"
 	fi
 
 	# 4. speed against accuracy
 	if [ -f "$RUN/tradeoff.csv" ] && [ -f "$HERE/tradeoff.gp" ]; then
 		sh "$HERE/tradeoff-data.sh" "$RUN/tradeoff.csv" "$P" "$W" "$HERE/colors.txt" && \
 		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR"
+	elif [ -f "$RUN/bench.csv" ]; then skip "tradeoff_$P" "no tradeoff.csv (run ./onbstudy table)"
+	else skip "tradeoff_$P" "no bench.csv or tradeoff.csv (run ./onbstudy bench --quick && ./onbstudy table)"
 	fi
 done
 
@@ -173,3 +183,4 @@ if grep -qi "warning" "$LOG"; then
 	exit 1
 fi
 echo "plots: $made charts (PNG and SVG) in $RUN"
+[ -z "$skipped" ] || echo "plots: skipped, for want of data:$skipped"

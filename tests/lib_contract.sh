@@ -4,7 +4,8 @@
 #  2. a program compiled elsewhere against only onb.h and libonb.a
 #     enumerates the registry and calls every method in both precisions;
 #  3. make install/uninstall with DESTDIR, and pkg-config --cflags --libs onb;
-#  4. -ffast-math stops at #error.
+#     two prefixes in a row, each with its own onb.pc;
+#  4. -ffast-math stops at #error (unless ONB_ALLOW_FAST_MATH: tests/lib_client.sh).
 set -u
 cd "$(dirname "$0")/.."
 pass=0; fail=0
@@ -74,6 +75,20 @@ if command -v pkg-config >/dev/null 2>&1; then
 fi
 make -s uninstall PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null
 if [ -z "$(find "$tmp/root" -type f)" ]; then ok; else bad "uninstall left: $(find "$tmp/root" -type f)"; fi
+# Two real prefixes in a row (no DESTDIR): each onb.pc names its own
+# prefix, carries no floating-point flag, and builds a client; nothing is
+# generated in the tree.
+for p in "$tmp/pa" "$tmp/pb"; do
+	if make -s install PREFIX="$p" >/dev/null; then ok; else bad "make install PREFIX=$p"; continue; fi
+	grep -qx "prefix=$p" "$p/lib/pkgconfig/onb.pc" && ok || bad "$p/lib/pkgconfig/onb.pc names another prefix: $(head -1 "$p/lib/pkgconfig/onb.pc")"
+	! grep -q 'fp-contract\|ffast\|fno-' "$p/lib/pkgconfig/onb.pc" && ok || bad "onb.pc carries FP flags to clients"
+	if command -v pkg-config >/dev/null 2>&1; then
+		flags=$(PKG_CONFIG_PATH="$p/lib/pkgconfig" pkg-config --cflags --libs onb)
+		case "$flags" in *"$p"/include*) ok;; *) bad "pkg-config --cflags for $p: $flags";; esac
+		if (cd "$tmp" && cc -std=c99 $SAN app/app.c -o app_p $flags && ./app_p >/dev/null); then ok; else bad "client with $p's pkg-config flags: $flags"; fi
+	fi
+done
+[ ! -e onb.pc ] && ok || bad "make install left onb.pc in the tree"
 
 # 4. -ffast-math is refused
 echo '#include "onb.h"' > "$tmp/fm.c"

@@ -71,7 +71,7 @@ static const char usage_text[] =
 	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
 	"  --precision P          float, double or both (default both)\n"
 	"  --threads N            threads of the all-threads runs (default: OpenMP's maximum)\n"
-	"  --out DIR              output directory (default results/run-<UTC date>)\n"
+	"  --out DIR              output directory (default: the current run, results/latest)\n"
 	"  --quick                a check, not a measurement: 3 short repetitions and a 16 MiB\n"
 	"                         'stream' set (under 15 s); the default run takes about a minute\n"
 	"  --stream-mib M         smallest float working set of the stream size (default 64)\n"
@@ -547,7 +547,7 @@ int cmd_bench(int argc, char **argv)
 	if (o.out)
 		out = o.out;
 	else {
-		study_default_run_dir(outbuf, sizeof outbuf);
+		study_current_run_dir(outbuf, sizeof outbuf); /* the run of results/latest */
 		out = outbuf;
 	}
 	if (study_mkdir_p(out) != 0)

@@ -56,4 +56,11 @@ double  engine_now(void);                            /* monotonic seconds */
 /* "\r<label> 42.0%  ETA 3.2 min" on stderr. */
 void    engine_progress_line(const char *label, const engine_progress *pr);
 
+/* sweep.c, the writers' side of cmd_sweep (also used by the MPI driver):
+   refuse an unusable output directory (0, or -1 after a message), and
+   write a finished run's files (a shard's state, or the CSV files,
+   results/latest, --plots); 0 or 1. */
+int     sweep_outdir(const char *out);
+int     sweep_write(const sweep_plan *pl, sweep_state *st, double seconds);
+
 #endif

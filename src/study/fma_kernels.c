@@ -5,6 +5,8 @@
  * fma_available() said the CPU has FMA.
  */
 #include <string.h>
+/* This copy must contract: no FP pragmas from onb.h. */
+#define ONB_INLINE_FOLLOWS_CLIENT_FP 1
 #include "kernels.h"
 
 #if defined(__FMA__)

@@ -137,6 +137,37 @@ void study_default_run_dir(char *buf, size_t n)
 	snprintf(buf, n, "results/run-%s", stamp);
 }
 
+const char *study_provenance_note;
+
+/* results/latest -> dir (a directory under results/), replaced atomically. */
+void study_point_latest(const char *dir)
+{
+	const char *base = strrchr(dir, '/');
+	if (!base || strncmp(dir, "results/", 8) != 0 || strchr(dir + 8, '/'))
+		return;
+	unlink("results/latest.tmp");
+	if (symlink(base + 1, "results/latest.tmp") == 0)
+		rename("results/latest.tmp", "results/latest");
+}
+
+void study_current_run_dir(char *buf, size_t n)
+{
+	char target[512];
+	struct stat st;
+	ssize_t len = readlink("results/latest", target, sizeof target - 1);
+	if (len > 0 && stat("results/latest", &st) == 0 && S_ISDIR(st.st_mode)) {
+		target[len] = '\0';
+		if (target[0] == '/' || strncmp(target, "results/", 8) == 0)
+			snprintf(buf, n, "%s", target);
+		else
+			snprintf(buf, n, "results/%s", target);
+		return;
+	}
+	study_default_run_dir(buf, n);
+	if (study_mkdir_p(buf) == 0)
+		study_point_latest(buf);
+}
+
 void study_provenance(FILE *f, const char *what, unsigned long long seed, int threads)
 {
 	time_t t = time(NULL);
@@ -154,4 +185,6 @@ void study_provenance(FILE *f, const char *what, unsigned long long seed, int th
 	fprintf(f, "# seed: %llu\n", seed);
 	fprintf(f, "# threads: %d\n", threads);
 	fprintf(f, "# command: %s\n", study_cmdline);
+	if (study_provenance_note)
+		fprintf(f, "# %s\n", study_provenance_note);
 }

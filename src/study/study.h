@@ -102,7 +102,15 @@ void study_out_abort(study_out *o);                       /* close and remove th
    (MPFR precision, ISA, ...) after it. */
 void study_provenance(FILE *f, const char *what, unsigned long long seed, int threads);
 const char *study_cpu_model(void);
+/* An extra provenance line (without '#'), e.g. the MPI driver's ranks and threads; NULL: none. */
+extern const char *study_provenance_note;
 /* A new run directory name under results/: results/run-YYYYmmdd-HHMMSS. */
 void study_default_run_dir(char *buf, size_t n);
+/* The current run, where threshold and bench write by default: the
+   directory results/latest names, or (none yet) a new results/run-DATE,
+   created, which results/latest then names. */
+void study_current_run_dir(char *buf, size_t n);
+/* results/latest -> DIR (only for a directory directly under results/). */
+void study_point_latest(const char *dir);
 
 #endif

@@ -24,7 +24,7 @@ static const char *const fmt_names[] = { "table", "csv", "json" };
 
 /* Refuse an unusable output directory before hours of work (and only once
    every option has been checked, so a refused run creates nothing). */
-static int sweep_outdir(const char *out)
+int sweep_outdir(const char *out)
 {
 	if (study_mkdir_p(out) != 0)
 		return -1;
@@ -97,17 +97,8 @@ static int sweep_plots(const char *out)
 	return 0;
 }
 
-/* results/latest -> the new run, replaced atomically */
-static void sweep_latest(const char *out)
-{
-	const char *base = strrchr(out, '/');
-	unlink("results/latest.tmp");
-	if (base && symlink(base + 1, "results/latest.tmp") == 0)
-		rename("results/latest.tmp", "results/latest");
-}
-
 /* The files: a shard's state, or the whole run's CSV files. */
-static int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
+int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 {
 	const sweep_cfg *cfg = &st->cfg;
 	if (cfg->shard_n > 1) {
@@ -122,7 +113,7 @@ static int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 	if (sweep_finish(st, pl->out, pl->threads, fmt_names[pl->fmt], seconds, 0) != 0)
 		return 1;
 	if (!pl->out_given)
-		sweep_latest(pl->out);
+		study_point_latest(pl->out);
 	fprintf(stderr, "onbstudy: wrote %s/summary.csv, by_nz.csv, worst.csv%s\n", pl->out,
 	        cfg->dist_on[DIST_GRID] ? ", grid.csv" : "");
 	return pl->plots ? sweep_plots(pl->out) : 0;

@@ -94,6 +94,10 @@ int  sweep_kernels_from_names(sweep_state *s);
 
 int  sweep_save_state(const sweep_state *s, const char *dir, const char *name);
 int  sweep_load_state(sweep_state *s, const char *path);
+/* The same with extra bytes after the state (the MPI driver's checkpoint:
+   its done list); load returns them in a malloc'd buffer. */
+int  sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len);
+int  sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len);
 int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
 
 /* Worst-case walk, then every CSV file; fmt is the stdout format. */

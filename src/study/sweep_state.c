@@ -276,6 +276,11 @@ static int rd(FILE *f, void *p, size_t n) { return fread(p, 1, n, f) == n ? 0 : 
 
 int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 {
+	return sweep_save_state_x(s, dir, name, NULL, 0);
+}
+
+int sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len)
+{
 	study_out o;
 	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	sweep_cfg cfg = s->cfg;
@@ -284,7 +289,8 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 		return -1;
 	if (wr(o.f, &cfg, sizeof cfg) || wr(o.f, s->cells, nc * sizeof *s->cells) ||
 	    wr(o.f, s->g_err, g * sizeof *s->g_err) || wr(o.f, s->g_bits, g * sizeof *s->g_bits) ||
-	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s))) {
+	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s)) ||
+	    (len && wr(o.f, extra, len))) {
 		study_error("%s: write failed: %s", o.path, strerror(errno));
 		study_out_abort(&o);
 		return -1;
@@ -293,6 +299,32 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 }
 
 int sweep_load_state(sweep_state *s, const char *path)
+{
+	return sweep_load_state_x(s, path, NULL, NULL);
+}
+
+/* The bytes after the state, up to EOF: 0, or -1 (out of memory, read error). */
+static int read_rest(FILE *f, unsigned char **extra, size_t *len)
+{
+	size_t cap = 4096, n = 0, r;
+	unsigned char *b = malloc(cap), *t;
+	if (!b)
+		return -1;
+	while ((r = fread(b + n, 1, cap - n, f)) > 0) {
+		n += r;
+		if (n == cap) {
+			if (!(t = realloc(b, 2 * cap))) { free(b); return -1; }
+			b = t;
+			cap *= 2;
+		}
+	}
+	if (ferror(f)) { free(b); return -1; }
+	*extra = b;
+	*len = n;
+	return 0;
+}
+
+int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len)
 {
 	FILE *f = fopen(path, "rb");
 	size_t nc, g;
@@ -326,7 +358,7 @@ int sweep_load_state(sweep_state *s, const char *path)
 	g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	if (rd(f, s->cells, nc * sizeof *s->cells) || rd(f, s->g_err, g * sizeof *s->g_err) ||
 	    rd(f, s->g_bits, g * sizeof *s->g_bits) || rd(f, s->g_b1, 3 * g * sizeof *s->g_b1) ||
-	    rd(f, s->g_done, 2 * grid_cells(s)) || fgetc(f) != EOF) {
+	    rd(f, s->g_done, 2 * grid_cells(s)) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
 		study_error("%s: truncated or oversized state file", path);
 		fclose(f);
 		sweep_free(s);

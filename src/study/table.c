@@ -326,6 +326,8 @@ static int default_path(const char *name, char *buf, size_t n)
 	snprintf(pat, sizeof pat, "results/run-*/%s", name);
 	if (glob(pat, 0, NULL, &g) == 0 && g.gl_pathc > 0) {
 		snprintf(buf, n, "%s", g.gl_pathv[g.gl_pathc - 1]);
+		fflush(stdout);
+		fprintf(stderr, "onbstudy: table: results/latest has no %s; using %s\n", name, buf);
 		globfree(&g);
 		return 0;
 	}

@@ -380,7 +380,8 @@ static void usage(FILE *f)
 	           "Nelson Max's analysis of Frisvad's threshold: for each t near -1, the largest\n"
 	           "normality and orthogonality error of Listing 2 with that t over inputs near -z;\n"
 	           "the minimax t of each criterion, the published thresholds beside them, and\n"
-	           "threshold.csv for plotting (default C = 4096, M = 8192, A = 64).\n"
+	           "threshold.csv for plotting (default C = 4096, M = 8192, A = 64), written into\n"
+	           "the current run (results/latest) unless --out DIR names another.\n"
 	           "--shard K/N runs slice K of N (0-based, 0 <= K < N) and saves a state for\n"
 	           "'onbstudy merge'.  Options take '--opt value' or '--opt=value'.\n");
 }
@@ -438,7 +439,7 @@ static int th_parse(th_state *s, int argc, char **argv, int *threads, char *outb
 	*threads = 1;
 #endif
 	if (out) snprintf(outbuf, outlen, "%s", out);
-	else study_default_run_dir(outbuf, outlen);
+	else if (rc == 0) study_current_run_dir(outbuf, outlen); /* the run of results/latest */
 	return rc;
 }
 

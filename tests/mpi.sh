@@ -1,0 +1,113 @@
+#!/bin/sh
+# mpi.sh - the MPI driver (issue 13): `mpirun -n N onbstudy-mpi sweep` writes
+# the same data as `onbstudy sweep` for N = 1, 2, 3 ranks with 1 and 2
+# threads; a rank killed with SIGKILL mid-run, then --resume, gives the same
+# files and redoes at most the batches in flight; a cancelled run (SIGTERM)
+# resumes too; a bad option, other options on one rank, and a checkpoint
+# of other options are refused with one message and no hang.
+# Skipped (with a clear line) when Open MPI is not installed.
+set -u
+cd "$(dirname "$0")/.."
+if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
+	echo "SKIP: no mpirun/mpicc (Open MPI: scripts/install-deps.sh installs it)"
+	exit 0
+fi
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+make -s mpi > "$T/make.log" 2>&1 || { cat "$T/make.log"; echo "FAIL: make mpi"; exit 1; }
+# Open MPI as root (CI) and without a network: shared memory only
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+MPIRUN="timeout 120 mpirun --oversubscribe"
+
+# same DIR1 DIR2 WHAT: the data (every line but the '#' provenance) and stdout
+same() {
+	for f in summary by_nz worst grid; do
+		grep -v '^#' "$1/$f.csv" > "$T/a.data" 2> /dev/null || { bad "$3: no data in $1/$f.csv"; return; }
+		grep -v '^#' "$2/$f.csv" > "$T/b.data" 2> /dev/null || { bad "$3: no data in $2/$f.csv"; return; }
+		cmp -s "$T/a.data" "$T/b.data" || { bad "$3: $f.csv differs from the single-process run"; return; }
+	done
+	cmp -s "$1.out" "$2.out" || { bad "$3: stdout differs"; return; }
+	ok
+}
+
+# bad starts: exit non-zero, our message once, no hang (timeout 120 -> 124)
+refuse() { # WHAT WORD ARGS...
+	what=$1; word=$2; shift 2
+	"$@" > "$T/bad.out" 2> "$T/bad.err"
+	rc=$?
+	n=$(grep -c "^onbstudy: .*$word" "$T/bad.err")
+	if [ $rc -ne 0 ] && [ $rc -ne 124 ] && [ "$n" -eq 1 ]; then ok
+	else bad "$what: exit $rc, $n messages with '$word': $(grep -v '^-\|^$' "$T/bad.err" | head -3)"; fi
+}
+
+A="--samples 1024 --exhaustive-count 512 --grid 4x8 --methods duff,frisvad,naive,frisvad_rotate --quiet"
+./onbstudy sweep $A --threads 2 --out "$T/ref" > "$T/ref.out" 2> "$T/ref.err" || bad "the single-process sweep failed: $(cat "$T/ref.err")"
+for n in 1 2 3; do
+	for t in 1 2; do
+		d="$T/n$n-t$t"
+		$MPIRUN -n $n ./onbstudy-mpi sweep $A --threads $t --out "$d" > "$d.out" 2> "$d.err"
+		rc=$?
+		[ $rc -eq 0 ] && ok || bad "mpirun -n $n, $t threads: exit $rc: $(head -3 "$d.err")"
+		same "$T/ref" "$d" "mpirun -n $n, $t threads"
+		grep -q "^# mpi: $n ranks x $t threads" "$d/summary.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
+	done
+done
+grep -q "PARTIAL\|checkpoint" "$T/n3-t1/summary.csv" && bad "a finished run mentions a checkpoint" || ok
+[ ! -e "$T/n3-t1/sweep-checkpoint.bin" ] && ok || bad "the checkpoint is left after a finished run"
+
+# SIGKILL one rank mid-run, then --resume: the same files, at most the
+# in-flight batches (one per rank) redone
+K="--samples 32768 --exhaustive-count 4096 --grid 8x16 --methods duff,frisvad,naive,stark --quiet --threads 1"
+BATCH=8
+./onbstudy sweep $K --out "$T/kref" > "$T/kref.out" 2> /dev/null || bad "the reference of the kill test failed"
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$T/kill" > /dev/null 2> "$T/kill.err" &
+mp=$!
+i=0
+while [ ! -f "$T/kill/sweep-checkpoint.bin" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+sleep 0.5
+victim=""
+for p in $(pgrep -f "onbstudy-mpi sweep $K"); do
+	r=$(tr '\0' '\n' < /proc/$p/environ 2> /dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
+	[ "$r" = 1 ] && victim=$p
+done
+if [ -n "$victim" ]; then kill -KILL "$victim"; ok; else bad "no rank 1 to kill (the run ended too soon?)"; fi
+wait $mp; rc=$?
+[ $rc -ne 0 ] && ok || bad "mpirun exited 0 after a rank was killed"
+[ -f "$T/kill/sweep-checkpoint.bin" ] && ok || bad "no checkpoint after the kill"
+[ ! -f "$T/kill/summary.csv" ] && ok || bad "the killed run wrote summary.csv"
+refuse "a checkpoint of other options" "other options" $MPIRUN -n 2 ./onbstudy-mpi sweep $K --seed 7 --resume "$T/kill"
+$MPIRUN -n 3 ./onbstudy-mpi sweep $K --resume "$T/kill" > "$T/kill.out" 2> "$T/resume.err"
+rc=$?
+[ $rc -eq 0 ] && ok || bad "--resume: exit $rc: $(head -3 "$T/resume.err")"
+same "$T/kref" "$T/kill" "kill rank 1 + --resume"
+# Rank 0 says, when the job ends, how many evaluations its checkpoint holds:
+# all it had received (the rest, one batch per rank at most, was in flight)
+held=$(sed -n 's/.*every batch finished so far (\([0-9]*\) of.*/\1/p' "$T/kill.err")
+from=$(sed -n 's/.*(\([0-9]*\) from the checkpoint).*/\1/p' "$T/resume.err")
+if [ -n "$from" ] && [ "$from" -gt 0 ] && [ "$from" = "${held:-$from}" ]; then ok
+else bad "--resume started from ${from:-?} evaluations; rank 0 held ${held:-?} when the job ended"; fi
+[ -n "$held" ] || echo "note: rank 0 was killed before it could report what the checkpoint holds: $(grep -v "^-" "$T/kill.err" | head -5)"
+grep -q '^# mpi: 3 ranks.*resumed from a checkpoint' "$T/kill/summary.csv" && ok || bad "no 'resumed' provenance"
+
+# cancel (SIGTERM to mpirun, as a scheduler does), then resume
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$T/cancel" > /dev/null 2> "$T/cancel.err" &
+mp=$!
+i=0
+while [ ! -f "$T/cancel/sweep-checkpoint.bin" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+kill -TERM $mp
+wait $mp
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --resume "$T/cancel" > "$T/cancel.out" 2> "$T/cancel2.err"
+rc=$?
+[ $rc -eq 0 ] && ok || bad "--resume after SIGTERM: exit $rc: $(head -3 "$T/cancel2.err")"
+same "$T/kref" "$T/cancel" "SIGTERM + --resume"
+
+refuse "bad option on 3 ranks" "unknown option" $MPIRUN -n 3 ./onbstudy-mpi sweep --bogus
+refuse "bad value on 2 ranks" "--samples" $MPIRUN -n 2 ./onbstudy-mpi sweep --samples 0
+refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$T/x"
+refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$T/none"
+refuse "not sweep" "sweep" $MPIRUN -n 2 ./onbstudy-mpi eval 0 0 1
+echo "mpi: $pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -99,6 +99,13 @@ else
 $(B)/study/fma_kernels.o: XFLAGS = -ffp-contract=fast
 endif
 
+# The fast reference (issue 14): TwoProd through the fma instruction.  Only
+# fma() calls use it: -ffp-contract=off (BASE) still forbids contraction.
+# reffast_usable() refuses this path on a CPU without FMA.
+ifeq ($(shell uname -m),x86_64)
+$(B)/study/reffast.o: XFLAGS = -mfma
+endif
+
 # The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
 $(B)/study/yardstick.o: src/study/yardstick.c src/study/bench.h include/onb.h Makefile $(B)/deps.stamp

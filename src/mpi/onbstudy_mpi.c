@@ -31,6 +31,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include "engine.h"
 #include "study.h"
 
@@ -68,11 +69,28 @@ typedef struct {
 	int local_active, fail, dirty;
 	unsigned long long evals_done, evals_resumed;
 	double t0, t_ckpt, t_progress;
+	double cpu0, cpu;              /* this process's CPU seconds at t0; all ranks' (rank 0) */
 } run_t;
 
 static int rank, nranks;
 static char cmdline_buf[4096];
 static char prov_note[256];
+
+static double cpu_seconds(void)
+{
+	struct rusage u;
+	if (getrusage(RUSAGE_SELF, &u) != 0)
+		return 0.0;
+	return (double)u.ru_utime.tv_sec + 1e-6 * (double)u.ru_utime.tv_usec +
+	       (double)u.ru_stime.tv_sec + 1e-6 * (double)u.ru_stime.tv_usec;
+}
+
+/* Every rank's CPU seconds since t0, summed on rank 0 (collective). */
+static void sum_cpu(run_t *r)
+{
+	double mine = cpu_seconds() - r->cpu0;
+	MPI_Reduce(&mine, &r->cpu, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+}
 
 static void on_signal(int sig) { (void)sig; engine_stop = 1; }
 
@@ -619,8 +637,10 @@ static int finish(run_t *r)
 	char path[4200];
 	progress(r, 1);
 	fprintf(stderr, "onbstudy-mpi: %llu referenced evaluations in %.2f s on %d ranks x %d threads (%llu from the checkpoint): "
-	        "%.0f per second per thread\n", (unsigned long long)r->acc.cfg.evals, sec, nranks, r->pl.threads,
-	        r->evals_resumed, (double)(r->evals_done - r->evals_resumed) / sec / (nranks * r->pl.threads));
+	        "%.0f per second per thread; %.2f CPU seconds in all ranks, %.0f evaluations per CPU second\n",
+	        (unsigned long long)r->acc.cfg.evals, sec, nranks, r->pl.threads, r->evals_resumed,
+	        (double)(r->evals_done - r->evals_resumed) / sec / (nranks * r->pl.threads), r->cpu,
+	        r->cpu > 0 ? (double)(r->evals_done - r->evals_resumed) / r->cpu : 0.0);
 	snprintf(prov_note, sizeof prov_note, "mpi: %d ranks x %d threads, batches of %llu chunks of %d inputs%s",
 	         nranks, r->pl.threads, (unsigned long long)r->B, PLAN_CHUNK, r->mo.resume ? ", resumed from a checkpoint" : "");
 	study_provenance_note = prov_note;
@@ -659,12 +679,15 @@ static int run(run_t *r, int argc, char **argv)
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	r->t0 = r->t_progress = engine_now();
+	r->cpu0 = cpu_seconds();
 	if (rank == 0) {
 		rc = master(r);
+		sum_cpu(r);
 		if (rc == 0)
 			rc = finish(r);
 	} else {
 		worker(r);
+		sum_cpu(r);
 	}
 	engine_free(r->e);
 	return rc;

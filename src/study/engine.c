@@ -22,6 +22,7 @@
 #endif
 #include "engine.h"
 #include "study.h"
+#include "reffast.h"
 
 volatile sig_atomic_t engine_stop;
 
@@ -35,6 +36,9 @@ struct engine {
 /* What one thread holds. */
 typedef struct {
 	ref_ctx *rc1, *rc2;            /* the reference at B and B+64 bits */
+	reffast_ctx *fc;               /* the fast reference (NULL: MPFR only) */
+	/* per precision and kernel: evaluations, MPFR fallbacks, ref[] filled for the worst rows */
+	unsigned long long revals[2][SWEEP_MAX_KERNELS], rfall[2][SWEEP_MAX_KERNELS], rworst[2][SWEEP_MAX_KERNELS];
 	cell_t *loc;                   /* [kernel] of (p, d) */
 	int p, d;                      /* -1: loc is empty */
 	unsigned long long evals, checked;
@@ -99,6 +103,11 @@ static int worker_init(worker *w, const sweep_plan *pl)
 	w->rc1 = ref_new(pl->cfg.ref_bits);
 	w->rc2 = ref_new(pl->cfg.ref_bits + 64);
 	w->loc = malloc((size_t)pl->cfg.nk * sizeof *w->loc);
+	if (!pl->cfg.ref_mpfr) {
+		w->fc = reffast_new(pl->cfg.ref_bits);
+		if (!w->fc)
+			return -1;
+	}
 	return w->rc1 && w->rc2 && w->loc ? 0 : -1;
 }
 
@@ -121,6 +130,7 @@ static void worker_fold(worker *w, sweep_state *st, int p, int d)
 static void worker_free(worker *w)
 {
 	free(w->loc);
+	reffast_free(w->fc);
 	ref_free(w->rc1);
 	ref_free(w->rc2);
 }
@@ -137,8 +147,21 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 		sample_metrics m;
 		if (!kernel_runs(&st->kernels[k], p))
 			continue; /* a float-only method, in double */
-		ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
 		w->evals++;
+		w->revals[p][k]++;
+		if (!w->fc) {
+			ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
+		} else {
+			const int f = reffast_eval(w->fc, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
+			if (f == REFFAST_MPFR) {
+				ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
+				w->rfall[p][k]++;
+			} else if (f == REFFAST_NOREF && cell_keeps(&w->loc[k], idx, &m, 0)) {
+				/* ref[] (worst rows only) was left to MPFR: fill it in */
+				ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
+				w->rworst[p][k]++;
+			}
+		}
 		if (idx % (uint64_t)cfg->check_every == 0) {
 			sample_metrics m2;
 			char why[256];
@@ -258,8 +281,15 @@ int engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, engine_prog
 			worker_fold(&w, st, -1, -1);
 #pragma omp critical(engine_fold)
 		{
+			int p, k;
 			st->cfg.evals += w.evals;
 			st->cfg.checked += w.checked;
+			for (p = 0; p < 2; p++)
+				for (k = 0; k < st->cfg.nk; k++) {
+					st->cfg.ref_evals[p][k] += w.revals[p][k];
+					st->cfg.ref_fallback[p][k] += w.rfall[p][k];
+					st->cfg.ref_worst[p][k] += w.rworst[p][k];
+				}
 		}
 		worker_free(&w);
 	}

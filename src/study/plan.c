@@ -42,6 +42,9 @@ void plan_usage(FILE *f)
 	"  --ref-bits B          MPFR precision of the reference (default 127, the widest with\n"
 	"                        MPFR's two-limb fast paths; re-checked at B+64)\n"
 	"  --check-every K       re-evaluate every K-th input at B+64 bits (default 509)\n"
+	"  --ref R               mpfr (default): MPFR alone; fast: a certified double-long-double\n"
+	"                        reference that writes the same bytes and asks MPFR where it\n"
+	"                        cannot decide (fallback rates in reference.csv)\n"
 	"  --fma                 also run a copy of the kernels built with -mfma -ffp-contract=fast\n"
 	"  --shard K/N           run slice K of N, 0-based (0 <= K < N), and save\n"
 	"                        sweep-state-K-of-N.bin for 'merge'; with Slurm job arrays:\n"
@@ -63,6 +66,7 @@ static void plan_defaults(sweep_plan *pl)
 	cfg->seed = 1; cfg->samples = 32768; cfg->ex_from = -1.0; cfg->ex_values = 65536;
 	cfg->ex_azimuths = 4; cfg->grid_rows = 24; cfg->grid_cols = 48; cfg->ref_bits = 127;
 	cfg->check_every = 509; cfg->shard_k = 0; cfg->shard_n = 1;
+	cfg->ref_mpfr = 1; /* --ref fast is opt-in until it is faster (issue 14 notes) */
 	cfg->prec_on[0] = cfg->prec_on[1] = 1;
 	for (d = 0; d < NDIST; d++)
 		cfg->dist_on[d] = 1;
@@ -83,7 +87,7 @@ static int parse_grid(const char *v, sweep_cfg *cfg)
 }
 
 enum { O_METHODS = 256, O_PREC, O_DISTS, O_SAMPLES, O_EXFROM, O_EXCOUNT, O_EXRANGE, O_AZ, O_GRID, O_SEED,
-       O_THREADS, O_REFBITS, O_CHECK, O_FMA, O_SHARD, O_OUT, O_FORMAT, O_PLOTS, O_QUIET, O_DRY };
+       O_THREADS, O_REFBITS, O_CHECK, O_REF, O_FMA, O_SHARD, O_OUT, O_FORMAT, O_PLOTS, O_QUIET, O_DRY };
 
 static const struct option sweep_options[] = {
 	{ "methods", required_argument, NULL, O_METHODS }, { "precision", required_argument, NULL, O_PREC },
@@ -93,6 +97,7 @@ static const struct option sweep_options[] = {
 	{ "azimuths", required_argument, NULL, O_AZ }, { "grid", required_argument, NULL, O_GRID },
 	{ "seed", required_argument, NULL, O_SEED }, { "threads", required_argument, NULL, O_THREADS },
 	{ "ref-bits", required_argument, NULL, O_REFBITS }, { "check-every", required_argument, NULL, O_CHECK },
+	{ "ref", required_argument, NULL, O_REF },
 	{ "fma", no_argument, NULL, O_FMA }, { "shard", required_argument, NULL, O_SHARD },
 	{ "out", required_argument, NULL, O_OUT }, { "format", required_argument, NULL, O_FORMAT },
 	{ "plots", no_argument, NULL, O_PLOTS }, { "quiet", no_argument, NULL, O_QUIET },
@@ -122,6 +127,11 @@ static int plan_option(sweep_plan *pl, int v, const char *a)
 	case O_THREADS: if (parse_int("--threads", a, 0, 1024, &l)) return -1; pl->threads = (int)l; return 0;
 	case O_REFBITS: if (parse_int("--ref-bits", a, 64, 4096, &l)) return -1; cfg->ref_bits = (int)l; return 0;
 	case O_CHECK: if (parse_int("--check-every", a, 1, 1000000000, &l)) return -1; cfg->check_every = (int)l; return 0;
+	case O_REF:
+		if (!strcmp(a, "fast")) cfg->ref_mpfr = 0;
+		else if (!strcmp(a, "mpfr")) cfg->ref_mpfr = 1;
+		else { study_error("--ref: expected fast or mpfr, not '%s'", a); return -1; }
+		return 0;
 	case O_FMA: cfg->fma = 1; return 0;
 	case O_SHARD: return cli_shard("--shard", a, &cfg->shard_k, &cfg->shard_n);
 	case O_OUT: pl->out_given = 1; snprintf(pl->out, sizeof pl->out, "%s", a); return 0;
@@ -355,6 +365,7 @@ void plan_print(const sweep_plan *pl, FILE *f, double per_thread_rate, unsigned 
 		fprintf(f, " %s", cfg->names[k]);
 	fprintf(f, "\nplan: seed %llu, MPFR %d bits (every %d-th input re-checked at %d), chunks of %d inputs\n",
 	        (unsigned long long)cfg->seed, cfg->ref_bits, cfg->check_every, cfg->ref_bits + 64, PLAN_CHUNK);
+	fprintf(f, "plan: reference %s\n", cfg->ref_mpfr ? "MPFR only (--ref mpfr)" : "fast, MPFR where it cannot decide (--ref fast)");
 	for (p = 0; p < 2; p++)
 		for (d = 0; d < NDIST; d++)
 			if (cfg->prec_on[p] && cfg->dist_on[d])

@@ -17,6 +17,7 @@
 #include "engine.h"
 #include "sweep.h"
 #include "study.h"
+#include "reffast.h"
 
 static void on_signal(int sig) { (void)sig; engine_stop = 1; }
 
@@ -129,6 +130,13 @@ int cmd_sweep(int argc, char **argv)
 		return rc == 1 ? 0 : rc;
 	if ((rc = plan_build(&pl)) != 0)
 		return rc;
+	if (!pl.cfg.ref_mpfr) {
+		const char *why;
+		if (!reffast_usable(pl.cfg.ref_bits, &why)) {
+			fprintf(stderr, "onbstudy: %s: the reference is MPFR only (as --ref mpfr)\n", why);
+			pl.cfg.ref_mpfr = 1;
+		}
+	}
 	if (pl.dry_run)
 		return sweep_dry_run(&pl);
 	if (sweep_outdir(pl.out) != 0)
@@ -145,6 +153,7 @@ int cmd_sweep(int argc, char **argv)
 		        (unsigned long long)st.cfg.evals, seconds, (double)st.cfg.evals / seconds,
 		        (double)st.cfg.evals / seconds / pl.threads, pl.threads, st.cfg.ref_bits,
 		        (unsigned long long)st.cfg.checked, st.cfg.ref_bits + 64);
+		sweep_print_reference(stderr, &st, "onbstudy: ", 0);
 		rc = sweep_write(&pl, &st, seconds);
 	}
 	sweep_free(&st);

@@ -5,6 +5,7 @@
 #ifndef ONB_SWEEP_H
 #define ONB_SWEEP_H
 
+#include <stdio.h>
 #include <stdint.h>
 #include "fx.h"
 #include "inputs.h"
@@ -71,6 +72,12 @@ typedef struct {
 	int shard_k, shard_n;
 	uint64_t counts[2][NDIST];    /* inputs per distribution (before the walk) */
 	uint64_t evals, checked;      /* referenced evaluations; two-precision checks */
+	/* the reference path (issue 14): 0 the certified fast path (reffast.c)
+	   with MPFR where it cannot decide, 1 MPFR only (--ref mpfr); per
+	   precision and kernel, the evaluations, those that fell back to MPFR,
+	   and those whose ref[] MPFR filled in for the worst rows */
+	int ref_mpfr;                 /* default 1 (plan.c) */
+	uint64_t ref_evals[2][SWEEP_MAX_KERNELS], ref_fallback[2][SWEEP_MAX_KERNELS], ref_worst[2][SWEEP_MAX_KERNELS];
 } sweep_cfg;
 
 typedef struct {
@@ -86,6 +93,8 @@ cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
 void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
+/* 1 when cell_add would keep this sample among the cell's worst. */
+int  cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source);
 
 int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
 void sweep_free(sweep_state *s);
@@ -102,5 +111,8 @@ int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
 
 /* Worst-case walk, then every CSV file; fmt is the stdout format. */
 int  sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial);
+/* The reference path and its fallback rates, one line (prefix first), and
+   per method and precision when per_method != 0. */
+void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, int per_method);
 
 #endif

@@ -158,6 +158,34 @@ static int walk(sweep_state *s, int threads)
 
 /* ---- files ---------------------------------------------------------------- */
 
+void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, int per_method)
+{
+	unsigned long long ev = 0, fb = 0, wr = 0;
+	int p, k;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < s->cfg.nk; k++) {
+			ev += s->cfg.ref_evals[p][k];
+			fb += s->cfg.ref_fallback[p][k];
+			wr += s->cfg.ref_worst[p][k];
+		}
+	if (s->cfg.ref_mpfr) {
+		fprintf(f, "%sreference: MPFR only (--ref mpfr) for the sampled inputs\n", prefix);
+		return;
+	}
+	fprintf(f, "%sreference: fast (reffast.c, certified double-long-double, byte-identical to --ref mpfr); "
+	        "fell back to MPFR on %llu of %llu evaluations (%.4f%%), MPFR filled ref[] of %llu kept among the worst%s\n",
+	        prefix, fb, ev, ev ? 100.0 * (double)fb / (double)ev : 0.0, wr,
+	        per_method ? "" : "; per method and precision in reference.csv");
+	if (!per_method)
+		return;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < s->cfg.nk; k++)
+			if (s->cfg.ref_evals[p][k])
+				fprintf(f, "%s  %-28s %-6s %12llu evaluations, fallback %.4f%%\n", prefix, s->kernels[k].name,
+				        prec_name(p), (unsigned long long)s->cfg.ref_evals[p][k],
+				        100.0 * (double)s->cfg.ref_fallback[p][k] / (double)s->cfg.ref_evals[p][k]);
+}
+
 static void header(FILE *f, const sweep_state *s, int threads, double seconds, int partial)
 {
 	int p, d;
@@ -175,6 +203,7 @@ static void header(FILE *f, const sweep_state *s, int threads, double seconds, i
 		fprintf(f, "# rate: %llu referenced evaluations in %.2f s = %.0f per second on %d threads (%.0f per thread)\n",
 		        (unsigned long long)s->cfg.evals, seconds, (double)s->cfg.evals / seconds, threads,
 		        (double)s->cfg.evals / seconds / threads);
+	sweep_print_reference(f, s, "# ", 0);
 	if (s->cfg.shard_n > 1)
 		fprintf(f, "# shard: %d of %d\n", s->cfg.shard_k, s->cfg.shard_n);
 	if (partial)
@@ -220,6 +249,26 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	        c->finite ? c->max_dir_norm : nan, c->finite ? c->max_dir_cos : nan,
 	        sqrt_mean(&c->dirc2, c->finite), jump);
 	floor_cols(f, c);
+}
+
+/* reference.csv: the fast reference's fallback rate per method and precision. */
+static int write_reference(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+{
+	study_out o;
+	int p, k;
+	if (study_out_open(&o, dir, name) != 0)
+		return -1;
+	header(o.f, s, threads, sec, partial);
+	fprintf(o.f, "# per method and precision: referenced evaluations of the sampled inputs, those the fast reference could not decide (MPFR computed them), and those MPFR re-evaluated for ref[] of the worst rows only\n");
+	fprintf(o.f, "method,precision,evaluations,mpfr_fallback,fallback_rate,mpfr_worst_ref\n");
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < s->cfg.nk; k++)
+			if (s->cfg.ref_evals[p][k])
+				fprintf(o.f, "%s,%s,%llu,%llu,%.6g,%llu\n", s->kernels[k].name, prec_name(p),
+				        (unsigned long long)s->cfg.ref_evals[p][k], (unsigned long long)s->cfg.ref_fallback[p][k],
+				        (double)s->cfg.ref_fallback[p][k] / (double)s->cfg.ref_evals[p][k],
+				        (unsigned long long)s->cfg.ref_worst[p][k]);
+	return study_out_commit(&o);
 }
 
 #define SUMMARY_COLUMNS "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite," \
@@ -440,6 +489,8 @@ int sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fm
 	rc |= write_worst(s, outdir, partial ? "worst.partial.csv" : "worst.csv", threads, seconds, partial);
 	if (s->cfg.dist_on[DIST_GRID])
 		rc |= write_grid(s, outdir, partial ? "grid.partial.csv" : "grid.csv", threads, seconds, partial);
+	if (!s->cfg.ref_mpfr)
+		rc |= write_reference(s, outdir, partial ? "reference.partial.csv" : "reference.csv", threads, seconds, partial);
 	if (rc)
 		return -1;
 	if (partial)

@@ -151,6 +151,23 @@ static void bin_add(bin_t *b, double e)
 
 static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
+/* cell_add's key of a sample. */
+static double sample_key(const sample_metrics *m)
+{
+	if (m->nonfinite)
+		return INFINITY;
+	return m->has_basis ? m->defect : dmax(m->dir_norm, m->dir_cos);
+}
+
+int cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source)
+{
+	worst_t w;
+	w.key = sample_key(m);
+	w.index = index;
+	w.source = source;
+	return worse(&w, &c->worst[NWORST - 1]);
+}
+
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
 {
 	worst_t w;
@@ -376,6 +393,11 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 	/* everything but the shard index and the counters must agree */
 	a.shard_k = b.shard_k = 0;
 	a.evals = b.evals = a.checked = b.checked = 0;
+	/* nor the reference path (both give the same bytes) and its counters */
+	a.ref_mpfr = b.ref_mpfr = 0;
+	memset(a.ref_evals, 0, sizeof a.ref_evals); memset(b.ref_evals, 0, sizeof b.ref_evals);
+	memset(a.ref_fallback, 0, sizeof a.ref_fallback); memset(b.ref_fallback, 0, sizeof b.ref_fallback);
+	memset(a.ref_worst, 0, sizeof a.ref_worst); memset(b.ref_worst, 0, sizeof b.ref_worst);
 	memset(a.magic, 0, sizeof a.magic);
 	memset(b.magic, 0, sizeof b.magic);
 	if (memcmp(&a, &b, sizeof a) != 0) {
@@ -397,5 +419,12 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 			}
 	d->cfg.evals += s->cfg.evals;
 	d->cfg.checked += s->cfg.checked;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < d->cfg.nk; k++) {
+			d->cfg.ref_evals[p][k] += s->cfg.ref_evals[p][k];
+			d->cfg.ref_fallback[p][k] += s->cfg.ref_fallback[p][k];
+			d->cfg.ref_worst[p][k] += s->cfg.ref_worst[p][k];
+		}
+	d->cfg.ref_mpfr |= s->cfg.ref_mpfr; /* mixed shards: say MPFR took part */
 	return 0;
 }

@@ -120,7 +120,7 @@ static int csv_next(csv_file *c)
 	return 0;
 }
 
-static int find_row(tradeoff_row *rows, int n, const char *method, int dbl)
+static int find_row(const tradeoff_row *rows, int n, const char *method, int dbl)
 {
 	int i;
 	for (i = 0; i < n; i++)
@@ -420,85 +420,130 @@ static int table_parse(int argc, char **argv, table_opts *o)
 	return rc;
 }
 
-int cmd_table(int argc, char **argv)
+/* The default inputs (results/latest, else the newest run) and output
+   (the bench.csv's directory).  0, or -1 after a message. */
+static int table_paths(table_opts *o, char *bbuf, char *sbuf, char *obuf, size_t len)
 {
-	const char *bench, *summary, *out;
-	char bbuf[4096], sbuf[4096], obuf[4096];
-	tradeoff_row *rows;
-	int n, i, csv, p;
-	double tol;
-	study_out f;
-	table_opts o;
-	if ((i = table_parse(argc, argv, &o)) != 0)
-		return i == 1 ? 0 : i;
-	bench = o.bench; summary = o.summary; out = o.out; csv = o.csv; tol = o.tol;
-	if (!bench) {
-		if (default_path("bench.csv", bbuf, sizeof bbuf) != 0)
-			return ONB_EXIT_USAGE;
-		bench = bbuf;
+	if (!o->bench) {
+		if (default_path("bench.csv", bbuf, len) != 0)
+			return -1;
+		o->bench = bbuf;
 	}
-	if (!summary) {
-		if (default_path("summary.csv", sbuf, sizeof sbuf) != 0)
-			return ONB_EXIT_USAGE;
-		summary = sbuf;
+	if (!o->summary) {
+		if (default_path("summary.csv", sbuf, len) != 0)
+			return -1;
+		o->summary = sbuf;
 	}
-	if (!out) {
-		const char *sl = strrchr(bench, '/');
+	if (!o->out) {
+		const char *sl = strrchr(o->bench, '/');
 		if (sl) {
-			snprintf(obuf, sizeof obuf, "%.*s", (int)(sl - bench), bench);
-			out = sl == bench ? "/" : obuf;
+			snprintf(obuf, len, "%.*s", (int)(sl - o->bench), o->bench);
+			o->out = sl == o->bench ? "/" : obuf;
 		} else
-			out = ".";
+			o->out = ".";
 	}
-	n = tradeoff_load(bench, summary, tol, &rows);
-	if (n < 0)
-		return ONB_EXIT_USAGE;
-	if (n == 0) {
-		study_error("table: '%s' has no batch or call_throughput rows", bench);
-		free(rows);
-		return ONB_EXIT_USAGE;
-	}
-	if (study_mkdir_p(out) != 0 || study_out_open(&f, out, "tradeoff.csv") != 0) {
-		free(rows);
-		return 1;
-	}
-	study_provenance(f.f, "table", 0, 0);
-	fprintf(f.f, "# bench: %s\n# summary: %s\n", bench, summary);
-	fprintf(f.f, "# speed: batch at the L2-resident size (1 thread, all threads), call_ns = inline call_throughput; "
-	             "accuracy: rmse on uniform, max_defect on south and threshold\n");
-	fprintf(f.f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t, speeds within "
-	             "%g%% counted equal) and at least as accurate (max_defect_worst = max over uniform, south, threshold; "
-	             "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * tol);
-	fprintf(f.f, "# floor (uniform): max_floor_uniform = the largest defect of the method's exact formula rounded once to the format; "
-	             "x_floor = max_defect_uniform / max_floor_uniform; *_floor_ratio_uniform: the per-input ratio's RMS and max (summary.csv)\n");
-	fprintf(f.f, "%s\n", TRADEOFF_COLUMNS);
+	return 0;
+}
+
+/* tradeoff.csv; 0, or -1 after a message. */
+static int table_write(const table_opts *o, const tradeoff_row *rows, int n, study_out *f)
+{
+	int i, p;
+	if (study_mkdir_p(o->out) != 0 || study_out_open(f, o->out, "tradeoff.csv") != 0)
+		return -1;
+	study_provenance(f->f, "table", 0, 0);
+	fprintf(f->f, "# bench: %s\n# summary: %s\n", o->bench, o->summary);
+	fprintf(f->f, "# speed: batch at the L2-resident size (1 thread, all threads), call_ns = inline call_throughput; "
+	              "accuracy: rmse on uniform, max_defect on south and threshold\n");
+	fprintf(f->f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t, speeds within "
+	              "%g%% counted equal) and at least as accurate (max_defect_worst = max over uniform, south, threshold; "
+	              "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * o->tol);
+	fprintf(f->f, "# floor (uniform): max_floor_uniform = the largest defect of the method's exact formula rounded once to the format; "
+	              "x_floor = max_defect_uniform / max_floor_uniform; *_floor_ratio_uniform: the per-input ratio's RMS and max (summary.csv)\n");
+	fprintf(f->f, "%s\n", TRADEOFF_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (i = 0; i < n; i++) {
 			const tradeoff_row *r = &rows[i];
 			if (r->dbl != p)
 				continue;
-			fprintf(f.f, "%s,%s", r->method, r->dbl ? "double" : "float");
-			put(f.f, r->batch1);
-			put(f.f, r->batchn);
-			fprintf(f.f, ",%d", r->threads);
-			put(f.f, r->call_ns);
-			put(f.f, r->rmse_uniform);
-			put(f.f, r->max_south);
-			put(f.f, r->max_threshold);
-			put(f.f, r->has_accuracy ? r->max_worst : NAN);
-			fprintf(f.f, ",%ld,%s", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
-			put(f.f, r->max_uniform);
-			put(f.f, r->max_floor_uniform);
-			put(f.f, r->x_floor);
-			put(f.f, r->rms_ratio_uniform);
-			put(f.f, r->max_ratio_uniform);
-			fputc('\n', f.f);
+			fprintf(f->f, "%s,%s", r->method, r->dbl ? "double" : "float");
+			put(f->f, r->batch1);
+			put(f->f, r->batchn);
+			fprintf(f->f, ",%d", r->threads);
+			put(f->f, r->call_ns);
+			put(f->f, r->rmse_uniform);
+			put(f->f, r->max_south);
+			put(f->f, r->max_threshold);
+			put(f->f, r->has_accuracy ? r->max_worst : NAN);
+			fprintf(f->f, ",%ld,%s", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
+			put(f->f, r->max_uniform);
+			put(f->f, r->max_floor_uniform);
+			put(f->f, r->x_floor);
+			put(f->f, r->rms_ratio_uniform);
+			put(f->f, r->max_ratio_uniform);
+			fputc('\n', f->f);
 		}
-	if (study_out_commit(&f) != 0) {
+	return study_out_commit(f);
+}
+
+/* The table on stdout: a float and a double block per method. */
+static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
+{
+	int i, j, p;
+	printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
+	       o->bench, o->summary, 100.0 * o->tol);
+	printf("# xfloor = max defect on uniform / the floor's (the method's exact formula rounded once to the format)\n");
+	printf("%-24s |%51s |%51s\n", "", "float", "double");
+	printf("%-24s |", "method");
+	for (p = 0; p < 2; p++)
+		printf(" %7s %7s %5s %8s %8s %8s %6s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor",
+		       p ? "\n" : " |");
+	for (i = 0; i < n; i++) {
+		if (rows[i].dbl != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
+			continue; /* printed with its float row */
+		printf("%-24s |", rows[i].method);
+		for (p = 0; p < 2; p++) {
+			j = find_row(rows, n, rows[i].method, p);
+			if (j < 0) {
+				printf(" %50s%s", "-", p ? "\n" : " |");
+				continue;
+			}
+			print_cell(rows[j].batch1, " %*.0f", 7);
+			print_cell(rows[j].batchn, " %*.0f", 7);
+			print_cell(rows[j].call_ns, " %*.2f", 5);
+			print_cell(rows[j].rmse_uniform, " %*.1e", 8);
+			print_cell(rows[j].max_south, " %*.1e", 8);
+			print_cell(rows[j].max_threshold, " %*.1e", 8);
+			print_cell(rows[j].x_floor, " %*.2f", 6);
+			printf("%s%s", rows[j].pareto ? "*" : " ", p ? "\n" : "|");
+		}
+	}
+}
+
+int cmd_table(int argc, char **argv)
+{
+	char bbuf[4096], sbuf[4096], obuf[4096];
+	tradeoff_row *rows;
+	int n, rc;
+	study_out f;
+	table_opts o;
+	if ((rc = table_parse(argc, argv, &o)) != 0)
+		return rc == 1 ? 0 : rc;
+	if (table_paths(&o, bbuf, sbuf, obuf, sizeof bbuf) != 0)
+		return ONB_EXIT_USAGE;
+	n = tradeoff_load(o.bench, o.summary, o.tol, &rows);
+	if (n < 0)
+		return ONB_EXIT_USAGE;
+	if (n == 0) {
+		study_error("table: '%s' has no batch or call_throughput rows", o.bench);
+		free(rows);
+		return ONB_EXIT_USAGE;
+	}
+	if (table_write(&o, rows, n, &f) != 0) {
 		free(rows);
 		return 1;
 	}
-	if (csv) {
+	if (o.csv) {
 		FILE *in = fopen(f.path, "r");
 		char line[4096];
 		if (in) {
@@ -508,35 +553,7 @@ int cmd_table(int argc, char **argv)
 			fclose(in);
 		}
 	} else {
-		printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
-		       bench, summary, 100.0 * tol);
-		printf("# x floor = max defect on uniform / the floor's (the exact formula rounded once to the format)\n");
-		printf("%-24s |%51s |%51s\n", "", "float", "double");
-		printf("%-24s |", "method");
-		for (p = 0; p < 2; p++)
-			printf(" %7s %7s %5s %8s %8s %8s %6s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor",
-			       p ? "\n" : " |");
-		for (i = 0; i < n; i++) {
-			int j;
-			if (rows[i].dbl != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
-				continue; /* printed with its float row */
-			printf("%-24s |", rows[i].method);
-			for (p = 0; p < 2; p++) {
-				j = find_row(rows, n, rows[i].method, p);
-				if (j < 0) {
-					printf(" %50s%s", "-", p ? "\n" : " |");
-					continue;
-				}
-				print_cell(rows[j].batch1, " %*.0f", 7);
-				print_cell(rows[j].batchn, " %*.0f", 7);
-				print_cell(rows[j].call_ns, " %*.2f", 5);
-				print_cell(rows[j].rmse_uniform, " %*.1e", 8);
-				print_cell(rows[j].max_south, " %*.1e", 8);
-				print_cell(rows[j].max_threshold, " %*.1e", 8);
-				print_cell(rows[j].x_floor, " %*.2f", 6);
-				printf("%s%s", rows[j].pareto ? "*" : " ", p ? "\n" : "|");
-			}
-		}
+		table_print(&o, rows, n);
 	}
 	fprintf(stderr, "onbstudy: wrote %s\n", f.path);
 	free(rows);

@@ -1,0 +1,1067 @@
+/*
+ * reffast.c - the certified fast reference (see reffast.h).
+ *
+ * Notation: u = 2^-53, p = the MPFR reference's precision (>= 120).
+ *
+ * Every intermediate of a method's formula is an `xv`: a double-double
+ * value v = h + l (normalized: h = RN(h + l)) and a bound e such that
+ *     |v - X| <= e   and   |X_mpfr - X| <= e,
+ * where X is the exact real value of that intermediate and X_mpfr the
+ * value reference.c computes for it at p bits, through the same sequence
+ * of operations.  Each operation below derives the new bound from the
+ * operands' (propagation) plus the rounding of the double-double result
+ * (relative 2^-100 at most, see each operation) plus MPFR's own rounding
+ * (relative 2^-p <= 2^-120, absorbed in the same terms).  So a stored
+ * figure RN(X_mpfr) is determined when the whole interval [v - 2e, v + 2e]
+ * lies strictly inside one double's rounding interval (Ziv's test,
+ * ziv_d): then the fast path writes that double and MPFR writes the same.
+ * e = 0 means exact in both (then zeros keep their IEEE/MPFR sign).
+ *
+ * Bounds are computed in double and inflated by (1 + 2^-40), which covers
+ * the few roundings (each <= u relative) of computing them; every nonzero
+ * value must stay above 2^-900 (no underflow anywhere), else the input
+ * takes the MPFR path.
+ *
+ * The defect terms (sums of products of doubles) are computed exactly
+ * with error-free transformations (TwoProd, then repeated VecSum), and
+ * their bound is MPFR's exact_sum error, derived in exact_dot.
+ *
+ * TwoProd uses fma when this file is compiled with FMA (the Makefile
+ * builds it with -mfma on x86_64, with -ffp-contract=off kept so that no
+ * other expression is contracted); Dekker's product otherwise.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <stdint.h>
+#include <float.h>
+#include "reffast.h"
+
+struct reffast_ctx {
+	int prec;                 /* MPFR precision p of the reference mirrored */
+	double up;                /* 2^-p */
+	double last[3];           /* cache: the last input, its |n|-1 and 1/|n| */
+	double last_norm;
+	int have_last, last_ok, last_inv_ok;
+	long double inv_h, inv_l;
+	double inv_e;
+};
+
+#define INFL (1.0 + 0x1p-40)     /* inflation of every computed bound        */
+#define DDREL 0x1p-124           /* relative rounding of a pair operation    */
+#define TINY 0x1p-900            /* smallest magnitude allowed (no underflow) */
+#define FLOOR 0x1p-1000          /* absolute floor added to inexact bounds   */
+
+int reffast_usable(int ref_bits, const char **why)
+{
+#if LDBL_MANT_DIG != 64
+	*why = "the fast reference needs the x87 80-bit long double";
+	(void)ref_bits;
+	return 0;
+#endif
+	if (ref_bits < 127) {
+		*why = "the fast reference's bounds assume an MPFR reference of at least 127 bits";
+		return 0;
+	}
+#if defined(__FMA__)
+	if (!fma_available()) {
+		*why = "this build's fast reference uses FMA instructions and this CPU has none";
+		return 0;
+	}
+#endif
+	*why = "";
+	return 1;
+}
+
+reffast_ctx *reffast_new(int ref_bits)
+{
+	reffast_ctx *c = calloc(1, sizeof *c);
+	if (!c)
+		return NULL;
+	c->prec = ref_bits;
+	c->up = ldexp(1.0, -ref_bits);
+	return c;
+}
+
+void reffast_free(reffast_ctx *c) { free(c); }
+
+/* ---- exponents by bit pattern (no libm call on the fast path) ---- */
+
+/* Trailing zeros of m != 0. */
+static inline int ctz64(uint64_t m)
+{
+#if defined(__GNUC__)
+	return __builtin_ctzll(m);
+#else
+	int tz = 0;
+	while (!(m & 1u)) { m >>= 1; tz++; }
+	return tz;
+#endif
+}
+
+/* floor(log2 |a|) of a normal double. */
+static inline int dexp(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	return (int)((u >> 52) & 0x7ff) - 1023;
+}
+
+/* The exponent of the lowest set bit of a normal nonzero double. */
+static inline int dlsb(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	u = (u & ((1ull << 52) - 1)) | (1ull << 52);
+	return dexp(a) - 52 + ctz64(u);
+}
+
+/* 1 when the normal double a is a power of two. */
+static inline int dpow2(double a)
+{
+	uint64_t u;
+	memcpy(&u, &a, 8);
+	return (u & ((1ull << 52) - 1)) == 0;
+}
+
+/* 2^e for -1022 <= e <= 1023. */
+static inline double pow2(int e)
+{
+	const uint64_t u = (uint64_t)(e + 1023) << 52;
+	double d;
+	memcpy(&d, &u, 8);
+	return d;
+}
+
+/* ---- error-free transformations (exact: no bound) ---- */
+
+/* s + t = a + b exactly, s = RN(a + b) (Knuth). */
+static inline void two_sum(double a, double b, double *s, double *t)
+{
+	const double x = a + b, z = x - a;
+	*t = (a - (x - z)) + (b - z);
+	*s = x;
+}
+
+/* s + t = a + b exactly when |a| >= |b| or a = 0 (Dekker). */
+static inline void fast_two_sum(double a, double b, double *s, double *t)
+{
+	const double x = a + b;
+	*t = b - (x - a);
+	*s = x;
+}
+
+/* p + t = a b exactly unless a b underflows (the callers check |p|). */
+static inline void two_prod(double a, double b, double *p, double *t)
+{
+	*p = a * b;
+#if defined(__FMA__) || defined(FP_FAST_FMA)
+	*t = fma(a, b, -*p);
+#else
+	{
+		const double ca = 134217729.0 * a, cb = 134217729.0 * b;
+		const double ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
+		*t = ((ah * bh - *p) + ah * bl + al * bh) + al * bl;
+	}
+#endif
+}
+
+/* ---- double-long-double arithmetic ----
+   The formula runs in pairs of x87 long doubles (u = 2^-64): a pair
+   carries 128 bits, so one operation rounds at 2^-124 relative or less,
+   below MPFR's own 2^-127 only by a few bits, which is what a forward
+   error needs: E - cv cancels 53 bits of E, and Ziv's test on it needs E
+   to about 2^-115.  The algorithms and their bounds hold for any binary
+   precision p (Joldes, Muller, Popescu 2017); TwoProd is Dekker's, with
+   Veltkamp's split at 2^32 + 1 (exact for p = 64 without overflow). */
+typedef long double ld;
+
+static inline void two_sum_l(ld a, ld b, ld *s, ld *t)
+{
+	const ld x = a + b, z = x - a;
+	*t = (a - (x - z)) + (b - z);
+	*s = x;
+}
+
+static inline void fast_two_sum_l(ld a, ld b, ld *s, ld *t)
+{
+	const ld x = a + b;
+	*t = b - (x - a);
+	*s = x;
+}
+
+static inline void two_prod_l(ld a, ld b, ld *p, ld *t)
+{
+	const ld ca = 4294967297.0L * a, cb = 4294967297.0L * b;
+	const ld ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
+	*p = a * b;
+	*t = ((ah * bh - *p) + ah * bl + al * bh) + al * bl;
+}
+
+/* AccurateDWPlusDW (ibid., Algorithm 6): relative error
+   <= 3u^2/(1 - 4u) < 2^-126. */
+static inline void dd_add(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
+{
+	ld sh, sl, th, tl, c, vh, vl, w;
+	two_sum_l(xh, yh, &sh, &sl);
+	two_sum_l(xl, yl, &th, &tl);
+	c = sl + th;
+	fast_two_sum_l(sh, c, &vh, &vl);
+	w = tl + vl;
+	fast_two_sum_l(vh, w, zh, zl);
+}
+
+/* DWTimesDW1 (ibid., Algorithm 10: the low parts' cross products in
+   plain arithmetic; relative error <= 7u^2 < 2^-125).  No underflow: the
+   callers check the result. */
+static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
+{
+	ld ch, cl1, cl2, cl3;
+	two_prod_l(xh, yh, &ch, &cl1);
+	cl2 = xh * yl + xl * yh;
+	cl3 = cl1 + cl2;
+	fast_two_sum_l(ch, cl3, zh, zl);
+}
+
+typedef struct { ld h, l; double e; } xv;
+
+static inline xv xc(double d) { xv r = { d, 0.0L, 0.0 }; return r; }
+
+/* An upper bound of |X| from v and e. */
+static inline double mag(xv a) { return (double)fabsl(a.h) * (1.0 + 0x1p-50) + a.e; }
+
+static inline int ok(xv r)
+{
+	const ld a = fabsl(r.h);
+	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0L || a >= TINY);
+}
+
+static inline xv xneg(xv a) { xv r = { -a.h, -a.l, a.e }; return r; }
+
+static inline int is_zero(xv a) { return a.h == 0.0L && a.e == 0.0; }
+
+/* The exponents of the highest and lowest set bits of a nonzero a. */
+static void bit_span(ld a, int *hi, int *lo)
+{
+	/* the x87 format: 64-bit significand with its leading 1, then sign and
+	   15-bit exponent (reffast_usable checks LDBL_MANT_DIG == 64) */
+	unsigned char b[sizeof(ld)];
+	uint64_t m;
+	uint16_t se;
+	memcpy(b, &a, sizeof b);
+	memcpy(&m, b, 8);
+	memcpy(&se, b + 8, 2);
+	*hi = (int)(se & 0x7fff) - 16383;
+	*lo = *hi - 63 + ctz64(m);
+}
+
+/* The sum of two exact pairs, when it is an exact pair again and fits
+   MPFR's precision (then MPFR's sum is exact too): 1 and *r, else 0.
+   Two VecSum passes over the four parts; the sum is a pair when the two
+   lowest are then zero. */
+static int exact_pair_sum(xv a, xv b, xv *r)
+{
+	ld t[4];
+	int i, pass, h0, l0, h1, l1;
+	t[0] = a.l; t[1] = b.l; t[2] = a.h; t[3] = b.h;
+	for (pass = 0; pass < 2; pass++)
+		for (i = 1; i < 4; i++)
+			two_sum_l(t[i], t[i - 1], &t[i], &t[i - 1]);
+	if (t[0] != 0.0L || t[1] != 0.0L)
+		return 0;
+	fast_two_sum_l(t[3], t[2], &r->h, &r->l);
+	if (r->h == 0.0L) {
+		if (r->l != 0.0L)
+			return 0;
+		r->h = 0.0L; /* x + (-x) = +0 in RN, in IEEE as in MPFR */
+		r->e = 0.0;
+		return 1;
+	}
+	bit_span(r->h, &h0, &l0);
+	if (r->l != 0.0L) {
+		bit_span(r->l, &h1, &l1);
+		l0 = l1;
+	}
+	if (h0 - l0 + 1 > 127 || !ok(*r))
+		return 0;
+	r->e = 0.0;
+	return 1;
+}
+
+/* a + b (mpfr_add).  Relative rounding: pair < 2^-126, MPFR <= 2^-127 of
+   |X_mpfr| <= |r| + 2(ea + eb): DDREL |r| and the inflation cover both. */
+static xv xadd(xv a, xv b, int *bad)
+{
+	xv r;
+	if (is_zero(b) && a.h != 0.0L) /* MPFR: x + 0 = x exactly */
+		return a;
+	if (is_zero(a) && b.h != 0.0L)
+		return b;
+	if (a.l == 0.0L && b.l == 0.0L) {
+		/* TwoSum: exact.  IEEE and MPFR give zeros the same sign in RN. */
+		two_sum_l(a.h, b.h, &r.h, &r.l);
+		if (a.e == 0.0 && b.e == 0.0) {
+			int ha, la, hb, lb;
+			if (a.h == 0.0L || b.h == 0.0L) {
+				r.e = 0.0;
+				if (!ok(r)) *bad = 1;
+				return r;
+			}
+			bit_span(a.h, &ha, &la);
+			bit_span(b.h, &hb, &lb);
+			/* exact in MPFR when the sum's bits fit its precision */
+			if ((ha > hb ? ha : hb) + 1 - (la < lb ? la : lb) + 1 <= 127) {
+				r.e = 0.0;
+				if (!ok(r)) *bad = 1;
+				return r;
+			}
+		}
+	} else if (a.e == 0.0 && b.e == 0.0 && exact_pair_sum(a, b, &r)) {
+		return r;
+	} else {
+		dd_add(a.h, a.l, b.h, b.l, &r.h, &r.l);
+	}
+	r.e = ((a.e + b.e) * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
+	if (!ok(r)) *bad = 1;
+	return r;
+}
+
+static xv xsub(xv a, xv b, int *bad) { return xadd(a, xneg(b), bad); }
+
+/* a b (mpfr_mul, mpfr_sqr). */
+static xv xmul(xv a, xv b, int *bad)
+{
+	xv r;
+	double prop;
+	if (is_zero(a) || is_zero(b)) { /* exact zero, sign of the product */
+		r.h = a.h * b.h; r.l = 0.0L; r.e = 0.0;
+		if (!isfinite((double)r.h)) *bad = 1;
+		return r;
+	}
+	if (a.l == 0.0L && b.l == 0.0L) {
+		two_prod_l(a.h, b.h, &r.h, &r.l); /* exact: no underflow (checked) */
+		if (r.h != 0.0L && fabsl(r.h) < 0x1p-960L) { *bad = 1; r.e = 0.0; return r; }
+		if (a.e == 0.0 && b.e == 0.0) {
+			int ha, la, hb, lb;
+			bit_span(a.h, &ha, &la);
+			bit_span(b.h, &hb, &lb);
+			if ((ha - la + 1) + (hb - lb + 1) <= 127) { /* exact in MPFR too */
+				r.e = 0.0;
+				if (!ok(r)) *bad = 1;
+				return r;
+			}
+		}
+	} else {
+		dd_mul(a.h, a.l, b.h, b.l, &r.h, &r.l);
+	}
+	/* |ab - a'b'| <= |a| eb + |b| ea + ea eb */
+	prop = mag(a) * b.e + mag(b) * a.e + a.e * b.e;
+	r.e = (prop * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
+	if (!ok(r)) *bad = 1;
+	return r;
+}
+
+/* 1 when a (nonzero, normal) is a power of two; *ex = floor(log2 |a|). */
+static int is_pow2(ld a, int *ex)
+{
+	int lo;
+	bit_span(a, ex, &lo);
+	return lo == *ex;
+}
+
+/* 1/b (mpfr_ui_div(1, b)).  y0 = RN(1/bh), one Newton step, and an a
+   posteriori bound: with rho = 1 - b y1 (error < 2^-122 since b y1 ~ 1),
+   |y1 - 1/b| = |rho|/|b|.  Propagation eb/bmin^2; MPFR 2^-127/bmin. */
+static xv xrecip(xv b, int *bad)
+{
+	xv r;
+	ld y0, ph, pl, rh, rl;
+	double bmin, rho;
+	int ex;
+	if (b.l == 0.0L && b.e == 0.0 && b.h != 0.0L && is_pow2(b.h, &ex)) {
+		r.h = 1.0L / b.h; r.l = 0.0L; r.e = 0.0; /* a power of two: exact */
+		if (!ok(r)) *bad = 1;
+		return r;
+	}
+	bmin = (double)fabsl(b.h) * (1.0 - 0x1p-50) - 2.0 * b.e;
+	if (!(bmin > 0.5 * (double)fabsl(b.h)) || !(fabsl(b.h) < 0x1p500L)) {
+		*bad = 1;
+		return b;
+	}
+	y0 = 1.0L / b.h;
+	dd_mul(b.h, b.l, y0, 0.0L, &ph, &pl);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	fast_two_sum_l(y0, y0 * rh, &r.h, &r.l);
+	dd_mul(b.h, b.l, r.h, r.l, &ph, &pl);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	rho = (double)fabsl(rh) + 0x1p-121;
+	r.e = ((b.e / bmin / bmin) * INFL + rho / bmin * INFL + 0x1p-126 / bmin) * INFL + FLOOR;
+	if (!ok(r)) *bad = 1;
+	return r;
+}
+
+/* 1/sqrt(s) (mpfr_rec_sqrt).  y0 = RN(1/sqrt(sh)), one Newton step, and
+   a posteriori: rho = 1 - s y1^2 (error < 2^-121), y1 = (1 + d)/sqrt(s)
+   with |d| <= 0.51 |rho| for |rho| < 2^-40.  Propagation
+   0.5 es smin^-1.5; MPFR 2^-127/sqrt(smin). */
+static xv xrsqrt(xv s, int *bad)
+{
+	xv r;
+	ld y0, qh, ql, ph, pl, rh, rl;
+	double smin, rho;
+	int ex;
+	if (s.l == 0.0L && s.e == 0.0 && s.h > 0.0L && is_pow2(s.h, &ex) && !(ex & 1)) {
+		r.h = 1.0L / sqrtl(s.h); r.l = 0.0L; r.e = 0.0; /* 4^k: exact */
+		if (!ok(r)) *bad = 1;
+		return r;
+	}
+	smin = (double)s.h * (1.0 - 0x1p-50) - 2.0 * s.e;
+	if (!(smin > 0.5 * (double)s.h) || !(s.h < 0x1p500L)) {
+		*bad = 1;
+		return s;
+	}
+	y0 = 1.0L / sqrtl(s.h);
+	two_prod_l(y0, y0, &qh, &ql);
+	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	fast_two_sum_l(y0, 0.5L * y0 * rh, &r.h, &r.l);
+	dd_mul(r.h, r.l, r.h, r.l, &qh, &ql);
+	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
+	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	rho = (double)fabsl(rh) + 0x1p-120;
+	if (!(rho < 0x1p-40)) {
+		*bad = 1;
+		return s;
+	}
+	{
+		const double is = 1.0 / sqrt(smin) * (1.0 + 0x1p-50);  /* >= 1/sqrt(s) */
+		r.e = ((0.5 * s.e * is * is * is) * INFL + 0.52 * (double)fabsl(r.h) * rho + 0x1p-126 * is) * INFL + FLOOR;
+	}
+	if (!ok(r)) *bad = 1;
+	return r;
+}
+
+/* ---- Ziv's rounding test ---- */
+
+/* RN to the format (53 or 24 bits) of every real within 2e of v (X and
+   X_mpfr both are): 1 and *out when they all round to the same value,
+   strictly inside its rounding interval; else 0.  c = RN(h) is the
+   candidate; off = v - c = (h - c) + l, h - c exact, one rounding. */
+static int ziv(xv v, int bits, double *out)
+{
+	double c, a, ulp, upg, dng, m, t;
+	ld off;
+	int ex;
+	if (!isfinite((double)v.h))
+		return 0;
+	c = bits == 24 ? (double)(float)v.h : (double)v.h;
+	if (v.e == 0.0 && v.l == 0.0L && (ld)c == v.h) { /* exact, and representable */
+		*out = c;
+		return 1;
+	}
+	a = fabs(c);
+	if (a < (bits == 24 ? 0x1p-126 : TINY) || !isfinite(c))
+		return 0;
+	ex = dexp(a);
+	ulp = pow2(ex + 1 - bits);
+	upg = 0.5 * ulp;                            /* half the gap above |c| */
+	dng = dpow2(a) ? 0.25 * ulp : 0.5 * ulp;    /* half the gap below     */
+	if (v.e == 0.0) {
+		/* Exact v = h + l, |l| <= ulp(h)/2 of a long double, far below
+		   the format's gaps: RN(v) = c = RN(h) (ties to even) unless h is
+		   exactly a midpoint of the format and l breaks the tie. */
+		const ld dh = v.h - (ld)c; /* exact */
+		const double half = (dh > 0) == (c > 0) ? upg : dng; /* toward h's side */
+		if (v.l != 0.0L && dh != 0.0L && fabsl(dh) == (ld)half) {
+			if ((v.l > 0) == (dh > 0))
+				c = bits == 24 ? (double)nextafterf((float)c, dh > 0 ? INFINITY : -INFINITY)
+				               : nextafter(c, dh > 0 ? INFINITY : -INFINITY);
+		}
+		*out = c;
+		return 1;
+	}
+	off = (v.h - (ld)c) + v.l;
+	if (c < 0)
+		off = -off;                                    /* offset away from zero  */
+	m = 2.0 * v.e * INFL + (double)fabsl(off) * 0x1p-62;
+	t = (double)off + m;
+	if (t > 0 && t * (1.0 + 0x1p-50) >= upg)
+		return 0;
+	t = m - (double)off;
+	if (t > 0 && t * (1.0 + 0x1p-50) >= dng)
+		return 0;
+	*out = c;
+	return 1;
+}
+
+static int ziv_d(xv v, double *out) { return ziv(v, 53, out); }
+static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
+
+/* ---- exact sums of products (reference.c's exact_sum) ---- */
+
+/* The sum of t[0..k-1] (k <= 8), as reference.c's exact_sum returns it at
+   p bits; `bound` is the double reference.c computes (it picks
+   exact_sum's path), allneg0 whether every MPFR term is -0.
+   Our value: VecSum passes (Ogita, Rump, Oishi 2005) leave the exact sum
+   unchanged and move it into t[k-1]; the rest is added in double with an
+   error <= k u sum|t[i<k-1]|, and the pair is made a dd by TwoSum.
+   Passes repeat (at most 4) until that bound is below 2^-95 of the sum;
+   it is 0 when the last pass's TwoSums were all exact.
+   MPFR's error: its sequential path adds k terms at p bits (error
+   <= (k-1) 2^-p sum|terms| <= 4 2^-p S, S <= bound (1 + 2^-40)); it
+   refines with mpfr_sum (error <= 2^-p |X|) when |X_mpfr| < 2^(E-59),
+   bound in [2^(E-1), 2^E), which certainly happens when |X| <= 2^(E-61).
+   An exact zero sum is +0 in both paths, -0 when every term is -0. */
+static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int allneg0, int *bad)
+{
+	xv r;
+	double lo = 0.0, sabs = 0.0, err = 0.0, V, merr;
+	int pass, i, E, minlsb = 100000, exact = 1;
+	if (!isfinite(bound)) { *bad = 1; return xc(0.0); }
+	for (i = 0; i < k; i++)
+		if (t[i] != 0.0) {
+			if (fabs(t[i]) < 0x1p-1000) { *bad = 1; return xc(0.0); }
+			if (dlsb(t[i]) < minlsb)
+				minlsb = dlsb(t[i]);
+		}
+	for (pass = 0; pass < 4; pass++) {
+		for (i = 1; i < k; i++)
+			two_sum(t[i], t[i - 1], &t[i], &t[i - 1]);
+		/* lo = t[0] + ... + t[k-2] by TwoSum, noting whether it is exact */
+		lo = 0.0;
+		sabs = 0.0;
+		exact = 1;
+		for (i = 0; i < k - 1; i++) {
+			double q;
+			two_sum(lo, t[i], &lo, &q);
+			exact &= q == 0.0;
+			sabs += fabs(t[i]);
+		}
+		err = exact ? 0.0 : (double)k * 0x1p-53 * sabs * INFL;
+		if (err <= 0x1p-95 * fabs(t[k - 1]))
+			break;
+	}
+	{
+		double sh, sl;
+		two_sum(t[k - 1], lo, &sh, &sl);
+		fast_two_sum_l(sh, sl, &r.h, &r.l); /* normalized as a pair of long doubles */
+	}
+	if (sabs == 0.0 && r.h == 0.0L) { /* exact zero */
+		r = xc(allneg0 ? -0.0 : 0.0);
+		return r;
+	}
+	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
+	E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
+	if (E + 1 - minlsb <= c->prec) {
+		/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
+		   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
+		   sum is exact, and so is ours when no TwoSum above lost a bit */
+		merr = 0.0;
+	} else {
+		V = (double)fabsl(r.h) * (1.0 + 0x1p-50) + err;
+		if (V <= pow2(E - 61))
+			merr = c->up * V;
+		else
+			merr = 4.0 * c->up * bound * INFL + c->up * V;
+	}
+	r.e = err == 0.0 && merr == 0.0 ? 0.0 : (err + merr) * INFL + FLOOR;
+	if (!ok(r)) *bad = 1;
+	return r;
+}
+
+/* Products a b into t (hi, lo); 0 if one underflowed. */
+static int prod_terms(double a, double b, double *t)
+{
+	two_prod(a, b, &t[0], &t[1]);
+	if (t[0] == 0.0 ? (a != 0.0 && b != 0.0) : fabs(t[0]) < 0x1p-960)
+		return 0;
+	return 1;
+}
+
+/* dot_exact: a.b - z (z's term only when z != 0, as in reference.c). */
+static xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double z, int *bad)
+{
+	double t[8];
+	int i, k = 6, neg0 = 1;
+	for (i = 0; i < 3; i++) {
+		if (!prod_terms(a[i], b[i], t + 2 * i)) { *bad = 1; return xc(0.0); }
+		neg0 &= signbit(a[i] * b[i]) != 0 && a[i] * b[i] == 0.0;
+	}
+	if (z != 0.0) {
+		t[k++] = -z;
+		neg0 = 0;
+	}
+	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
+}
+
+/* norm_m1_exact: |v| - 1 from RN(v.v - 1) in double, as reference.c. */
+static int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
+{
+	double t[8], e;
+	int i, bad = 0;
+	xv s;
+	for (i = 0; i < 3; i++)
+		if (!prod_terms(v[i], v[i], t + 2 * i))
+			return 0;
+	t[6] = -1.0;
+	s = sum_terms(c, t, 7, v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + 1.0, 0, &bad);
+	if (bad || !ziv_d(s, &e))
+		return 0;
+	*out = e / (sqrt(1.0 + e) + 1.0);
+	return 1;
+}
+
+/* ---- the method's formula, mirroring reference.c operation by operation ---- */
+
+/* dot(): p0 = a0 b0, p1 = a1 b1, out = p0 + p1, p0 = a2 b2, out += p0 */
+static xv xdot(const xv *a, const xv *b, int *bad)
+{
+	xv o = xadd(xmul(a[0], b[0], bad), xmul(a[1], b[1], bad), bad);
+	return xadd(o, xmul(a[2], b[2], bad), bad);
+}
+
+static void xcross(xv *o, const xv *a, const xv *b, int *bad)
+{
+	o[0] = xsub(xmul(a[1], b[2], bad), xmul(a[2], b[1], bad), bad);
+	o[1] = xsub(xmul(a[2], b[0], bad), xmul(a[0], b[2], bad), bad);
+	o[2] = xsub(xmul(a[0], b[1], bad), xmul(a[1], b[0], bad), bad);
+}
+
+static void xnormalize(xv *a, int *bad)
+{
+	const xv r = xrsqrt(xdot(a, a, bad), bad);
+	int i;
+	if (*bad)
+		return;
+	for (i = 0; i < 3; i++)
+		a[i] = xmul(a[i], r, bad);
+}
+
+static void xset3(xv *o, double x, double y, double z) { o[0] = xc(x); o[1] = xc(y); o[2] = xc(z); }
+
+/* frisvad_formula: a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
+static void xfrisvad(const xv *n, xv *b1, xv *b2, int *bad)
+{
+	const xv a = xrecip(xadd(n[2], xc(1.0), bad), bad);
+	const xv b = xneg(xmul(xmul(n[0], n[1], bad), a, bad));
+	if (*bad)
+		return;
+	b1[0] = xsub(xc(1.0), xmul(xmul(n[0], n[0], bad), a, bad), bad);
+	b1[1] = b;
+	b1[2] = xneg(n[0]);
+	b2[0] = b;
+	b2[1] = xsub(xc(1.0), xmul(xmul(n[1], n[1], bad), a, bad), bad);
+	b2[2] = xneg(n[1]);
+}
+
+/* Duff's lower branch and the branchless form with s = +-1:
+   a = -1/(s + z), b = x y a, b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y);
+   Duff's lower branch (branchless = 0): a = 1/(1 - z), b = x y a,
+   b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y). */
+static void xduff(const xv *n, int s, int branchless, xv *r1, xv *r2, int *bad)
+{
+	xv a, b, t2;
+	if (branchless) {
+		a = xneg(xrecip(xadd(n[2], xc((double)s), bad), bad));
+	} else {
+		a = xrecip(xsub(xc(1.0), n[2], bad), bad);
+	}
+	b = xmul(xmul(n[0], n[1], bad), a, bad);
+	if (*bad)
+		return;
+	t2 = xmul(xmul(n[0], n[0], bad), a, bad);
+	if (branchless) {
+		if (s < 0) t2 = xneg(t2);
+		r1[0] = xadd(t2, xc(1.0), bad);
+		r1[1] = s < 0 ? xneg(b) : b;
+		r1[2] = s < 0 ? n[0] : xneg(n[0]);
+		r2[0] = b;
+		r2[1] = xadd(xmul(xmul(n[1], n[1], bad), a, bad), xc((double)s), bad);
+	} else {
+		r1[0] = xsub(xc(1.0), t2, bad);
+		r1[1] = xneg(b);
+		r1[2] = n[0];
+		r2[0] = b;
+		r2[1] = xsub(xmul(xmul(n[1], n[1], bad), a, bad), xc(1.0), bad);
+	}
+	r2[2] = xneg(n[1]);
+}
+
+/* reference(): the exact formula of kernel k on n along branch br, into
+   r1, r2 (or the rotated direction into r1 for frisvad_rotate). */
+static void xreference(const study_kernel *k, int br, const double loc[3], const double nd[3],
+                       xv *r1, xv *r2, int *bad)
+{
+	xv n[3], u[3], w[3];
+	const onb_method *m = k->m;
+	int i;
+	xset3(n, nd[0], nd[1], nd[2]);
+	if (!m) { /* frisvad_rotate, Equation 3 */
+		const xv t3 = xadd(n[2], xc(1.0), bad);
+		if (is_zero(t3)) {
+			xset3(r1, -loc[1], -loc[0], -loc[2]);
+			return;
+		}
+		xfrisvad(n, u, r2, bad);
+		if (*bad)
+			return;
+		for (i = 0; i < 3; i++) {
+			r1[i] = xadd(xmul(xc(loc[0]), u[i], bad), xmul(xc(loc[1]), r2[i], bad), bad);
+			r1[i] = xadd(r1[i], xmul(xc(loc[2]), n[i], bad), bad);
+		}
+		return;
+	}
+	switch (k->family) {
+	case FAM_NAIVE: {
+		const xv d = br ? n[1] : n[0];
+		for (i = 0; i < 3; i++)
+			r1[i] = xmul(n[i], d, bad);
+		r1[br ? 1 : 0] = xsub(xc(1.0), r1[br ? 1 : 0], bad);
+		r1[br ? 0 : 1] = xneg(r1[br ? 0 : 1]);
+		r1[2] = xneg(r1[2]);
+		if (m->norm != ONB__NORM_NONE)
+			xnormalize(r1, bad);
+		xcross(r2, n, r1, bad);
+		break;
+	}
+	case FAM_HUGHES_MOELLER:
+		if (br) {
+			r2[0] = xneg(n[1]); r2[1] = n[0]; r2[2] = xc(0.0);
+		} else {
+			r2[0] = xc(0.0); r2[1] = xneg(n[2]); r2[2] = n[1];
+		}
+		if (m->norm != ONB__NORM_NONE)
+			xnormalize(r2, bad);
+		xcross(r1, r2, n, bad);
+		break;
+	case FAM_FRISVAD:
+		if (br) {
+			xset3(r1, 0.0, -1.0, 0.0);
+			xset3(r2, -1.0, 0.0, 0.0);
+		} else {
+			xfrisvad(n, r1, r2, bad);
+		}
+		break;
+	case FAM_DUFF:
+		if (br)
+			xduff(n, -1, 0, r1, r2, bad);
+		else
+			xfrisvad(n, r1, r2, bad);
+		break;
+	case FAM_DUFF_BRANCHLESS:
+		xduff(n, br ? -1 : 1, 1, r1, r2, bad);
+		break;
+	case FAM_STARK:
+	case FAM_STARK_FIXED:
+		/* as published zm = 1; fixed (Hill 2011) e_k */
+		xset3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
+		xcross(r1, n, u, bad);
+		xnormalize(r1, bad);
+		xcross(r2, n, r1, bad);
+		break;
+	case FAM_PBRT_V3:
+		if (br) {
+			r1[0] = xneg(n[2]); r1[1] = xc(0.0); r1[2] = n[0];
+		} else {
+			r1[0] = xc(0.0); r1[1] = n[2]; r1[2] = xneg(n[1]);
+		}
+		xnormalize(r1, bad);
+		xcross(r2, n, r1, bad);
+		break;
+	case FAM_RTOW:
+		for (i = 0; i < 3; i++)
+			w[i] = n[i];
+		xnormalize(w, bad);
+		xset3(u, br ? 0.0 : 1.0, br ? 1.0 : 0.0, 0.0);
+		xcross(r2, w, u, bad);
+		xnormalize(r2, bad);
+		xcross(r1, w, r2, bad);
+		break;
+	case FAM_TANGENT_CROSS_Z:
+		u[0] = n[0]; u[1] = n[1]; u[2] = xadd(n[2], xc(1.0), bad);
+		xcross(r2, n, u, bad);
+		xnormalize(r2, bad);
+		xcross(r1, n, r2, bad);
+		break;
+	default: /* a family reference.c does not know: MPFR decides */
+		*bad = 1;
+	}
+}
+
+/* reference.c's float_distance: representable values between a and b. */
+static double float_distance(double a, double b, int prec)
+{
+	if (prec == PREC_FLOAT) {
+		float fa = (float)a, fb = (float)b;
+		uint32_t ua, ub;
+		int64_t oa, ob;
+		memcpy(&ua, &fa, 4);
+		memcpy(&ub, &fb, 4);
+		oa = (ua >> 31) ? -(int64_t)(ua & 0x7fffffffu) : (int64_t)ua;
+		ob = (ub >> 31) ? -(int64_t)(ub & 0x7fffffffu) : (int64_t)ub;
+		return (double)(oa > ob ? oa - ob : ob - oa);
+	} else {
+		uint64_t ua, ub, ma, mb;
+		memcpy(&ua, &a, 8);
+		memcpy(&ub, &b, 8);
+		ma = ua & 0x7fffffffffffffffu;
+		mb = ub & 0x7fffffffffffffffu;
+		if ((ua >> 63) != (ub >> 63))
+			return (double)ma + (double)mb;
+		return (double)(ma > mb ? ma - mb : mb - ma);
+	}
+}
+
+/* forward(): the forward error of component cv against E.  1 when every
+   figure is determined, 2 when ref[] is not (then NaN), 0 when MPFR must
+   decide.  A diff = |RN(E - cv)| that stays undetermined (E - cv within
+   MPFR's rounding noise of a double, as when the kernel is exact and
+   MPFR's E carries 2^-127 of noise) enters only the maxima abs_eps_max
+   and ulp_max: its upper bound goes to undet[0] (in eps) and undet[1]
+   (in ulps), and the caller checks that neither reaches the maxima. */
+static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
+{
+	const int p = prec == PREC_FLOAT ? 24 : 53;
+	const int emin = prec == PREC_FLOAT ? -125 : -1021;
+	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
+	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
+	const int tiny = (double)fabsl(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
+	double diff, rounded, bits, ulp = 0.0, upper = 0.0;
+	int bad = 0, rc = 1, have_diff;
+	xv D;
+	if (!ziv_d(E, refd)) {
+		/* The exact double of E is undetermined (an exact zero that MPFR
+		   computes as rounding noise, say).  When tiny, it takes part in
+		   no other figure: only ref[] is left to MPFR, and only if the
+		   sample is kept among the worst. */
+		if (!tiny)
+			return 0;
+		*refd = NAN;
+		rc = 2;
+	}
+	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
+	if (bad)
+		return 0;
+	have_diff = ziv_d(D, &diff);
+	if (have_diff) {
+		diff = fabs(diff);
+		if (diff / eps > s->abs_eps_max)
+			s->abs_eps_max = diff / eps;
+	} else {
+		upper = ((double)fabsl(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
+		if (upper / eps > undet[0])
+			undet[0] = upper / eps;
+	}
+	if (tiny) {
+		rounded = 0.0;
+	} else if (prec == PREC_FLOAT) {
+		if (!ziv_f(E, &rounded))
+			return 0;
+	} else {
+		rounded = *refd;
+	}
+	if (rounded != 0.0 && fabs(rounded) >= eps) {
+		int ex;
+		ex = dexp(rounded) + 1; /* frexp's exponent */
+		ulp = pow2((ex < emin ? emin : ex) - p);
+		if (!have_diff) {
+			if (upper / ulp > undet[1])
+				undet[1] = upper / ulp;
+		} else if (diff / ulp > s->ulp_max) {
+			s->ulp_max = diff / ulp;
+		}
+		{
+			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
+			const double dist = float_distance(cv, rounded, prec);
+			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
+		}
+		s->bits_sum += bits;
+		s->nbits++;
+		if (bits > s->bits_max)
+			s->bits_max = bits;
+	}
+	return rc;
+}
+
+/* ref_eval's first half, unchanged: the input as the kernel receives it,
+   the kernel's outputs and the rotated direction. */
+static void run_kernel(const study_kernel *k, int prec, const double n_in[3], const double loc[3],
+                       double n[3], sample_metrics *s)
+{
+	int i;
+	for (i = 0; i < 3; i++) {
+		if (prec == PREC_FLOAT) {
+			volatile float f = (float)n_in[i];
+			n[i] = f;
+		} else {
+			n[i] = n_in[i];
+		}
+	}
+	memset(s, 0, sizeof *s);
+	s->has_basis = k->m != NULL;
+	s->ncomp = k->m ? 6 : 3;
+	s->branch = k->branch(k, prec, n);
+	s->in_norm = NAN;
+	for (i = 0; i < NDEF; i++)
+		s->d[i] = NAN;
+	s->defect = s->sumsq = s->det = NAN;
+	if (prec == PREC_FLOAT) {
+		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
+		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+		onb_vec3f b1, b2, w;
+		if (k->m) {
+			k->basisf(nf, &b1, &b2);
+			w.x = x * b1.x + y * b2.x + z * nf.x;
+			w.y = x * b1.y + y * b2.y + z * nf.y;
+			w.z = x * b1.z + y * b2.z + z * nf.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rotf(nf, x, y, z);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	} else {
+		const onb_vec3 nd = { n[0], n[1], n[2] };
+		onb_vec3 b1, b2, w;
+		if (k->m) {
+			k->basis(nd, &b1, &b2);
+			w.x = loc[0] * b1.x + loc[1] * b2.x + loc[2] * nd.x;
+			w.y = loc[0] * b1.y + loc[1] * b2.y + loc[2] * nd.y;
+			w.z = loc[0] * b1.z + loc[1] * b2.z + loc[2] * nd.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rot(nd, loc[0], loc[1], loc[2]);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	}
+}
+
+/* |n| - 1 and, for nonunit inputs, 1/|n| = rec_sqrt(dot(n, n)) of the
+   input, once per input (the sweep evaluates every kernel in a row). */
+static int input_terms(reffast_ctx *c, const double n[3], int normalize_n, xv *inv)
+{
+	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
+		memcpy(c->last, n, sizeof c->last);
+		c->have_last = 1;
+		c->last_ok = norm_m1_fast(c, n, &c->last_norm);
+		c->last_inv_ok = -1;
+	}
+	if (!c->last_ok)
+		return 0;
+	if (normalize_n) {
+		if (c->last_inv_ok < 0) {
+			int bad = 0;
+			xv nv[3], r;
+			xset3(nv, n[0], n[1], n[2]);
+			r = xrsqrt(xdot(nv, nv, &bad), &bad);
+			c->inv_h = r.h; c->inv_l = r.l; c->inv_e = r.e;
+			c->last_inv_ok = !bad;
+		}
+		if (!c->last_inv_ok)
+			return 0;
+		inv->h = c->inv_h; inv->l = c->inv_l; inv->e = c->inv_e;
+	}
+	return 1;
+}
+
+/* b.n (or (b.n)/|n| against the normalized input), rounded to double. */
+static int defect_dot(const reffast_ctx *c, const double *a, const double *b, double z,
+                      int normalize_n, xv inv, double *out)
+{
+	int bad = 0;
+	xv x = xdot_exact(c, a, b, z, &bad);
+	if (normalize_n)
+		x = xmul(x, inv, &bad);
+	return !bad && ziv_d(x, out);
+}
+
+/* The orthonormality defect and the handedness, as ref_eval. */
+static int basis_defects(const reffast_ctx *c, const study_kernel *k, const double n[3],
+                         int normalize_n, xv inv, sample_metrics *s)
+{
+	long double det;
+	int i;
+	if (!norm_m1_fast(c, s->out, &s->d[DEF_N1]) || !norm_m1_fast(c, s->out + 3, &s->d[DEF_N2]) ||
+	    !defect_dot(c, s->out, n, 0.0, normalize_n, inv, &s->d[DEF_D1N]) ||
+	    !defect_dot(c, s->out + 3, n, 0.0, normalize_n, inv, &s->d[DEF_D2N]) ||
+	    !defect_dot(c, s->out, s->out + 3, 0.0, 0, inv, &s->d[DEF_D12]))
+		return 0;
+	s->defect = 0.0;
+	s->sumsq = 0.0;
+	for (i = 0; i < NDEF; i++) {
+		if (fabs(s->d[i]) > s->defect)
+			s->defect = fabs(s->d[i]);
+		s->sumsq += s->d[i] * s->d[i];
+	}
+	{
+		long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
+		long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
+		det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
+		    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
+		    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
+	}
+	s->det = (double)det;
+	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+	return 1;
+}
+
+int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+                 const double loc[3], int normalize_n, sample_metrics *s)
+{
+	double n[3];
+	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
+	int i, bad = 0, rc = REFFAST_DONE;
+	double undet[2] = { 0.0, 0.0 };
+	run_kernel(k, prec, n_in, loc, n, s);
+	if (!input_terms(c, n, normalize_n, &inv))
+		return REFFAST_MPFR;
+	s->in_norm = c->last_norm;
+	for (i = 0; i < s->ncomp; i++)
+		if (!isfinite(s->out[i]))
+			break;
+	if (i < s->ncomp || !isfinite(s->w[0]) || !isfinite(s->w[1]) || !isfinite(s->w[2])) {
+		s->nonfinite = 1;
+		s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = NAN;
+		s->dir_norm = s->dir_cos = NAN;
+		for (i = 0; i < 6; i++)
+			s->ref[i] = NAN;
+		return REFFAST_DONE;
+	}
+	if (k->m && !basis_defects(c, k, n, normalize_n, inv, s))
+		return 0;
+
+	/* Forward error against the kernel's own formula. */
+	xreference(k, s->branch, loc, n, r1, r2, &bad);
+	if (bad)
+		return 0;
+	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
+	for (i = 0; i < s->ncomp; i++) {
+		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+		if (!f)
+			return 0;
+		if (f == 2)
+			rc = REFFAST_NOREF;
+	}
+	/* an undetermined diff no larger than the determined maxima (in the
+	   same units: eps and ulps are powers of two) leaves them unchanged */
+	if (!(undet[0] <= s->abs_eps_max) || !(undet[1] <= s->ulp_max))
+		return 0;
+
+	/* Direction error: | |w| - 1 | and | w.n - z |. */
+	if (!norm_m1_fast(c, s->w, &s->dir_norm))
+		return 0;
+	s->dir_norm = fabs(s->dir_norm);
+	{
+		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+		xv x = xdot_exact(c, s->w, n, normalize_n ? 0.0 : z, &bad);
+		if (normalize_n)
+			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
+		if (bad || !ziv_d(x, &s->dir_cos))
+			return 0;
+		s->dir_cos = fabs(s->dir_cos);
+	}
+	return rc;
+}

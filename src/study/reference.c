@@ -527,6 +527,20 @@ static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, cons
 	int i, hard = 0;
 	for (i = 0; i < nc; i++)
 		hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &fb[i]);
+	/* naive's b2 = n x (e - n (n.e)) = n x e has no e component, for any
+	   n: that component of the exact formula is identically zero, where
+	   the reference's cross product leaves a rounding residue */
+	if (k->m && k->family == FAM_NAIVE && isfinite(fb[3 + br])) {
+		fb[3 + br] = 0.0;
+		if (!hard)
+			return 0;
+		/* hard only through that residue? */
+		for (i = 0, hard = 0; i < nc; i++)
+			if (i != 3 + br) {
+				double t;
+				hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &t);
+			}
+	}
 	if (!hard)
 		return 0;
 	if (!c->hi)
@@ -539,7 +553,8 @@ static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, cons
 	c->hi->have_last = 0;
 	reference(c->hi, k, br, loc);
 	for (i = 0; i < nc; i++)
-		(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
+		if (!(k->m && k->family == FAM_NAIVE && i == 3 + br))
+			(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
 	return 1;
 }
 
@@ -554,7 +569,7 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 	double fb[6], w[3], d[NDEF];
 	int i;
 	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
-	s->floor_hard = floor_basis(c, k, prec, s->branch, n, loc, fb);
+	(void)floor_basis(c, k, prec, s->branch, n, loc, fb);
 	if (!finite6(fb, k->m ? 6 : 3))
 		return;
 	if (k->m) {

@@ -61,7 +61,6 @@ typedef struct {
 	                          (defect; frisvad_rotate: max of the direction
 	                          errors), f the floor's, u = 2^-24 or 2^-53; NaN
 	                          when either is not finite                       */
-	int floor_hard;        /* a component had to be decided at prec + 128 bits   */
 } sample_metrics;
 
 /* Evaluate kernel k on n (values exactly representable in `prec`) with the

@@ -6,12 +6,13 @@ set datafile separator whitespace
 set style data histograms
 set style fill solid 0.8 border -1
 set boxwidth 0.8
-set yrange [0:2.1]
+set yrange [0:2.45]
+set ytics 0, 0.5, 2
 set xtics rotate by -45 font ",8" nomirror noenhanced
 set ylabel yl
 set title ttl
 set grid ytics lc rgb "#dddddd"
-set key top right
+set key top right font ",9" opaque  # in the band above 2, which no bar reaches
 do for [term_i = 1:2] {
     if (term_i == 1) { set terminal pngcairo size 1100,560 font ",10"; set output out.".png" }
     if (term_i == 2) { set terminal svg size 1100,560 font "sans,10"; set output out.".svg" }

@@ -43,6 +43,7 @@ generate() {
 		if (v ~ /nan/) return "n/a"
 		if (v ~ /inf/) return "inf"
 		if (v + 0 == 0) return "0"
+		if (v + 0 >= 1e6 || v + 0 <= -1e6) return sprintf("%.3g", v + 0)  # 1.58e+13, not 15772600000000
 		if (v + 0 >= 100 || v + 0 <= -100) return sprintf("%.0f", v + 0)
 		return sprintf("%.3g", v + 0)
 	}

@@ -35,16 +35,21 @@ gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	made=$((made + 1))
 }
 
-# Methods in the run's order, their colours and dash types.
-methods=$(awk -F, '!/^#/ && NR > 1 && $1 != "method" && !seen[$1]++ { print $1 }' "$RUN/summary.csv")
-colour() {
-	base=${1%+fma}
-	c=$(awk -v m="$base" '$1 == m { print $2 }' "$HERE/colors.txt")
-	echo "${c:-#000000}"
-}
-dash() { case $1 in *+fma) echo 2 ;; *) echo 1 ;; esac; }
+# Methods in drawing order, with their panel, hue, dash, point type and
+# width (scripts/styles.sh: one hue per family, small multiples), per
+# precision (the float-only methods have no double rows).
+sty() { awk -v m="$1" -v c="$2" '$1 == m { print $c }' "$W/styles"; }
 samples() { # samples METHOD PREC DIST
 	awk -F, -v m="$1" -v p="$2" -v d="$3" '!/^#/ && $1 == m && $2 == p && $3 == d { print $4; exit }' "$RUN/summary.csv"
+}
+# range FILES COL LOGX: "xmin xmax ymin ymax" of the data (y: with margins;
+# x: where the data start and end)
+range() {
+	# shellcheck disable=SC2086
+	cat $1 | awk -v c="$2" -v lx="$3" 'NF >= c { x = $1 + 0; y = $c + 0
+		if (!n++ || x < x0) x0 = x; if (n == 1 || x > x1) x1 = x
+		if (y > 0 && (!m++ || y < y0)) y0 = y; if (y > 0 && (m == 1 || y > y1)) y1 = y }
+		END { if (lx) { x0 /= 1.4; x1 *= 1.4 } if (!m) { y0 = 1e-20; y1 = 10 } printf "%g %g %g %g\n", x0, x1, y0 / 4, y1 * 4 }'
 }
 
 # floor_band METHOD PREC "DISTS" AXIS lin|log: x, floor RMS, floor max per
@@ -64,31 +69,37 @@ floor_band() {
 
 for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
-	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; else FLOOR=1e-20; EPS=2.22e-16; fi
+	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=1.5e-8; else FLOOR=1e-20; EPS=2.22e-16; ZX=1e-18; fi
 	CEIL=10
-	# the methods run in this precision (the float-only ones have no double rows)
-	pmethods=$(awk -F, -v p="$P" '!/^#/ && NR > 1 && $1 != "method" && $2 == p && !seen[$1]++ { print $1 }' "$RUN/summary.csv")
+	awk -F, -v p="$P" '/^#/ || $1 == "method" || $2 == p' "$RUN/summary.csv" > "$W/summary_$P.csv"
+	sh "$HERE/styles.sh" "$W/summary_$P.csv" > "$W/styles"
+	pmethods=$(awk '{ print $1 }' "$W/styles")
+	awk '{ print $1, $3 }' "$W/styles" > "$W/colors.txt"   # for bars and tradeoff
+	ptitles=$(awk '{ if (!(($2, $7) in s)) { s[$2, $7] = 1; t[$2] = t[$2] (t[$2] == "" ? "" : ",") $7 } if ($2 > np) np = $2 }
+		END { for (p = 1; p <= np; p++) printf "%s%s", (p > 1 ? " " : ""), t[p] }' "$W/styles")
 	first=$(echo "$pmethods" | head -1)
 
 	# 1. error against n.z (uniform), max and RMS
 	# 2. near the south pole, max over south, exhaustive and uniform
 	# 6. against | |n| - 1 | (nonunit)
-	files1=""; files2=""; files6=""; names=""; colors=""; dashes=""
+	files1=""; files2=""; files6=""; names=""; colors=""; dashes=""; points=""; widths=""; panels=""
 	for m in $pmethods; do
 		f1="$W/nz_${P}_$m.dat"; f2="$W/sp_${P}_$m.dat"; f6="$W/nu_${P}_$m.dat"
 		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
 			!/^#/ && $1 == m && $2 == p && $3 == "uniform" && $4 == "nz" { print ($5 + $6) / 2, v($9), v($8) }' "$RUN/by_nz.csv" > "$f1"
-		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
+		# the lowest bin (from -17) holds n.z = -1 exactly: drawn at ZX, apart
+		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" -v zx="$ZX" '
 			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
 			!/^#/ && $1 == m && $2 == p && ($3 == "south" || $3 == "exhaustive" || $3 == "uniform") && $4 == "log10_1pnz" {
-				k = $5; x = v($9); if (!(k in mx) || x > mx[k]) mx[k] = x; c[k] = ($5 + $6) / 2 }
+				k = $5; x = v($9); if (!(k in mx) || x > mx[k]) mx[k] = x; c[k] = ($5 + 0 <= -17) ? log(zx) / log(10) : ($5 + $6) / 2 }
 			END { for (k in mx) print 10 ^ c[k], mx[k] }' "$RUN/by_nz.csv" | sort -g > "$f2"
 		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
 			!/^#/ && $1 == m && $2 == p && $3 == "nonunit" && $4 == "log10_absnorm" { print 10 ^ (($5 + $6) / 2), v($9), v($8) }' "$RUN/by_nz.csv" > "$f6"
 		files1="$files1 $f1"; files2="$files2 $f2"; files6="$files6 $f6"
-		names="$names $m"; colors="$colors $(colour "$m")"; dashes="$dashes $(dash "$m")"
+		names="$names $m"; colors="$colors $(sty "$m" 3)"; dashes="$dashes $(sty "$m" 4)"
+		points="$points $(sty "$m" 5)"; widths="$widths $(sty "$m" 6)"; panels="$panels $(sty "$m" 2)"
 	done
 	# the accuracy floor band (issue 16): the floor of one method's family
 	# (duff_branchless when the run has it), its RMS to its max per bin;
@@ -97,23 +108,27 @@ for P in float double; do
 	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
 	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
 	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
-	bt="floor ($fm formula, exact, rounded once): RMS to max"
+	bt="floor: $fm exact, rounded once (RMS to max)"
 	b1=""; b2=""; b6=""
-	[ -s "$W/fb1_$P.dat" ] && b1="band='$W/fb1_$P.dat'; bandtitle='$bt';"
-	[ -s "$W/fb2_$P.dat" ] && b2="band='$W/fb2_$P.dat'; bandtitle='$bt';"
-	[ -s "$W/fb6_$P.dat" ] && b6="band='$W/fb6_$P.dat'; bandtitle='$bt';"
-	common="$b1 files='$files1'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL"
+	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt'; ref_band=1;"
+	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt'; ref_band=1;"
+	[ -s "$W/fb6_$P.dat" ] && b6="ref_file='$W/fb6_$P.dat'; ref_title='$bt'; ref_band=1;"
+	common="names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
-		gp lines.gp "$common; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='largest orthonormality defect in the bin (unitless)'; ttl='$P: max defect against n.z, uniform, $n inputs per method'"
-		gp lines.gp "$common; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; xl='n.z'; yl='RMS orthonormality defect in the bin (unitless)'; ttl='$P: RMS defect against n.z, uniform, $n inputs per method'"
+		set -- $(range "$files1" 2 0)
+		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='largest defect in the bin'; ttl='$P: max orthonormality defect against n.z, uniform inputs, $n per method'"
+		set -- $(range "$files1" 3 0)
+		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='RMS defect in the bin'; ttl='$P: RMS orthonormality defect against n.z, uniform inputs, $n per method'"
 	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
-	gp lines.gp "$b2 files='$files2'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$EPS/2; xmax=1; xl='1 + n.z (distance from the south pole, unitless)'; yl='largest orthonormality defect (unitless)'; ttl='$P: near n.z = -1, south (${n:-0}), exhaustive and uniform inputs'"
+	set -- $(range "$files2" 2 1)
+	gp lines.gp "$b2 $common; files='$files2'; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z (distance from the south pole; leftmost point: n.z = -1 exactly)'; yl='largest defect'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs'"
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
-		gp lines.gp "$b6 files='$files6'; names='$names'; colors='$colors'; dashes='$dashes'; floor=$FLOOR; ceil=$CEIL; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=1e-9; xmax=0.1; xl='| |n| - 1 | of the input (unitless)'; yl='largest defect against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method'"
+		set -- $(range "$files6" 2 1)
+		gp lines.gp "$b6 $common; files='$files6'; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input'; yl='largest defect against n/|n|'; ttl='$P: non-unit input, $n inputs per method'"
 	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
 	fi
 
@@ -130,13 +145,16 @@ for P in float double; do
 			mfiles="$mfiles $f"; mnames="$mnames $m"; k=$((k + 1))
 		done
 		if [ $k -gt 0 ]; then
-			ncols=5; [ $k -lt 5 ] && ncols=$k
+			ncols=6; [ $k -lt 6 ] && ncols=$k
 			nrows=$(( (k + ncols - 1) / ncols ))
 			cells=$(awk -F, '!/^#/ && $1 != "method" { n++ } END { print n }' "$RUN/grid.csv")
-			lo=$(awk -v f=$FLOOR 'BEGIN { print log(f) / log(10) }')
+			# the colour scale: from the smallest value in the data (at
+			# most the floor) to 0, in whole decades
+			# shellcheck disable=SC2086
+			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
 			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: log10 of the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'"
 		fi
-		awk -F, -v p="$P" -v H="$HERE/colors.txt" '
+		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }
 			function hex(s,   i, v, c) { v = 0; s = tolower(substr(s, 2)); for (i = 1; i <= 6; i++) { c = index("0123456789abcdef", substr(s, i, 1)) - 1; v = v * 16 + c } return v }
 			!/^#/ && $2 == p && $3 == "grid" && $18 != "nan" { b = $1; sub(/\+fma$/, "", b); print $1, $18, hex(col[b] ? col[b] : "#000000") }' \
@@ -157,7 +175,8 @@ for P in float double; do
 				if (l ~ /^[a-z]/) { split(l, a, ","); sect = a[1]; continue }
 				if (sect != p) continue
 				if (l ~ /^# minimax both/ || l ~ /^# published/) {
-					match(l, /\(([-0-9.e]+)\)/); t = substr(l, RSTART + 1, RLENGTH - 2) + 0; x = 1 + t
+					# one_plus_t, not 1 + the rounded decimal t (which reads -1 in double)
+					match(l, /one_plus_t [-0-9.e+]+/); x = substr(l, RSTART + 11, RLENGTH - 11) + 0
 					lab = (l ~ /minimax/) ? "minimax (both)" : (l ~ /Frisvad/ ? "Frisvad 2012" : "Max 2017")
 					n++; printf "set arrow %d from %g, graph 0 to %g, graph 1 nohead dt %d lc rgb \"%s\"\n", n, x, x, (l ~ /minimax/) ? 1 : 3, (l ~ /minimax/) ? "#2ca02c" : "#555555"
 					printf "set label %d \"%s\" at %g, graph %g rotate by 90 right font \",8\" offset %s,0\n", n, lab, x, (l ~ /minimax/) ? 0.97 : (l ~ /Frisvad/ ? 0.97 : 0.55), (l ~ /minimax/) ? "-0.6" : "1.2"
@@ -170,8 +189,8 @@ for P in float double; do
 
 	# 4. speed against accuracy
 	if [ -f "$RUN/tradeoff.csv" ] && [ -f "$HERE/tradeoff.gp" ]; then
-		sh "$HERE/tradeoff-data.sh" "$RUN/tradeoff.csv" "$P" "$W" "$HERE/colors.txt" && \
-		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR"
+		sh "$HERE/tradeoff-data.sh" "$RUN/tradeoff.csv" "$P" "$W" "$W/colors.txt" && \
+		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR; here='$HERE'"
 	elif [ -f "$RUN/bench.csv" ]; then skip "tradeoff_$P" "no tradeoff.csv (run ./onbstudy table)"
 	else skip "tradeoff_$P" "no bench.csv or tradeoff.csv (run ./onbstudy bench --quick && ./onbstudy table)"
 	fi

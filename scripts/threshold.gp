@@ -13,6 +13,17 @@ set xlabel "1 + t  (t: Frisvad's threshold on n.z)"
 set ylabel "largest error over inputs near -z (unitless)"
 set title ttl
 load marks
+# the ranges: where the data start and end (a published threshold outside
+# them widens the x range so that its mark shows)
+stats file using ($1 > 0 && $1 < 1e300 ? $1 : 1/0) nooutput
+x0 = STATS_min; x1 = STATS_max
+set xrange [x0 / 1.5 : x1 * 1.5]
+stats file using ($2 > 0 && $2 < 1e300 ? $2 : 1/0) nooutput
+y0 = STATS_min; y1 = STATS_max
+stats file using ($3 > 0 && $3 < 1e300 ? $3 : 1/0) nooutput
+if (STATS_min < y0) { y0 = STATS_min }
+if (STATS_max > y1) { y1 = STATS_max }
+set yrange [y0 / 3 : y1 * 3]
 do for [term_i = 1:2] {
     if (term_i == 1) { set terminal pngcairo size 1100,620 font ",10"; set output out.".png" }
     if (term_i == 2) { set terminal svg size 1100,620 font "sans,10"; set output out.".svg" }

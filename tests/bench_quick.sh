@@ -12,7 +12,7 @@ bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # (nothing is compiled here, so $ONB_SANFLAGS needs no handling)
 
-cols="method,precision,mode,threads,size_class,size,bytes,reps,passes,mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best,chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum"
+cols="method,precision,mode,threads,size_class,size,bytes,reps,passes,mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best,chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum,flag"
 
 # check_csv FILE NMETHODS NYARD NPREC [NFLOATONLY]: prints problems, returns
 # non-zero on any.  NFLOATONLY of the methods (ONB_FLOAT_ONLY, flag 16) have
@@ -34,7 +34,9 @@ check_csv() {
 		function isnum(s) { return s ~ /^-?(nan|inf|[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?)$/ }
 		{
 			n++
-			if (NF != 21) { print "line " n ": " NF " fields"; bad = 1; next }
+			if (NF != 22) { print "line " n ": " NF " fields"; bad = 1; next }
+			if ($22 !~ /^(ok|load|spread|load\+spread)$/) { print "line " n ": flag " $22; bad = 1 }
+			if ($22 ~ /load/ && $4 + 0 <= 1) { print "line " n ": a 1-thread row flagged load"; bad = 1 }
 			for (i = 4; i <= 18; i++) if (i != 5 && !isnum($i)) { print "line " n ": field " i " not numeric: " $i; bad = 1 }
 			if (!isnum($21)) { print "line " n ": checksum " $21; bad = 1 }
 			if ($2 != "float" && $2 != "double") { print "line " n ": precision " $2; bad = 1 }

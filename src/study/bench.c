@@ -58,6 +58,7 @@ static bench_row *rows_add(bench_rows *rs)
 
 typedef struct {
 	int quick, threads, csv, nmeth, prec_mask; /* prec_mask: 1 float, 2 double */
+	int reference;                              /* --reference: that mode only */
 	const onb_method *meth[64];
 	const char *out;
 	double stream_mib;
@@ -76,7 +77,10 @@ static const char usage_text[] =
 	"                         'stream' set (under 15 s); the default run takes about a minute\n"
 	"  --stream-mib M         smallest float working set of the stream size (default 64)\n"
 	"  --seed S               input seed (default 1)\n"
-	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n";
+	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n"
+	"  --reference            the reference mode only: referenced evaluations per second per\n"
+	"                         core, fast reference and MPFR alone, on the default sweep's\n"
+	"                         inputs (bench-reference.csv; about a minute, --quick seconds)\n";
 
 /* --methods a,b,...: registry methods, each once, in the order given. */
 static int bench_methods(const char *v, bench_opts *o)
@@ -103,6 +107,7 @@ static int bench_option(int v, const char *a, bench_opts *o)
 	int on[2] = { 0, 0 };
 	switch (v) {
 	case 'q': o->quick = 1; return 0;
+	case 'R': o->reference = 1; return 0;
 	case 'm': return bench_methods(a, o);
 	case 'p': if (cli_precision("--precision", a, on)) return -1; o->prec_mask = on[0] | on[1] << 1; return 0;
 	case 't': if (parse_int("--threads", a, 1, 1024, &t) != 0) return -1; o->threads = (int)t; return 0;
@@ -134,6 +139,7 @@ static int parse_opts(int argc, char **argv, bench_opts *o)
 		{ "precision", required_argument, NULL, 'p' }, { "threads", required_argument, NULL, 't' },
 		{ "out", required_argument, NULL, 'o' }, { "format", required_argument, NULL, 'f' },
 		{ "stream-mib", required_argument, NULL, 'S' }, { "seed", required_argument, NULL, 's' },
+		{ "reference", no_argument, NULL, 'R' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t nm, i;
@@ -450,7 +456,21 @@ static void put_num(FILE *f, double v)
 
 #define BENCH_COLUMNS "method,precision,mode,threads,size_class,size,bytes,reps,passes," \
 	"mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best," \
-	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum"
+	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum,flag"
+
+/* A figure not to take at face value (the "flag" column): "load" for an
+   all-threads row begun at a 1-minute load average of BENCH_BUSY_LOAD or
+   more (other processes took CPU time from the threads); "spread" when the
+   median time exceeds the minimum by more than BENCH_WIDE_SPREAD. */
+#define BENCH_BUSY_LOAD   0.5
+#define BENCH_WIDE_SPREAD 1.2
+static int bench_busy; /* the load average at the start was BENCH_BUSY_LOAD or more */
+static const char *row_flag(const bench_row *r)
+{
+	const int load = bench_busy && r->r.threads > 1;
+	const int spread = r->r.median_s > BENCH_WIDE_SPREAD * r->r.min_s;
+	return load ? (spread ? "load+spread" : "load") : spread ? "spread" : "ok";
+}
 
 static void write_row(FILE *f, const bench_row *r, int tsc)
 {
@@ -466,7 +486,7 @@ static void write_row(FILE *f, const bench_row *r, int tsc)
 	put_num(f, r->chain_ns);
 	put_num(f, r->frac_roof);
 	put_num(f, r->vs_yard);
-	fprintf(f, ",%s,%s,%.17g\n", r->isa, r->vec ? r->vec : "unknown", r->checksum);
+	fprintf(f, ",%s,%s,%.17g,%s\n", r->isa, r->vec ? r->vec : "unknown", r->checksum, row_flag(r));
 }
 
 static const bench_row *find_row(const bench_rows *rs, const char *method, int dbl, const char *mode,
@@ -485,6 +505,30 @@ static const bench_row *find_row(const bench_rows *rs, const char *method, int d
 static double mbs(const bench_row *r)
 {
 	return r ? (double)r->r.n / r->r.median_s * 1e-6 : NAN;
+}
+/* '*' after a flagged figure (see row_flag) */
+static char star(const bench_row *r)
+{
+	return r && strcmp(row_flag(r), "ok") != 0 ? '*' : ' ';
+}
+
+/* After the table: what the '*' marks mean, and --quick's caveat. */
+static void flag_notes(const bench_opts *o, const bench_rows *rs, const char *load0)
+{
+	size_t i, nload = 0, nspread = 0;
+	for (i = 0; i < rs->n; i++) {
+		const char *fl = row_flag(&rs->v[i]);
+		nload += strstr(fl, "load") != NULL;
+		nspread += strstr(fl, "spread") != NULL;
+	}
+	if (nload)
+		printf("\n* %zu all-threads figures were taken under load (load average %s at the start, >= %g): "
+		       "other processes shared the CPUs, so read them as lower bounds\n", nload, load0, BENCH_BUSY_LOAD);
+	if (nspread)
+		printf("%s* %zu figures have a wide spread (median > %g x the best of %d repetitions): noisy\n",
+		       nload ? "" : "\n", nspread, BENCH_WIDE_SPREAD, o->reps);
+	if (o->quick)
+		printf("--quick: a check, not a measurement (%d short repetitions)\n", o->reps);
 }
 
 static void print_table(const bench_opts *o, const bench_rows *rs)
@@ -513,8 +557,9 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 			const bench_row *d = find_row(rs, name, p, mode, "stream", 1);
 			const bench_row *tp = find_row(rs, name, p, "call_throughput", "l2", 0);
 			const bench_row *lat = find_row(rs, name, p, "call_latency", "l2", 0);
-			printf("%-24s %8.0f %8.0f %8.0f %8.0f %5.0f%% %6.2f %6s %7.2f %7.2f %7.2f\n", mi < 0 ? "(copy roofline)" : name,
-			       mbs(a), mbs(b), mbs(c), mbs(d), c ? 100.0 * c->frac_roof : NAN, a ? a->vs_yard : NAN,
+			printf("%-24s %7.0f%c %7.0f%c %7.0f%c %7.0f%c %5.0f%% %6.2f %6s %7.2f %7.2f %7.2f\n", mi < 0 ? "(copy roofline)" : name,
+			       mbs(a), star(a), mbs(b), star(b), mbs(c), star(c), mbs(d), star(d),
+			       c ? 100.0 * c->frac_roof : NAN, a ? a->vs_yard : NAN,
 			       a && a->vec ? a->vec : "-", tp ? tp->r.median_s / (double)tp->r.n * 1e9 : NAN,
 			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 : NAN,
 			       lat ? lat->r.median_s / (double)lat->r.n * 1e9 - lat->chain_ns : NAN);
@@ -552,6 +597,8 @@ int cmd_bench(int argc, char **argv)
 	}
 	if (study_mkdir_p(out) != 0)
 		return ONB_EXIT_USAGE;
+	if (o.reference)
+		return bench_reference(out, o.quick, o.seed);
 #ifdef _SC_LEVEL2_CACHE_SIZE
 	l2 = sysconf(_SC_LEVEL2_CACHE_SIZE);
 #endif
@@ -567,6 +614,7 @@ int cmd_bench(int argc, char **argv)
 		n_stream *= 2;
 
 	loadavg(load0, sizeof load0);
+	bench_busy = atof(load0) >= BENCH_BUSY_LOAD;
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
 	for (p = 0; p < 2; p++)
@@ -587,6 +635,9 @@ int cmd_bench(int argc, char **argv)
 	              "no constant TSC: cycle columns are nan");
 	fprintf(f.f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
 	             "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
+	fprintf(f.f, "# flag: load = an all-threads row begun at a 1-minute load average >= %g (other processes took CPU "
+	             "time: a lower bound)%s; spread = median time > %g x the minimum over the repetitions; ok otherwise\n",
+	        BENCH_BUSY_LOAD, bench_busy ? ", as in this run" : "", BENCH_WIDE_SPREAD);
 	if (tsc)
 		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
 	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
@@ -623,6 +674,7 @@ int cmd_bench(int argc, char **argv)
 		       onb_batch_isa(), bench_yardstick_isa(), bench_calls_isa(), o.threads,
 		       tsc ? "constant" : "not constant (no cycles)", load0, load1);
 		print_table(&o, &rs);
+		flag_notes(&o, &rs, load0);
 	}
 	fprintf(stderr, "onbstudy: wrote %s/bench.csv (%zu rows, %.1f s)\n", out, rs.n, bench_now() - t0);
 	free(rs.v);

@@ -13,6 +13,7 @@ const char *study_cmdline = "";
 void study_error(const char *fmt, ...)
 {
 	va_list ap;
+	fflush(stdout); /* whatever stdout holds comes first: no message inside a table row */
 	fputs("onbstudy: ", stderr);
 	va_start(ap, fmt);
 	vfprintf(stderr, fmt, ap);

@@ -134,6 +134,47 @@ static int eval_parse(int argc, char **argv, eval_opts *o)
 	return rc;
 }
 
+/* What branch b (branch.inc's id) of kernel k means, in words. */
+static const char *branch_name(const study_kernel *k, int b, char *buf, size_t n)
+{
+	switch (k->family) {
+	case FAM_NAIVE:
+		return b ? "n.x > 0.9: b1 from the y-axis" : "n.x <= 0.9: b1 from the x-axis";
+	case FAM_HUGHES_MOELLER:
+		return b ? "|n.x| > |n.z|: b2 = (-n.y, n.x, 0)" : "|n.x| <= |n.z|: b2 = (0, -n.z, n.y)";
+	case FAM_FRISVAD:
+		snprintf(buf, n, b ? "fallback: n.z < t = %.9g" : "formula: n.z >= t = %.9g", k->m ? k->m->threshold : NAN);
+		return buf;
+	case FAM_DUFF:
+		return b ? "n.z < 0: the lower branch" : "n.z >= 0 (-0 too): the upper branch";
+	case FAM_DUFF_BRANCHLESS:
+		return b ? "signbit(n.z) set: sign = -1" : "signbit(n.z) clear: sign = +1";
+	case FAM_STARK: case FAM_STARK_FIXED:
+		return b == 0 ? "xm: p = n x (x-axis)" : b == 1 ? "ym: p = n x (y-axis)" : "zm: p = n x (z-axis)";
+	case FAM_PBRT_V3:
+		return b ? "|n.x| > |n.y|: b1 = (-n.z, 0, n.x) / len" : "|n.x| <= |n.y|: b1 = (0, n.z, -n.y) / len";
+	case FAM_RTOW:
+		return b ? "|unit(w).x| > 0.9: a = y-axis" : "|unit(w).x| <= 0.9: a = x-axis";
+	default:
+		return "no branch";
+	}
+}
+
+/* Warnings on an input the methods do not expect (they assume a unit n). */
+static void input_warnings(const char *pn, const double n[3])
+{
+	const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+	const double tol = pn[0] == 'f' ? 1e-6 : 1e-12;
+	if (!isfinite(n[0]) || !isfinite(n[1]) || !isfinite(n[2]))
+		printf("   WARNING: the input is not finite: every method's output is garbage (onb_basis_checked refuses it)\n");
+	else if (l2 == 0.0)
+		printf("   WARNING: the input is the zero vector, which has no direction: every method's output is garbage "
+		       "(onb_basis_checked refuses it)\n");
+	else if (!(fabs(l2 - 1.0) <= tol))
+		printf("   WARNING: the input is not unit (|n| = %.9g): every method but rtow assumes |n| = 1 "
+		       "(onb_basis_checked normalizes it)\n", sqrt(l2));
+}
+
 int cmd_eval(int argc, char **argv)
 {
 	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
@@ -168,6 +209,7 @@ int cmd_eval(int argc, char **argv)
 			for (i = 0; i < 3; i++)
 				if (n[i] != in[i] && !(isnan(n[i]) && isnan(in[i])))
 					printf("   note: component %d rounded to %s: %.17g -> %a\n", i, pn, in[i], n[i]);
+			input_warnings(pn, n);
 			printf("   local direction for the direction error: (%a, %a, %a)\n", lv[0], lv[1], lv[2]);
 			for (k = 0; k < nk; k++) {
 				sample_metrics m, m2;
@@ -178,7 +220,8 @@ int cmd_eval(int argc, char **argv)
 				}
 				ref_eval(rc, &ks[k], p, n, lv, 0, &m);
 				ref_eval(rc2, &ks[k], p, n, lv, 0, &m2);
-				printf("\n%s (%s), branch %d\n", ks[k].name, pn, m.branch);
+				printf("\n%s (%s), branch %d (%s)\n", ks[k].name, pn, m.branch,
+				       branch_name(&ks[k], m.branch, why, sizeof why));
 				if (ks[k].m) {
 					show3("b1", m.out);
 					show3("b2", m.out + 3);

@@ -111,7 +111,7 @@ void cell_merge(cell_t *d, const cell_t *s)
 
 /* The floor's share of cell_add: its own statistics, and the ratio. */
 static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source,
-                      bin_t *b[3])
+                      bin_t *b[4])
 {
 	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
 	const double r = m->floor_ratio;
@@ -122,7 +122,7 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 	fx_add_double(&c->floor2, f * f);
 	c->max_floor = dmax(c->max_floor, f);
 	c->max_floor_dir = dmax(c->max_floor_dir, dmax(m->floor_dir_norm, m->floor_dir_cos));
-	for (i = 0; i < 3; i++)
+	for (i = 0; i < 4; i++)
 		if (b[i]) {
 			b[i]->fcount++;
 			fx_add_double(&b[i]->fsumsq, f * f);
@@ -172,7 +172,7 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 {
 	worst_t w;
 	double key;
-	bin_t *fb[3] = { NULL, NULL, NULL }; /* the bins of this input, for the floor */
+	bin_t *fb[4] = { NULL, NULL, NULL, NULL }; /* the bins of this input, for the floor */
 	c->count++;
 	if (m->nonfinite) {
 		c->nonfinite++;
@@ -211,6 +211,12 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
 			fb[2] = &c->bins[NB_NZ + NB_LOG + b];
 			bin_add(fb[2], key);
+		}
+		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
+			const double h = 1.0 - n[2];
+			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
+			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + b];
+			bin_add(fb[3], key);
 		}
 	}
 	floor_add(c, index, m, n, source, fb);
@@ -385,11 +391,9 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 	return 0;
 }
 
-int sweep_merge_into(sweep_state *d, const sweep_state *s)
+int sweep_cfg_same(const sweep_cfg *x, const sweep_cfg *y)
 {
-	sweep_cfg a = d->cfg, b = s->cfg;
-	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
-	int p, k;
+	sweep_cfg a = *x, b = *y;
 	/* everything but the shard index and the counters must agree */
 	a.shard_k = b.shard_k = 0;
 	a.evals = b.evals = a.checked = b.checked = 0;
@@ -400,7 +404,28 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 	memset(a.ref_worst, 0, sizeof a.ref_worst); memset(b.ref_worst, 0, sizeof b.ref_worst);
 	memset(a.magic, 0, sizeof a.magic);
 	memset(b.magic, 0, sizeof b.magic);
-	if (memcmp(&a, &b, sizeof a) != 0) {
+	return memcmp(&a, &b, sizeof a) == 0;
+}
+
+void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s)
+{
+	int p, k;
+	d->evals += s->evals;
+	d->checked += s->checked;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < d->nk; k++) {
+			d->ref_evals[p][k] += s->ref_evals[p][k];
+			d->ref_fallback[p][k] += s->ref_fallback[p][k];
+			d->ref_worst[p][k] += s->ref_worst[p][k];
+		}
+	d->ref_mpfr |= s->ref_mpfr; /* mixed shards: say MPFR took part */
+}
+
+int sweep_merge_into(sweep_state *d, const sweep_state *s)
+{
+	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
+	int p, k;
+	if (!sweep_cfg_same(&d->cfg, &s->cfg)) {
 		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
 		return -1;
 	}
@@ -417,14 +442,6 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 					memcpy(&d->g_b1[3 * j], &s->g_b1[3 * j], 3 * sizeof(double));
 				}
 			}
-	d->cfg.evals += s->cfg.evals;
-	d->cfg.checked += s->cfg.checked;
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < d->cfg.nk; k++) {
-			d->cfg.ref_evals[p][k] += s->cfg.ref_evals[p][k];
-			d->cfg.ref_fallback[p][k] += s->cfg.ref_fallback[p][k];
-			d->cfg.ref_worst[p][k] += s->cfg.ref_worst[p][k];
-		}
-	d->cfg.ref_mpfr |= s->cfg.ref_mpfr; /* mixed shards: say MPFR took part */
+	sweep_cfg_add_counters(&d->cfg, &s->cfg);
 	return 0;
 }

@@ -520,6 +520,50 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 	}
 }
 
+/* Warnings about the bench.csv being joined: a --quick run (a check, not
+   a measurement), or rows that bench flagged (under load, wide spread).
+   Returns the number of warnings. */
+static int bench_caveats(const char *path)
+{
+	char line[4096];
+	int quick = 0, flagged = 0, cflag = -1, cmode = -1, header = 0, nw = 0;
+	FILE *fp = fopen(path, "r");
+	if (!fp)
+		return 0;
+	while (fgets(line, sizeof line, fp)) {
+		char *fld[64];
+		int nf;
+		line[strcspn(line, "\r\n")] = '\0';
+		if (line[0] == '#') {
+			quick |= strstr(line, "--quick") != NULL;
+			continue;
+		}
+		if (!line[0])
+			continue;
+		nf = csv_split(line, fld, 64);
+		if (!header) {
+			header = 1;
+			cflag = col(fld, nf, "flag");
+			cmode = col(fld, nf, "mode");
+		} else if (cflag >= 0 && cmode >= 0 && nf > cflag && nf > cmode && strcmp(fld[cflag], "ok") != 0 &&
+		           (!strcmp(fld[cmode], "batch") || !strcmp(fld[cmode], "call_throughput")))
+			flagged++;
+	}
+	fclose(fp);
+	fflush(stdout);
+	if (quick) {
+		fprintf(stderr, "onbstudy: table: warning: %s comes from 'bench --quick', a check, not a measurement: "
+		        "its speeds (and so the Pareto front) are rough\n", path);
+		nw++;
+	}
+	if (flagged) {
+		fprintf(stderr, "onbstudy: table: warning: %d of the rows joined from %s are flagged (under load or wide "
+		        "spread; see its 'flag' column): treat those speeds with care\n", flagged, path);
+		nw++;
+	}
+	return nw;
+}
+
 int cmd_table(int argc, char **argv)
 {
 	char bbuf[4096], sbuf[4096], obuf[4096];
@@ -534,6 +578,7 @@ int cmd_table(int argc, char **argv)
 	n = tradeoff_load(o.bench, o.summary, o.tol, &rows);
 	if (n < 0)
 		return ONB_EXIT_USAGE;
+	bench_caveats(o.bench);
 	if (n == 0) {
 		study_error("table: '%s' has no batch or call_throughput rows", o.bench);
 		free(rows);

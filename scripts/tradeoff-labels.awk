@@ -1,0 +1,50 @@
+# tradeoff-labels.awk - labels of tradeoff.gp that never overprint:
+# points that coincide on the chart share one label ("a = b"); each label
+# goes right of its point, or, when that spot is taken, up or down to the
+# nearest free spot, joined to its point by a grey leader line.
+# awk -v col=2|6 -v xmin= -v xmax= -v ymin= -v ymax= -f tradeoff-labels.awk tradeoff_P.dat
+# prints gnuplot commands (set label / set arrow).  Coordinates are
+# fractions of the graph, from the log axes.
+function fx(x) { return (log(x) - log(xmin)) / (log(xmax) - log(xmin)) }
+function fy(y) { return (log(y) - log(ymin)) / (log(ymax) - log(ymin)) }
+function free(x0, y0, w,   k) {
+	if (x0 < 0 || x0 + w > 0.99 || y0 < 0.02 || y0 > 0.98) return 0
+	for (k = 1; k <= nl; k++)
+		if (x0 < lx[k] + lw[k] && lx[k] < x0 + w && y0 - H < ly[k] + H && ly[k] - H < y0 + H) return 0
+	for (k = 1; k <= n; k++) # keep off the markers too
+		if (px[k] > x0 - 0.008 && px[k] < x0 + w && py[k] > y0 - H && py[k] < y0 + H) return 0
+	return 1
+}
+BEGIN { CW = 0.0095; H = 0.018 } # width of a character, half a label's height (fractions)
+{ n++; px[n] = fx($1); py[n] = fy($col); name[n] = $4; X[n] = $1; Y[n] = $col }
+END {
+	# coincident points: one label
+	for (i = 1; i <= n; i++) {
+		if (gone[i]) continue
+		t = name[i]
+		for (j = i + 1; j <= n; j++)
+			if (!gone[j] && (px[i] - px[j]) ^ 2 + ((py[i] - py[j]) * 0.5) ^ 2 < 0.005 ^ 2) { t = t " = " name[j]; gone[j] = 1 }
+		text[i] = t
+	}
+	# place, from the top down
+	m = 0
+	for (i = 1; i <= n; i++) if (!gone[i]) ord[++m] = i
+	for (a = 1; a <= m; a++) for (b = a + 1; b <= m; b++) if (py[ord[b]] > py[ord[a]]) { t = ord[a]; ord[a] = ord[b]; ord[b] = t }
+	for (a = 1; a <= m; a++) {
+		i = ord[a]; w = length(text[i]) * CW + 0.01
+		placed = 0
+		for (k = 0; k <= 24 && !placed; k++) {
+			dy = (k % 2 ? 1 : -1) * int((k + 1) / 2) * 2.2 * H
+			for (side = 0; side < 2 && !placed; side++) {
+				x0 = side ? px[i] - 0.012 - w : px[i] + 0.012
+				y0 = py[i] + dy
+				if (free(x0, y0, w)) placed = 1
+			}
+		}
+		if (!placed) { x0 = px[i] + 0.012; y0 = py[i] } # give up: right of the point
+		nl++; lx[nl] = x0; ly[nl] = y0; lw[nl] = w
+		printf "set label %d \"%s\" at graph %.4f, graph %.4f left font \",7\" noenhanced front\n", nl, text[i], x0, y0
+		if (k > 1 || (k == 1 && dy != 0) || x0 < px[i])
+			printf "set arrow %d from first %g, first %g to graph %.4f, graph %.4f nohead lc rgb \"#888888\" lw 0.6 back\n", nl, X[i], Y[i], (x0 < px[i] ? x0 + w - 0.004 : x0 - 0.002), y0
+	}
+}

@@ -108,7 +108,7 @@ for P in float double; do
 	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
 	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
 	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
-	bt="floor: $fm exact, rounded once (RMS to max)"
+	bt="accuracy floor (RMS-max)"
 	b1=""; b2=""; b6=""
 	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt'; ref_band=1;"
 	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt'; ref_band=1;"

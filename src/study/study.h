@@ -33,6 +33,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads);
 int cmd_scene(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_table(int argc, char **argv);
+int cmd_reproduce(int argc, char **argv);
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */

@@ -103,8 +103,11 @@ endif
 # fma() calls use it: -ffp-contract=off (BASE) still forbids contraction.
 # reffast_usable() refuses this path on a CPU without FMA.
 ifeq ($(shell uname -m),x86_64)
-$(B)/study/reffast.o: XFLAGS = -mfma
+$(B)/study/reffast.o $(B)/study/reffast_f.o: XFLAGS = -mfma
 endif
+
+# reffast_f.c is reffast.c compiled again with pairs of doubles.
+$(B)/study/reffast_f.o: src/study/reffast.c
 
 # The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.

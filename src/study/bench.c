@@ -58,6 +58,7 @@ static bench_row *rows_add(bench_rows *rs)
 
 typedef struct {
 	int quick, threads, csv, nmeth, prec_mask; /* prec_mask: 1 float, 2 double */
+	int reference;                              /* --reference: that mode only */
 	const onb_method *meth[64];
 	const char *out;
 	double stream_mib;
@@ -76,7 +77,10 @@ static const char usage_text[] =
 	"                         'stream' set (under 15 s); the default run takes about a minute\n"
 	"  --stream-mib M         smallest float working set of the stream size (default 64)\n"
 	"  --seed S               input seed (default 1)\n"
-	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n";
+	"  --format table|csv     what to print on stdout (bench.csv is written either way)\n"
+	"  --reference            the reference mode only: referenced evaluations per second per\n"
+	"                         core, fast reference and MPFR alone, on the default sweep's\n"
+	"                         inputs (bench-reference.csv; about a minute, --quick seconds)\n";
 
 /* --methods a,b,...: registry methods, each once, in the order given. */
 static int bench_methods(const char *v, bench_opts *o)
@@ -103,6 +107,7 @@ static int bench_option(int v, const char *a, bench_opts *o)
 	int on[2] = { 0, 0 };
 	switch (v) {
 	case 'q': o->quick = 1; return 0;
+	case 'R': o->reference = 1; return 0;
 	case 'm': return bench_methods(a, o);
 	case 'p': if (cli_precision("--precision", a, on)) return -1; o->prec_mask = on[0] | on[1] << 1; return 0;
 	case 't': if (parse_int("--threads", a, 1, 1024, &t) != 0) return -1; o->threads = (int)t; return 0;
@@ -134,6 +139,7 @@ static int parse_opts(int argc, char **argv, bench_opts *o)
 		{ "precision", required_argument, NULL, 'p' }, { "threads", required_argument, NULL, 't' },
 		{ "out", required_argument, NULL, 'o' }, { "format", required_argument, NULL, 'f' },
 		{ "stream-mib", required_argument, NULL, 'S' }, { "seed", required_argument, NULL, 's' },
+		{ "reference", no_argument, NULL, 'R' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t nm, i;
@@ -591,6 +597,8 @@ int cmd_bench(int argc, char **argv)
 	}
 	if (study_mkdir_p(out) != 0)
 		return ONB_EXIT_USAGE;
+	if (o.reference)
+		return bench_reference(out, o.quick, o.seed);
 #ifdef _SC_LEVEL2_CACHE_SIZE
 	l2 = sysconf(_SC_LEVEL2_CACHE_SIZE);
 #endif

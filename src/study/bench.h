@@ -155,4 +155,7 @@ int  tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, t
    counting as equal (see table.c). */
 void tradeoff_pareto(tradeoff_row *rows, int n, double tol);
 
+/* bench_ref.c: `onbstudy bench --reference` (issue 14); 0, or 1 after a message. */
+int bench_reference(const char *out, int quick, unsigned long long seed);
+
 #endif

@@ -48,10 +48,18 @@ struct reffast_ctx {
 };
 
 #define INFL (1.0 + 0x1p-40)     /* inflation of every computed bound        */
-#define DDREL 0x1p-124           /* relative rounding of a pair operation    */
 #define TINY 0x1p-900            /* smallest magnitude allowed (no underflow) */
 #define FLOOR 0x1p-1000          /* absolute floor added to inexact bounds   */
 
+/* The two instantiations of everything below (see the top of the pair
+   arithmetic): reffast.c with pairs of long doubles, reffast_f.c (this
+   file again with REFFAST_PAIR_DOUBLE) with pairs of doubles. */
+int reffast_eval_pairs_of_doubles(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+                                  const double loc[3], int normalize_n, sample_metrics *s);
+int reffast_eval_pairs_of_long_doubles(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+                                       const double loc[3], int normalize_n, sample_metrics *s);
+
+#ifndef REFFAST_PAIR_DOUBLE
 int reffast_usable(int ref_bits, const char **why)
 {
 #if LDBL_MANT_DIG != 64
@@ -84,6 +92,16 @@ reffast_ctx *reffast_new(int ref_bits)
 }
 
 void reffast_free(reffast_ctx *c) { free(c); }
+
+/* Float inputs take the pairs of doubles, double inputs the long doubles. */
+int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+                 const double loc[3], int normalize_n, sample_metrics *s)
+{
+	if (prec == PREC_FLOAT)
+		return reffast_eval_pairs_of_doubles(c, k, prec, n_in, loc, normalize_n, s);
+	return reffast_eval_pairs_of_long_doubles(c, k, prec, n_in, loc, normalize_n, s);
+}
+#endif
 
 /* ---- exponents by bit pattern (no libm call on the fast path) ---- */
 
@@ -174,7 +192,28 @@ static inline void two_prod(double a, double b, double *p, double *t)
    to about 2^-115.  The algorithms and their bounds hold for any binary
    precision p (Joldes, Muller, Popescu 2017); TwoProd is Dekker's, with
    Veltkamp's split at 2^32 + 1 (exact for p = 64 without overflow). */
+#ifdef REFFAST_PAIR_DOUBLE
+/* This translation unit (reffast_f.c) is the float precision's: pairs of
+   doubles (u = 2^-53, one operation < 2^-102 relative), enough there since
+   E - cv cancels only 24 bits of E; TwoProd by fma. */
+typedef double ld;
+#define PFABS fabs
+#define PSQRT sqrt
+#define DDREL 0x1p-102           /* relative rounding of a pair operation    */
+#define RHO_SLOP 0x1p-99         /* error of a residual 1 - b y (recip)      */
+#define RHO_SLOP2 0x1p-98        /* error of a residual 1 - s y^2 (rsqrt)    */
+#define OFF_SLOP 0x1p-52         /* rounding of (h - c) + l in ziv           */
+#define EVAL_NAME reffast_eval_pairs_of_doubles
+#else
 typedef long double ld;
+#define PFABS fabsl
+#define PSQRT sqrtl
+#define DDREL 0x1p-124           /* relative rounding of a pair operation    */
+#define RHO_SLOP 0x1p-121
+#define RHO_SLOP2 0x1p-120
+#define OFF_SLOP 0x1p-62
+#define EVAL_NAME reffast_eval_pairs_of_long_doubles
+#endif
 
 static inline void two_sum_l(ld a, ld b, ld *s, ld *t)
 {
@@ -192,10 +231,14 @@ static inline void fast_two_sum_l(ld a, ld b, ld *s, ld *t)
 
 static inline void two_prod_l(ld a, ld b, ld *p, ld *t)
 {
+#ifdef REFFAST_PAIR_DOUBLE
+	two_prod(a, b, p, t);
+#else
 	const ld ca = 4294967297.0L * a, cb = 4294967297.0L * b;
 	const ld ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
 	*p = a * b;
 	*t = ((ah * bh - *p) + ah * bl + al * bh) + al * bl;
+#endif
 }
 
 /* AccurateDWPlusDW (ibid., Algorithm 6): relative error
@@ -225,24 +268,28 @@ static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
 
 typedef struct { ld h, l; double e; } xv;
 
-static inline xv xc(double d) { xv r = { d, 0.0L, 0.0 }; return r; }
+static inline xv xc(double d) { xv r = { d, 0.0, 0.0 }; return r; }
 
 /* An upper bound of |X| from v and e. */
-static inline double mag(xv a) { return (double)fabsl(a.h) * (1.0 + 0x1p-50) + a.e; }
+static inline double mag(xv a) { return (double)PFABS(a.h) * (1.0 + 0x1p-50) + a.e; }
 
 static inline int ok(xv r)
 {
-	const ld a = fabsl(r.h);
-	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0L || a >= TINY);
+	const ld a = PFABS(r.h);
+	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0 || a >= TINY);
 }
 
 static inline xv xneg(xv a) { xv r = { -a.h, -a.l, a.e }; return r; }
 
-static inline int is_zero(xv a) { return a.h == 0.0L && a.e == 0.0; }
+static inline int is_zero(xv a) { return a.h == 0.0 && a.e == 0.0; }
 
 /* The exponents of the highest and lowest set bits of a nonzero a. */
 static void bit_span(ld a, int *hi, int *lo)
 {
+#ifdef REFFAST_PAIR_DOUBLE
+	*hi = dexp(a);
+	*lo = dlsb(a);
+#else
 	/* the x87 format: 64-bit significand with its leading 1, then sign and
 	   15-bit exponent (reffast_usable checks LDBL_MANT_DIG == 64) */
 	unsigned char b[sizeof(ld)];
@@ -253,6 +300,7 @@ static void bit_span(ld a, int *hi, int *lo)
 	memcpy(&se, b + 8, 2);
 	*hi = (int)(se & 0x7fff) - 16383;
 	*lo = *hi - 63 + ctz64(m);
+#endif
 }
 
 /* The sum of two exact pairs, when it is an exact pair again and fits
@@ -267,18 +315,18 @@ static int exact_pair_sum(xv a, xv b, xv *r)
 	for (pass = 0; pass < 2; pass++)
 		for (i = 1; i < 4; i++)
 			two_sum_l(t[i], t[i - 1], &t[i], &t[i - 1]);
-	if (t[0] != 0.0L || t[1] != 0.0L)
+	if (t[0] != 0.0 || t[1] != 0.0)
 		return 0;
 	fast_two_sum_l(t[3], t[2], &r->h, &r->l);
-	if (r->h == 0.0L) {
-		if (r->l != 0.0L)
+	if (r->h == 0.0) {
+		if (r->l != 0.0)
 			return 0;
-		r->h = 0.0L; /* x + (-x) = +0 in RN, in IEEE as in MPFR */
+		r->h = 0.0; /* x + (-x) = +0 in RN, in IEEE as in MPFR */
 		r->e = 0.0;
 		return 1;
 	}
 	bit_span(r->h, &h0, &l0);
-	if (r->l != 0.0L) {
+	if (r->l != 0.0) {
 		bit_span(r->l, &h1, &l1);
 		l0 = l1;
 	}
@@ -293,16 +341,16 @@ static int exact_pair_sum(xv a, xv b, xv *r)
 static xv xadd(xv a, xv b, int *bad)
 {
 	xv r;
-	if (is_zero(b) && a.h != 0.0L) /* MPFR: x + 0 = x exactly */
+	if (is_zero(b) && a.h != 0.0) /* MPFR: x + 0 = x exactly */
 		return a;
-	if (is_zero(a) && b.h != 0.0L)
+	if (is_zero(a) && b.h != 0.0)
 		return b;
-	if (a.l == 0.0L && b.l == 0.0L) {
+	if (a.l == 0.0 && b.l == 0.0) {
 		/* TwoSum: exact.  IEEE and MPFR give zeros the same sign in RN. */
 		two_sum_l(a.h, b.h, &r.h, &r.l);
 		if (a.e == 0.0 && b.e == 0.0) {
 			int ha, la, hb, lb;
-			if (a.h == 0.0L || b.h == 0.0L) {
+			if (a.h == 0.0 || b.h == 0.0) {
 				r.e = 0.0;
 				if (!ok(r)) *bad = 1;
 				return r;
@@ -321,7 +369,7 @@ static xv xadd(xv a, xv b, int *bad)
 	} else {
 		dd_add(a.h, a.l, b.h, b.l, &r.h, &r.l);
 	}
-	r.e = ((a.e + b.e) * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
+	r.e = ((a.e + b.e) * INFL + DDREL * (double)PFABS(r.h)) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
@@ -334,13 +382,13 @@ static xv xmul(xv a, xv b, int *bad)
 	xv r;
 	double prop;
 	if (is_zero(a) || is_zero(b)) { /* exact zero, sign of the product */
-		r.h = a.h * b.h; r.l = 0.0L; r.e = 0.0;
+		r.h = a.h * b.h; r.l = 0.0; r.e = 0.0;
 		if (!isfinite((double)r.h)) *bad = 1;
 		return r;
 	}
-	if (a.l == 0.0L && b.l == 0.0L) {
+	if (a.l == 0.0 && b.l == 0.0) {
 		two_prod_l(a.h, b.h, &r.h, &r.l); /* exact: no underflow (checked) */
-		if (r.h != 0.0L && fabsl(r.h) < 0x1p-960L) { *bad = 1; r.e = 0.0; return r; }
+		if (r.h != 0.0 && PFABS(r.h) < 0x1p-960) { *bad = 1; r.e = 0.0; return r; }
 		if (a.e == 0.0 && b.e == 0.0) {
 			int ha, la, hb, lb;
 			bit_span(a.h, &ha, &la);
@@ -356,7 +404,7 @@ static xv xmul(xv a, xv b, int *bad)
 	}
 	/* |ab - a'b'| <= |a| eb + |b| ea + ea eb */
 	prop = mag(a) * b.e + mag(b) * a.e + a.e * b.e;
-	r.e = (prop * INFL + DDREL * (double)fabsl(r.h)) * INFL + FLOOR;
+	r.e = (prop * INFL + DDREL * (double)PFABS(r.h)) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
 }
@@ -378,23 +426,23 @@ static xv xrecip(xv b, int *bad)
 	ld y0, ph, pl, rh, rl;
 	double bmin, rho;
 	int ex;
-	if (b.l == 0.0L && b.e == 0.0 && b.h != 0.0L && is_pow2(b.h, &ex)) {
-		r.h = 1.0L / b.h; r.l = 0.0L; r.e = 0.0; /* a power of two: exact */
+	if (b.l == 0.0 && b.e == 0.0 && b.h != 0.0 && is_pow2(b.h, &ex)) {
+		r.h = 1.0 / b.h; r.l = 0.0; r.e = 0.0; /* a power of two: exact */
 		if (!ok(r)) *bad = 1;
 		return r;
 	}
-	bmin = (double)fabsl(b.h) * (1.0 - 0x1p-50) - 2.0 * b.e;
-	if (!(bmin > 0.5 * (double)fabsl(b.h)) || !(fabsl(b.h) < 0x1p500L)) {
+	bmin = (double)PFABS(b.h) * (1.0 - 0x1p-50) - 2.0 * b.e;
+	if (!(bmin > 0.5 * (double)PFABS(b.h)) || !(PFABS(b.h) < 0x1p500)) {
 		*bad = 1;
 		return b;
 	}
-	y0 = 1.0L / b.h;
-	dd_mul(b.h, b.l, y0, 0.0L, &ph, &pl);
-	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
+	y0 = 1.0 / b.h;
+	dd_mul(b.h, b.l, y0, 0.0, &ph, &pl);
+	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
 	fast_two_sum_l(y0, y0 * rh, &r.h, &r.l);
 	dd_mul(b.h, b.l, r.h, r.l, &ph, &pl);
-	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
-	rho = (double)fabsl(rh) + 0x1p-121;
+	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
+	rho = (double)PFABS(rh) + RHO_SLOP;
 	r.e = ((b.e / bmin / bmin) * INFL + rho / bmin * INFL + 0x1p-126 / bmin) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
 	return r;
@@ -410,32 +458,32 @@ static xv xrsqrt(xv s, int *bad)
 	ld y0, qh, ql, ph, pl, rh, rl;
 	double smin, rho;
 	int ex;
-	if (s.l == 0.0L && s.e == 0.0 && s.h > 0.0L && is_pow2(s.h, &ex) && !(ex & 1)) {
-		r.h = 1.0L / sqrtl(s.h); r.l = 0.0L; r.e = 0.0; /* 4^k: exact */
+	if (s.l == 0.0 && s.e == 0.0 && s.h > 0.0 && is_pow2(s.h, &ex) && !(ex & 1)) {
+		r.h = 1.0 / PSQRT(s.h); r.l = 0.0; r.e = 0.0; /* 4^k: exact */
 		if (!ok(r)) *bad = 1;
 		return r;
 	}
 	smin = (double)s.h * (1.0 - 0x1p-50) - 2.0 * s.e;
-	if (!(smin > 0.5 * (double)s.h) || !(s.h < 0x1p500L)) {
+	if (!(smin > 0.5 * (double)s.h) || !(s.h < 0x1p500)) {
 		*bad = 1;
 		return s;
 	}
-	y0 = 1.0L / sqrtl(s.h);
+	y0 = 1.0 / PSQRT(s.h);
 	two_prod_l(y0, y0, &qh, &ql);
 	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
-	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
-	fast_two_sum_l(y0, 0.5L * y0 * rh, &r.h, &r.l);
+	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
+	fast_two_sum_l(y0, 0.5 * y0 * rh, &r.h, &r.l);
 	dd_mul(r.h, r.l, r.h, r.l, &qh, &ql);
 	dd_mul(s.h, s.l, qh, ql, &ph, &pl);
-	dd_add(1.0L, 0.0L, -ph, -pl, &rh, &rl);
-	rho = (double)fabsl(rh) + 0x1p-120;
+	dd_add(1.0, 0.0, -ph, -pl, &rh, &rl);
+	rho = (double)PFABS(rh) + RHO_SLOP2;
 	if (!(rho < 0x1p-40)) {
 		*bad = 1;
 		return s;
 	}
 	{
 		const double is = 1.0 / sqrt(smin) * (1.0 + 0x1p-50);  /* >= 1/sqrt(s) */
-		r.e = ((0.5 * s.e * is * is * is) * INFL + 0.52 * (double)fabsl(r.h) * rho + 0x1p-126 * is) * INFL + FLOOR;
+		r.e = ((0.5 * s.e * is * is * is) * INFL + 0.52 * (double)PFABS(r.h) * rho + 0x1p-126 * is) * INFL + FLOOR;
 	}
 	if (!ok(r)) *bad = 1;
 	return r;
@@ -455,7 +503,7 @@ static int ziv(xv v, int bits, double *out)
 	if (!isfinite((double)v.h))
 		return 0;
 	c = bits == 24 ? (double)(float)v.h : (double)v.h;
-	if (v.e == 0.0 && v.l == 0.0L && (ld)c == v.h) { /* exact, and representable */
+	if (v.e == 0.0 && v.l == 0.0 && (ld)c == v.h) { /* exact, and representable */
 		*out = c;
 		return 1;
 	}
@@ -472,7 +520,7 @@ static int ziv(xv v, int bits, double *out)
 		   exactly a midpoint of the format and l breaks the tie. */
 		const ld dh = v.h - (ld)c; /* exact */
 		const double half = (dh > 0) == (c > 0) ? upg : dng; /* toward h's side */
-		if (v.l != 0.0L && dh != 0.0L && fabsl(dh) == (ld)half) {
+		if (v.l != 0.0 && dh != 0.0 && PFABS(dh) == (ld)half) {
 			if ((v.l > 0) == (dh > 0))
 				c = bits == 24 ? (double)nextafterf((float)c, dh > 0 ? INFINITY : -INFINITY)
 				               : nextafter(c, dh > 0 ? INFINITY : -INFINITY);
@@ -483,7 +531,7 @@ static int ziv(xv v, int bits, double *out)
 	off = (v.h - (ld)c) + v.l;
 	if (c < 0)
 		off = -off;                                    /* offset away from zero  */
-	m = 2.0 * v.e * INFL + (double)fabsl(off) * 0x1p-62;
+	m = 2.0 * v.e * INFL + (double)PFABS(off) * OFF_SLOP;
 	t = (double)off + m;
 	if (t > 0 && t * (1.0 + 0x1p-50) >= upg)
 		return 0;
@@ -546,7 +594,7 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 		two_sum(t[k - 1], lo, &sh, &sl);
 		fast_two_sum_l(sh, sl, &r.h, &r.l); /* normalized as a pair of long doubles */
 	}
-	if (sabs == 0.0 && r.h == 0.0L) { /* exact zero */
+	if (sabs == 0.0 && r.h == 0.0) { /* exact zero */
 		r = xc(allneg0 ? -0.0 : 0.0);
 		return r;
 	}
@@ -558,7 +606,7 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 		   sum is exact, and so is ours when no TwoSum above lost a bit */
 		merr = 0.0;
 	} else {
-		V = (double)fabsl(r.h) * (1.0 + 0x1p-50) + err;
+		V = (double)PFABS(r.h) * (1.0 + 0x1p-50) + err;
 		if (V <= pow2(E - 61))
 			merr = c->up * V;
 		else
@@ -825,7 +873,7 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	const int emin = prec == PREC_FLOAT ? -125 : -1021;
 	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
 	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
-	const int tiny = (double)fabsl(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
+	const int tiny = (double)PFABS(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
 	double diff, rounded, bits, ulp = 0.0, upper = 0.0;
 	int bad = 0, rc = 1, have_diff;
 	xv D;
@@ -848,7 +896,7 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 		if (diff / eps > s->abs_eps_max)
 			s->abs_eps_max = diff / eps;
 	} else {
-		upper = ((double)fabsl(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
+		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
 		if (upper / eps > undet[0])
 			undet[0] = upper / eps;
 	}
@@ -1008,8 +1056,8 @@ static int basis_defects(const reffast_ctx *c, const study_kernel *k, const doub
 	return 1;
 }
 
-int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
-                 const double loc[3], int normalize_n, sample_metrics *s)
+int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+              const double loc[3], int normalize_n, sample_metrics *s)
 {
 	double n[3];
 	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];

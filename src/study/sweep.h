@@ -17,11 +17,12 @@
    bytes per cell, method and precision) */
 #define SWEEP_MAX_GRID_CELLS (1u << 20)
 #define NWORST 5
-/* by_nz bins: n.z in [-1, 1]; log10(1 + n.z) in [-17, 0]; log10| |n|-1 | in [-9, -1] */
+/* by_nz bins: n.z in [-1, 1]; log10(1 + n.z) in [-17, 0] for n.z <= 0;
+   log10| |n|-1 | in [-9, -1]; log10(1 - n.z) in [-17, 0] for n.z >= 0 */
 #define NB_NZ   100
 #define NB_LOG  68
 #define NB_NORM 32
-#define NBINS   (NB_NZ + NB_LOG + NB_NORM)
+#define NBINS   (NB_NZ + NB_LOG + NB_NORM + NB_LOG)
 
 typedef struct {
 	uint64_t count;

@@ -282,7 +282,7 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 	if (study_out_open(&o, dir, name) != 0)
 		return -1;
 	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, and by log10| |n| - 1 |; empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
+	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, by log10| |n| - 1 |, and by log10(1 - n.z) for n.z >= 0 (axis log10_1mnz); empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
 	fprintf(o.f, "method,precision,distribution,axis,lo,hi,count,rms,max\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
@@ -302,8 +302,10 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 						axis = "nz"; lo = -1.0 + 2.0 * b / NB_NZ; hi = -1.0 + 2.0 * (b + 1) / NB_NZ;
 					} else if (b < NB_NZ + NB_LOG) {
 						axis = "log10_1pnz"; lo = -17.0 + 0.25 * (b - NB_NZ); hi = lo + 0.25;
-					} else {
+					} else if (b < NB_NZ + NB_LOG + NB_NORM) {
 						axis = "log10_absnorm"; lo = -9.0 + 0.25 * (b - NB_NZ - NB_LOG); hi = lo + 0.25;
+					} else {
+						axis = "log10_1mnz"; lo = -17.0 + 0.25 * (b - NB_NZ - NB_LOG - NB_NORM); hi = lo + 0.25;
 					}
 					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
 					        dist_name(d), axis, lo, hi, (unsigned long long)x->count,

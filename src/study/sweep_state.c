@@ -150,6 +150,11 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
 			bin_add(&c->bins[NB_NZ + NB_LOG + b], key);
 		}
+		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
+			const double h = 1.0 - n[2];
+			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
+			bin_add(&c->bins[NB_NZ + NB_LOG + NB_NORM + b], key);
+		}
 	}
 	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
 	w.key = key;

@@ -94,6 +94,11 @@ int  sweep_load_state(sweep_state *s, const char *path);
    its done list); load returns them in a malloc'd buffer. */
 int  sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len);
 int  sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len);
+/* Whether two runs' data agree (all but the shard index and the counters:
+   evals, checked, the reference path's); and adding s's counters to d's
+   (a new counter in sweep_cfg goes in both). */
+int  sweep_cfg_same(const sweep_cfg *a, const sweep_cfg *b);
+void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s);
 int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
 
 /* Worst-case walk, then every CSV file; fmt is the stdout format. */

@@ -327,11 +327,9 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 	return 0;
 }
 
-int sweep_merge_into(sweep_state *d, const sweep_state *s)
+int sweep_cfg_same(const sweep_cfg *x, const sweep_cfg *y)
 {
-	sweep_cfg a = d->cfg, b = s->cfg;
-	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
-	int p, k;
+	sweep_cfg a = *x, b = *y;
 	/* everything but the shard index and the counters must agree */
 	a.shard_k = b.shard_k = 0;
 	a.evals = b.evals = a.checked = b.checked = 0;
@@ -342,7 +340,28 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 	memset(a.ref_worst, 0, sizeof a.ref_worst); memset(b.ref_worst, 0, sizeof b.ref_worst);
 	memset(a.magic, 0, sizeof a.magic);
 	memset(b.magic, 0, sizeof b.magic);
-	if (memcmp(&a, &b, sizeof a) != 0) {
+	return memcmp(&a, &b, sizeof a) == 0;
+}
+
+void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s)
+{
+	int p, k;
+	d->evals += s->evals;
+	d->checked += s->checked;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < d->nk; k++) {
+			d->ref_evals[p][k] += s->ref_evals[p][k];
+			d->ref_fallback[p][k] += s->ref_fallback[p][k];
+			d->ref_worst[p][k] += s->ref_worst[p][k];
+		}
+	d->ref_mpfr |= s->ref_mpfr; /* mixed shards: say MPFR took part */
+}
+
+int sweep_merge_into(sweep_state *d, const sweep_state *s)
+{
+	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
+	int p, k;
+	if (!sweep_cfg_same(&d->cfg, &s->cfg)) {
 		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
 		return -1;
 	}
@@ -359,14 +378,6 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 					memcpy(&d->g_b1[3 * j], &s->g_b1[3 * j], 3 * sizeof(double));
 				}
 			}
-	d->cfg.evals += s->cfg.evals;
-	d->cfg.checked += s->cfg.checked;
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < d->cfg.nk; k++) {
-			d->cfg.ref_evals[p][k] += s->cfg.ref_evals[p][k];
-			d->cfg.ref_fallback[p][k] += s->cfg.ref_fallback[p][k];
-			d->cfg.ref_worst[p][k] += s->cfg.ref_worst[p][k];
-		}
-	d->cfg.ref_mpfr |= s->cfg.ref_mpfr; /* mixed shards: say MPFR took part */
+	sweep_cfg_add_counters(&d->cfg, &s->cfg);
 	return 0;
 }

@@ -9,6 +9,9 @@
 #   fuzz       scripts/fuzz.sh FUZZ_SECONDS (both harnesses at once)
 #   valgrind   memcheck of a short sweep and two short scene runs
 #   cppcheck   src/lib, suppressions in scripts/cppcheck-suppressions.txt
+#   mutate     scripts/mutate.sh: every one-token mutant of onb.h's kernels
+#              that changes an output bit must fail tests/test_indep.c
+#              (about 700 mutants; 2 at a time)
 #   robustness scripts/robustness.sh --out build/harden/robustness.md (printed;
 #              the committed results/robustness.md: make robustness)
 # Exits 1 when any step failed (all steps still run, so the table shows
@@ -81,7 +84,9 @@ rm -rf "$vgout"
 step cppcheck 300 cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \
 	--suppressions-list=scripts/cppcheck-suppressions.txt --error-exitcode=1 -q -Iinclude src/lib
 
-mv "$tmplog/fuzz.log" "$tmplog/valgrind.log" "$tmplog/cppcheck.log" "$L/"
+step mutate 600 sh scripts/mutate.sh --jobs 2
+
+mv "$tmplog/fuzz.log" "$tmplog/valgrind.log" "$tmplog/cppcheck.log" "$tmplog/mutate.log" "$L/"
 printf 'step\tseconds\texit\n%s' "$steps" > "$L/steps.tsv"
 
 # The table goes to build/harden/, never into the tracked results/robustness.md

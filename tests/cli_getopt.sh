@@ -103,5 +103,10 @@ for k in 1 3 4; do ./onbstudy sweep $Q --shard $k/5 --out "$T/sh" > /dev/null 2>
 grep -v '^#' "$T/m/summary.csv" > "$T/a"; grep -v '^#' "$T/whole/summary.csv" > "$T/b"
 cmp -s "$T/a" "$T/b" && ok || bad "5 merged shards differ from the whole run"
 
+# and for threshold shards
+for k in 0 2; do ./onbstudy threshold --consecutive 64 --logspaced 0 --azimuths 2 --threads 1 --shard $k/4 --out "$T/th" > /dev/null 2>&1; done
+./onbstudy merge --out "$T/thm" "$T"/th/threshold-state-*.bin > /dev/null 2> "$T/e"; rc=$?
+[ $rc -eq 2 ] && grep -qx "onbstudy: 2 of 4 threshold shards missing (0-based K of --shard K/4): 1, 3" "$T/e" && ok || bad "threshold merge with shards 1, 3 missing: exit $rc: $(cat "$T/e")"
+
 echo "cli_getopt: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -124,6 +124,8 @@ same "$T/kref" "$T/cancel" "SIGTERM + --resume"
 refuse "bad option on 3 ranks" "unknown option" $MPIRUN -n 3 ./onbstudy-mpi sweep --bogus
 refuse "bad value on 2 ranks" "--samples" $MPIRUN -n 2 ./onbstudy-mpi sweep --samples 0
 refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$T/x"
+cp onbstudy-mpi "$T/other-mpi" && printf 'x' >> "$T/other-mpi"   # another build: other bytes, same code
+refuse "another binary on one rank" "different binary" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 "$T/other-mpi" sweep $A --out "$T/x"
 refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$T/none"
 refuse "not sweep" "sweep" $MPIRUN -n 2 ./onbstudy-mpi eval 0 0 1
 echo "mpi: $pass passed, $fail failed"

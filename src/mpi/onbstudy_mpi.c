@@ -129,7 +129,7 @@ static int check_identity(int argc, char **argv)
 	int i, bad = -1, what = 0;
 	mine[0] = binary_hash();
 	mine[1] = 14695981039346656037ull;
-	for (i = 0; i < argc; i++)
+	for (i = 1; i < argc; i++) /* not argv[0]: the same binary may be reached by other paths */
 		mine[1] = fnv(mine[1], argv[i], strlen(argv[i]) + 1);
 	if (!all)
 		die_all(1);

@@ -43,6 +43,8 @@ typedef struct {
 	uint64_t count, finite, nonfinite, wrong, comps;
 	fx sumsq, sumdef2, bits, dirn2, dirc2;
 	double max_defect, max_ulp, max_abs_eps, max_bits, max_in_norm, max_dir_norm, max_dir_cos;
+	fx duffms;           /* Duff et al. 2017 footnote 1: sum of the per-input mean squares */
+	double max_duff_rms; /* ... and the largest per-input root of it                     */
 	worst_t worst[NWORST];
 	bin_t bins[NBINS];
 } cell_t;

@@ -220,7 +220,7 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
 	const int basis = s->kernels[k].m != NULL;
 	const double nan = NAN;
-	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
 	        s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count,
 	        basis ? sqrt_mean(&c->sumsq, 5 * c->finite) : nan,
 	        basis ? (c->finite ? c->max_defect : nan) : nan,
@@ -230,7 +230,8 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	        basis ? sqrt_mean(&c->sumdef2, c->finite) : nan,
 	        c->finite ? c->max_abs_eps : nan, c->finite ? c->max_bits : nan, c->max_in_norm,
 	        c->finite ? c->max_dir_norm : nan, c->finite ? c->max_dir_cos : nan,
-	        sqrt_mean(&c->dirc2, c->finite), jump);
+	        sqrt_mean(&c->dirc2, c->finite), jump,
+	        basis ? sqrt_mean(&c->duffms, c->finite) : nan, basis && c->finite ? c->max_duff_rms : nan);
 }
 
 /* reference.csv: the fast reference's fallback rate per method and precision. */
@@ -254,7 +255,7 @@ static int write_reference(const sweep_state *s, const char *dir, const char *na
 }
 
 #define SUMMARY_COLUMNS "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite," \
-	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump"
+	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump,duff_rms,max_duff_rms"
 
 static int write_summary(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
 {
@@ -263,7 +264,7 @@ static int write_summary(const sweep_state *s, const char *dir, const char *name
 	if (study_out_open(&o, dir, name) != 0)
 		return -1;
 	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.| (Duff et al. 2017, footnote 1, our reading)\n");
+	fprintf(o.f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
 	fprintf(o.f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
 	fprintf(o.f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
 	fprintf(o.f, "%s\n", SUMMARY_COLUMNS);

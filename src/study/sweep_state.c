@@ -73,6 +73,8 @@ void cell_merge(cell_t *d, const cell_t *s)
 	d->max_in_norm = dmax(d->max_in_norm, s->max_in_norm);
 	d->max_dir_norm = dmax(d->max_dir_norm, s->max_dir_norm);
 	d->max_dir_cos = dmax(d->max_dir_cos, s->max_dir_cos);
+	fx_add(&d->duffms, &s->duffms);
+	d->max_duff_rms = dmax(d->max_duff_rms, s->max_duff_rms);
 	for (i = 0; i < NWORST; i++)
 		if (s->worst[i].index != UINT64_MAX)
 			worst_insert(d, &s->worst[i]);
@@ -124,6 +126,11 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			fx_add_double(&c->sumsq, m->sumsq);
 			fx_add_double(&c->sumdef2, m->defect * m->defect);
 			c->max_defect = dmax(c->max_defect, m->defect);
+			{	/* footnote 1: |n|-1 with the five defects, mean square */
+				const double ms = (m->in_norm * m->in_norm + m->sumsq) / 6.0;
+				fx_add_double(&c->duffms, ms);
+				c->max_duff_rms = dmax(c->max_duff_rms, sqrt(ms));
+			}
 			c->wrong += (uint64_t)m->wrong_hand;
 			key = m->defect;
 		} else {

@@ -35,7 +35,7 @@ range() { # FILES COL: "xmin xmax ymin ymax"
 		END { x0 /= 1.4; x1 *= 1.4; if (!m) { y0 = 1e-20; y1 = 10 } printf "%g %g %g %g\n", x0, x1, y0 / 4, y1 * 4 }'
 }
 for s in south north; do
-	if [ $s = south ]; then axis=log10_1pnz; xl='1 + n.z (leftmost point: n.z = -1 exactly)'; else axis=log10_1mnz; xl='1 - n.z (leftmost point: n.z = 1 exactly)'; fi
+	if [ $s = south ]; then axis=log10_1pnz; zl=-z; xl='1 + n.z (leftmost point: n.z = -1 exactly)'; else axis=log10_1mnz; zl=+z; xl='1 - n.z (leftmost point: n.z = 1 exactly)'; fi
 	files=""; names=""; colors=""; dashes=""; points=""; widths=""; panels=""
 	for m in $methods; do
 		f="$W/${s}_$m.dat"
@@ -51,7 +51,7 @@ for s in south north; do
 	az=$(sed -n 's/^# exhaustive: .* \([0-9]*\) azimuths.*/\1/p' "$DIR/$s/summary.csv" | head -1)
 	common="names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
 	set -- $(range "$files" 2)
-	gnuplot -e "$common; files='$files'; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='$xl'; yl='largest per-input error in the bin'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method): per-input error (defect; for the rotation method, its direction error)'" "$HERE/lines.gp"
+	gnuplot -e "$common; files='$files'; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; zero_label='$zl'; xl='$xl'; yl='largest per-input error in the bin'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method): per-input error (defect; for the rotation method, its direction error)'" "$HERE/lines.gp"
 done
 
 # The worst input per method at each pole, next to the sampled sweep's worst

@@ -14,6 +14,7 @@
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
 #   {{PARETO precision}}  the methods tradeoff.csv marks on the Pareto front
+#   {{MUT key}}  a 'key: value' line of mutation.txt (scripts/mutate.sh)
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
 #   {{TABLE tradeoff}}              the speed-accuracy table
 set -eu
@@ -84,6 +85,13 @@ generate() {
 		k = m SUBSEP p
 		if (!((k, c) in TRD)) { print "findings: no " m "," p "," c " in tradeoff.csv" > "/dev/stderr"; bad = 1; return "?" }
 		return fmt(TRD[k, c])
+	}
+	function MUT(key,   f, line) {
+		f = REF "/mutation.txt"
+		while ((getline line < f) > 0)
+			if (index(line, key ": ") == 1) { close(f); return substr(line, length(key) + 3) }
+		close(f)
+		print "findings: no " key " in mutation.txt" > "/dev/stderr"; bad = 1; return "?"
 	}
 	function TH(p, key, field,   lines, n, i, l, s, parts, v) {
 		n = split(thc[p], lines, "\n")
@@ -164,6 +172,7 @@ generate() {
 			else if (a[1] == "PARETO" && nt == 2) rep = PARETO(a[2])
 			else if (a[1] == "R" && nt == 3) rep = RN(a[2], a[3])
 			else if (a[1] == "TH" && nt == 4) rep = TH(a[2], a[3], a[4])
+			else if (a[1] == "MUT" && nt == 2) rep = MUT(a[2])
 			else if (a[1] == "TABLE" && a[2] == "accuracy") rep = table_accuracy(a[3])
 			else if (a[1] == "TABLE" && a[2] == "tradeoff") rep = table_tradeoff()
 			else { print "findings: bad placeholder {{" tok "}}" > "/dev/stderr"; bad = 1; rep = "?" }

@@ -28,6 +28,10 @@ sh scripts/plots.sh "$OUT"
 rm -f "$OUT"/*.svg
 echo "reference: renders"
 make render > /dev/null
+echo "reference: reproduce"
+./onbstudy reproduce --out "$OUT" > "$OUT/reproduce.txt" 2> "$OUT/reproduce.log"
+echo "reference: mutation testing"
+sh scripts/mutate.sh --out "$OUT/mutation.txt" > "$OUT/mutate.log" 2>&1
 echo "reference: sampling test"
 make build/tests/test_sampling > /dev/null
 build/tests/test_sampling > "$OUT/sampling.txt"
@@ -44,7 +48,8 @@ build/tests/test_sampling > "$OUT/sampling.txt"
 	echo "flags: $(grep -m1 '^# flags:' "$OUT/summary.csv" | sed 's/^# flags: //')"
 	echo "batch isa: $(grep -m1 '^# cpu:' "$OUT/summary.csv" | sed 's/.*batch isa: //')"
 	echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
-	echo "commands: scripts/reference-run.sh (sweep --grid 16x32; sweep --fma on every method; threshold --consecutive 1024 --logspaced 1024 --azimuths 64; bench; table; plots; make render)"
+	echo "commands: scripts/reference-run.sh (sweep --grid 16x32; sweep --fma on every method; threshold --consecutive 1024 --logspaced 1024 --azimuths 64; bench; table; plots; make render; reproduce; scripts/mutate.sh)"
 } > "$OUT/machine.txt"
 sh scripts/findings.sh --update README.md
+sh scripts/reproduce-md.sh --update README.md
 echo "reference: $(du -sh "$OUT" | cut -f1) in $OUT"

@@ -86,7 +86,7 @@ if ./onbstudy table --bench "$tmp/s/bench.csv" --summary "$tmp/summary.csv" >"$t
 grep -q '^duff_branchless,float,' "$tmp/s/tradeoff.csv" && ok || bad "tradeoff.csv lacks duff_branchless"
 
 # bad options: exit 2, one line on stderr, no file
-for args in "--precision half" "--methods nope" "--methods duff," "--threads 0" "--format xml" "--bogus" "--out" "--stream-mib 0"; do
+for args in "--precision half" "--methods nope" "--methods duff," "--threads -1" "--format xml" "--bogus" "--out" "--stream-mib 0"; do
 	./onbstudy bench --quick $args --out "$tmp/bad" >/dev/null 2>"$tmp/err"
 	rc=$?
 	if [ $rc -eq 2 ] && [ "$(wc -l < "$tmp/err")" -eq 1 ] && [ ! -e "$tmp/bad/bench.csv" ]; then ok; else bad "bench $args: exit $rc, stderr: $(cat "$tmp/err")"; fi

@@ -60,6 +60,18 @@ for n in 1 2 3; do
 		grep -q "^# mpi: $n ranks x $t threads" "$d/summary.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
 	done
 done
+# the fast reference path (issue 14) through the same engine: the same data,
+# and the same evaluation and fallback counts in reference.csv (its last
+# column, MPFR calls for worst rows, depends on the chunking even across
+# thread counts, so it is left out)
+./onbstudy sweep $A --ref fast --threads 2 --out "$T/fref" > "$T/fref.out" 2> /dev/null || bad "sweep --ref fast failed"
+$MPIRUN -n 2 ./onbstudy-mpi sweep $A --ref fast --threads 1 --out "$T/fmpi" > "$T/fmpi.out" 2> "$T/fmpi.err" || bad "mpirun --ref fast: $(head -3 "$T/fmpi.err")"
+same "$T/fref" "$T/fmpi" "--ref fast on 2 ranks"
+if [ -f "$T/fref/reference.csv" ]; then
+	grep -v '^#' "$T/fref/reference.csv" | cut -d, -f1-5 > "$T/a.ref"
+	grep -v '^#' "$T/fmpi/reference.csv" 2> /dev/null | cut -d, -f1-5 > "$T/b.ref"
+	cmp -s "$T/a.ref" "$T/b.ref" && ok || bad "--ref fast on 2 ranks: reference.csv counts differ"
+fi
 grep -q "PARTIAL\|checkpoint" "$T/n3-t1/summary.csv" && bad "a finished run mentions a checkpoint" || ok
 [ ! -e "$T/n3-t1/sweep-checkpoint.bin" ] && ok || bad "the checkpoint is left after a finished run"
 
@@ -112,6 +124,8 @@ same "$T/kref" "$T/cancel" "SIGTERM + --resume"
 refuse "bad option on 3 ranks" "unknown option" $MPIRUN -n 3 ./onbstudy-mpi sweep --bogus
 refuse "bad value on 2 ranks" "--samples" $MPIRUN -n 2 ./onbstudy-mpi sweep --samples 0
 refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$T/x"
+cp onbstudy-mpi "$T/other-mpi" && printf 'x' >> "$T/other-mpi"   # another build: other bytes, same code
+refuse "another binary on one rank" "different binary" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 "$T/other-mpi" sweep $A --out "$T/x"
 refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$T/none"
 refuse "not sweep" "sweep" $MPIRUN -n 2 ./onbstudy-mpi eval 0 0 1
 echo "mpi: $pass passed, $fail failed"

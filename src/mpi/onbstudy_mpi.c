@@ -48,9 +48,9 @@ typedef struct {
 /* What a worker sends after a batch (then the cells, then the grid). */
 typedef struct {
 	int64_t batch;                 /* -1: no batch (ready for the first) */
-	uint64_t evals, checked;
 	uint64_t lo, hi;               /* cells [lo, hi) of the state */
 	int64_t grid;                  /* 1: the grid arrays follow */
+	sweep_cfg cfg;                 /* the batch's counters (evals, checked, reference path) */
 } delta_hdr;
 
 typedef struct {
@@ -129,7 +129,7 @@ static int check_identity(int argc, char **argv)
 	int i, bad = -1, what = 0;
 	mine[0] = binary_hash();
 	mine[1] = 14695981039346656037ull;
-	for (i = 0; i < argc; i++)
+	for (i = 1; i < argc; i++) /* not argv[0]: the same binary may be reached by other paths */
 		mine[1] = fnv(mine[1], argv[i], strlen(argv[i]) + 1);
 	if (!all)
 		die_all(1);
@@ -281,8 +281,7 @@ static size_t pack(const run_t *r, const sweep_state *st, int64_t b, unsigned ch
 		batch_range(r, (uint64_t)b, &g0, &g1);
 		batch_cells(r, g0, g1, &h.lo, &h.hi, &grid);
 		h.grid = grid;
-		h.evals = st->cfg.evals;
-		h.checked = st->cfg.checked;
+		h.cfg = st->cfg;
 	}
 	n = sizeof h + (size_t)(h.hi - h.lo) * sizeof(cell_t) + (h.grid ? grid_bytes(st) : 0);
 	if (n > *cap) {
@@ -341,9 +340,8 @@ static int64_t unpack_add(run_t *r, const unsigned char *buf, size_t n)
 					}
 				}
 	}
-	a->cfg.evals += h.evals;
-	a->cfg.checked += h.checked;
-	r->evals_done += h.evals;
+	sweep_cfg_add_counters(&a->cfg, &h.cfg);
+	r->evals_done += h.cfg.evals;
 	r->done[h.batch] = 1;
 	r->dirty = 1;
 	return h.batch;
@@ -356,7 +354,6 @@ static void reset_delta(sweep_state *st)
 	for (i = 0; i < 2 * NDIST * (size_t)st->cfg.nk; i++)
 		cell_init(&st->cells[i]);
 	memset(st->g_done, 0, 2 * grid_n(st));
-	st->cfg.evals = st->cfg.checked = 0;
 }
 
 /* Run batch b into st (emptied first).  ENGINE_* code. */
@@ -365,6 +362,7 @@ static int run_batch(run_t *r, sweep_state *st, int64_t b)
 	uint64_t g0, g1;
 	int rc;
 	reset_delta(st);
+	st->cfg = r->pl.cfg; /* counters at zero */
 	batch_range(r, (uint64_t)b, &g0, &g1);
 	rc = engine_run(r->e, st, g0, g1, NULL);
 	if (rc == ENGINE_DISAGREE)
@@ -415,17 +413,12 @@ static int load_checkpoint(run_t *r)
 	unsigned char *x = NULL;
 	size_t n = 0;
 	ckpt_hdr h;
-	sweep_cfg a, b;
 	snprintf(path, sizeof path, "%s/%s", r->mo.resume, CKPT_NAME);
 	if (sweep_load_state_x(&ck, path, &x, &n) != 0)
 		return -1;
-	a = ck.cfg; b = r->acc.cfg;
-	a.evals = b.evals = a.checked = b.checked = 0;
-	memset(a.magic, 0, sizeof a.magic);
-	memset(b.magic, 0, sizeof b.magic);
 	if (n >= sizeof h)
 		memcpy(&h, x, sizeof h);
-	if (memcmp(&a, &b, sizeof a) != 0) {
+	if (!sweep_cfg_same(&ck.cfg, &r->acc.cfg) || ck.cfg.shard_k != r->acc.cfg.shard_k) {
 		study_error("%s: the checkpoint is from a sweep with other options (methods, sizes, seed or shard); "
 		            "resume with the options of the interrupted run", path);
 	} else if (n < sizeof h || strcmp(h.magic, CKPT_MAGIC) != 0 || n != sizeof h + h.nbatches || h.batch < 1 ||
@@ -565,7 +558,9 @@ static int master(run_t *r)
 		progress(r, 0);
 		pthread_mutex_unlock(&r->mu);
 		if (fail || engine_stop) {
-			if (r->dirty) write_checkpoint(r);
+			pthread_mutex_lock(&r->mu); /* the local worker may be adding a batch */
+			if (r->dirty)
+				write_checkpoint(r);
 			fprintf(stderr, "onbstudy-mpi: %s; the checkpoint in %s keeps every batch finished so far (%llu of %llu "
 			        "evaluations): rerun with --resume %s\n", fail ? "stopped after an error" : "interrupted",
 			        r->pl.out, r->evals_done, r->pl.evals, r->pl.out);

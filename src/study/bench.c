@@ -71,7 +71,7 @@ static const char usage_text[] =
 	"usage: onbstudy bench [options]   (options take '--opt value' or '--opt=value')\n"
 	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
 	"  --precision P          float, double or both (default both)\n"
-	"  --threads N            threads of the all-threads runs (default: OpenMP's maximum)\n"
+	"  --threads N            threads of the all-threads runs (default 0: OpenMP's maximum)\n"
 	"  --out DIR              output directory (default: the current run, results/latest)\n"
 	"  --quick                a check, not a measurement: 3 short repetitions and a 16 MiB\n"
 	"                         'stream' set (under 15 s); the default run takes about a minute\n"
@@ -110,7 +110,10 @@ static int bench_option(int v, const char *a, bench_opts *o)
 	case 'R': o->reference = 1; return 0;
 	case 'm': return bench_methods(a, o);
 	case 'p': if (cli_precision("--precision", a, on)) return -1; o->prec_mask = on[0] | on[1] << 1; return 0;
-	case 't': if (parse_int("--threads", a, 1, 1024, &t) != 0) return -1; o->threads = (int)t; return 0;
+	case 't': /* 0: OpenMP's maximum, as the default */
+		if (parse_int("--threads", a, 0, 1024, &t) != 0) return -1;
+		o->threads = t ? (int)t : omp_get_max_threads();
+		return 0;
 	case 'o':
 		if (!*a) {
 			study_error("--out: empty directory name");

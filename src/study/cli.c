@@ -266,3 +266,19 @@ int cli_format(const char *opt, const char *arg, int with_json)
 	static const char *const names[] = { "table", "csv", "json" };
 	return cli_choice(opt, arg, names, with_json ? 3 : 2);
 }
+
+void study_missing_shards(const unsigned char *seen, int n, char *buf, size_t len)
+{
+	int i, listed = 0;
+	size_t used = 0;
+	buf[0] = '\0';
+	for (i = 0; i < n && used + 16 < len; i++)
+		if (!seen[i]) {
+			if (listed == 20) {
+				snprintf(buf + used, len - used, ", ...");
+				break;
+			}
+			used += (size_t)snprintf(buf + used, len - used, "%s%d", listed ? ", " : "", i);
+			listed++;
+		}
+}

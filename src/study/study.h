@@ -33,6 +33,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads);
 int cmd_scene(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_table(int argc, char **argv);
+int cmd_reproduce(int argc, char **argv);
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */
@@ -79,6 +80,8 @@ int  cli_name_order(const char *opt, const char *arg, int *idx, const char *cons
 int  cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count);
 int  cli_precision(const char *opt, const char *arg, int on[2]);   /* float, double or both */
 int  cli_shard(const char *opt, const char *arg, int *k, int *n);  /* K/N, 0-based */
+/* "1, 3, 4" (the first 20, then "...") of the shards 0 .. n-1 not seen, for merge's messages. */
+void study_missing_shards(const unsigned char *seen, int n, char *buf, size_t len);
 int  cli_format(const char *opt, const char *arg, int with_json);  /* 0 table, 1 csv, 2 json; -1 */
 
 /* The command line as one string, for provenance lines. */

@@ -164,23 +164,6 @@ static void merge_usage(FILE *f)
 	           "  --format F     stdout: table, csv or json (default table)\n");
 }
 
-/* "0, 3, 7" (at most the first 20) of the shards not seen. */
-static void missing_shards(const unsigned char *seen, int n, char *buf, size_t len)
-{
-	int i, listed = 0;
-	size_t used = 0;
-	buf[0] = '\0';
-	for (i = 0; i < n && used + 16 < len; i++)
-		if (!seen[i]) {
-			if (listed == 20) {
-				snprintf(buf + used, len - used, ", ...");
-				break;
-			}
-			used += (size_t)snprintf(buf + used, len - used, "%s%d", listed ? ", " : "", i);
-			listed++;
-		}
-}
-
 /* Load and add every state file into acc; 0, or the exit status. */
 static int merge_states(sweep_state *acc, int nfiles, char **files)
 {
@@ -213,7 +196,7 @@ static int merge_states(sweep_state *acc, int nfiles, char **files)
 	else
 		nmiss = -1;
 	if (nmiss > 0) {
-		missing_shards(seen, acc->cfg.shard_n, miss, sizeof miss);
+		study_missing_shards(seen, acc->cfg.shard_n, miss, sizeof miss);
 		study_error("%d of %d shards missing (0-based K of --shard K/%d): %s", nmiss, acc->cfg.shard_n,
 		            acc->cfg.shard_n, miss);
 	}

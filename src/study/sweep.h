@@ -28,6 +28,9 @@ typedef struct {
 	uint64_t count;
 	fx sumsq;
 	double max;
+	uint64_t fcount;     /* the floor of the same inputs (issue 16) */
+	fx fsumsq;
+	double fmax;
 } bin_t;
 
 typedef struct {
@@ -43,8 +46,21 @@ typedef struct {
 	uint64_t count, finite, nonfinite, wrong, comps;
 	fx sumsq, sumdef2, bits, dirn2, dirc2;
 	double max_defect, max_ulp, max_abs_eps, max_bits, max_in_norm, max_dir_norm, max_dir_cos;
+	fx duffms;           /* Duff et al. 2017 footnote 1: sum of the per-input mean squares */
+	double max_duff_rms; /* ... and the largest per-input root of it                     */
 	worst_t worst[NWORST];
 	bin_t bins[NBINS];
+	/* The accuracy floor (issue 16; reference.c floor_eval): the per-input
+	   error of the exact formula rounded once (defect; direction error for
+	   frisvad_rotate), over the inputs where it is finite, and the ratio
+	   max(error, u^2) / max(floor, u^2) over the inputs where the kernel's
+	   output is finite too; ratio_at: inputs with ratio <= 1 (at the
+	   floor, or below it). */
+	uint64_t floor_n, ratio_n, ratio_at, ratio_idx;
+	fx floor2, ratio2;
+	double max_floor, max_floor_dir, max_ratio;
+	double ratio_in[3];  /* the input of max_ratio; ratio_idx UINT64_MAX: none */
+	int ratio_src;
 } cell_t;
 
 /* Everything that defines a run's data (not its thread count or output). */
@@ -94,6 +110,11 @@ int  sweep_load_state(sweep_state *s, const char *path);
    its done list); load returns them in a malloc'd buffer. */
 int  sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len);
 int  sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len);
+/* Whether two runs' data agree (all but the shard index and the counters:
+   evals, checked, the reference path's); and adding s's counters to d's
+   (a new counter in sweep_cfg goes in both). */
+int  sweep_cfg_same(const sweep_cfg *a, const sweep_cfg *b);
+void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s);
 int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
 
 /* Worst-case walk, then every CSV file; fmt is the stdout format. */

@@ -13,7 +13,7 @@
 #include "sweep.h"
 #include "study.h"
 
-#define STATE_MAGIC "onbsweep-state2"
+#define STATE_MAGIC "onbsweep-state3"
 
 cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k)
 {
@@ -28,6 +28,19 @@ void cell_init(cell_t *c)
 		c->worst[i].key = -1.0;
 		c->worst[i].index = UINT64_MAX;
 	}
+	c->ratio_idx = UINT64_MAX;
+	c->max_ratio = -1.0;
+}
+
+/* The largest ratio to the floor, ties to the smaller index, then the
+   sampled input before the walked one: a total order, so merges agree. */
+static int ratio_wins(double r, uint64_t idx, int src, const cell_t *c)
+{
+	if (c->ratio_idx == UINT64_MAX || r != c->max_ratio)
+		return c->ratio_idx == UINT64_MAX || r > c->max_ratio;
+	if (idx != c->ratio_idx)
+		return idx < c->ratio_idx;
+	return src < c->ratio_src;
 }
 
 /* a ranks before b: larger error first, then the smaller index, then
@@ -73,6 +86,8 @@ void cell_merge(cell_t *d, const cell_t *s)
 	d->max_in_norm = dmax(d->max_in_norm, s->max_in_norm);
 	d->max_dir_norm = dmax(d->max_dir_norm, s->max_dir_norm);
 	d->max_dir_cos = dmax(d->max_dir_cos, s->max_dir_cos);
+	fx_add(&d->duffms, &s->duffms);
+	d->max_duff_rms = dmax(d->max_duff_rms, s->max_duff_rms);
 	for (i = 0; i < NWORST; i++)
 		if (s->worst[i].index != UINT64_MAX)
 			worst_insert(d, &s->worst[i]);
@@ -80,6 +95,51 @@ void cell_merge(cell_t *d, const cell_t *s)
 		d->bins[i].count += s->bins[i].count;
 		fx_add(&d->bins[i].sumsq, &s->bins[i].sumsq);
 		d->bins[i].max = dmax(d->bins[i].max, s->bins[i].max);
+		d->bins[i].fcount += s->bins[i].fcount;
+		fx_add(&d->bins[i].fsumsq, &s->bins[i].fsumsq);
+		d->bins[i].fmax = dmax(d->bins[i].fmax, s->bins[i].fmax);
+	}
+	d->floor_n += s->floor_n; d->ratio_n += s->ratio_n; d->ratio_at += s->ratio_at;
+	fx_add(&d->floor2, &s->floor2); fx_add(&d->ratio2, &s->ratio2);
+	d->max_floor = dmax(d->max_floor, s->max_floor);
+	d->max_floor_dir = dmax(d->max_floor_dir, s->max_floor_dir);
+	if (s->ratio_idx != UINT64_MAX && ratio_wins(s->max_ratio, s->ratio_idx, s->ratio_src, d)) {
+		d->max_ratio = s->max_ratio;
+		d->ratio_idx = s->ratio_idx;
+		d->ratio_src = s->ratio_src;
+		memcpy(d->ratio_in, s->ratio_in, sizeof d->ratio_in);
+	}
+}
+
+/* The floor's share of cell_add: its own statistics, and the ratio. */
+static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source,
+                      bin_t *b[4])
+{
+	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
+	const double r = m->floor_ratio;
+	int i;
+	if (isnan(f))
+		return;
+	c->floor_n++;
+	fx_add_double(&c->floor2, f * f);
+	c->max_floor = dmax(c->max_floor, f);
+	c->max_floor_dir = dmax(c->max_floor_dir, dmax(m->floor_dir_norm, m->floor_dir_cos));
+	for (i = 0; i < 4; i++)
+		if (b[i]) {
+			b[i]->fcount++;
+			fx_add_double(&b[i]->fsumsq, f * f);
+			b[i]->fmax = dmax(b[i]->fmax, f);
+		}
+	if (m->nonfinite || isnan(r))
+		return;
+	c->ratio_n++;
+	c->ratio_at += r <= 1.0;
+	fx_add_double(&c->ratio2, r * r);
+	if (ratio_wins(r, index, source, c)) {
+		c->max_ratio = r;
+		c->ratio_idx = index;
+		c->ratio_src = source;
+		memcpy(c->ratio_in, n, sizeof c->ratio_in);
 	}
 }
 
@@ -114,6 +174,7 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 {
 	worst_t w;
 	double key;
+	bin_t *fb[4] = { NULL, NULL, NULL, NULL }; /* the bins of this input, for the floor */
 	c->count++;
 	if (m->nonfinite) {
 		c->nonfinite++;
@@ -124,6 +185,11 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			fx_add_double(&c->sumsq, m->sumsq);
 			fx_add_double(&c->sumdef2, m->defect * m->defect);
 			c->max_defect = dmax(c->max_defect, m->defect);
+			{	/* footnote 1: |n|-1 with the five defects, mean square */
+				const double ms = (m->in_norm * m->in_norm + m->sumsq) / 6.0;
+				fx_add_double(&c->duffms, ms);
+				c->max_duff_rms = dmax(c->max_duff_rms, sqrt(ms));
+			}
 			c->wrong += (uint64_t)m->wrong_hand;
 			key = m->defect;
 		} else {
@@ -139,23 +205,28 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		fx_add_double(&c->dirn2, m->dir_norm * m->dir_norm);
 		fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
 		/* bins of the per-input error */
-		bin_add(&c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)], key);
+		fb[0] = &c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)];
+		bin_add(fb[0], key);
 		if (n[2] <= 0.0) {
 			const double h = 1.0 + n[2];
 			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			bin_add(&c->bins[NB_NZ + b], key);
+			fb[1] = &c->bins[NB_NZ + b];
+			bin_add(fb[1], key);
 		}
 		{
 			const double a = fabs(m->in_norm);
 			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
-			bin_add(&c->bins[NB_NZ + NB_LOG + b], key);
+			fb[2] = &c->bins[NB_NZ + NB_LOG + b];
+			bin_add(fb[2], key);
 		}
 		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
 			const double h = 1.0 - n[2];
 			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			bin_add(&c->bins[NB_NZ + NB_LOG + NB_NORM + b], key);
+			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + b];
+			bin_add(fb[3], key);
 		}
 	}
+	floor_add(c, index, m, n, source, fb);
 	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
 	w.key = key;
 	w.index = index;
@@ -327,11 +398,9 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 	return 0;
 }
 
-int sweep_merge_into(sweep_state *d, const sweep_state *s)
+int sweep_cfg_same(const sweep_cfg *x, const sweep_cfg *y)
 {
-	sweep_cfg a = d->cfg, b = s->cfg;
-	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
-	int p, k;
+	sweep_cfg a = *x, b = *y;
 	/* everything but the shard index and the counters must agree */
 	a.shard_k = b.shard_k = 0;
 	a.evals = b.evals = a.checked = b.checked = 0;
@@ -342,7 +411,28 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 	memset(a.ref_worst, 0, sizeof a.ref_worst); memset(b.ref_worst, 0, sizeof b.ref_worst);
 	memset(a.magic, 0, sizeof a.magic);
 	memset(b.magic, 0, sizeof b.magic);
-	if (memcmp(&a, &b, sizeof a) != 0) {
+	return memcmp(&a, &b, sizeof a) == 0;
+}
+
+void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s)
+{
+	int p, k;
+	d->evals += s->evals;
+	d->checked += s->checked;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < d->nk; k++) {
+			d->ref_evals[p][k] += s->ref_evals[p][k];
+			d->ref_fallback[p][k] += s->ref_fallback[p][k];
+			d->ref_worst[p][k] += s->ref_worst[p][k];
+		}
+	d->ref_mpfr |= s->ref_mpfr; /* mixed shards: say MPFR took part */
+}
+
+int sweep_merge_into(sweep_state *d, const sweep_state *s)
+{
+	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
+	int p, k;
+	if (!sweep_cfg_same(&d->cfg, &s->cfg)) {
 		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
 		return -1;
 	}
@@ -359,14 +449,6 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 					memcpy(&d->g_b1[3 * j], &s->g_b1[3 * j], 3 * sizeof(double));
 				}
 			}
-	d->cfg.evals += s->cfg.evals;
-	d->cfg.checked += s->cfg.checked;
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < d->cfg.nk; k++) {
-			d->cfg.ref_evals[p][k] += s->cfg.ref_evals[p][k];
-			d->cfg.ref_fallback[p][k] += s->cfg.ref_fallback[p][k];
-			d->cfg.ref_worst[p][k] += s->cfg.ref_worst[p][k];
-		}
-	d->cfg.ref_mpfr |= s->cfg.ref_mpfr; /* mixed shards: say MPFR took part */
+	sweep_cfg_add_counters(&d->cfg, &s->cfg);
 	return 0;
 }

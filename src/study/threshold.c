@@ -291,6 +291,7 @@ static int th_load(th_state *s, const char *path)
 		fclose(f);
 		return -1;
 	}
+	bad = s->cfg.shard_n < 1 || s->cfg.shard_n > 1000000 || s->cfg.shard_k < 0 || s->cfg.shard_k >= s->cfg.shard_n;
 	for (p = 0; p < 2 && !bad; p++) {
 		size_t n;
 		if (!s->cfg.prec_on[p])
@@ -330,9 +331,17 @@ int threshold_is_state(const char *path)
 int threshold_merge(int nfiles, char **files, const char *out, int threads)
 {
 	th_state acc, one;
-	int i, p, j, rc;
+	int i, p, j, rc, nmiss = 0;
+	unsigned char *seen;
+	char miss[256];
 	if (th_load(&acc, files[0]) != 0)
 		return ONB_EXIT_USAGE;
+	if (!(seen = calloc((size_t)acc.cfg.shard_n, 1))) {
+		study_error("out of memory");
+		th_free(&acc);
+		return 1;
+	}
+	seen[acc.cfg.shard_k] = 1;
 	for (i = 1; i < nfiles; i++) {
 		th_cfg a, b;
 		if (th_load(&one, files[i]) != 0) { th_free(&acc); return ONB_EXIT_USAGE; }
@@ -340,16 +349,17 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 		a.shard_k = b.shard_k = 0;
 		if (memcmp(&a, &b, sizeof a) != 0) {
 			study_error("%s: from a different threshold run", files[i]);
-			th_free(&acc); th_free(&one);
+			th_free(&acc); th_free(&one); free(seen);
 			return ONB_EXIT_USAGE;
 		}
+		seen[one.cfg.shard_k] = 1;
 		for (p = 0; p < 2; p++)
 			if (acc.cfg.prec_on[p])
 				for (j = 0; j < acc.cfg.count[p]; j++)
 					if (one.done[p][j]) {
 						if (acc.done[p][j]) {
 							study_error("%s: overlaps another shard", files[i]);
-							th_free(&acc); th_free(&one);
+							th_free(&acc); th_free(&one); free(seen);
 							return ONB_EXIT_USAGE;
 						}
 						acc.done[p][j] = 1;
@@ -358,11 +368,19 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 					}
 		th_free(&one);
 	}
+	for (i = 0; i < acc.cfg.shard_n; i++)
+		nmiss += !seen[i];
+	study_missing_shards(seen, acc.cfg.shard_n, miss, sizeof miss);
+	free(seen);
 	for (p = 0; p < 2; p++)
 		if (acc.cfg.prec_on[p])
 			for (j = 0; j < acc.cfg.count[p]; j++)
 				if (!acc.done[p][j]) {
-					study_error("shards missing: input %d of %s was computed by none", j, p ? "double" : "float");
+					if (nmiss)
+						study_error("%d of %d threshold shards missing (0-based K of --shard K/%d): %s", nmiss,
+						            acc.cfg.shard_n, acc.cfg.shard_n, miss);
+					else
+						study_error("shards missing: input %d of %s was computed by none", j, p ? "double" : "float");
 					th_free(&acc);
 					return ONB_EXIT_USAGE;
 				}

@@ -1,0 +1,102 @@
+#!/bin/sh
+# mutate.sh - mutation testing of include/onb.h's kernels.
+#   sh scripts/mutate.sh [--jobs N] [--out FILE] [--limit SECONDS]
+# Lists every one-token mutation of the kernels (scripts/mutants.awk:
+# numeric constants, comparisons, signs, float/double conversions, swapped
+# cross-product operands, in every method and precision), and for each one
+# builds tests/test_indep.c alone against the mutated header
+# (-DINDEP_INLINE_ONLY, the library's floating-point flags) and runs it
+# with --quick.  A mutant
+#   changed  when some output bit of some method differs from the
+#            unmutated header's on the test's inputs (the test prints a
+#            hash of every output; compared with the baseline's);
+#   caught   when the test fails (exit non-zero, or killed after 60 s).
+# Prints tried / compiled / changed / caught, the survivors (changed and
+# not caught) and writes the counts as key: value lines to FILE (default
+# stdout only).  Exits 1 when a changed mutant survives, when the
+# unmutated build fails, or when the whole run exceeds --limit seconds
+# (default 0: no limit).  Mutants run --jobs at a time (default 2).
+set -u
+cd "$(dirname "$0")/.."
+JOBS=2; OUT=; LIMIT=0
+while [ $# -gt 0 ]; do
+	case $1 in
+	--jobs) JOBS=$2; shift 2 ;;
+	--out) OUT=$2; shift 2 ;;
+	--limit) LIMIT=$2; shift 2 ;;
+	--one) shift; break ;;   # internal: one mutant (DIR INDEX)
+	*) echo "usage: sh scripts/mutate.sh [--jobs N] [--out FILE] [--limit SECONDS]" >&2; exit 2 ;;
+	esac
+done
+CC=${CC:-cc}
+FLAGS="-std=c99 -O1 -ffp-contract=off -fno-math-errno -fno-trapping-math -DINDEP_INLINE_ONLY -Itests"
+
+# One mutant: DIR INDEX -> DIR/res/INDEX = "index kind where line:col compiled changed caught"
+one() {
+	d=$1; i=$2
+	site=$(sed -n "${i}p" "$d/list")
+	ln=$(printf '%s\n' "$site" | cut -f1); col=$(printf '%s\n' "$site" | cut -f2)
+	len=$(printf '%s\n' "$site" | cut -f3); rep=$(printf '%s\n' "$site" | cut -f4)
+	kind=$(printf '%s\n' "$site" | cut -f5); where=$(printf '%s\n' "$site" | cut -f6)
+	w="$d/m$i"; mkdir -p "$w"
+	awk -v L="$ln" -v C="$col" -v N="$len" -v R="$rep" \
+		'NR == L { $0 = substr($0, 1, C - 1) R substr($0, C + N) } { print }' include/onb.h > "$w/onb.h"
+	compiled=0; changed=0; caught=0
+	if $CC $FLAGS -I"$w" -o "$w/t" tests/test_indep.c -lm 2>/dev/null; then
+		compiled=1
+		timeout 60 "$w/t" --quick > "$w/out" 2>&1; rc=$?
+		[ $rc -ne 0 ] && caught=1
+		h=$(sed -n 's/^outputs-hash //p' "$w/out")
+		[ "$h" != "$(cat "$d/base.hash")" ] && changed=1
+	fi
+	printf '%s\t%s\t%s\t%s:%s\t%s\t%s\t%s\t%s\n' "$i" "$kind" "$where" "$ln" "$col" "$compiled" "$changed" "$caught" \
+		"$(sed -n "${ln}p" "$w/onb.h" | sed 's/^[[:space:]]*//')" > "$d/res/$i"
+	rm -rf "$w"
+}
+if [ "${1:-}" != "" ] && [ -d "${1:-}" ]; then one "$1" "$2"; exit 0; fi
+
+start=$(date +%s)
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$tmp/res"
+awk -f scripts/mutants.awk include/onb.h > "$tmp/list"
+n=$(wc -l < "$tmp/list")
+if ! $CC $FLAGS -Iinclude -o "$tmp/base" tests/test_indep.c -lm || ! "$tmp/base" --quick > "$tmp/base.out"; then
+	echo "mutate: the unmutated header fails test_indep" >&2; exit 1
+fi
+sed -n 's/^outputs-hash //p' "$tmp/base.out" > "$tmp/base.hash"
+echo "mutate: $n mutants of include/onb.h, $JOBS at a time"
+seq 1 "$n" | xargs -P "$JOBS" -I{} sh scripts/mutate.sh --one "$tmp" {}
+cat "$tmp"/res/* | sort -n > "$tmp/all"
+tried=$(wc -l < "$tmp/all")
+compiled=$(awk -F'\t' '$5 == 1' "$tmp/all" | wc -l)
+changed=$(awk -F'\t' '$6 == 1' "$tmp/all" | wc -l)
+caught=$(awk -F'\t' '$6 == 1 && $7 == 1' "$tmp/all" | wc -l)
+survived=$((changed - caught))
+secs=$(( $(date +%s) - start ))
+{
+	echo "# mutate.sh: one-token mutants of include/onb.h judged by tests/test_indep.c --quick (inline versions)"
+	echo "# revision: $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- include tests 2>/dev/null || echo -dirty)"
+	echo "# compiler: $($CC --version | head -1); flags: $FLAGS"
+	echo "tried: $tried"
+	echo "compiled: $compiled"
+	echo "changed: $changed"
+	echo "caught: $caught"
+	echo "survived: $survived"
+	echo "unchanged: $((tried - changed))"
+	for k in const cmp sign conv cross; do
+		echo "tried_$k: $(awk -F'\t' -v k=$k '$2 == k' "$tmp/all" | wc -l)"
+		echo "changed_$k: $(awk -F'\t' -v k=$k '$2 == k && $6 == 1' "$tmp/all" | wc -l)"
+		echo "caught_$k: $(awk -F'\t' -v k=$k '$2 == k && $6 == 1 && $7 == 1' "$tmp/all" | wc -l)"
+	done
+	echo "seconds: $secs"
+} > "$tmp/summary"
+grep -v '^#' "$tmp/summary" | tr '\n' ' ' | sed 's/ $/\n/'
+if [ "$tried" -ne "$n" ]; then echo "mutate: only $tried of $n mutants reported" >&2; exit 1; fi
+[ -n "$OUT" ] && { cp "$tmp/summary" "$OUT.tmp" && mv "$OUT.tmp" "$OUT" || { echo "mutate: cannot write $OUT" >&2; exit 1; }; }
+if [ "$survived" -gt 0 ]; then
+	echo "mutate: $survived output-changing mutants survived:"
+	awk -F'\t' '$6 == 1 && $7 == 0 { print "  " $2 " " $3 " line " $4 ": " $8 }' "$tmp/all"
+	exit 1
+fi
+if [ "$LIMIT" -gt 0 ] && [ "$secs" -gt "$LIMIT" ]; then echo "mutate: took $secs s, over the limit of $LIMIT s" >&2; exit 1; fi
+echo "mutate: every output-changing mutant was caught ($caught of $changed; $((tried - changed)) changed no output bit on the test's inputs, $((tried - compiled)) did not compile)"

@@ -52,6 +52,21 @@ range() {
 		END { if (lx) { x0 /= 1.4; x1 *= 1.4 } if (!m) { y0 = 1e-20; y1 = 10 } printf "%g %g %g %g\n", x0, x1, y0 / 4, y1 * 4 }'
 }
 
+# floor_band METHOD PREC "DISTS" AXIS lin|log: x, floor RMS, floor max per
+# bin of by_nz.csv (columns found by name; max over the distributions)
+floor_band() {
+	awk -F, -v m="$1" -v p="$2" -v ds="$3" -v ax="$4" -v sc="$5" '
+		BEGIN { n = split(ds, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+		/^#/ { next }
+		$1 == "method" { for (i = 1; i <= NF; i++) h[$i] = i; next }
+		!("floor_max" in h) { exit }
+		$1 == m && $2 == p && ($3 in want) && $4 == ax && $(h["floor_max"]) != "nan" && $(h["floor_max"]) + 0 > 0 {
+			k = $5; c[k] = ($5 + $6) / 2
+			if (!(k in hi) || $(h["floor_max"]) + 0 > hi[k]) hi[k] = $(h["floor_max"]) + 0
+			if (!(k in lo) || $(h["floor_rms"]) + 0 > lo[k]) lo[k] = $(h["floor_rms"]) + 0 }
+		END { for (k in hi) print (sc == "log" ? 10 ^ c[k] : c[k]), lo[k], hi[k] }' "$RUN/by_nz.csv" | sort -g
+}
+
 for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
 	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=1.5e-8; else FLOOR=1e-20; EPS=2.22e-16; ZX=1e-18; fi
@@ -86,22 +101,34 @@ for P in float double; do
 		names="$names $m"; colors="$colors $(sty "$m" 3)"; dashes="$dashes $(sty "$m" 4)"
 		points="$points $(sty "$m" 5)"; widths="$widths $(sty "$m" 6)"; panels="$panels $(sty "$m" 2)"
 	done
+	# the accuracy floor band (issue 16): the floor of one method's family
+	# (duff_branchless when the run has it), its RMS to its max per bin;
+	# runs from before the floor have no floor columns and get no band
+	fm=$(echo "$pmethods" | grep -x duff_branchless || echo "$first")
+	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
+	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
+	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
+	bt="accuracy floor (RMS-max)"
+	b1=""; b2=""; b6=""
+	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt'; ref_band=1;"
+	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt'; ref_band=1;"
+	[ -s "$W/fb6_$P.dat" ] && b6="ref_file='$W/fb6_$P.dat'; ref_title='$bt'; ref_band=1;"
 	common="names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
 		set -- $(range "$files1" 2 0)
-		gp lines.gp "$common; files='$files1'; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='largest defect in the bin'; ttl='$P: max orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='largest defect in the bin'; ttl='$P: max orthonormality defect against n.z, uniform inputs, $n per method'"
 		set -- $(range "$files1" 3 0)
-		gp lines.gp "$common; files='$files1'; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='RMS defect in the bin'; ttl='$P: RMS orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='RMS defect in the bin'; ttl='$P: RMS orthonormality defect against n.z, uniform inputs, $n per method'"
 	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
 	set -- $(range "$files2" 2 1)
-	gp lines.gp "$common; files='$files2'; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z (distance from the south pole; leftmost point: n.z = -1 exactly)'; yl='largest defect'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs'"
+	gp lines.gp "$b2 $common; files='$files2'; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z (distance from the south pole; leftmost point: n.z = -1 exactly)'; yl='largest defect'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs'"
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
 		set -- $(range "$files6" 2 1)
-		gp lines.gp "$common; files='$files6'; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input'; yl='largest defect against n/|n|'; ttl='$P: non-unit input, $n inputs per method'"
+		gp lines.gp "$b6 $common; files='$files6'; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input'; yl='largest defect against n/|n|'; ttl='$P: non-unit input, $n inputs per method'"
 	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
 	fi
 

@@ -22,6 +22,23 @@ for f in summary.csv by_nz.csv worst.csv grid.csv; do
 	data "$T/t1/$f" > "$T/a"; data "$T/t2/$f" > "$T/b"
 	if [ -s "$T/a" ] && cmp -s "$T/a" "$T/b"; then ok; else bad "$f differs between 1 and 2 threads"; fi
 done
+# the accuracy floor (issue 16): columns by name; duff_wide (the exact formula
+# rounded once, through double) sits on it everywhere, duff_comp within 1%,
+# float duff_branchless above it on uniform; float-only methods have no double rows
+col() { data "$1" | awk -F, -v m="$2" -v p="$3" -v d="$4" -v c="$5" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
+	$1 == m && $2 == p && $3 == d { print $(h[c]) }'; }
+for d in uniform north south threshold exhaustive nonunit grid; do
+	[ "$(col "$T/t1/summary.csv" duff_wide float $d max_floor_ratio)" = 1 ] && [ "$(col "$T/t1/summary.csv" duff_wide float $d at_floor)" = 1 ] && ok ||
+		bad "duff_wide float $d: max_floor_ratio $(col "$T/t1/summary.csv" duff_wide float $d max_floor_ratio), want 1"
+	r=$(col "$T/t1/summary.csv" duff_comp float $d max_floor_ratio)
+	awk -v r="$r" 'BEGIN { exit !(r >= 1 && r <= 1.01) }' && ok || bad "duff_comp float $d: max_floor_ratio $r, want 1 to 1.01"
+done
+a=$(col "$T/t1/summary.csv" duff_branchless float uniform max_defect); b=$(col "$T/t1/summary.csv" duff_branchless float uniform max_floor)
+awk -v a="$a" -v b="$b" 'BEGIN { exit !(b > 0 && a > 1.3 * b) }' && ok || bad "duff_branchless float uniform: max_defect $a not above the floor $b"
+[ -z "$(col "$T/t1/summary.csv" duff_wide double uniform max_defect)" ] && ok || bad "duff_wide has double rows"
+x=$(col "$T/t1/summary.csv" naive double uniform floor_ratio_nx)
+case "$x" in -0x*|0x*) ok ;; *) bad "floor_ratio_nx is not a hex float: '$x'" ;; esac
+data "$T/t1/by_nz.csv" | head -1 | grep -q ',floor_rms,floor_max$' && ok || bad "by_nz.csv lacks floor_rms,floor_max"
 # provenance header on every file
 for f in summary.csv by_nz.csv worst.csv grid.csv; do
 	for key in "# revision:" "# compiler:" "# flags:" "# mpfr:" "# seed: 42" "# threads: 1" "# command:" "# mpfr precision: 127 bits"; do

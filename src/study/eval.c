@@ -246,6 +246,10 @@ int cmd_eval(int argc, char **argv)
 				       m.ulp_max, m.abs_eps_max, m.nbits ? m.bits_sum / m.nbits : 0.0, m.bits_max);
 				printf("  direction: w = (%a, %a, %a); | |w|-1 | %.6g, | w.n - z | %.6g\n",
 				       m.w[0], m.w[1], m.w[2], m.dir_norm, m.dir_cos);
+				printf("  floor (the exact formula rounded once): defect %.6g, | |w|-1 | %.6g, | w.n - z | %.6g\n",
+				       m.floor, m.floor_dir_norm, m.floor_dir_cos);
+				if (ks[k].m && m.floor > 0.0)
+					printf("  defect / floor: %.6g\n", m.defect / m.floor);
 				if (!ref_agree(&m, &m2, why, sizeof why))
 					printf("  WARNING: the reference at %ld bits disagrees with %ld bits: %s\n", bits, bits + 64, why);
 			}

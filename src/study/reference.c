@@ -29,6 +29,8 @@ struct ref_ctx {
 	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
 	double last_norm;
 	int have_last;
+	mpfr_t mid;      /* the floor's rounding check (floor_round)                */
+	ref_ctx *hi;     /* prec + 128 bits, made on the first hard rounding       */
 };
 
 
@@ -59,6 +61,8 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 	mpfr_init2(c->p0, prec); mpfr_init2(c->p1, prec);
 	vinit(c->q, 4, prec < 106 ? 106 : prec);
 	mpfr_init2(c->inv_n, prec);
+	mpfr_init2(c->mid, prec);
+	c->hi = NULL;
 	return c;
 }
 
@@ -72,6 +76,8 @@ void ref_free(ref_ctx *c)
 	mpfr_clear(c->p0); mpfr_clear(c->p1);
 	vclear(c->q, 4);
 	mpfr_clear(c->inv_n);
+	mpfr_clear(c->mid);
+	ref_free(c->hi);
 	free(c);
 }
 
@@ -422,6 +428,187 @@ static int finite6(const double *v, int k)
 	return 1;
 }
 
+/* The five defects of the basis b (doubles) for the input n held in
+   c->n: |b1|-1, |b2|-1, b1.n, b2.n (against n/|n| when normalize_n),
+   b1.b2. */
+static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int normalize_n, double d[NDEF])
+{
+	mpfr_t *t = c->t;
+	set3(c->b1, b[0], b[1], b[2]);
+	set3(c->b2, b[3], b[4], b[5]);
+	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
+	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
+	/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0);
+	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+	d[DEF_D1N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0);
+	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+	d[DEF_D2N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+}
+
+/* | |w| - 1 | and | w.n - z | (w.(n/|n|) - z when normalize_n) of the
+   direction w (doubles) for the input n held in c->n. */
+static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const double loc[3], int prec,
+                       int normalize_n, double *dir_norm, double *dir_cos)
+{
+	mpfr_t *t = c->t;
+	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+	set3(c->w, w[0], w[1], w[2]);
+	*dir_norm = fabs(norm_m1_exact(c, c->w, w));
+	if (normalize_n) {
+		dot_exact(c, t[0], c->w, c->n, w, n, 0.0);
+		mpfr_mul(t[0], t[0], c->inv_n, R);
+		mpfr_sub_d(t[0], t[0], z, R);
+	} else {
+		dot_exact(c, t[0], c->w, c->n, w, n, z);
+	}
+	*dir_cos = fabs(mpfr_get_d(t[0], R));
+}
+
+/* ---- the accuracy floor (issue 16) ------------------------------------ */
+/* The floor of a kernel on an input: the metrics of its family's exact
+   formula, on the kernel's branch, with each output component rounded
+   ONCE (to nearest, ties to even) to the format: what a perfect
+   implementation of that formula would return.
+
+   Rounding without double rounding.  The reference holds each exact
+   component x as e, computed at P = c->prec bits, with |e - x| <= 2^(40-P)
+   max(|e|, 1): every family's intermediate quantities are O(1) for
+   unit-to-rounding input (the inputs are within |n| <= 1.01), and the
+   worst amplification of the reference's own 2^-P roundings (1/|u| of
+   naive's normalization near -x, 1/(1 + n.z) of frisvad near -z) stays
+   far below 2^40 on every input the sweep generates; the two-precision
+   check re-evaluates the floor at P + 64 bits and must agree (ref_agree).
+   RN(e) is RN(x) unless e lies within that bound of a rounding boundary
+   (the midpoint between two neighbouring format values); floor_round says
+   when, and such a component is decided from the formula re-evaluated at
+   P + 128 bits (c->hi), where an exact midpoint (a value with one bit
+   more than the format) stays exactly on it and rounds to even. */
+static int floor_round(ref_ctx *c, mpfr_t e, int prec, double *out)
+{
+	const long P = (long)mpfr_get_prec(e);
+	double f, g;
+	long ee, em;
+	int cmp;
+	if (!mpfr_number_p(e)) {
+		*out = NAN;
+		return 0;
+	}
+	f = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : mpfr_get_d(e, R);
+	*out = f;
+	cmp = mpfr_cmp_d(e, f);
+	if (cmp == 0 || isinf(f))
+		return 0;
+	g = prec == PREC_FLOAT ? (double)nextafterf((float)f, cmp > 0 ? INFINITY : -INFINITY)
+	                       : nextafter(f, cmp > 0 ? INFINITY : -INFINITY);
+	if (isinf(g))
+		return 0;
+	mpfr_set_d(c->mid, f, R);
+	mpfr_add_d(c->mid, c->mid, g, R);   /* exact: two neighbours need <= 55 bits */
+	mpfr_div_2ui(c->mid, c->mid, 1, R); /* the rounding boundary between them */
+	mpfr_sub(c->mid, e, c->mid, R);
+	if (mpfr_zero_p(c->mid))
+		return 1;
+	ee = mpfr_get_exp(e);
+	em = mpfr_get_exp(c->mid);          /* |e - mid| >= 2^(em - 1) */
+	return em - 1 < 40 - P + (ee > 1 ? ee : 1);
+}
+
+/* The exact formula of k on n (branch br) rounded once: fb[6] (or the
+   direction in fb[0..2] for frisvad_rotate).  The formula is in c->r1,
+   c->r2 already; hard components are redone at c->prec + 128 bits.
+   Returns 1 when that was needed. */
+static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                       const double loc[3], double fb[6])
+{
+	const int nc = k->m ? 6 : 3;
+	int i, hard = 0;
+	for (i = 0; i < nc; i++)
+		hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &fb[i]);
+	/* naive's b2 = n x (e - n (n.e)) = n x e has no e component, for any
+	   n: that component of the exact formula is identically zero, where
+	   the reference's cross product leaves a rounding residue */
+	if (k->m && k->family == FAM_NAIVE && isfinite(fb[3 + br])) {
+		fb[3 + br] = 0.0;
+		if (!hard)
+			return 0;
+		/* hard only through that residue? */
+		for (i = 0, hard = 0; i < nc; i++)
+			if (i != 3 + br) {
+				double t;
+				hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &t);
+			}
+	}
+	if (!hard)
+		return 0;
+	if (!c->hi)
+		c->hi = ref_new(c->prec + 128);
+	if (!c->hi) { /* out of memory: keep the P-bit rounding, say so */
+		fprintf(stderr, "onbstudy: out of memory for the floor's %ld-bit re-evaluation\n", (long)c->prec + 128);
+		return 1;
+	}
+	set3(c->hi->n, n[0], n[1], n[2]);
+	c->hi->have_last = 0;
+	reference(c->hi, k, br, loc);
+	for (i = 0; i < nc; i++)
+		if (!(k->m && k->family == FAM_NAIVE && i == 3 + br))
+			(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
+	return 1;
+}
+
+/* s->floor, s->floor_dir_norm, s->floor_dir_cos (NaN when the exact
+   formula is not finite there, e.g. tangent_cross_z at +-z).  For a basis
+   method the floor's direction is w = x b1 + y b2 + z n from the rounded
+   exact basis, in the format's arithmetic as the kernel's w is; for
+   frisvad_rotate it is the exact rotated direction rounded once. */
+static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3], const double loc[3],
+                       int normalize_n, sample_metrics *s)
+{
+	double fb[6], w[3], d[NDEF];
+	int i;
+	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
+	(void)floor_basis(c, k, prec, s->branch, n, loc, fb);
+	if (!finite6(fb, k->m ? 6 : 3))
+		return;
+	if (k->m) {
+		if (prec == PREC_FLOAT) {
+			const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+			float b[6], v[3];
+			for (i = 0; i < 6; i++)
+				b[i] = (float)fb[i];
+			for (i = 0; i < 3; i++) {
+				v[i] = x * b[i] + y * b[3 + i] + z * (float)n[i];
+				w[i] = v[i];
+			}
+		} else {
+			for (i = 0; i < 3; i++)
+				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
+		}
+		basis_defects(c, fb, n, normalize_n, d);
+		s->floor = 0.0;
+		for (i = 0; i < NDEF; i++)
+			if (fabs(d[i]) > s->floor)
+				s->floor = fabs(d[i]);
+	} else {
+		for (i = 0; i < 3; i++)
+			w[i] = fb[i];
+	}
+	dir_errors(c, w, n, loc, prec, normalize_n, &s->floor_dir_norm, &s->floor_dir_cos);
+	/* The ratio.  Errors and floors below u^2 (3.6e-15 in float, 1.2e-32
+	   in double) count as u^2: zero for any use of the format, and a
+	   per-input floor of 1e-76 (an input like (-1, 0, -2^-126), where the
+	   exact basis is representable) would otherwise turn an error of 1e-38
+	   into a ratio of 1e38. */
+	if (!s->nonfinite) {
+		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
+		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
+		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
+		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
+	}
+}
+
 void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
               const double loc[3], int normalize_n, sample_metrics *s)
 {
@@ -500,24 +687,16 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		s->dir_norm = s->dir_cos = NAN;
 		for (i = 0; i < 6; i++)
 			s->ref[i] = NAN;
+		/* the floor does not depend on the kernel's output */
+		reference(c, k, s->branch, loc);
+		floor_eval(c, k, prec, n, loc, normalize_n, s);
 		return;
 	}
 
 	if (k->m) {
 		/* Orthonormality defect of the rounded outputs. */
 		long double det;
-		set3(c->b1, s->out[0], s->out[1], s->out[2]);
-		set3(c->b2, s->out[3], s->out[4], s->out[5]);
-		s->d[DEF_N1] = norm_m1_exact(c, c->b1, s->out);
-		s->d[DEF_N2] = norm_m1_exact(c, c->b2, s->out + 3);
-		/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
-		dot_exact(c, t[0], c->b1, c->n, s->out, n, 0.0);
-		if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-		s->d[DEF_D1N] = mpfr_get_d(t[0], R);
-		dot_exact(c, t[0], c->b2, c->n, s->out + 3, n, 0.0);
-		if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-		s->d[DEF_D2N] = mpfr_get_d(t[0], R);
-		dot_exact(c, t[0], c->b1, c->b2, s->out, s->out + 3, 0.0); s->d[DEF_D12] = mpfr_get_d(t[0], R);
+		basis_defects(c, s->out, n, normalize_n, s->d);
 		s->defect = 0.0;
 		s->sumsq = 0.0;
 		for (i = 0; i < NDEF; i++) {
@@ -548,19 +727,11 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 			forward(c, c->r2[i], s->out[3 + i], prec, s, &s->ref[3 + i]);
 
 	/* Direction error: | |w| - 1 | and | w.n - z |. */
-	set3(c->w, s->w[0], s->w[1], s->w[2]);
-	s->dir_norm = fabs(norm_m1_exact(c, c->w, s->w));
-	{
-		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-		if (normalize_n) {
-			dot_exact(c, t[0], c->w, c->n, s->w, n, 0.0);
-			mpfr_mul(t[0], t[0], c->inv_n, R);
-			mpfr_sub_d(t[0], t[0], z, R);
-		} else {
-			dot_exact(c, t[0], c->w, c->n, s->w, n, z);
-		}
-	}
-	s->dir_cos = fabs(mpfr_get_d(t[0], R));
+	dir_errors(c, s->w, n, loc, prec, normalize_n, &s->dir_norm, &s->dir_cos);
+
+	/* The accuracy floor: the same metrics for the exact formula (r1, r2,
+	   still in c) rounded once to the format. */
+	floor_eval(c, k, prec, n, loc, normalize_n, s);
 }
 
 /* Agreement of one metric: relative 2^-40, or absolute `abs_tol` (the
@@ -586,6 +757,8 @@ int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_
 		{ "ulp", a->ulp_max, b->ulp_max, 0x1p-16 }, { "abs/eps", a->abs_eps_max, b->abs_eps_max, 0x1p-16 },
 		{ "bits", a->bits_sum, b->bits_sum, 0x1p-16 }, { "|w|-1", a->dir_norm, b->dir_norm, 0.0 },
 		{ "w.n-z", a->dir_cos, b->dir_cos, 0.0 },
+		{ "floor", a->floor, b->floor, 0.0 }, { "floor |w|-1", a->floor_dir_norm, b->floor_dir_norm, 0.0 },
+		{ "floor w.n-z", a->floor_dir_cos, b->floor_dir_cos, 0.0 },
 	};
 	size_t i;
 	for (i = 0; i < sizeof v / sizeof v[0]; i++)

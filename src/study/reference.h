@@ -11,7 +11,9 @@
  *     absolute error in units of the format's epsilon, Herbie's bits;
  *   - det(b1, b2, n) against the registry's handedness, non-finite output;
  *   - the direction error of w = x b1 + y b2 + z n for a local direction
- *     (x, y, z): | |w| - 1 | and | w.n - z |.
+ *     (x, y, z): | |w| - 1 | and | w.n - z |;
+ *   - the accuracy floor: the defect and direction error of the exact
+ *     formula rounded once to the format (reference.c, floor_eval).
  * Each thread owns one ref_ctx.
  */
 #ifndef ONB_REFERENCE_H
@@ -49,6 +51,16 @@ typedef struct {
 	double out[6];       /* the kernel's outputs b1, b2 (or w), widened          */
 	double ref[6];       /* the exact formula, rounded to double                 */
 	double w[3];         /* the rotated direction (format precision)             */
+	/* The accuracy floor (issue 16): the same metrics for the exact formula
+	   (the family's, on the kernel's branch) rounded once to the format.
+	   NaN where the exact formula is not finite. */
+	double floor;          /* its defect (max |.| of the five)                   */
+	double floor_dir_norm; /* | |w|-1 | of its direction                         */
+	double floor_dir_cos;  /* | w.n - z | of its direction                       */
+	double floor_ratio;    /* max(e, u^2) / max(f, u^2): e the per-input error
+	                          (defect; frisvad_rotate: max of the direction
+	                          errors), f the floor's, u = 2^-24 or 2^-53; NaN
+	                          when either is not finite                       */
 } sample_metrics;
 
 /* Evaluate kernel k on n (values exactly representable in `prec`) with the

@@ -1056,6 +1056,71 @@ static int basis_defects(const reffast_ctx *c, const study_kernel *k, const doub
 	return 1;
 }
 
+/* The accuracy floor (issue 16; reference.c floor_eval and
+   /work/notes/floor-metric.md): the exact formula r1, r2 rounded once to
+   the format (Ziv's test decides RN of the exact value, as floor_round
+   does in MPFR), the defects and direction error of that basis by the
+   same helpers as the kernel's, and the ratio.  0 when anything is
+   undetermined (the caller then runs ref_eval). */
+static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, const double n[3], const double loc[3],
+                      int normalize_n, xv inv, const xv *r1, const xv *r2, sample_metrics *s)
+{
+	const int nc = k->m ? 6 : 3;
+	double fb[6], w[3], d[NDEF];
+	int i, bad = 0;
+	for (i = 0; i < nc; i++) {
+		if (k->m && k->family == FAM_NAIVE && i == 3 + s->branch) {
+			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
+			continue;
+		}
+		if (!ziv(i < 3 ? r1[i] : r2[i - 3], prec == PREC_FLOAT ? 24 : 53, &fb[i]))
+			return 0;
+	}
+	if (k->m) {
+		if (prec == PREC_FLOAT) {
+			const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+			for (i = 0; i < 3; i++) {
+				const float v = x * (float)fb[i] + y * (float)fb[3 + i] + z * (float)n[i];
+				w[i] = v;
+			}
+		} else {
+			for (i = 0; i < 3; i++)
+				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
+		}
+		if (!norm_m1_fast(c, fb, &d[DEF_N1]) || !norm_m1_fast(c, fb + 3, &d[DEF_N2]) ||
+		    !defect_dot(c, fb, n, 0.0, normalize_n, inv, &d[DEF_D1N]) ||
+		    !defect_dot(c, fb + 3, n, 0.0, normalize_n, inv, &d[DEF_D2N]) ||
+		    !defect_dot(c, fb, fb + 3, 0.0, 0, inv, &d[DEF_D12]))
+			return 0;
+		s->floor = 0.0;
+		for (i = 0; i < NDEF; i++)
+			if (fabs(d[i]) > s->floor)
+				s->floor = fabs(d[i]);
+	} else {
+		for (i = 0; i < 3; i++)
+			w[i] = fb[i];
+	}
+	if (!norm_m1_fast(c, w, &s->floor_dir_norm))
+		return 0;
+	s->floor_dir_norm = fabs(s->floor_dir_norm);
+	{
+		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+		xv x = xdot_exact(c, w, n, normalize_n ? 0.0 : z, &bad);
+		if (normalize_n)
+			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
+		if (bad || !ziv_d(x, &s->floor_dir_cos))
+			return 0;
+		s->floor_dir_cos = fabs(s->floor_dir_cos);
+	}
+	if (!s->nonfinite) {
+		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
+		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
+		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
+		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
+	}
+	return 1;
+}
+
 int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in[3],
               const double loc[3], int normalize_n, sample_metrics *s)
 {
@@ -1076,7 +1141,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 		s->dir_norm = s->dir_cos = NAN;
 		for (i = 0; i < 6; i++)
 			s->ref[i] = NAN;
-		return REFFAST_DONE;
+		return REFFAST_MPFR; /* the floor of a singular input: left to MPFR */
 	}
 	if (k->m && !basis_defects(c, k, n, normalize_n, inv, s))
 		return 0;
@@ -1111,5 +1176,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			return 0;
 		s->dir_cos = fabs(s->dir_cos);
 	}
+	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
+	if (!floor_fast(c, k, prec, n, loc, normalize_n, inv, r1, r2, s))
+		return 0;
 	return rc;
 }

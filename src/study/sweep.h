@@ -28,6 +28,9 @@ typedef struct {
 	uint64_t count;
 	fx sumsq;
 	double max;
+	uint64_t fcount;     /* the floor of the same inputs (issue 16) */
+	fx fsumsq;
+	double fmax;
 } bin_t;
 
 typedef struct {
@@ -47,6 +50,17 @@ typedef struct {
 	double max_duff_rms; /* ... and the largest per-input root of it                     */
 	worst_t worst[NWORST];
 	bin_t bins[NBINS];
+	/* The accuracy floor (issue 16; reference.c floor_eval): the per-input
+	   error of the exact formula rounded once (defect; direction error for
+	   frisvad_rotate), over the inputs where it is finite, and the ratio
+	   max(error, u^2) / max(floor, u^2) over the inputs where the kernel's
+	   output is finite too; ratio_at: inputs with ratio <= 1 (at the
+	   floor, or below it). */
+	uint64_t floor_n, ratio_n, ratio_at, ratio_idx;
+	fx floor2, ratio2;
+	double max_floor, max_floor_dir, max_ratio;
+	double ratio_in[3];  /* the input of max_ratio; ratio_idx UINT64_MAX: none */
+	int ratio_src;
 } cell_t;
 
 /* Everything that defines a run's data (not its thread count or output). */

@@ -215,12 +215,29 @@ static double sqrt_mean(const fx *sum, uint64_t n)
 	return n ? sqrt(fx_value(sum) / (double)n) : NAN;
 }
 
+/* The floor's columns of a summary row (issue 16): the floor's max and
+   RMS, its direction error's max, and the ratio of the method's per-input
+   error to it (reference.c floor_eval): max, RMS, the share of inputs at
+   or below the floor (ratio <= 1), and the input of the largest ratio as
+   hex floats. */
+static void floor_cols(FILE *f, const cell_t *c)
+{
+	const int some = c->ratio_idx != UINT64_MAX;
+	fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", c->floor_n ? c->max_floor : NAN, sqrt_mean(&c->floor2, c->floor_n),
+	        c->floor_n ? c->max_floor_dir : NAN, some ? c->max_ratio : NAN,
+	        sqrt_mean(&c->ratio2, c->ratio_n), c->ratio_n ? (double)c->ratio_at / (double)c->ratio_n : NAN);
+	if (some)
+		fprintf(f, "%a,%a,%a\n", c->ratio_in[0], c->ratio_in[1], c->ratio_in[2]);
+	else
+		fprintf(f, "nan,nan,nan\n");
+}
+
 static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, double jump)
 {
 	const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
 	const int basis = s->kernels[k].m != NULL;
 	const double nan = NAN;
-	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+	fprintf(f, "%s,%s,%s,%llu,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,",
 	        s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count,
 	        basis ? sqrt_mean(&c->sumsq, 5 * c->finite) : nan,
 	        basis ? (c->finite ? c->max_defect : nan) : nan,
@@ -232,6 +249,7 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	        c->finite ? c->max_dir_norm : nan, c->finite ? c->max_dir_cos : nan,
 	        sqrt_mean(&c->dirc2, c->finite), jump,
 	        basis ? sqrt_mean(&c->duffms, c->finite) : nan, basis && c->finite ? c->max_duff_rms : nan);
+	floor_cols(f, c);
 }
 
 /* reference.csv: the fast reference's fallback rate per method and precision. */
@@ -255,7 +273,8 @@ static int write_reference(const sweep_state *s, const char *dir, const char *na
 }
 
 #define SUMMARY_COLUMNS "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite," \
-	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump,duff_rms,max_duff_rms"
+	"rms_defect,max_abs_eps,max_bits,max_input_norm,max_dir_norm,max_dir_cos,rms_dir_cos,max_b1_jump,duff_rms,max_duff_rms," \
+	"max_floor,rms_floor,max_floor_dir,max_floor_ratio,rms_floor_ratio,at_floor,floor_ratio_nx,floor_ratio_ny,floor_ratio_nz"
 
 static int write_summary(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
 {
@@ -267,6 +286,7 @@ static int write_summary(const sweep_state *s, const char *dir, const char *name
 	fprintf(o.f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
 	fprintf(o.f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
 	fprintf(o.f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
+	fprintf(o.f, "# max_floor, rms_floor: the accuracy floor, the per-input error (defect; frisvad_rotate: direction error) of the method's exact formula on its branch rounded once to the format; max_floor_dir: its direction error; max_floor_ratio, rms_floor_ratio: the per-input ratio max(error, u^2) / max(floor, u^2), u = 2^-24 or 2^-53; at_floor: the share of inputs with ratio <= 1; floor_ratio_n*: the input of the largest ratio\n");
 	fprintf(o.f, "%s\n", SUMMARY_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
@@ -284,7 +304,8 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 		return -1;
 	header(o.f, s, threads, sec, partial);
 	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, by log10| |n| - 1 |, and by log10(1 - n.z) for n.z >= 0 (axis log10_1mnz); empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
-	fprintf(o.f, "method,precision,distribution,axis,lo,hi,count,rms,max\n");
+	fprintf(o.f, "# floor_rms, floor_max: the accuracy floor of the same inputs (the method's exact formula rounded once)\n");
+	fprintf(o.f, "method,precision,distribution,axis,lo,hi,count,rms,max,floor_rms,floor_max\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
@@ -308,9 +329,10 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 					} else {
 						axis = "log10_1mnz"; lo = -17.0 + 0.25 * (b - NB_NZ - NB_LOG - NB_NORM); hi = lo + 0.25;
 					}
-					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
+					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
 					        dist_name(d), axis, lo, hi, (unsigned long long)x->count,
-					        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max);
+					        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max,
+					        x->fcount ? sqrt(fx_value(&x->fsumsq) / (double)x->fcount) : NAN, x->fcount ? x->fmax : NAN);
 				}
 			}
 	return study_out_commit(&o);

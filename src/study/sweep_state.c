@@ -13,7 +13,7 @@
 #include "sweep.h"
 #include "study.h"
 
-#define STATE_MAGIC "onbsweep-state2"
+#define STATE_MAGIC "onbsweep-state3"
 
 cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k)
 {
@@ -28,6 +28,19 @@ void cell_init(cell_t *c)
 		c->worst[i].key = -1.0;
 		c->worst[i].index = UINT64_MAX;
 	}
+	c->ratio_idx = UINT64_MAX;
+	c->max_ratio = -1.0;
+}
+
+/* The largest ratio to the floor, ties to the smaller index, then the
+   sampled input before the walked one: a total order, so merges agree. */
+static int ratio_wins(double r, uint64_t idx, int src, const cell_t *c)
+{
+	if (c->ratio_idx == UINT64_MAX || r != c->max_ratio)
+		return c->ratio_idx == UINT64_MAX || r > c->max_ratio;
+	if (idx != c->ratio_idx)
+		return idx < c->ratio_idx;
+	return src < c->ratio_src;
 }
 
 /* a ranks before b: larger error first, then the smaller index, then
@@ -82,6 +95,51 @@ void cell_merge(cell_t *d, const cell_t *s)
 		d->bins[i].count += s->bins[i].count;
 		fx_add(&d->bins[i].sumsq, &s->bins[i].sumsq);
 		d->bins[i].max = dmax(d->bins[i].max, s->bins[i].max);
+		d->bins[i].fcount += s->bins[i].fcount;
+		fx_add(&d->bins[i].fsumsq, &s->bins[i].fsumsq);
+		d->bins[i].fmax = dmax(d->bins[i].fmax, s->bins[i].fmax);
+	}
+	d->floor_n += s->floor_n; d->ratio_n += s->ratio_n; d->ratio_at += s->ratio_at;
+	fx_add(&d->floor2, &s->floor2); fx_add(&d->ratio2, &s->ratio2);
+	d->max_floor = dmax(d->max_floor, s->max_floor);
+	d->max_floor_dir = dmax(d->max_floor_dir, s->max_floor_dir);
+	if (s->ratio_idx != UINT64_MAX && ratio_wins(s->max_ratio, s->ratio_idx, s->ratio_src, d)) {
+		d->max_ratio = s->max_ratio;
+		d->ratio_idx = s->ratio_idx;
+		d->ratio_src = s->ratio_src;
+		memcpy(d->ratio_in, s->ratio_in, sizeof d->ratio_in);
+	}
+}
+
+/* The floor's share of cell_add: its own statistics, and the ratio. */
+static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source,
+                      bin_t *b[4])
+{
+	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
+	const double r = m->floor_ratio;
+	int i;
+	if (isnan(f))
+		return;
+	c->floor_n++;
+	fx_add_double(&c->floor2, f * f);
+	c->max_floor = dmax(c->max_floor, f);
+	c->max_floor_dir = dmax(c->max_floor_dir, dmax(m->floor_dir_norm, m->floor_dir_cos));
+	for (i = 0; i < 4; i++)
+		if (b[i]) {
+			b[i]->fcount++;
+			fx_add_double(&b[i]->fsumsq, f * f);
+			b[i]->fmax = dmax(b[i]->fmax, f);
+		}
+	if (m->nonfinite || isnan(r))
+		return;
+	c->ratio_n++;
+	c->ratio_at += r <= 1.0;
+	fx_add_double(&c->ratio2, r * r);
+	if (ratio_wins(r, index, source, c)) {
+		c->max_ratio = r;
+		c->ratio_idx = index;
+		c->ratio_src = source;
+		memcpy(c->ratio_in, n, sizeof c->ratio_in);
 	}
 }
 
@@ -116,6 +174,7 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 {
 	worst_t w;
 	double key;
+	bin_t *fb[4] = { NULL, NULL, NULL, NULL }; /* the bins of this input, for the floor */
 	c->count++;
 	if (m->nonfinite) {
 		c->nonfinite++;
@@ -146,23 +205,28 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		fx_add_double(&c->dirn2, m->dir_norm * m->dir_norm);
 		fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
 		/* bins of the per-input error */
-		bin_add(&c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)], key);
+		fb[0] = &c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)];
+		bin_add(fb[0], key);
 		if (n[2] <= 0.0) {
 			const double h = 1.0 + n[2];
 			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			bin_add(&c->bins[NB_NZ + b], key);
+			fb[1] = &c->bins[NB_NZ + b];
+			bin_add(fb[1], key);
 		}
 		{
 			const double a = fabs(m->in_norm);
 			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
-			bin_add(&c->bins[NB_NZ + NB_LOG + b], key);
+			fb[2] = &c->bins[NB_NZ + NB_LOG + b];
+			bin_add(fb[2], key);
 		}
 		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
 			const double h = 1.0 - n[2];
 			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			bin_add(&c->bins[NB_NZ + NB_LOG + NB_NORM + b], key);
+			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + b];
+			bin_add(fb[3], key);
 		}
 	}
+	floor_add(c, index, m, n, source, fb);
 	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
 	w.key = key;
 	w.index = index;

@@ -139,7 +139,7 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tr
 	csv_file c;
 	tradeoff_row *rows = NULL;
 	int n = 0, cap = 0, nf, i;
-	int cm, cp, cmode, ct, ccls, cmbs, cns, cdist, crmse, cmax, cnf;
+	int cm, cp, cmode, ct, ccls, cmbs, cns, cdist, crmse, cmax, cnf, cfl, crr, cmr;
 	*rows_out = NULL;
 
 	if (csv_open(&c, bench_csv) != 0)
@@ -191,6 +191,8 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tr
 			rows[r].dbl = dbl;
 			rows[r].batch1 = rows[r].batchn = rows[r].call_ns = NAN;
 			rows[r].rmse_uniform = rows[r].max_south = rows[r].max_threshold = rows[r].max_worst = NAN;
+			rows[r].max_uniform = rows[r].max_floor_uniform = rows[r].x_floor = NAN;
+			rows[r].rms_ratio_uniform = rows[r].max_ratio_uniform = NAN;
 		}
 		thr = atoi(c.fld[ct]);
 		if (strcmp(mode, "batch") == 0) {
@@ -215,6 +217,9 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tr
 	crmse = col(c.hdr, c.nh, "rmse");
 	cmax = col(c.hdr, c.nh, "max_defect");
 	cnf = col(c.hdr, c.nh, "nonfinite");
+	cfl = col(c.hdr, c.nh, "max_floor");       /* the floor: optional (older runs lack it) */
+	crr = col(c.hdr, c.nh, "rms_floor_ratio");
+	cmr = col(c.hdr, c.nh, "max_floor_ratio");
 	if (cm < 0 || cp < 0 || cdist < 0 || crmse < 0 || cmax < 0) {
 		study_error("table: '%s' lacks one of the columns method,precision,distribution,rmse,max_defect", summary_csv);
 		goto fail;
@@ -244,9 +249,17 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tr
 			if (!bit)
 				continue;
 			mx = num(c.fld[cmax]);
-			if (bit == 1)
+			if (bit == 1) {
 				rows[r].rmse_uniform = num(c.fld[crmse]);
-			else if (bit == 2)
+				rows[r].max_uniform = mx;
+				if (cfl >= 0)
+					rows[r].max_floor_uniform = num(c.fld[cfl]);
+				if (crr >= 0)
+					rows[r].rms_ratio_uniform = num(c.fld[crr]);
+				if (cmr >= 0)
+					rows[r].max_ratio_uniform = num(c.fld[cmr]);
+				rows[r].x_floor = rows[r].max_floor_uniform > 0.0 ? mx / rows[r].max_floor_uniform : NAN;
+			} else if (bit == 2)
 				rows[r].max_south = mx;
 			else
 				rows[r].max_threshold = mx;
@@ -332,7 +345,8 @@ static void put(FILE *f, double v)
 }
 
 #define TRADEOFF_COLUMNS "method,precision,batch_mbases_1t,batch_mbases_all,threads_all,call_ns," \
-	"rmse_uniform,max_defect_south,max_defect_threshold,max_defect_worst,nonfinite,pareto"
+	"rmse_uniform,max_defect_south,max_defect_threshold,max_defect_worst,nonfinite,pareto," \
+	"max_defect_uniform,max_floor_uniform,x_floor,rms_floor_ratio_uniform,max_floor_ratio_uniform"
 
 static void print_cell(double v, const char *fmt, int w)
 {
@@ -444,6 +458,8 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 	fprintf(f->f, "# pareto: per precision, 1 when no other method is at least as fast (batch_mbases_1t, speeds within "
 	              "%g%% counted equal) and at least as accurate (max_defect_worst = max over uniform, south, threshold; "
 	              "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * o->tol);
+	fprintf(f->f, "# floor (uniform): max_floor_uniform = the largest defect of the method's exact formula rounded once to the format; "
+	              "x_floor = max_defect_uniform / max_floor_uniform; *_floor_ratio_uniform: the per-input ratio's RMS and max (summary.csv)\n");
 	fprintf(f->f, "%s\n", TRADEOFF_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (i = 0; i < n; i++) {
@@ -459,7 +475,13 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 			put(f->f, r->max_south);
 			put(f->f, r->max_threshold);
 			put(f->f, r->has_accuracy ? r->max_worst : NAN);
-			fprintf(f->f, ",%ld,%s\n", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
+			fprintf(f->f, ",%ld,%s", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
+			put(f->f, r->max_uniform);
+			put(f->f, r->max_floor_uniform);
+			put(f->f, r->x_floor);
+			put(f->f, r->rms_ratio_uniform);
+			put(f->f, r->max_ratio_uniform);
+			fputc('\n', f->f);
 		}
 	return study_out_commit(f);
 }
@@ -470,10 +492,12 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 	int i, j, p;
 	printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
 	       o->bench, o->summary, 100.0 * o->tol);
-	printf("%-24s |%44s |%44s\n", "", "float", "double");
+	printf("# xfloor = max defect on uniform / the floor's (the method's exact formula rounded once to the format)\n");
+	printf("%-24s |%51s |%51s\n", "", "float", "double");
 	printf("%-24s |", "method");
 	for (p = 0; p < 2; p++)
-		printf(" %7s %7s %5s %8s %8s %8s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", p ? "\n" : " |");
+		printf(" %7s %7s %5s %8s %8s %8s %6s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor",
+		       p ? "\n" : " |");
 	for (i = 0; i < n; i++) {
 		if (rows[i].dbl != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
 			continue; /* printed with its float row */
@@ -481,7 +505,7 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 		for (p = 0; p < 2; p++) {
 			j = find_row(rows, n, rows[i].method, p);
 			if (j < 0) {
-				printf(" %43s%s", "-", p ? "\n" : " |");
+				printf(" %50s%s", "-", p ? "\n" : " |");
 				continue;
 			}
 			print_cell(rows[j].batch1, " %*.0f", 7);
@@ -490,6 +514,7 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 			print_cell(rows[j].rmse_uniform, " %*.1e", 8);
 			print_cell(rows[j].max_south, " %*.1e", 8);
 			print_cell(rows[j].max_threshold, " %*.1e", 8);
+			print_cell(rows[j].x_floor, " %*.2f", 6);
 			printf("%s%s", rows[j].pareto ? "*" : " ", p ? "\n" : "|");
 		}
 	}

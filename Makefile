@@ -43,7 +43,7 @@ BASE    = -std=c99 $(OPT) $(FPFLAGS) $(CFLAGS) $(SANFLAGS) -Iinclude
 # MPFR and GMP are linked statically: MPFR keeps its flags in thread-local
 # storage, and the shared library reaches them through __tls_get_addr on
 # every operation (11% of a sweep); the static archive uses direct TLS.
-STUDY_LIBS = -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lm
+STUDY_LIBS = -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 OMP     = -fopenmp
 
 B       = build
@@ -178,10 +178,12 @@ $(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(wildcard src/study/*.h) includ
 onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 	$(MPICC) $(BASE) $(OMP) -o $@ $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
 
-# The example renderer links only libonb.a and libm, as a user's would.
-$(B)/aorender: examples/aorender.c src/study/meshio.c src/study/meshio.h libonb.a include/onb.h
+# The example renderer links libonb.a and libm, as a user's would, and the
+# scene reader (meshio, whose glTF part links cJSON) for --obj.
+MESHIO_SRC = src/study/meshio.c src/study/mesh_gltf.c
+$(B)/aorender: examples/aorender.c $(MESHIO_SRC) src/study/meshio.h src/study/meshio_int.h libonb.a include/onb.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc/study -o $@ examples/aorender.c src/study/meshio.c libonb.a -lm
+	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc/study -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm
 RENDERS = results/reference/renders
 .PHONY: render
 render: $(B)/aorender

@@ -1,14 +1,16 @@
 /*
  * aorender.c - ambient occlusion with cosine-weighted hemisphere sampling,
- * as a renderer that links libonb.a would do it.  Links only libonb.a and
- * libm; writes PNG with a dependency-free writer (stored deflate blocks).
+ * as a renderer that links libonb.a would do it.  Links libonb.a and libm
+ * (and cJSON, for the glTF part of the scene reader); writes PNG with a
+ * dependency-free writer (stored deflate blocks).
  *
  *   aorender --method NAME [--precision float|double] --out FILE.png
  *            [--diff DIFF.png] [--spp N (256)] [--list]
- *            [--obj FILE.obj [--up z|y|x] [--no-renormalize]]
+ *            [--mesh FILE [--up z|y|x] [--no-renormalize]]
  *
- * --obj renders a mesh read by the scene reader (src/study/meshio.c,
- * compiled into this program: it needs only libc and libm) instead of the
+ * --mesh (or --obj) renders a mesh read by the scene reader: OBJ, PLY or
+ * glTF 2.0, told by content (src/study/meshio.c and mesh_gltf.c, compiled
+ * into this program; the same reader as `onbstudy scene`) instead of the
  * scene below; see "--obj" further down for the camera, the shading
  * normals, the hidden floor and the reference of --diff (there: the
  * method's own frame made exact, not duff_branchless).  Bad input (a
@@ -669,7 +671,7 @@ int main(int argc, char **argv)
 		} else if (k + 1 < argc && !strcmp(argv[k], "--method")) name = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--out")) out = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--diff")) diff = argv[++k];
-		else if (k + 1 < argc && !strcmp(argv[k], "--obj")) obj = argv[++k];
+		else if (k + 1 < argc && (!strcmp(argv[k], "--obj") || !strcmp(argv[k], "--mesh"))) obj = argv[++k];
 		else if (!strcmp(argv[k], "--no-renormalize")) renorm = 0;
 		else if (k + 1 < argc && !strcmp(argv[k], "--up")) {
 			k++;
@@ -688,7 +690,7 @@ int main(int argc, char **argv)
 			else if (!strcmp(argv[k], "double")) fl = 0;
 			else { fprintf(stderr, "aorender: --precision must be float or double\n"); return 2; }
 		} else {
-			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] [--obj FILE [--up z|y|x] [--no-renormalize]] --out FILE.png [--diff DIFF.png] | --list\n");
+			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] [--mesh FILE [--up z|y|x] [--no-renormalize]] --out FILE.png [--diff DIFF.png] | --list\n");
 			return 2;
 		}
 	}

@@ -1,10 +1,13 @@
 #!/bin/sh
-# Fuzz the OBJ/PLY readers and the command-line parsers with libFuzzer.
-#   sh scripts/fuzz.sh [SECONDS]     (default 60 per harness)
-# Builds tests/fuzz/fuzz_{mesh,cli}.c and the study sources with
+# Fuzz the OBJ/PLY readers, the glTF reader and the command-line parsers
+# with libFuzzer.
+#   sh scripts/fuzz.sh [SECONDS]     (default 60)
+# Builds tests/fuzz/fuzz_{mesh,gltf,cli}.c and the study sources with
 #   clang -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-# into build/fuzz/, then runs both harnesses at once (one process each), each
-# for SECONDS, from the committed seeds in tests/fuzz/corpus/<harness>/
+# into build/fuzz/, then runs the mesh and gltf harnesses at once (one
+# process each, one per core) for SECONDS, then the cli harness (which runs
+# about 10 times as many inputs per second) for SECONDS/4, each from the
+# committed seeds in tests/fuzz/corpus/<harness>/
 # (new inputs go to build/fuzz/corpus-<harness>/, never into the repository
 # corpus).  A crash, leak, sanitizer report or timeout input is copied into
 # tests/fuzz/regressions/<harness>/ (commit it: tests/fuzz_regress.sh replays
@@ -24,7 +27,9 @@ if ! command -v "$CLANG" >/dev/null 2>&1; then
 fi
 out=build/fuzz
 rm -rf "$out/obj" "$out/artifacts" "$out/scratch"
-mkdir -p "$out/obj" "$out/artifacts/mesh" "$out/artifacts/cli" "$out/scratch/mesh" "$out/scratch/cli"
+HARNESSES="mesh gltf cli"
+for h in $HARNESSES; do mkdir -p "$out/artifacts/$h" "$out/scratch/$h"; done
+mkdir -p "$out/obj"
 # -fsanitize=fuzzer on the harness only; fuzzer-no-link (coverage) on the rest
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 CFL="-std=c99 -O1 -g -fopenmp -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc/study -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
@@ -38,30 +43,32 @@ for src in src/lib/*.c src/study/*.c; do
 	$CLANG $CFL $SAN -fsanitize=fuzzer-no-link $extra -c "$src" -o "$o"
 	objs="$objs $o"
 done
-for h in mesh cli; do
+for h in $HARNESSES; do
 	# shellcheck disable=SC2086
 	$CLANG $CFL $SAN -fsanitize=fuzzer -o "$out/fuzz_$h" "tests/fuzz/fuzz_$h.c" $objs \
-		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -fopenmp -lm
+		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -fopenmp -lm
 done
-echo "fuzz.sh: built $out/fuzz_mesh and $out/fuzz_cli with $($CLANG --version | head -1)"
+echo "fuzz.sh: built $out/fuzz_mesh, $out/fuzz_gltf and $out/fuzz_cli with $($CLANG --version | head -1)"
 
-run() { # harness
+run() { # harness seconds
 	h=$1
 	mkdir -p "$out/corpus-$h"
 	# an empty scratch directory as the working directory: the cli harness
 	# can reach only names in it (see tests/fuzz/fuzz_cli.c)
-	(cd "$out/scratch/$h" && "$root/$out/fuzz_$h" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 \
+	(cd "$out/scratch/$h" && "$root/$out/fuzz_$h" -max_total_time="$2" -timeout=10 -rss_limit_mb=2048 \
 		-max_len=65536 -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$root/$out/artifacts/$h/" \
 		"$root/$out/corpus-$h" "$root/tests/fuzz/corpus/$h") > "$out/$h.log" 2>&1
 }
-run mesh & pm=$!
-run cli & pc=$!
+csecs=$(( (secs + 3) / 4 ))
+run mesh "$secs" & pm=$!
+run gltf "$secs" & pg=$!
 rm_=0; wait $pm || rm_=$?
-rc_=0; wait $pc || rc_=$?
+rg_=0; wait $pg || rg_=$?
+rc_=0; run cli "$csecs" || rc_=$?
 fail=0
 printf 'harness\tseconds\texecutions\texit\tcrash_inputs\tcoverage\tcorpus\n' > "$out/summary.tsv"
-for h in mesh cli; do
-	if [ "$h" = mesh ]; then st=$rm_; else st=$rc_; fi
+for h in $HARNESSES; do
+	case $h in mesh) st=$rm_; hs=$secs;; gltf) st=$rg_; hs=$secs;; *) st=$rc_; hs=$csecs;; esac
 	execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$h.log" | tail -1)
 	found=0
 	for a in "$out/artifacts/$h"/*; do
@@ -72,8 +79,8 @@ for h in mesh cli; do
 	done
 	cov=$(sed -n 's/.*DONE *cov: \([0-9]*\).*/\1/p' "$out/$h.log" | tail -1)
 	corp=$(sed -n 's/.*DONE .* corp: \([0-9]*\)\/.*/\1/p' "$out/$h.log" | tail -1)
-	printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$h" "$secs" "${execs:-?}" "$st" "$found" "${cov:-?}" "${corp:-?}" >> "$out/summary.tsv"
-	echo "fuzz.sh: $h: ${execs:-?} executions in ${secs} s, exit $st, $found crash input(s), coverage ${cov:-?} edges, corpus ${corp:-?}"
+	printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$h" "$hs" "${execs:-?}" "$st" "$found" "${cov:-?}" "${corp:-?}" >> "$out/summary.tsv"
+	echo "fuzz.sh: $h: ${execs:-?} executions in ${hs} s, exit $st, $found crash input(s), coverage ${cov:-?} edges, corpus ${corp:-?}"
 	if [ "$st" -ne 0 ] || [ "$found" -ne 0 ] || [ -z "$execs" ]; then
 		fail=1
 		echo "fuzz.sh: $h FAILED; the end of $out/$h.log:" >&2

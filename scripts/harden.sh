@@ -6,8 +6,8 @@
 # Steps, in order (logs in build/harden/, durations in build/harden/steps.tsv):
 #   sanitize   make clean && make test SANITIZE=address,undefined
 #   build      make clean && make (the plain build that valgrind needs)
-#   fuzz       scripts/fuzz.sh FUZZ_SECONDS (both harnesses at once)
-#   valgrind   memcheck of a short sweep and two short scene runs
+#   fuzz       scripts/fuzz.sh FUZZ_SECONDS (mesh and gltf at once, then cli for a quarter of it)
+#   valgrind   memcheck of a short sweep and three short scene runs (OBJ, PLY, glTF)
 #   cppcheck   src/lib, suppressions in scripts/cppcheck-suppressions.txt
 #   mutate     scripts/mutate.sh: every one-token mutant of onb.h's kernels
 #              that changes an output bit must fail tests/test_indep.c
@@ -78,7 +78,8 @@ step valgrind 600 sh -c "
   $VG ./onbstudy sweep --samples 256 --exhaustive-count 256 --grid 4x8 --threads 2 --quiet --out '$vgout/sweep' &&
   $VG ./onbstudy scene tests/fuzz/corpus/mesh/cube_vn.obj --repeats 1 --out '$vgout/scene1' &&
   $VG ./onbstudy scene tests/fuzz/corpus/mesh/binbe.ply --precision double --up y --repeats 1 --out '$vgout/scene2' &&
-  test -f '$vgout/sweep/summary.csv' && test -f '$vgout/scene1/scene.csv' && test -f '$vgout/scene2/scene.csv'"
+  $VG ./onbstudy scene tests/data/gltf/strided.gltf --world --out '$vgout/scene3' &&
+  test -f '$vgout/sweep/summary.csv' && test -f '$vgout/scene1/scene.csv' && test -f '$vgout/scene2/scene.csv' && test -f '$vgout/scene3/scene.csv'"
 rm -rf "$vgout"
 
 step cppcheck 300 cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \

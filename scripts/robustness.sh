@@ -124,10 +124,11 @@ echo "| Library, bad input | $nmeth methods x $ncases inputs (zero, -0, NaN and 
 echo "| Command line | $clicases bad command lines over list, sweep, merge, scene (tests/cli_errors.sh): unknown options, bad and out-of-range numbers, --samples 1e30, unreadable and damaged files, unwritable --out | $clisum${known:+; known: $known} |"
 echo "| SIGINT during a sweep | sweep --samples 2000000 into a directory holding a complete run, SIGINT after 2 s | $sigint |"
 fuzzrow mesh "OBJ/PLY readers"
+fuzzrow gltf "glTF 2.0 reader"
 fuzzrow cli "CLI parsers"
 echo "| Fuzz regressions | inputs kept in tests/fuzz/regressions/, replayed with the seed corpus by make test (tests/fuzz_regress.sh) | $nreg kept |"
 echo "| make test SANITIZE=address,undefined | the whole suite under ASan and UBSan (-fno-sanitize-recover=all) | $san |"
-echo "| valgrind memcheck | sweep --samples 256 --exhaustive-count 256 --grid 4x8 (all methods, 2 threads); scene on an OBJ and a big-endian PLY | $vg |"
+echo "| valgrind memcheck | sweep --samples 256 --exhaustive-count 256 --grid 4x8 (all methods, 2 threads); scene on an OBJ, a big-endian PLY and a glTF (--world) | $vg |"
 echo "| cppcheck src/lib | --enable=warning,style,performance,portability | $cp |"
 echo "| Strict warnings | src/lib with -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror |$wst |"
 echo

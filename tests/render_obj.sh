@@ -137,5 +137,22 @@ expect2 "directory" --obj "$tmp" --method duff
 expect2 "bad --up" --obj "$tmp/cube.obj" --up w --method duff
 expect2 "unknown method" --obj "$tmp/cube.obj" --method nosuch
 
+# every format the scene reader reads (issue 12): a PLY octahedron without
+# normals (a binary-free ascii file) and the glTF test file (object space)
+{
+	printf 'ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n'
+	printf 'element face 8\nproperty list uchar int vertex_indices\nend_header\n'
+	printf '1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n'
+	printf '3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n'
+} > "$tmp/octa.ply"
+for f in "$tmp/octa.ply" tests/data/gltf/strided.gltf; do
+	rm -f "$tmp/m.png"
+	$R --mesh "$f" --method duff_branchless --spp 8 --out "$tmp/m.png" 2> "$tmp/err"
+	[ $? -eq 0 ] && png "$tmp/m.png" && ok || bad "--mesh $f: $(cat "$tmp/err")"
+done
+printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n0 0 0 0 0 1\n' > "$tmp/points.ply"
+expect2 "PLY without faces" --mesh "$tmp/points.ply" --method duff
+grep -q "no geometry" "$tmp/err" && ok || bad "PLY without faces: $(cat "$tmp/err")"
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

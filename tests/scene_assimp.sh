@@ -15,6 +15,7 @@ pass=0; fail=0
 ok()  { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+export XDG_CACHE_HOME="$tmp/cache"  # speeds: the committed reference run
 methods=$(./onbstudy list --format csv | tail -n +2 | cut -d, -f1)
 
 check_model() { # file, "stored" or "computed"

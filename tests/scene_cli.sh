@@ -8,6 +8,8 @@ pass=0; fail=0
 ok()  { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# no per-machine speed cache: the committed reference run's speeds
+export XDG_CACHE_HOME="$tmp/cache"
 
 # normals at and near -y: under --up y they play n.z = -1
 cat > "$tmp/floor.obj" <<'OBJ'
@@ -28,7 +30,7 @@ rc=$?
 if [ $rc -eq 0 ]; then ok; else bad "scene floor.obj --up y exited $rc: $(cat "$tmp/err1")"; fi
 grep -q "^scene: $tmp/floor.obj" "$tmp/out1" && ok || bad "report does not name the file"
 grep -q "counts in float: total 5, unit" "$tmp/out1" && ok || bad "report lacks the counts"
-grep -q "^recommended for $tmp/floor.obj (as-read normals, float, up y, E 1e-06): [a-z_]" "$tmp/out1" && ok || bad "no recommendation line"
+grep -q "^recommended for $tmp/floor.obj (as-read normals, float, up y, E 1e-06, speed from the reference run): [a-z_]" "$tmp/out1" && ok || bad "no recommendation line"
 csv="$tmp/r1/scene.csv"
 if [ -f "$csv" ]; then ok; else bad "no scene.csv"; csv=/dev/null; fi
 head -1 "$csv" | grep -q '^# onbstudy' && ok || bad "scene.csv has no provenance"
@@ -50,7 +52,7 @@ grep -q "under --up z" "$tmp/out1" && ok || bad "no note on the other up axis"
 
 # double precision and --renormalize headline
 ./onbstudy scene "$tmp/floor.obj" --precision double --renormalize --repeats 1 --out "$tmp/r2" > "$tmp/out2" 2>&1
-[ $? -eq 0 ] && grep -q "(renormalized normals, double, up z, E 1e-14)" "$tmp/out2" && ok || bad "double/--renormalize run: $(tail -2 "$tmp/out2")"
+[ $? -eq 0 ] && grep -q "(renormalized normals, double, up z, E 1e-14, speed from the reference run)" "$tmp/out2" && ok || bad "double/--renormalize run: $(tail -2 "$tmp/out2")"
 
 # bad input: exit 2, one line, no result file
 bad_input() { # name, expected word, args...

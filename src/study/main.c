@@ -17,7 +17,7 @@ static const struct {
 	{ "eval", cmd_eval, "one input: every method's outputs (hex) and every metric" },
 	{ "threshold", cmd_threshold, "Nelson Max's analysis of Frisvad's threshold t near -1" },
 	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
-	{ "scene", cmd_scene, "a scene's own normals (OBJ/PLY): every method, and the one to use" },
+	{ "scene", cmd_scene, "a scene's own normals (OBJ, PLY, glTF 2.0): every method, and the one to use" },
 	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },
 	{ "reproduce", cmd_reproduce, "each published figure (Frisvad 2012, Duff et al. 2017, Max 2017) beside a fresh measurement" },
 	{ "table", cmd_table, "the speed-accuracy trade table (bench.csv joined with a sweep's summary.csv)" },

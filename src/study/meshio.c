@@ -15,23 +15,18 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "meshio.h"
+#include "meshio_int.h"
 
 /* ------------------------------------------------------------------ */
 /* errors and growable arrays                                          */
 /* ------------------------------------------------------------------ */
 
-typedef struct {
-	char *err;
-	size_t errlen;
-	const char *name;
-} mctx;
+#define fail mio_fail
+#define xcalloc mio_calloc
+#define alloc_normals mio_alloc_normals
+#define compute_normals mio_compute_normals
 
-static int fail(mctx *c, const char *fmt, ...)
-#if defined(__GNUC__)
-	__attribute__((format(printf, 2, 3)))
-#endif
-	;
-static int fail(mctx *c, const char *fmt, ...)
+int mio_fail(mctx *c, const char *fmt, ...)
 {
 	va_list ap;
 	int w;
@@ -83,7 +78,7 @@ static int gvec_push(gvec *v, const void *e)
 }
 
 /* calloc with an overflow-checked product. */
-static void *xcalloc(size_t n, size_t sz)
+void *mio_calloc(size_t n, size_t sz)
 {
 	if (n == 0)
 		n = 1;
@@ -100,7 +95,7 @@ void mesh_free(mesh_normals *m)
 	memset(m, 0, sizeof *m);
 }
 
-static int alloc_normals(mesh_normals *m, size_t n)
+int mio_alloc_normals(mesh_normals *m, size_t n)
 {
 	m->x = xcalloc(n, sizeof *m->x);
 	m->y = xcalloc(n, sizeof *m->y);
@@ -207,15 +202,13 @@ static const char *tok_show(const unsigned char *t, size_t tl, char *buf, size_t
 /* area-weighted vertex normals                                        */
 /* ------------------------------------------------------------------ */
 
-typedef struct { size_t first, count; uint64_t where; } face_rec;
-
 /* pos: 3*nv doubles; corners: vertex indices (validated); faces: spans.
    Each polygon's area vector (sum of its fan triangles' cross products,
    twice its area times its unit normal when planar) is added to each of
    its vertices; the sums are normalized in long double. */
-static int compute_normals(mctx *c, mesh_normals *m, const double *pos, size_t nv,
-                           const uint64_t *vwhere, const uint32_t *corners,
-                           const face_rec *faces, size_t nf)
+int mio_compute_normals(mctx *c, mesh_normals *m, const double *pos, size_t nv,
+                        const uint64_t *vwhere, const uint32_t *corners,
+                        const face_rec *faces, size_t nf)
 {
 	long double *acc = xcalloc(nv, 3 * sizeof *acc);
 	unsigned char *used = xcalloc(nv, 1);
@@ -336,8 +329,40 @@ static int obj_geom(mctx *c, const mesh_normals *m, const gvec *pos, const gvec 
 	return 0;
 }
 
+/* 1 when some line ends in a backslash (then \n or \r\n). */
+static int obj_continuations(const unsigned char *buf, size_t len)
+{
+	size_t i;
+	for (i = 0; i + 1 < len; i++)
+		if (buf[i] == '\\' && (buf[i + 1] == '\n' || (buf[i + 1] == '\r' && i + 2 < len && buf[i + 2] == '\n')))
+			return 1;
+	return 0;
+}
+
+static unsigned char *obj_join(const unsigned char *buf, size_t len)
+{
+	unsigned char *j = malloc(len ? len : 1);
+	size_t i;
+	if (!j)
+		return NULL;
+	memcpy(j, buf, len);
+	for (i = 0; i + 1 < len; i++)
+		if (j[i] == '\\') {
+			size_t k = i + 1;
+			if (j[k] == '\r' && k + 1 < len && j[k + 1] == '\n')
+				j[k++] = ' ';
+			if (j[k] == '\n') {
+				j[i] = ' ';
+				j[k] = '\v';
+			}
+		}
+	return j;
+}
+
 static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
 {
+	unsigned char *joined = NULL;
+	uint64_t pending = 0;
 	gvec pos, vwhere, vn, vnwhere, corners, cnorm, faces;
 	const unsigned char *p = buf, *end = buf + len;
 	uint64_t line = 0;
@@ -355,11 +380,33 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 	}
 	if (len >= 3 && buf[0] == 0xef && buf[1] == 0xbb && buf[2] == 0xbf)
 		p += 3; /* UTF-8 byte-order mark */
+	/* line continuation: a backslash at the end of a line (before \n or
+	   \r\n) joins the next line.  A copy of the same length has each such
+	   backslash and newline turned into blanks (\v for the newline, so a
+	   line still ends only at a real \n); line numbers count the newlines
+	   of the original. */
+	if (obj_continuations(buf, len)) {
+		joined = obj_join(buf, len);
+		if (!joined) {
+			fail(c, "out of memory");
+			goto out;
+		}
+		p = joined + (p - buf);
+		end = joined + len;
+	}
 	while (p < end) {
 		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
 		const unsigned char *le = eol ? eol : end, *hash, *q, *t;
 		size_t tl;
-		line++;
+		line += 1 + pending; /* the first physical line of this logical one */
+		pending = 0;
+		if (joined) { /* the newlines joined into it */
+			const unsigned char *o = buf + (p - joined), *oe = buf + (le - joined), *hit;
+			while ((hit = memchr(o, '\n', (size_t)(oe - o))) != NULL) {
+				pending++;
+				o = hit + 1;
+			}
+		}
 		hash = memchr(p, '#', (size_t)(le - p));
 		if (hash)
 			le = hash;
@@ -485,13 +532,14 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 		m->stored_type = MESH_T_TEXT;
 	} else {
 		fail(c, "no normals: no 'vn' lines and no faces to compute them from (%llu lines, %zu vertices)",
-		     (unsigned long long)line, pos.n);
+		     (unsigned long long)(line + pending), pos.n);
 	}
 	if (rc == 0 && geom)
 		rc = obj_geom(c, m, &pos, &vn, &corners, &cnorm, &faces, geom);
 out:
 	gvec_free(&pos); gvec_free(&vwhere); gvec_free(&vn); gvec_free(&vnwhere);
 	gvec_free(&corners); gvec_free(&cnorm); gvec_free(&faces);
+	free(joined);
 	return rc;
 }
 
@@ -614,7 +662,53 @@ static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long 
 	}
 }
 
-static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m)
+/* A renderer's view of a PLY mesh: positions, fan-triangulated faces, and
+   per-vertex normals (the vertex element's own, or the computed ones);
+   normals of another element (per face) are not used for shading. */
+static int ply_geom(mctx *c, const mesh_normals *m, const double *pos, size_t nv, const ply_elem *el, int vert_e,
+                    const gvec *corners, const gvec *faces, mesh_geom *g)
+{
+	const face_rec *fr = faces->p;
+	const uint32_t *cv = corners->p;
+	size_t f, i, t = 0, off = 0;
+	int j, pervertex = m->origin == MESH_COMPUTED || (el[vert_e].inx >= 0 && el[vert_e].iny >= 0 && el[vert_e].inz >= 0);
+	for (f = 0; f < faces->n; f++)
+		t += fr[f].count - 2;
+	if (t == 0)
+		return fail(c, "no geometry: no face has 3 or more vertices");
+	g->nverts = nv;
+	g->nnormals = pervertex ? nv : 0;
+	g->ntris = t;
+	g->pos = xcalloc(nv, 3 * sizeof *g->pos);
+	g->nrm = xcalloc(nv, 3 * sizeof *g->nrm);
+	g->tri = xcalloc(t, 3 * sizeof *g->tri);
+	g->tri_n = xcalloc(t, 3 * sizeof *g->tri_n);
+	g->tri_line = xcalloc(t, sizeof *g->tri_line);
+	if (!g->pos || !g->nrm || !g->tri || !g->tri_n || !g->tri_line)
+		return fail(c, "out of memory for the geometry (%zu vertices, %zu triangles)", nv, t);
+	memcpy(g->pos, pos, nv * 3 * sizeof *pos);
+	for (j = 0; j < vert_e && m->origin == MESH_STORED; j++)
+		if (el[j].inx >= 0 && el[j].iny >= 0 && el[j].inz >= 0)
+			off += (size_t)el[j].count;
+	if (pervertex)
+		for (i = 0; i < m->count; i++) {
+			size_t v = m->origin == MESH_COMPUTED ? m->index[i] : i - off;
+			if (m->origin == MESH_STORED && (i < off || i - off >= nv))
+				continue;
+			g->nrm[3 * v] = m->x[i]; g->nrm[3 * v + 1] = m->y[i]; g->nrm[3 * v + 2] = m->z[i];
+		}
+	for (f = 0, t = 0; f < faces->n; f++)
+		for (i = 1; i + 1 < fr[f].count; i++, t++) {
+			size_t a = fr[f].first, k;
+			g->tri[3 * t] = cv[a]; g->tri[3 * t + 1] = cv[a + i]; g->tri[3 * t + 2] = cv[a + i + 1];
+			for (k = 0; k < 3; k++)
+				g->tri_n[3 * t + k] = pervertex ? g->tri[3 * t + k] : MESH_NO_NORMAL;
+			g->tri_line[t] = fr[f].where;
+		}
+	return 0;
+}
+
+static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
 {
 	ply_elem *el = NULL;
 	int ne = 0, i, normal_elems = 0, rc = -1;
@@ -734,12 +828,13 @@ static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 				if (!strcmp(pr.name, "x")) slot = &e->ix;
 				else if (!strcmp(pr.name, "y")) slot = &e->iy;
 				else if (!strcmp(pr.name, "z")) slot = &e->iz;
-				else if (!strcmp(pr.name, "nx")) slot = &e->inx;
-				else if (!strcmp(pr.name, "ny")) slot = &e->iny;
-				else if (!strcmp(pr.name, "nz")) slot = &e->inz;
+				/* normal_x ...: the PCL and Open3D names */
+				else if (!strcmp(pr.name, "nx") || !strcmp(pr.name, "normal_x")) slot = &e->inx;
+				else if (!strcmp(pr.name, "ny") || !strcmp(pr.name, "normal_y")) slot = &e->iny;
+				else if (!strcmp(pr.name, "nz") || !strcmp(pr.name, "normal_z")) slot = &e->inz;
 				if (slot) {
 					if (*slot >= 0) {
-						fail(c, "byte %llu (line %llu): property '%s' twice in element '%s'", lo, (unsigned long long)line, pr.name, e->name);
+						fail(c, "byte %llu (line %llu): property '%s' twice in element '%s' (nx and normal_x name the same)", lo, (unsigned long long)line, pr.name, e->name);
 						goto out;
 					}
 					*slot = e->nprop;
@@ -829,17 +924,11 @@ badprop:
 	m->nvertices = (size_t)nvert;
 	if (compute) {
 		if (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0) {
-			fail(c, "no normals: no element has nx, ny, nz, and there is no 'vertex' element with x, y, z and 'face' element with vertex_indices to compute them from");
+			fail(c, "no normals: no element has nx, ny, nz (or normal_x, normal_y, normal_z), and there is no 'vertex' element with x, y, z and 'face' element with vertex_indices to compute them from");
 			goto out;
 		}
 		if (nvert > MESH_MAX_ITEMS) {
 			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
-			goto out;
-		}
-		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
-		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
-		if (!pos || !vwhere) {
-			fail(c, "out of memory for %llu vertices", nvert);
 			goto out;
 		}
 	} else {
@@ -870,6 +959,24 @@ badprop:
 		m->origin = MESH_STORED;
 	}
 
+	/* positions and faces: for computed normals, and for a renderer */
+	if (compute || geom) {
+		if (geom && (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0)) {
+			fail(c, "no geometry: no 'vertex' element with x, y, z and 'face' element with vertex_indices");
+			goto out;
+		}
+		if (nvert > MESH_MAX_ITEMS) {
+			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
+			goto out;
+		}
+		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
+		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
+		if (!pos || !vwhere) {
+			fail(c, "out of memory for %llu vertices", nvert);
+			goto out;
+		}
+	}
+
 	/* body */
 	r.c = c; r.buf = buf; r.p = p; r.end = end; r.fmt = fmt; r.line = line + 1;
 	{
@@ -877,7 +984,7 @@ badprop:
 		for (i = 0; i < ne; i++) {
 			ply_elem *e = &el[i];
 			int isn = e->inx >= 0 && e->iny >= 0 && e->inz >= 0;
-			int isv = compute && i == vert_e, isf = compute && i == face_e;
+			int isv = (compute || geom) && i == vert_e, isf = (compute || geom) && i == face_e;
 			unsigned long long ei;
 			for (ei = 0; ei < e->count; ei++) {
 				unsigned long long at;
@@ -970,9 +1077,9 @@ badprop:
 				goto out;
 			}
 		} else if (r.p < r.end) {
-			fail(c, "byte %llu: %llu bytes after the last element (the header's counts are wrong?)",
-			     off(&r), (unsigned long long)(r.end - r.p));
-			goto out;
+			/* assimp and others read such files: a warning, not an error */
+			snprintf(m->warning, sizeof m->warning, "byte %llu: %llu bytes after the last element ignored (the header's counts are wrong?)",
+			         off(&r), (unsigned long long)(r.end - r.p));
 		}
 	}
 	if (face_e >= 0)
@@ -988,6 +1095,8 @@ badprop:
 		m->stored_type = MESH_T_DOUBLE;
 		snprintf(m->element, sizeof m->element, "vertex");
 	}
+	if (geom && ply_geom(c, m, pos, (size_t)nvert, el, vert_e, &corners, &faces, geom) != 0)
+		goto out;
 	rc = 0;
 out:
 	if (rc != 0)
@@ -1019,73 +1128,155 @@ static int has_ext(const char *name, const char *ext)
 	return 1;
 }
 
+/* The format from the first bytes (see meshio.h).  Returns MESH_OBJ,
+   MESH_PLY or MESH_GLTF, or 0 with *what naming a format that is not read. */
+static int detect(const char *name, const unsigned char *b, size_t n, const char **what)
+{
+	size_t i, k, nul = 0, ctl = 0, look = n < 4096 ? n : 4096;
+	*what = NULL;
+	if (n >= 4 && !memcmp(b, "ply", 3) && (b[3] == '\n' || b[3] == '\r'))
+		return MESH_PLY;
+	if (n >= 4 && !memcmp(b, "glTF", 4))
+		return MESH_GLTF;
+	for (i = 0; i < look && is_space(b[i]); i++)
+		;
+	if (i < look && b[i] == '{')
+		return MESH_GLTF;
+	if (n >= 2 && ((b[0] == 0xfe && b[1] == 0xff) || (b[0] == 0xff && b[1] == 0xfe)))
+		return MESH_OBJ; /* UTF-16 text: the OBJ reader says so */
+	if (n >= 4 && !memcmp(b, "\x7f" "ELF", 4)) { *what = "an ELF executable or library"; return 0; }
+	if (n >= 18 && !memcmp(b, "Kaydara FBX Binary", 18)) { *what = "FBX (binary)"; return 0; }
+	if (n >= 84) {
+		uint32_t cnt = (uint32_t)b[80] | (uint32_t)b[81] << 8 | (uint32_t)b[82] << 16 | (uint32_t)b[83] << 24;
+		if ((uint64_t)n == 84 + 50 * (uint64_t)cnt) { *what = "STL (binary)"; return 0; }
+	}
+	if (n >= 6 && b[0] == 0x4d && b[1] == 0x4d) {
+		uint32_t l = (uint32_t)b[2] | (uint32_t)b[3] << 8 | (uint32_t)b[4] << 16 | (uint32_t)b[5] << 24;
+		if (l == n) { *what = "3DS (Autodesk 3D Studio)"; return 0; }
+	}
+	for (k = 0; k < look; k++) {
+		nul += b[k] == 0;
+		ctl += b[k] < 0x20 && !is_space(b[k]) && b[k] != 0x1a;
+	}
+	if (look - i >= 5 && !memcmp(b + i, "solid", 5) && (look - i == 5 || is_space(b[i + 5])) && !nul) {
+		*what = "STL (ascii)";
+		return 0;
+	}
+	if (look - i >= 5 && !memcmp(b + i, "<?xml", 5)) {
+		*what = "XML";
+		for (k = i; k + 7 <= look; k++)
+			if (!memcmp(b + k, "COLLADA", 7)) {
+				*what = "Collada (.dae)";
+				break;
+			}
+		return 0;
+	}
+	if (look - i >= 5 && (!memcmp(b + i, "; FBX", 5) || !memcmp(b + i, "FBXHe", 5))) { *what = "FBX (ascii)"; return 0; }
+	if (nul || ctl * 20 > look) { *what = "binary data of an unknown format"; return 0; }
+	if (has_ext(name, ".ply"))
+		return MESH_PLY;  /* its reader says what is wrong */
+	if (has_ext(name, ".gltf") || has_ext(name, ".glb"))
+		return MESH_GLTF;
+	return MESH_OBJ;
+}
+
+static const char *ext_mismatch(const char *name, int fmt)
+{
+	static const struct { const char *ext; int fmt; } ex[] = {
+		{ ".obj", MESH_OBJ }, { ".ply", MESH_PLY }, { ".gltf", MESH_GLTF }, { ".glb", MESH_GLTF } };
+	size_t i;
+	for (i = 0; i < sizeof ex / sizeof ex[0]; i++)
+		if (has_ext(name, ex[i].ext))
+			return ex[i].fmt == fmt ? NULL : ex[i].ext;
+	return NULL;
+}
+
 int mesh_read_mem(const char *name, const unsigned char *buf, size_t len,
                   mesh_normals *out, char *err, size_t errlen)
 {
-	return mesh_read_geom_mem(name, buf, len, out, NULL, err, errlen);
+	return mesh_read_mem_opts(name, buf, len, NULL, out, NULL, err, errlen);
 }
 
 int mesh_read_geom_mem(const char *name, const unsigned char *buf, size_t len,
                        mesh_normals *out, mesh_geom *geom, char *err, size_t errlen)
 {
-	mctx c;
-	int rc, ply;
-	c.err = err; c.errlen = errlen; c.name = name;
-	if (err && errlen)
-		err[0] = '\0';
+	return mesh_read_mem_opts(name, buf, len, NULL, out, geom, err, errlen);
+}
+
+static int read_mem(mctx *c, const unsigned char *buf, size_t len, const mesh_opts *o,
+                    mesh_normals *out, mesh_geom *geom)
+{
+	static const mesh_opts defaults;
+	const char *what, *bad;
+	int rc, fmt;
 	memset(out, 0, sizeof *out);
 	if (geom)
 		memset(geom, 0, sizeof *geom);
 	if (!buf && len)
-		return fail(&c, "no data");
+		return fail(c, "no data");
 	if (len == 0)
-		return fail(&c, "empty file");
-	if (has_ext(name, ".ply"))
-		ply = 1;
-	else if (has_ext(name, ".obj"))
-		ply = 0;
-	else
-		ply = len >= 4 && memcmp(buf, "ply", 3) == 0 && (buf[3] == '\n' || buf[3] == '\r');
-	if (ply && geom)
-		return fail(&c, "geometry is read from OBJ files only, and this is a PLY file");
-	rc = ply ? read_ply(&c, buf, len, out) : read_obj(&c, buf, len, out, geom);
+		return fail(c, "empty file");
+	fmt = detect(c->name, buf, len, &what);
+	if (!fmt)
+		return fail(c, "%s, which is not read here; supported: OBJ, PLY, glTF 2.0 (.gltf, .glb)", what);
+	rc = fmt == MESH_PLY ? read_ply(c, buf, len, out, geom) : fmt == MESH_GLTF ? mio_read_gltf(c, buf, len, o ? o : &defaults, out, geom)
+	     : read_obj(c, buf, len, out, geom);
 	if (rc != 0) {
 		mesh_free(out);
 		mesh_geom_free(geom);
+		return rc;
 	}
-	return rc;
+	if ((bad = ext_mismatch(c->name, fmt)) != NULL) {
+		size_t l = strlen(out->warning);
+		snprintf(out->warning + l, sizeof out->warning - l, "%sthe name ends in %s, but the content is %s", l ? "; " : "", bad,
+		         fmt == MESH_PLY ? "PLY" : fmt == MESH_GLTF ? "glTF" : "OBJ");
+	}
+	return 0;
+}
+
+int mesh_read_mem_opts(const char *name, const unsigned char *buf, size_t len, const mesh_opts *o,
+                       mesh_normals *out, mesh_geom *geom, char *err, size_t errlen)
+{
+	mctx c;
+	c.err = err; c.errlen = errlen; c.name = name; c.dir = NULL;
+	if (err && errlen)
+		err[0] = '\0';
+	return read_mem(&c, buf, len, o, out, geom);
 }
 
 int mesh_read_file(const char *path, mesh_normals *out, char *err, size_t errlen)
 {
-	return mesh_read_geom_file(path, out, NULL, err, errlen);
+	return mesh_read_file_opts(path, NULL, out, NULL, err, errlen);
 }
 
 int mesh_read_geom_file(const char *path, mesh_normals *out, mesh_geom *geom, char *err, size_t errlen)
 {
-	mctx c;
+	return mesh_read_file_opts(path, NULL, out, geom, err, errlen);
+}
+
+int mio_slurp(mctx *c, const char *path, unsigned char **out, size_t *outlen)
+{
 	FILE *f;
 	unsigned char *buf = NULL;
 	size_t len = 0, cap = 0;
-	int rc;
-	c.err = err; c.errlen = errlen; c.name = path;
-	memset(out, 0, sizeof *out);
-	if (geom)
-		memset(geom, 0, sizeof *geom);
+	/* the file itself is named once, by the error prefix */
+	const char *w = path == c->name ? "" : path, *sep = path == c->name ? "" : ": ";
+	*out = NULL;
+	*outlen = 0;
 	f = fopen(path, "rb");
 	if (!f)
-		return fail(&c, "cannot open: %s", strerror(errno));
+		return fail(c, "cannot open%s%s: %s", *w ? " " : "", w, strerror(errno));
 	{	/* a directory, or a regular file known to be too large, is refused
 		   before anything is read or allocated */
 		struct stat st;
 		if (fstat(fileno(f), &st) == 0) {
 			if (S_ISDIR(st.st_mode)) {
 				fclose(f);
-				return fail(&c, "is a directory, not an OBJ or PLY file");
+				return fail(c, "%s%sis a directory, not a mesh file", w, *w ? " " : "");
 			}
 			if (S_ISREG(st.st_mode) && (uintmax_t)st.st_size > (uintmax_t)MESH_MAX_FILE) {
 				fclose(f);
-				return fail(&c, "file larger than %zu bytes", MESH_MAX_FILE);
+				return fail(c, "%s%sfile larger than %zu bytes", w, sep, MESH_MAX_FILE);
 			}
 		}
 	}
@@ -1097,13 +1288,13 @@ int mesh_read_geom_file(const char *path, mesh_normals *out, mesh_geom *geom, ch
 			if (cap >= MESH_MAX_FILE) {
 				free(buf);
 				fclose(f);
-				return fail(&c, "file larger than %zu bytes", MESH_MAX_FILE);
+				return fail(c, "%s%sfile larger than %zu bytes", w, sep, MESH_MAX_FILE);
 			}
 			q = realloc(buf, nc);
 			if (!q) {
 				free(buf);
 				fclose(f);
-				return fail(&c, "out of memory reading the file");
+				return fail(c, "out of memory reading %s", *w ? w : "the file");
 			}
 			buf = q;
 			cap = nc;
@@ -1116,10 +1307,38 @@ int mesh_read_geom_file(const char *path, mesh_normals *out, mesh_geom *geom, ch
 	if (ferror(f)) {
 		free(buf);
 		fclose(f);
-		return fail(&c, "read error");
+		return fail(c, "read error%s%s", sep, w);
 	}
 	fclose(f);
-	rc = mesh_read_geom_mem(path, buf, len, out, geom, err, errlen);
+	*out = buf;
+	*outlen = len;
+	return 0;
+}
+
+int mesh_read_file_opts(const char *path, const mesh_opts *o, mesh_normals *out, mesh_geom *geom,
+                        char *err, size_t errlen)
+{
+	mctx c;
+	unsigned char *buf;
+	size_t len;
+	char dir[4096];
+	const char *s = strrchr(path, '/');
+	int rc;
+	c.err = err; c.errlen = errlen; c.name = path; c.dir = dir;
+	if (err && errlen)
+		err[0] = '\0';
+	memset(out, 0, sizeof *out);
+	if (geom)
+		memset(geom, 0, sizeof *geom);
+	if (!s)
+		snprintf(dir, sizeof dir, ".");
+	else if ((size_t)(s - path) < sizeof dir)
+		snprintf(dir, sizeof dir, "%.*s", (int)(s == path ? 1 : s - path), path);
+	else
+		return fail(&c, "path too long");
+	if (mio_slurp(&c, path, &buf, &len) != 0)
+		return -1;
+	rc = read_mem(&c, buf, len, o, out, geom);
 	free(buf);
 	return rc;
 }
@@ -1191,6 +1410,10 @@ void mesh_where(const mesh_normals *m, size_t i, char *buf, size_t n)
 	if (m->format == MESH_OBJ)
 		snprintf(buf, n, "line %llu%s", (unsigned long long)m->where[i],
 		         m->origin == MESH_COMPUTED ? " (the 'v' of a vertex with a computed normal)" : "");
+	else if (m->format == MESH_GLTF)
+		snprintf(buf, n, "%s %llu primitive %llu vertex %llu", m->world ? "node" : "mesh",
+		         (unsigned long long)(m->where[i] >> 40), (unsigned long long)((m->where[i] >> 32) & 0xff),
+		         (unsigned long long)(m->where[i] & 0xffffffffu));
 	else
 		snprintf(buf, n, "%s %zu at byte %llu", m->element[0] ? m->element : "element", m->index[i],
 		         (unsigned long long)m->where[i]);

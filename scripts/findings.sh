@@ -17,6 +17,14 @@
 #   {{MUT key}}  a 'key: value' line of mutation.txt (scripts/mutate.sh)
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
 #   {{TABLE tradeoff}}              the speed-accuracy table
+#   Optional values (issue 16: "n/a" when the reference run predates them,
+#   instead of failing): {{SO method precision distribution column}},
+#   {{XO method precision column}}, ratios {{SR method precision
+#   distribution column1 column2}} (column1 / column2 of one summary.csv
+#   row) and {{XR method1 method2 precision column}} (method1's tradeoff.csv
+#   value / method2's); {{TABLE floor precision}} (each method against the
+#   accuracy floor on uniform) and {{TABLE floordist precision}} (the floor
+#   and the Duff methods per distribution).
 set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
 REF=${REF:-$HERE/../results/reference}
@@ -71,6 +79,46 @@ generate() {
 		}
 		close(f)
 		print "findings: no render " m " " field > "/dev/stderr"; bad = 1; return "?"
+	}
+	function SO(m, p, d, c,   k) {
+		k = m SUBSEP p SUBSEP d
+		return ((k, c) in SUM) ? fmt(SUM[k, c]) : "n/a"
+	}
+	function SR(m, p, d, c1, c2,   k) {
+		k = m SUBSEP p SUBSEP d
+		if (!((k, c1) in SUM) || !((k, c2) in SUM) || SUM[k, c1] ~ /nan/ || SUM[k, c2] ~ /nan/ || SUM[k, c2] + 0 == 0) return "n/a"
+		return sprintf("%.2f", SUM[k, c1] / SUM[k, c2])
+	}
+	function XO(m, p, c,   k) {
+		k = m SUBSEP p
+		return ((k, c) in TRD) ? fmt(TRD[k, c]) : "n/a"
+	}
+	function XR(m1, m2, p, c) {
+		if (!((m1 SUBSEP p, c) in TRD) || !((m2 SUBSEP p, c) in TRD) || TRD[m1 SUBSEP p, c] ~ /nan/ || TRD[m2 SUBSEP p, c] + 0 == 0) return "n/a"
+		return sprintf("%.2f", TRD[m1 SUBSEP p, c] / TRD[m2 SUBSEP p, c])
+	}
+	function table_floor(p,   out, i, m, k, n) {
+		out = "| method | max defect, uniform | floor max | x floor (max / max) | per-input ratio: RMS | per-input ratio: max | inputs at the floor | input of the largest ratio |\n|---|---:|---:|---:|---:|---:|---:|---|\n"
+		n = 0
+		for (i = 1; i <= nmeth; i++) {
+			m = meth[i]; k = m SUBSEP p SUBSEP "uniform"
+			if (!((k, "max_floor") in SUM) || SUM[k, "max_floor"] ~ /nan/) continue
+			out = out "| `" m "` | " fmt(SUM[k, "max_defect"]) " | " fmt(SUM[k, "max_floor"]) " | " SR(m, p, "uniform", "max_defect", "max_floor") " | " fmt(SUM[k, "rms_floor_ratio"]) " | " fmt(SUM[k, "max_floor_ratio"]) " | " sprintf("%.1f%%", 100 * SUM[k, "at_floor"]) " | (" SUM[k, "floor_ratio_nx"] ", " SUM[k, "floor_ratio_ny"] ", " SUM[k, "floor_ratio_nz"] ") |\n"
+			n++
+		}
+		return n ? out : "(The reference run predates the floor: regenerate it with `sh scripts/reference-run.sh`.)\n"
+	}
+	function table_floordist(p,   out, dl, nd, i, d, n, k) {
+		nd = split("uniform north south exhaustive threshold nonunit grid", dl, " ")
+		out = "| distribution | floor max | floor RMS | `duff_branchless` max | `duff_wide` max | `duff_comp` max | `duff_wide` max / floor max |\n|---|---:|---:|---:|---:|---:|---:|\n"
+		n = 0
+		for (i = 1; i <= nd; i++) {
+			d = dl[i]; k = "duff_branchless" SUBSEP p SUBSEP d
+			if (!((k, "max_floor") in SUM) || SUM[k, "max_floor"] ~ /nan/) continue
+			out = out "| " d " | " fmt(SUM[k, "max_floor"]) " | " fmt(SUM[k, "rms_floor"]) " | " fmt(SUM[k, "max_defect"]) " | " SO("duff_wide", p, d, "max_defect") " | " SO("duff_comp", p, d, "max_defect") " | " SR("duff_wide", p, d, "max_defect", "max_floor") " |\n"
+			n++
+		}
+		return n ? out : "(The reference run predates the floor: regenerate it with `sh scripts/reference-run.sh`.)\n"
 	}
 	function PARETO(p,   i, m, out) {
 		out = ""
@@ -167,6 +215,12 @@ generate() {
 			tok = substr(line, rs + 2, rl - 4)
 			nt = split(tok, a, " ")
 			if (a[1] == "S" && nt == 5) rep = S(a[2], a[3], a[4], a[5])
+			else if (a[1] == "SO" && nt == 5) rep = SO(a[2], a[3], a[4], a[5])
+			else if (a[1] == "SR" && nt == 6) rep = SR(a[2], a[3], a[4], a[5], a[6])
+			else if (a[1] == "XO" && nt == 4) rep = XO(a[2], a[3], a[4])
+			else if (a[1] == "XR" && nt == 5) rep = XR(a[2], a[3], a[4], a[5])
+			else if (a[1] == "TABLE" && a[2] == "floor") rep = table_floor(a[3])
+			else if (a[1] == "TABLE" && a[2] == "floordist") rep = table_floordist(a[3])
 			else if (a[1] == "X" && nt == 4) rep = X(a[2], a[3], a[4])
 			else if (a[1] == "F" && nt == 5) rep = F(a[2], a[3], a[4], a[5])
 			else if (a[1] == "PARETO" && nt == 2) rep = PARETO(a[2])

@@ -783,6 +783,22 @@ static int object_space(const scene_opts *o, const onb_method *ms, size_t nm, co
 	return 0;
 }
 
+/* The registry's methods that have code in this precision: in double, the
+   float-only ones (ONB_FLOAT_ONLY) are left out. */
+static const onb_method *methods_for(int fl, size_t *nm)
+{
+	static onb_method dbl_ms[128];
+	const onb_method *ms = onb_methods(nm);
+	size_t i, j = 0;
+	if (fl)
+		return ms;
+	for (i = 0; i < *nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
+		if (ms[i].basis && ms[i].batch)
+			dbl_ms[j++] = ms[i];
+	*nm = j;
+	return dbl_ms;
+}
+
 int cmd_scene(int argc, char **argv)
 {
 	scene_opts o;
@@ -794,7 +810,7 @@ int cmd_scene(int argc, char **argv)
 	scene_eval e, obj;
 	char err[512], rundir[256];
 	size_t nm, i;
-	const onb_method *ms = onb_methods(&nm);
+	const onb_method *ms;
 	const speed_row **sp = NULL;
 	double *udef = NULL;
 	int rc = ONB_EXIT_USAGE, v;
@@ -808,15 +824,7 @@ int cmd_scene(int argc, char **argv)
 	if (!o.tol_given)
 		o.tol = o.fl ? 1e-6 : 1e-14;
 	o.other = o.up == 'z' ? 'y' : 'z';
-	if (!o.fl) { /* the float-only methods (ONB_FLOAT_ONLY) have no double code */
-		static onb_method dbl_ms[128];
-		size_t j = 0;
-		for (i = 0; i < nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
-			if (ms[i].basis && ms[i].batch)
-				dbl_ms[j++] = ms[i];
-		ms = dbl_ms;
-		nm = j;
-	}
+	ms = methods_for(o.fl, &nm);
 	if (!o.file)
 		return refresh_only(&o);
 	memset(&mo, 0, sizeof mo);

@@ -9,7 +9,8 @@
 #   col: the data column to plot (x is column 1); logx: 0 or 1
 #   floor, ceil: where zero and non-finite values are drawn (noted in the title)
 #   xmin, xmax, ymin, ymax: the ranges (plots.sh takes them from the data)
-#   optional zero_x: where the n.z = -1 bin is drawn (an x tic "-1")
+#   optional zero_x: where the n.z = -1 bin is drawn (an x tic "-z", or
+#     zero_label: "+z" at the north pole)
 #   optional ref_file, ref_title: a reference series (x y) drawn grey in
 #     every panel, under the methods; with ref_band=1 the file holds
 #     x lo hi and is drawn as a grey band (the accuracy floor, issue 16)
@@ -18,7 +19,7 @@ set logscale y
 if (logx) set logscale x; set format x "10^{%L}"
 set format y "10^{%L}"
 set xrange [xmin:xmax]
-if (exists("zero_x")) set xtics add ("-z" zero_x)
+if (exists("zero_x")) set xtics add ((exists("zero_label") ? zero_label : "-z") zero_x)
 set yrange [ymin:ymax]
 set grid lc rgb "#dddddd"
 set key outside right top Left reverse font ",9" spacing 1.0 samplen 2 width 0

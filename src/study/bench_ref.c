@@ -86,8 +86,22 @@ static unsigned long long br_pass(const br_input *in, int m, const study_kernel 
 	return ev;
 }
 
+/* The first three fields of /proc/loadavg, or "unknown". */
+static void br_load(char *buf, size_t n)
+{
+	FILE *f = fopen("/proc/loadavg", "r");
+	double a = 0, b = 0, c = 0;
+	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
+		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
+	else
+		snprintf(buf, n, "unknown");
+	if (f)
+		fclose(f);
+}
+
 int bench_reference(const char *out, int quick, unsigned long long seed)
 {
+	char load0[64], load1[64];
 	static study_kernel ks[BR_MAX_KERNELS];
 	static br_input in[BR_MAX_INPUTS];
 	const int per = quick ? 64 : 1024, reps = quick ? 3 : 7;
@@ -110,6 +124,7 @@ int bench_reference(const char *out, int quick, unsigned long long seed)
 		study_error("bench --reference: %s", why);
 		return 1;
 	}
+	br_load(load0, sizeof load0);
 	for (p = 0; p < 2; p++) {
 		const int m = br_inputs(p, seed, per, in);
 		if (m < 0)
@@ -135,11 +150,14 @@ int bench_reference(const char *out, int quick, unsigned long long seed)
 			}
 		}
 	}
+	br_load(load1, sizeof load1);
 	ref_free(rc);
 	reffast_free(fc);
 	if (study_out_open(&f, out, "bench-reference.csv") != 0)
 		return 1;
 	study_provenance(f.f, "bench --reference", seed, 1);
+	fprintf(f.f, "# load average (1, 5, 15 min): %s at the start, %s at the end (2 cores; above 1 other processes shared this core)\n",
+	        load0, load1);
 	fprintf(f.f, "# referenced evaluations per second on one core, median of %d passes (alternating fast and mpfr, after one untimed pass of each) over every method on %d inputs of each "
 	        "distribution of the default sweep (default sizes); fast: reffast.c with MPFR where it cannot decide; mpfr: MPFR alone "
 	        "(127 bits); not timed: a sweep's MPFR refill of ref[] for kept worst rows, its 1-in-509 cross-check, its accumulators\n",

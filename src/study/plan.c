@@ -9,6 +9,7 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+#include "reffast.h"
 #include "plan.h"
 #include "study.h"
 
@@ -42,9 +43,10 @@ void plan_usage(FILE *f)
 	"  --ref-bits B          MPFR precision of the reference (default 127, the widest with\n"
 	"                        MPFR's two-limb fast paths; re-checked at B+64)\n"
 	"  --check-every K       re-evaluate every K-th input at B+64 bits (default 509)\n"
-	"  --ref R               mpfr (default): MPFR alone; fast: a certified double-long-double\n"
-	"                        reference that writes the same bytes and asks MPFR where it\n"
-	"                        cannot decide (fallback rates in reference.csv)\n"
+	"  --ref R               fast (default): a certified reference in pairs of doubles or\n"
+	"                        long doubles that writes MPFR's bytes and asks MPFR where it\n"
+	"                        cannot decide (fallback rates in reference.csv); mpfr: MPFR\n"
+	"                        alone (the same data)\n"
 	"  --fma                 also run a copy of the kernels built with -mfma -ffp-contract=fast\n"
 	"  --shard K/N           run slice K of N, 0-based (0 <= K < N), and save\n"
 	"                        sweep-state-K-of-N.bin for 'merge'; with Slurm job arrays:\n"
@@ -66,7 +68,6 @@ static void plan_defaults(sweep_plan *pl)
 	cfg->seed = 1; cfg->samples = 32768; cfg->ex_from = -1.0; cfg->ex_values = 65536;
 	cfg->ex_azimuths = 4; cfg->grid_rows = 24; cfg->grid_cols = 48; cfg->ref_bits = 127;
 	cfg->check_every = 509; cfg->shard_k = 0; cfg->shard_n = 1;
-	cfg->ref_mpfr = 1; /* --ref fast is opt-in until it is faster (issue 14 notes) */
 	cfg->prec_on[0] = cfg->prec_on[1] = 1;
 	for (d = 0; d < NDIST; d++)
 		cfg->dist_on[d] = 1;
@@ -128,6 +129,7 @@ static int plan_option(sweep_plan *pl, int v, const char *a)
 	case O_REFBITS: if (parse_int("--ref-bits", a, 64, 4096, &l)) return -1; cfg->ref_bits = (int)l; return 0;
 	case O_CHECK: if (parse_int("--check-every", a, 1, 1000000000, &l)) return -1; cfg->check_every = (int)l; return 0;
 	case O_REF:
+		pl->ref_given = 1;
 		if (!strcmp(a, "fast")) cfg->ref_mpfr = 0;
 		else if (!strcmp(a, "mpfr")) cfg->ref_mpfr = 1;
 		else { study_error("--ref: expected fast or mpfr, not '%s'", a); return -1; }
@@ -295,6 +297,15 @@ int plan_build(sweep_plan *pl)
 	int p, d;
 	if (plan_kernels(pl) != 0)
 		return ONB_EXIT_USAGE;
+	if (!cfg->ref_mpfr) {
+		const char *why;
+		if (!reffast_usable(cfg->ref_bits, &why)) {
+			/* said when --ref fast was asked for; the default falls back quietly */
+			if (pl->ref_given)
+				fprintf(stderr, "onbstudy: %s: the reference is MPFR only (as --ref mpfr)\n", why);
+			cfg->ref_mpfr = 1;
+		}
+	}
 	pl->threads = pl->threads ? pl->threads : plan_all_cores();
 	if (!pl->out_given)
 		study_default_run_dir(pl->out, sizeof pl->out);

@@ -29,6 +29,7 @@ typedef struct {
 	/* how to run it (changes no byte of the data) */
 	int threads;                   /* resolved: never 0 */
 	int quiet, plots, dry_run;
+	int ref_given;                 /* --ref given (else a silent fallback to MPFR) */
 	int fmt;                       /* 0 table, 1 csv, 2 json */
 	int out_given;                 /* --out given (else results/latest follows the run) */
 	char out[4096];

@@ -735,6 +735,26 @@ static void xduff(const xv *n, int s, int branchless, xv *r1, xv *r2, int *bad)
 	r2[2] = xneg(n[1]);
 }
 
+/* frisvad_rotate, Equation 3: the direction loc in Frisvad's basis of n
+   (r2 is scratch); at n.z = -1 exactly, (-y, -x, -z). */
+static void xrotate(const xv *n, const double loc[3], xv *r1, xv *r2, int *bad)
+{
+	xv u[3];
+	int i;
+	const xv t3 = xadd(n[2], xc(1.0), bad);
+	if (is_zero(t3)) {
+		xset3(r1, -loc[1], -loc[0], -loc[2]);
+		return;
+	}
+	xfrisvad(n, u, r2, bad);
+	if (*bad)
+		return;
+	for (i = 0; i < 3; i++) {
+		r1[i] = xadd(xmul(xc(loc[0]), u[i], bad), xmul(xc(loc[1]), r2[i], bad), bad);
+		r1[i] = xadd(r1[i], xmul(xc(loc[2]), n[i], bad), bad);
+	}
+}
+
 /* reference(): the exact formula of kernel k on n along branch br, into
    r1, r2 (or the rotated direction into r1 for frisvad_rotate). */
 static void xreference(const study_kernel *k, int br, const double loc[3], const double nd[3],
@@ -744,19 +764,8 @@ static void xreference(const study_kernel *k, int br, const double loc[3], const
 	const onb_method *m = k->m;
 	int i;
 	xset3(n, nd[0], nd[1], nd[2]);
-	if (!m) { /* frisvad_rotate, Equation 3 */
-		const xv t3 = xadd(n[2], xc(1.0), bad);
-		if (is_zero(t3)) {
-			xset3(r1, -loc[1], -loc[0], -loc[2]);
-			return;
-		}
-		xfrisvad(n, u, r2, bad);
-		if (*bad)
-			return;
-		for (i = 0; i < 3; i++) {
-			r1[i] = xadd(xmul(xc(loc[0]), u[i], bad), xmul(xc(loc[1]), r2[i], bad), bad);
-			r1[i] = xadd(r1[i], xmul(xc(loc[2]), n[i], bad), bad);
-		}
+	if (!m) {
+		xrotate(n, loc, r1, r2, bad);
 		return;
 	}
 	switch (k->family) {

@@ -17,7 +17,6 @@
 #include "engine.h"
 #include "sweep.h"
 #include "study.h"
-#include "reffast.h"
 
 static void on_signal(int sig) { (void)sig; engine_stop = 1; }
 
@@ -130,13 +129,6 @@ int cmd_sweep(int argc, char **argv)
 		return rc == 1 ? 0 : rc;
 	if ((rc = plan_build(&pl)) != 0)
 		return rc;
-	if (!pl.cfg.ref_mpfr) {
-		const char *why;
-		if (!reffast_usable(pl.cfg.ref_bits, &why)) {
-			fprintf(stderr, "onbstudy: %s: the reference is MPFR only (as --ref mpfr)\n", why);
-			pl.cfg.ref_mpfr = 1;
-		}
-	}
 	if (pl.dry_run)
 		return sweep_dry_run(&pl);
 	if (sweep_outdir(pl.out) != 0)

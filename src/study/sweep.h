@@ -79,7 +79,7 @@ typedef struct {
 	   with MPFR where it cannot decide, 1 MPFR only (--ref mpfr); per
 	   precision and kernel, the evaluations, those that fell back to MPFR,
 	   and those whose ref[] MPFR filled in for the worst rows */
-	int ref_mpfr;                 /* default 1 (plan.c) */
+	int ref_mpfr;
 	uint64_t ref_evals[2][SWEEP_MAX_KERNELS], ref_fallback[2][SWEEP_MAX_KERNELS], ref_worst[2][SWEEP_MAX_KERNELS];
 } sweep_cfg;
 

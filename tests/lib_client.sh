@@ -87,7 +87,12 @@ if [ "$fma" -eq 1 ]; then
 	build inl_follow -std=gnu11 -O3 -ffp-contract=fast -mfma -DONB_INLINE_FOLLOWS_CLIENT_FP -DMODE_REF &&
 	"$tmp/inl_follow" < "$tmp/in.txt" > "$tmp/inl_follow.txt"
 	nd=$(diff "$tmp/ref.txt" "$tmp/inl_follow.txt" | grep -c '^>')
-	echo "inline, -ffp-contract=fast -mfma, no pragmas: $nd of $lines results differ from the studied bits"
+	echo "inline, -ffp-contract=fast -mfma, no pragmas: $nd of $lines results differ from the studied bits; per method:"
+	paste -d '\n' "$tmp/ref.txt" "$tmp/inl_follow.txt" | awk '
+		NR % 2 == 1 { a = $0; next }
+		{ split(a, x, " "); k = x[1] " " x[2]; if (!(k in t)) o[++n] = k; t[k]++; if (a != $0) d[k]++ }
+		END { for (i = 1; i <= n; i++) printf "  %-32s %4d of %d\n", o[i], d[o[i]], t[o[i]] }'
+
 	[ "$nd" -gt 0 ] && ok || bad "contraction changed nothing: the bit comparison above could not fail"
 	build inl_gcc -std=gnu11 -O3 -ffp-contract=fast -mfma -DMODE_REF &&
 	"$tmp/inl_gcc" < "$tmp/in.txt" > "$tmp/inl_gcc.txt"

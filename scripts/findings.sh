@@ -182,13 +182,13 @@ generate() {
 	}
 	function table_tradeoff(   out, i, m, cols, nc, c, p, line, pp, np) {
 		if (!ntrd) { bad = 1; print "findings: tradeoff.csv missing" > "/dev/stderr"; return "?" }
-		out = "| method | prec | batch M/s, 1 thread | batch M/s, all threads | ns per call | RMSE, uniform | max south | max threshold | Pareto |\n|---|---|---:|---:|---:|---:|---:|---:|:-:|\n"
+		out = "| method | prec | batch M/s, 1 thread | batch M/s, all threads | ns per call | RMSE, uniform | max south | max threshold | x floor | Pareto |\n|---|---|---:|---:|---:|---:|---:|---:|---:|:-:|\n"
 		np = split("float double", pp, " ")
 		for (p = 1; p <= np; p++)
 			for (i = 1; i <= nmeth; i++) {
 				m = meth[i]
 				if (!((m SUBSEP pp[p], "method") in TRD)) continue
-				out = out "| `" m "` | " pp[p] " | " X(m, pp[p], TRDCOL["b1"]) " | " X(m, pp[p], TRDCOL["bn"]) " | " X(m, pp[p], TRDCOL["ns"]) " | " X(m, pp[p], TRDCOL["rmse"]) " | " X(m, pp[p], TRDCOL["south"]) " | " X(m, pp[p], TRDCOL["thr"]) " | " (TRD[m SUBSEP pp[p], TRDCOL["pareto"]] == "1" ? "**yes**" : "") " |\n"
+				out = out "| `" m "` | " pp[p] " | " X(m, pp[p], TRDCOL["b1"]) " | " X(m, pp[p], TRDCOL["bn"]) " | " X(m, pp[p], TRDCOL["ns"]) " | " X(m, pp[p], TRDCOL["rmse"]) " | " X(m, pp[p], TRDCOL["south"]) " | " X(m, pp[p], TRDCOL["thr"]) " | " XO(m, pp[p], "x_floor") " | " (TRD[m SUBSEP pp[p], TRDCOL["pareto"]] == "1" ? "**yes**" : "") " |\n"
 			}
 		return out
 	}

@@ -67,6 +67,15 @@ int reffast_usable(int ref_bits, const char **why)
 	(void)ref_bits;
 	return 0;
 #endif
+	{
+		/* the long double must round at 64 bits at run time too: valgrind,
+		   for one, emulates x87 arithmetic in double */
+		volatile long double one = 1.0L, tiny = 0x1p-63L;
+		if (one + tiny == one) {
+			*why = "long double arithmetic does not carry 64 bits here (an emulator?)";
+			return 0;
+		}
+	}
 	if (ref_bits < 127) {
 		*why = "the fast reference's bounds assume an MPFR reference of at least 127 bits";
 		return 0;

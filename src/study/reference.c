@@ -635,13 +635,11 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 	}
 }
 
-void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
-              const double loc[3], int normalize_n, sample_metrics *s)
+/* The input the kernel receives (n_in rounded to the format) into n, and
+   s cleared for it.  The reference reads exactly the values the kernel receives. */
+static void read_input(const study_kernel *k, int prec, const double n_in[3], double n[3], sample_metrics *s)
 {
-	mpfr_t *t = c->t;
 	int i;
-	double n[3];
-	/* The reference reads exactly the values the kernel receives. */
 	for (i = 0; i < 3; i++) {
 		if (prec == PREC_FLOAT) {
 			volatile float f = (float)n_in[i];
@@ -658,8 +656,11 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 	for (i = 0; i < NDEF; i++)
 		s->d[i] = NAN;
 	s->defect = s->sumsq = s->det = NAN;
+}
 
-	/* Run the kernel, and the direction through its basis. */
+/* Run the kernel, and the direction through its basis: s->out, s->w. */
+static void run_kernel(const study_kernel *k, int prec, const double n[3], const double loc[3], sample_metrics *s)
+{
 	if (prec == PREC_FLOAT) {
 		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
 		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
@@ -692,10 +693,14 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		}
 		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
 	}
+}
 
-	/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
-	   the sweep evaluates every kernel on an input in a row.  Compared by
-	   bit pattern, so -0 and +0 are different inputs. */
+/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
+   the sweep evaluates every kernel on an input in a row.  Compared by
+   bit pattern, so -0 and +0 are different inputs. */
+static void input_norm(ref_ctx *c, const double n[3])
+{
+	mpfr_t *t = c->t;
 	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
 		set3(c->n, n[0], n[1], n[2]);
 		c->last_norm = norm_m1_exact(c, c->n, n);
@@ -705,6 +710,43 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		memcpy(c->last, n, sizeof c->last);
 		c->have_last = 1;
 	}
+}
+
+/* Orthonormality defect of the rounded outputs, and their handedness. */
+static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double n[3], int normalize_n,
+                                 sample_metrics *s)
+{
+	long double det;
+	int i;
+	basis_defects(c, s->out, n, normalize_n, s->d);
+	s->defect = 0.0;
+	s->sumsq = 0.0;
+	for (i = 0; i < NDEF; i++) {
+		if (fabs(s->d[i]) > s->defect)
+			s->defect = fabs(s->d[i]);
+		s->sumsq += s->d[i] * s->d[i];
+	}
+	/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
+	   what matters, and |det| ~ 1 unless the basis has collapsed. */
+	{
+		long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
+		long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
+		det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
+		    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
+		    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
+	}
+	s->det = (double)det;
+	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+}
+
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+              const double loc[3], int normalize_n, sample_metrics *s)
+{
+	int i;
+	double n[3];
+	read_input(k, prec, n_in, n, s);
+	run_kernel(k, prec, n, loc, s);
+	input_norm(c, n);
 	s->in_norm = c->last_norm;
 
 	if (!finite6(s->out, s->ncomp) || !finite6(s->w, 3)) {
@@ -719,29 +761,8 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		return;
 	}
 
-	if (k->m) {
-		/* Orthonormality defect of the rounded outputs. */
-		long double det;
-		basis_defects(c, s->out, n, normalize_n, s->d);
-		s->defect = 0.0;
-		s->sumsq = 0.0;
-		for (i = 0; i < NDEF; i++) {
-			if (fabs(s->d[i]) > s->defect)
-				s->defect = fabs(s->d[i]);
-			s->sumsq += s->d[i] * s->d[i];
-		}
-		/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
-		   what matters, and |det| ~ 1 unless the basis has collapsed. */
-		{
-			long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
-			long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
-			det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
-			    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
-			    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
-		}
-		s->det = (double)det;
-		s->wrong_hand = !(s->det * k->m->handedness > 0.0);
-	}
+	if (k->m)
+		basis_output_defects(c, k, n, normalize_n, s);
 
 	/* Forward error against the kernel's own formula. */
 	reference(c, k, s->branch, loc);

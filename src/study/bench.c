@@ -245,34 +245,12 @@ static const char *sym_vec(const char *prefix, const char *method, int dbl)
 	return bench_vector_width(sym);
 }
 
-/* One precision: every measurement, appended to rs.  0 or -1. */
-static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_stream, bench_rows *rs)
+/* The generated directions into both SoA sets and the n_l2 AoS inputs. */
+static void fill_inputs(int dbl, const double *gx, const double *gy, const double *gz, bench_soa soa[2], void *aos_in,
+                        size_t n_l2)
 {
-	const int T = o->threads;
-	const int nthr = T > 1 ? 2 : 1;
-	const int thr[2] = { 1, T };
-	const size_t w = dbl ? sizeof(double) : sizeof(float);
-	const size_t n_l2_all = n_l2 * (size_t)T;
-	const size_t n_gen = n_stream > n_l2_all ? n_stream : n_l2_all;
-	size_t ny, i, roof0 = rs->n;
-	const bench_yardstick *yd = bench_yardsticks(&ny);
-	double *gx = malloc(n_gen * sizeof *gx), *gy = malloc(n_gen * sizeof *gy), *gz = malloc(n_gen * sizeof *gz);
-	bench_soa soa[2];
-	void *aos_in = NULL, *aos_out = NULL;
-	int s, t, mi, rc = -1;
-	const char *cls[2] = { "l2", "stream" };
-	const size_t sz[2][2] = { { n_l2, n_l2_all }, { n_stream, n_stream } };
-	const bench_call *chain = bench_call_find("chain");
-	double chain_ns = NAN;
-
-	memset(soa, 0, sizeof soa);
-	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, dbl) || bench_soa_alloc(&soa[1], n_stream, dbl))
-		goto oom;
-	aos_in = malloc(n_l2 * (dbl ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
-	aos_out = malloc(n_l2 * (dbl ? sizeof(bench_pair) : sizeof(bench_pairf)));
-	if (!aos_in || !aos_out)
-		goto oom;
-	bench_fill_uniform(n_gen, o->seed, gx, gy, gz);
+	size_t i;
+	int s;
 	for (s = 0; s < 2; s++)
 		for (i = 0; i < soa[s].n; i++) {
 			if (dbl) {
@@ -294,67 +272,103 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 			v->x = (float)gx[i]; v->y = (float)gy[i]; v->z = (float)gz[i];
 		}
 	}
+}
 
-	/* roofline, batch and yardstick: the same SoA arrays, same sizes; a
-	   method's yardstick runs right after it at each size and thread
-	   count, so that both see the same machine load */
+/* The yardstick of method mi (the last of that name), or NULL; NULL for the roofline (mi < 0). */
+static const bench_yardstick *find_yardstick(const bench_opts *o, int mi)
+{
+	size_t ny, i;
+	const bench_yardstick *yd = bench_yardsticks(&ny), *y = NULL;
+	if (mi >= 0)
+		for (i = 0; i < ny; i++)
+			if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
+				y = &yd[i];
+	return y;
+}
+
+/* Point b's kernel and r's labels at the copy roofline (mi < 0), the batch
+   kernel of method mi (v == 0) or its yardstick y (v == 1). */
+static void set_soa_kind(bench_row *r, bench_soa *b, const bench_opts *o, int mi, int v, const bench_yardstick *y,
+                         int dbl)
+{
+	if (mi < 0) {
+		r->method = "copy";
+		r->mode = "roofline";
+		b->batch = bench_copy;
+		b->batchf = bench_copyf;
+		snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
+		r->vec = sym_vec("bench_copy", "", dbl);
+	} else if (v == 0) {
+		r->method = o->meth[mi]->name;
+		r->mode = "batch";
+		b->batch = o->meth[mi]->batch;
+		b->batchf = o->meth[mi]->batchf;
+		snprintf(r->isa, sizeof r->isa, "%s", onb_batch_isa());
+		r->vec = batch_vec(r->method, dbl);
+	} else {
+		r->method = y->name;
+		r->mode = "yardstick";
+		b->batch = y->batch;
+		b->batchf = y->batchf;
+		snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
+		r->vec = sym_vec("bench_yard_", y->name, dbl);
+	}
+}
+
+/* One SoA row: n items of size class cls on nthreads threads.  0 or -1. */
+static int soa_row(const bench_opts *o, int dbl, bench_soa *b, const char *cls, size_t n, int nthreads, int mi, int v,
+                   const bench_yardstick *y, bench_rows *rs)
+{
+	bench_row *r = rows_add(rs);
+	if (!r)
+		return -1;
+	r->dbl = dbl;
+	r->size_class = cls;
+	r->bytes = n * 9 * (dbl ? sizeof(double) : sizeof(float));
+	set_soa_kind(r, b, o, mi, v, y, dbl);
+	if (measure(bench_soa_kernel, b, n, nthreads, o, &r->r) != 0)
+		return -1;
+	/* the outputs of this run, over the items it wrote */
+	{
+		size_t keep = b->n;
+		b->n = n;
+		r->checksum = bench_soa_checksum(b);
+		b->n = keep;
+	}
+	bench_sink = r->checksum;
+	return 0;
+}
+
+/* Roofline, batch and yardstick: the same SoA arrays, same sizes; a
+   method's yardstick runs right after it at each size and thread
+   count, so that both see the same machine load.  0 or -1. */
+static int soa_rows(const bench_opts *o, int dbl, bench_soa soa[2], const size_t sz[2][2], bench_rows *rs)
+{
+	const int nthr = o->threads > 1 ? 2 : 1;
+	const int thr[2] = { 1, o->threads };
+	const char *cls[2] = { "l2", "stream" };
+	int mi, s, t, v;
+
 	for (mi = -1; mi < o->nmeth; mi++) {
-		const bench_yardstick *y = NULL;
-		int v;
+		const bench_yardstick *y;
 		if (mi >= 0 && dbl && !o->meth[mi]->batch)
 			continue; /* float only (ONB_FLOAT_ONLY) */
-		if (mi >= 0)
-			for (i = 0; i < ny; i++)
-				if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
-					y = &yd[i];
+		y = find_yardstick(o, mi);
 		for (s = 0; s < 2; s++)
 			for (t = 0; t < nthr; t++)
-				for (v = 0; v < (y ? 2 : 1); v++) {
-					bench_soa *b = &soa[s];
-					bench_row *r = rows_add(rs);
-					if (!r)
-						goto oom;
-					r->dbl = dbl;
-					r->size_class = cls[s];
-					r->bytes = sz[s][t] * 9 * w;
-					if (mi < 0) {
-						r->method = "copy";
-						r->mode = "roofline";
-						b->batch = bench_copy;
-						b->batchf = bench_copyf;
-						snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
-						r->vec = sym_vec("bench_copy", "", dbl);
-					} else if (v == 0) {
-						r->method = o->meth[mi]->name;
-						r->mode = "batch";
-						b->batch = o->meth[mi]->batch;
-						b->batchf = o->meth[mi]->batchf;
-						snprintf(r->isa, sizeof r->isa, "%s", onb_batch_isa());
-						r->vec = batch_vec(r->method, dbl);
-					} else {
-						r->method = y->name;
-						r->mode = "yardstick";
-						b->batch = y->batch;
-						b->batchf = y->batchf;
-						snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
-						r->vec = sym_vec("bench_yard_", y->name, dbl);
-					}
-					if (measure(bench_soa_kernel, b, sz[s][t], thr[t], o, &r->r) != 0)
-						goto oom;
-					/* the outputs of this run, over the items it wrote */
-					{
-						size_t keep = b->n;
-						b->n = sz[s][t];
-						r->checksum = bench_soa_checksum(b);
-						b->n = keep;
-					}
-					bench_sink = r->checksum;
-				}
+				for (v = 0; v < (y ? 2 : 1); v++)
+					if (soa_row(o, dbl, &soa[s], cls[s], sz[s][t], thr[t], mi, v, y, rs) != 0)
+						return -1;
 	}
-	/* fractions of the roofline, ratios to the yardstick */
+	return 0;
+}
+
+/* Fractions of the roofline, ratios to the yardstick, over rows roof0.. */
+static void link_ratios(bench_rows *rs, size_t roof0)
+{
+	size_t i, j;
 	for (i = roof0; i < rs->n; i++) {
 		bench_row *r = &rs->v[i];
-		size_t j;
 		for (j = roof0; j < rs->n; j++) {
 			const bench_row *q = &rs->v[j];
 			if (q->r.n != r->r.n || q->r.threads != r->r.threads || strcmp(q->size_class, r->size_class))
@@ -365,60 +379,103 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 				r->vs_yard = q->r.min_s / r->r.min_s;
 		}
 	}
+}
 
-	/* per call: the inline function over an array of structs, 1 thread */
-	{
-		call_ctx cc;
-		cc.dbl = dbl;
-		cc.in = aos_in;
-		cc.out = aos_out;
-		cc.c = chain;
-		cc.sum = 0.0;
-		{
-			bench_result cr;
-			if (measure(call_lat_kernel, &cc, n_l2, 1, o, &cr) != 0)
-				goto oom;
-			chain_ns = cr.median_s / (double)n_l2 * 1e9;
-			bench_sink = cc.sum;
-		}
-		for (mi = 0; mi < o->nmeth; mi++) {
-			const bench_call *c = bench_call_find(o->meth[mi]->name);
-			bench_row *r;
-			if (dbl && !o->meth[mi]->basis)
-				continue; /* float only */
-			if (!c) {
-				study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
-				goto fail;
-			}
-			cc.c = c;
-			for (t = 0; t < 2; t++) {
-				r = rows_add(rs);
-				if (!r)
-					goto oom;
-				r->method = c->name;
-				r->dbl = dbl;
-				r->mode = t ? "call_latency" : "call_throughput";
-				r->size_class = "l2";
-				r->bytes = n_l2 * 9 * w;
-				snprintf(r->isa, sizeof r->isa, "%s", bench_calls_isa());
-				cc.sum = 0.0;
-				if (measure(t ? call_lat_kernel : call_tp_kernel, &cc, n_l2, 1, o, &r->r) != 0)
-					goto oom;
-				if (t) {
-					/* one more pass, alone, for the checksum */
-					cc.sum = 0.0;
-					call_lat_kernel(&cc, 0, n_l2);
-					r->checksum = cc.sum;
-					r->chain_ns = chain_ns;
-					r->vec = sym_vec("bench_lat_", c->name, dbl);
-				} else {
-					r->checksum = dbl ? bench_pair_checksum(n_l2, aos_out) : bench_pair_checksumf(n_l2, aos_out);
-					r->vec = sym_vec("bench_tp_", c->name, dbl);
-				}
-				bench_sink = r->checksum;
-			}
-		}
+/* The call_throughput (t == 0) or call_latency (t == 1) row of cc->c.  0 or -1. */
+static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const bench_opts *o, bench_rows *rs)
+{
+	const bench_call *c = cc->c;
+	const int dbl = cc->dbl;
+	bench_row *r = rows_add(rs);
+	if (!r)
+		return -1;
+	r->method = c->name;
+	r->dbl = dbl;
+	r->mode = t ? "call_latency" : "call_throughput";
+	r->size_class = "l2";
+	r->bytes = n_l2 * 9 * (dbl ? sizeof(double) : sizeof(float));
+	snprintf(r->isa, sizeof r->isa, "%s", bench_calls_isa());
+	cc->sum = 0.0;
+	if (measure(t ? call_lat_kernel : call_tp_kernel, cc, n_l2, 1, o, &r->r) != 0)
+		return -1;
+	if (t) {
+		/* one more pass, alone, for the checksum */
+		cc->sum = 0.0;
+		call_lat_kernel(cc, 0, n_l2);
+		r->checksum = cc->sum;
+		r->chain_ns = chain_ns;
+		r->vec = sym_vec("bench_lat_", c->name, dbl);
+	} else {
+		r->checksum = dbl ? bench_pair_checksum(n_l2, cc->out) : bench_pair_checksumf(n_l2, cc->out);
+		r->vec = sym_vec("bench_tp_", c->name, dbl);
 	}
+	bench_sink = r->checksum;
+	return 0;
+}
+
+/* Per call: the inline function over an array of structs, 1 thread.
+   0, -1 (out of memory or bad run) or -2 (reported). */
+static int call_rows(const bench_opts *o, int dbl, size_t n_l2, const void *aos_in, void *aos_out, bench_rows *rs)
+{
+	call_ctx cc;
+	bench_result cr;
+	double chain_ns;
+	int mi, t;
+
+	cc.dbl = dbl;
+	cc.in = aos_in;
+	cc.out = aos_out;
+	cc.c = bench_call_find("chain");
+	cc.sum = 0.0;
+	if (measure(call_lat_kernel, &cc, n_l2, 1, o, &cr) != 0)
+		return -1;
+	chain_ns = cr.median_s / (double)n_l2 * 1e9;
+	bench_sink = cc.sum;
+	for (mi = 0; mi < o->nmeth; mi++) {
+		const bench_call *c = bench_call_find(o->meth[mi]->name);
+		if (dbl && !o->meth[mi]->basis)
+			continue; /* float only */
+		if (!c) {
+			study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
+			return -2;
+		}
+		cc.c = c;
+		for (t = 0; t < 2; t++)
+			if (call_row(&cc, t, n_l2, chain_ns, o, rs) != 0)
+				return -1;
+	}
+	return 0;
+}
+
+/* One precision: every measurement, appended to rs.  0 or -1. */
+static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_stream, bench_rows *rs)
+{
+	const size_t n_l2_all = n_l2 * (size_t)o->threads;
+	const size_t n_gen = n_stream > n_l2_all ? n_stream : n_l2_all;
+	const size_t sz[2][2] = { { n_l2, n_l2_all }, { n_stream, n_stream } };
+	const size_t roof0 = rs->n;
+	double *gx = malloc(n_gen * sizeof *gx), *gy = malloc(n_gen * sizeof *gy), *gz = malloc(n_gen * sizeof *gz);
+	bench_soa soa[2];
+	void *aos_in = NULL, *aos_out = NULL;
+	int rc = -1, e;
+
+	memset(soa, 0, sizeof soa);
+	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, dbl) || bench_soa_alloc(&soa[1], n_stream, dbl))
+		goto oom;
+	aos_in = malloc(n_l2 * (dbl ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
+	aos_out = malloc(n_l2 * (dbl ? sizeof(bench_pair) : sizeof(bench_pairf)));
+	if (!aos_in || !aos_out)
+		goto oom;
+	bench_fill_uniform(n_gen, o->seed, gx, gy, gz);
+	fill_inputs(dbl, gx, gy, gz, soa, aos_in, n_l2);
+	if (soa_rows(o, dbl, soa, sz, rs) != 0)
+		goto oom;
+	link_ratios(rs, roof0);
+	e = call_rows(o, dbl, n_l2, aos_in, aos_out, rs);
+	if (e == -1)
+		goto oom;
+	if (e != 0)
+		goto fail;
 	rc = 0;
 	goto done;
 oom:
@@ -576,6 +633,65 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 	}
 }
 
+/* The L2 size per core in bytes (1 MiB when unknown); the L2-resident and
+   stream sizes in bases. */
+static long bench_sizes(const bench_opts *o, size_t *n_l2_out, size_t *n_stream_out)
+{
+	long l2 = -1;
+	size_t n_l2, n_stream;
+#ifdef _SC_LEVEL2_CACHE_SIZE
+	l2 = sysconf(_SC_LEVEL2_CACHE_SIZE);
+#endif
+	if (l2 <= 0)
+		l2 = 1L << 20;
+	/* L2-resident: the nine double arrays fill half of one core's L2 */
+	n_l2 = ((size_t)l2 / 2 / (9 * sizeof(double))) / 256 * 256;
+	if (n_l2 < 1024)
+		n_l2 = 1024;
+	/* stream: a power of two of bases, float working set >= stream_mib */
+	n_stream = 1024;
+	while ((double)(n_stream * 9 * sizeof(float)) < o->stream_mib * 1048576.0)
+		n_stream *= 2;
+	*n_l2_out = n_l2;
+	*n_stream_out = n_stream;
+	return l2;
+}
+
+/* The provenance and '#' lines of bench.csv, before the header. */
+static void write_header(FILE *f, const bench_opts *o, int tsc, double ghz, const char *load0, const char *load1,
+                         long l2, size_t n_l2, size_t n_stream)
+{
+	study_provenance(f, "bench", o->seed, o->threads);
+	fprintf(f, "# timer: clock_gettime(CLOCK_MONOTONIC) between OpenMP barriers; %s\n",
+	        tsc ? "cycles from the TSC (constant_tsc nonstop_tsc): ticks at the nominal frequency, not core cycles" :
+	              "no constant TSC: cycle columns are nan");
+	fprintf(f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
+	           "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
+	fprintf(f, "# flag: load = an all-threads row begun at a 1-minute load average >= %g (other processes took CPU "
+	           "time: a lower bound)%s; spread = median time > %g x the minimum over the repetitions; ok otherwise\n",
+	        BENCH_BUSY_LOAD, bench_busy ? ", as in this run" : "", BENCH_WIDE_SPREAD);
+	if (tsc)
+		fprintf(f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
+	fprintf(f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
+	           "(src/study/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
+	           "at full vector width); call loops %s (the flags above)\n",
+	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
+	fprintf(f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "
+	           "executable): zmm, ymm, xmm, scalar, or unknown\n");
+	fprintf(f, "# sizes: l2 = %zu bases per thread (L2 %ld B per core; working set %zu B float, %zu B double); "
+	           "stream = %zu bases (%zu B float, %zu B double)\n",
+	        n_l2, l2, n_l2 * 36, n_l2 * 72, n_stream, n_stream * 36, n_stream * 72);
+	fprintf(f, "# repetitions: 1 calibration pass, %d warm-up and %d timed repetitions of >= %g s each; "
+	           "median (mbases_per_s, ns_per_call, cycles_per_call) and minimum time (_best)%s\n",
+	        o->warmup, o->reps, o->target, o->quick ? "; --quick: a check, not a measurement" : "");
+	fprintf(f, "# modes: batch = libonb SoA kernel; yardstick = hand-written loop of the same formula; roofline = "
+	           "copy 3 arrays to 6; call_throughput = inline function over an array of structs; call_latency = "
+	           "dependent chain (input + (b1.x + b2.x) * 0), chain_ns = the chain alone, included in ns_per_call\n");
+	fprintf(f, "# ns_per_call and cycles_per_call: wall time per basis (all threads together for threads > 1); "
+	           "frac_roofline and vs_yardstick: ratios of best throughput (minimum time, the least disturbed by other load) at "
+	           "the same size and threads; each yardstick runs right after its method\n");
+}
+
 int cmd_bench(int argc, char **argv)
 {
 	bench_opts o;
@@ -583,7 +699,7 @@ int cmd_bench(int argc, char **argv)
 	char outbuf[4096];
 	const char *out;
 	study_out f;
-	long l2 = -1;
+	long l2;
 	size_t n_l2, n_stream, i;
 	int rc, tsc, p;
 	double ghz, t0 = bench_now();
@@ -602,19 +718,7 @@ int cmd_bench(int argc, char **argv)
 		return ONB_EXIT_USAGE;
 	if (o.reference)
 		return bench_reference(out, o.quick, o.seed);
-#ifdef _SC_LEVEL2_CACHE_SIZE
-	l2 = sysconf(_SC_LEVEL2_CACHE_SIZE);
-#endif
-	if (l2 <= 0)
-		l2 = 1L << 20;
-	/* L2-resident: the nine double arrays fill half of one core's L2 */
-	n_l2 = ((size_t)l2 / 2 / (9 * sizeof(double))) / 256 * 256;
-	if (n_l2 < 1024)
-		n_l2 = 1024;
-	/* stream: a power of two of bases, float working set >= stream_mib */
-	n_stream = 1024;
-	while ((double)(n_stream * 9 * sizeof(float)) < o.stream_mib * 1048576.0)
-		n_stream *= 2;
+	l2 = bench_sizes(&o, &n_l2, &n_stream);
 
 	loadavg(load0, sizeof load0);
 	bench_busy = atof(load0) >= BENCH_BUSY_LOAD;
@@ -632,35 +736,7 @@ int cmd_bench(int argc, char **argv)
 		free(rs.v);
 		return 1;
 	}
-	study_provenance(f.f, "bench", o.seed, o.threads);
-	fprintf(f.f, "# timer: clock_gettime(CLOCK_MONOTONIC) between OpenMP barriers; %s\n",
-	        tsc ? "cycles from the TSC (constant_tsc nonstop_tsc): ticks at the nominal frequency, not core cycles" :
-	              "no constant TSC: cycle columns are nan");
-	fprintf(f.f, "# load: /proc/loadavg %s at the start, %s at the end (%ld CPUs online); other load slows the "
-	             "all-threads runs most\n", load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
-	fprintf(f.f, "# flag: load = an all-threads row begun at a 1-minute load average >= %g (other processes took CPU "
-	             "time: a lower bound)%s; spread = median time > %g x the minimum over the repetitions; ok otherwise\n",
-	        BENCH_BUSY_LOAD, bench_busy ? ", as in this run" : "", BENCH_WIDE_SPREAD);
-	if (tsc)
-		fprintf(f.f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
-	fprintf(f.f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
-	             "(src/study/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
-	             "at full vector width); call loops %s (the flags above)\n",
-	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
-	fprintf(f.f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "
-	             "executable): zmm, ymm, xmm, scalar, or unknown\n");
-	fprintf(f.f, "# sizes: l2 = %zu bases per thread (L2 %ld B per core; working set %zu B float, %zu B double); "
-	             "stream = %zu bases (%zu B float, %zu B double)\n",
-	        n_l2, l2, n_l2 * 36, n_l2 * 72, n_stream, n_stream * 36, n_stream * 72);
-	fprintf(f.f, "# repetitions: 1 calibration pass, %d warm-up and %d timed repetitions of >= %g s each; "
-	             "median (mbases_per_s, ns_per_call, cycles_per_call) and minimum time (_best)%s\n",
-	        o.warmup, o.reps, o.target, o.quick ? "; --quick: a check, not a measurement" : "");
-	fprintf(f.f, "# modes: batch = libonb SoA kernel; yardstick = hand-written loop of the same formula; roofline = "
-	             "copy 3 arrays to 6; call_throughput = inline function over an array of structs; call_latency = "
-	             "dependent chain (input + (b1.x + b2.x) * 0), chain_ns = the chain alone, included in ns_per_call\n");
-	fprintf(f.f, "# ns_per_call and cycles_per_call: wall time per basis (all threads together for threads > 1); "
-	             "frac_roofline and vs_yardstick: ratios of best throughput (minimum time, the least disturbed by other load) at "
-	             "the same size and threads; each yardstick runs right after its method\n");
+	write_header(f.f, &o, tsc, ghz, load0, load1, l2, n_l2, n_stream);
 	fprintf(f.f, "%s\n", BENCH_COLUMNS);
 	for (i = 0; i < rs.n; i++)
 		write_row(f.f, &rs.v[i], tsc);

@@ -212,61 +212,120 @@ static void frisvad_formula(ref_ctx *c, mpfr_t *n, mpfr_t *b1, mpfr_t *b2)
 	mpfr_neg(b2[2], n[1], R);
 }
 
+/* frisvad_rotate, Equation 3: the direction loc of the local frame of n, into r1. */
+static void ref_rotate(ref_ctx *c, const double loc[3])
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
+	int i;
+	mpfr_add_ui(t[3], n[2], 1, R);
+	if (mpfr_zero_p(t[3])) {
+		mpfr_set_d(r1[0], -loc[1], R);
+		mpfr_set_d(r1[1], -loc[0], R);
+		mpfr_set_d(r1[2], -loc[2], R);
+		return;
+	}
+	frisvad_formula(c, n, u, r2);           /* u = b1, r2 = b2 */
+	mpfr_set_d(t[3], loc[0], R);
+	mpfr_set_d(t[4], loc[1], R);
+	mpfr_set_d(t[5], loc[2], R);
+	for (i = 0; i < 3; i++) {
+		mpfr_mul(c->p0, t[3], u[i], R);
+		mpfr_mul(c->p1, t[4], r2[i], R);
+		mpfr_add(r1[i], c->p0, c->p1, R);
+		mpfr_mul(c->p0, t[5], n[i], R);
+		mpfr_add(r1[i], r1[i], c->p0, R);
+	}
+}
+
+/* naive: u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
+static void ref_naive(ref_ctx *c, const onb_method *m, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
+	mpfr_mul(r1[0], n[0], t[0], R);
+	mpfr_mul(r1[1], n[1], t[0], R);
+	mpfr_mul(r1[2], n[2], t[0], R);
+	mpfr_ui_sub(r1[br ? 1 : 0], 1, r1[br ? 1 : 0], R);
+	mpfr_neg(r1[br ? 0 : 1], r1[br ? 0 : 1], R);
+	mpfr_neg(r1[2], r1[2], R);
+	if (m->norm != ONB__NORM_NONE)
+		normalize(c, r1);
+	cross(c, r2, n, r1);
+}
+
+/* Hughes-Moeller: b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
+static void ref_hughes_moeller(ref_ctx *c, const onb_method *m, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2;
+	if (br) {
+		mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
+	} else {
+		mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
+	}
+	if (m->norm != ONB__NORM_NONE)
+		normalize(c, r2);
+	cross(c, r1, r2, n);
+}
+
+/* duff's lower branch: a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
+static void ref_duff_lower(ref_ctx *c)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	mpfr_ui_sub(t[0], 1, n[2], R);
+	mpfr_ui_div(t[0], 1, t[0], R);
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(r1[0], 1, t[2], R);
+	mpfr_neg(r1[1], t[1], R);
+	mpfr_set(r1[2], n[0], R);
+	mpfr_set(r2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_sub_ui(r2[1], t[2], 1, R);
+	mpfr_neg(r2[2], n[1], R);
+}
+
+/* duff_branchless: s = +-1, a = -1/(s + z), b = x y a,
+   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
+static void ref_duff_branchless(ref_ctx *c, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	const int s = br ? -1 : 1;
+	mpfr_add_si(t[0], n[2], s, R);
+	mpfr_si_div(t[0], -1, t[0], R);
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_mul_si(t[2], t[2], s, R);
+	mpfr_add_ui(r1[0], t[2], 1, R);
+	mpfr_mul_si(r1[1], t[1], s, R);
+	mpfr_mul_si(r1[2], n[0], -s, R);
+	mpfr_set(r2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_add_si(r2[1], t[2], s, R);
+	mpfr_neg(r2[2], n[1], R);
+}
+
 /* The exact formula of kernel k on n along branch br, into r1, r2 (or the
    rotated direction of loc into r1 for frisvad_rotate). */
 static void reference(ref_ctx *c, const study_kernel *k, int br, const double loc[3])
 {
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u;
 	const onb_method *m = k->m;
-	if (!m) { /* frisvad_rotate, Equation 3 */
-		mpfr_add_ui(t[3], n[2], 1, R);
-		if (mpfr_zero_p(t[3])) {
-			mpfr_set_d(r1[0], -loc[1], R);
-			mpfr_set_d(r1[1], -loc[0], R);
-			mpfr_set_d(r1[2], -loc[2], R);
-			return;
-		}
-		frisvad_formula(c, n, u, r2);           /* u = b1, r2 = b2 */
-		mpfr_set_d(t[3], loc[0], R);
-		mpfr_set_d(t[4], loc[1], R);
-		mpfr_set_d(t[5], loc[2], R);
-		{
-			int i;
-			for (i = 0; i < 3; i++) {
-				mpfr_mul(c->p0, t[3], u[i], R);
-				mpfr_mul(c->p1, t[4], r2[i], R);
-				mpfr_add(r1[i], c->p0, c->p1, R);
-				mpfr_mul(c->p0, t[5], n[i], R);
-				mpfr_add(r1[i], r1[i], c->p0, R);
-			}
-		}
+	if (!m) {
+		ref_rotate(c, loc);
 		return;
 	}
 	switch (k->family) {
-	case FAM_NAIVE: {
-		/* u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
-		mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
-		mpfr_mul(r1[0], n[0], t[0], R);
-		mpfr_mul(r1[1], n[1], t[0], R);
-		mpfr_mul(r1[2], n[2], t[0], R);
-		mpfr_ui_sub(r1[br ? 1 : 0], 1, r1[br ? 1 : 0], R);
-		mpfr_neg(r1[br ? 0 : 1], r1[br ? 0 : 1], R);
-		mpfr_neg(r1[2], r1[2], R);
-		if (m->norm != ONB__NORM_NONE)
-			normalize(c, r1);
-		cross(c, r2, n, r1);
+	case FAM_NAIVE:
+		ref_naive(c, m, br);
 		break;
-	}
 	case FAM_HUGHES_MOELLER:
-		/* b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
-		if (br) {
-			mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
-		} else {
-			mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
-		}
-		if (m->norm != ONB__NORM_NONE)
-			normalize(c, r2);
-		cross(c, r1, r2, n);
+		ref_hughes_moeller(c, m, br);
 		break;
 	case FAM_FRISVAD:
 		if (br) {
@@ -277,46 +336,14 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 		}
 		break;
 	case FAM_DUFF:
-		if (br) { /* a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
-			mpfr_ui_sub(t[0], 1, n[2], R);
-			mpfr_ui_div(t[0], 1, t[0], R);
-			mpfr_mul(t[1], n[0], n[1], R);
-			mpfr_mul(t[1], t[1], t[0], R);
-			mpfr_sqr(t[2], n[0], R);
-			mpfr_mul(t[2], t[2], t[0], R);
-			mpfr_ui_sub(r1[0], 1, t[2], R);
-			mpfr_neg(r1[1], t[1], R);
-			mpfr_set(r1[2], n[0], R);
-			mpfr_set(r2[0], t[1], R);
-			mpfr_sqr(t[2], n[1], R);
-			mpfr_mul(t[2], t[2], t[0], R);
-			mpfr_sub_ui(r2[1], t[2], 1, R);
-			mpfr_neg(r2[2], n[1], R);
-		} else {
+		if (br)
+			ref_duff_lower(c);
+		else
 			frisvad_formula(c, n, r1, r2);
-		}
 		break;
-	case FAM_DUFF_BRANCHLESS: {
-		/* s = +-1, a = -1/(s + z), b = x y a,
-		   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
-		const int s = br ? -1 : 1;
-		mpfr_add_si(t[0], n[2], s, R);
-		mpfr_si_div(t[0], -1, t[0], R);
-		mpfr_mul(t[1], n[0], n[1], R);
-		mpfr_mul(t[1], t[1], t[0], R);
-		mpfr_sqr(t[2], n[0], R);
-		mpfr_mul(t[2], t[2], t[0], R);
-		mpfr_mul_si(t[2], t[2], s, R);
-		mpfr_add_ui(r1[0], t[2], 1, R);
-		mpfr_mul_si(r1[1], t[1], s, R);
-		mpfr_mul_si(r1[2], n[0], -s, R);
-		mpfr_set(r2[0], t[1], R);
-		mpfr_sqr(t[2], n[1], R);
-		mpfr_mul(t[2], t[2], t[0], R);
-		mpfr_add_si(r2[1], t[2], s, R);
-		mpfr_neg(r2[2], n[1], R);
+	case FAM_DUFF_BRANCHLESS:
+		ref_duff_branchless(c, br);
 		break;
-	}
 	case FAM_STARK:
 	case FAM_STARK_FIXED:
 		/* p = n x (xm, ym, zm), b1 = p/|p|, b2 = n x b1; as published
@@ -608,13 +635,11 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 	}
 }
 
-void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
-              const double loc[3], int normalize_n, sample_metrics *s)
+/* The input the kernel receives (n_in rounded to the format) into n, and
+   s cleared for it.  The reference reads exactly the values the kernel receives. */
+static void read_input(const study_kernel *k, int prec, const double n_in[3], double n[3], sample_metrics *s)
 {
-	mpfr_t *t = c->t;
 	int i;
-	double n[3];
-	/* The reference reads exactly the values the kernel receives. */
 	for (i = 0; i < 3; i++) {
 		if (prec == PREC_FLOAT) {
 			volatile float f = (float)n_in[i];
@@ -631,8 +656,11 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 	for (i = 0; i < NDEF; i++)
 		s->d[i] = NAN;
 	s->defect = s->sumsq = s->det = NAN;
+}
 
-	/* Run the kernel, and the direction through its basis. */
+/* Run the kernel, and the direction through its basis: s->out, s->w. */
+static void run_kernel(const study_kernel *k, int prec, const double n[3], const double loc[3], sample_metrics *s)
+{
 	if (prec == PREC_FLOAT) {
 		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
 		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
@@ -665,10 +693,14 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		}
 		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
 	}
+}
 
-	/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
-	   the sweep evaluates every kernel on an input in a row.  Compared by
-	   bit pattern, so -0 and +0 are different inputs. */
+/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
+   the sweep evaluates every kernel on an input in a row.  Compared by
+   bit pattern, so -0 and +0 are different inputs. */
+static void input_norm(ref_ctx *c, const double n[3])
+{
+	mpfr_t *t = c->t;
 	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
 		set3(c->n, n[0], n[1], n[2]);
 		c->last_norm = norm_m1_exact(c, c->n, n);
@@ -678,6 +710,43 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		memcpy(c->last, n, sizeof c->last);
 		c->have_last = 1;
 	}
+}
+
+/* Orthonormality defect of the rounded outputs, and their handedness. */
+static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double n[3], int normalize_n,
+                                 sample_metrics *s)
+{
+	long double det;
+	int i;
+	basis_defects(c, s->out, n, normalize_n, s->d);
+	s->defect = 0.0;
+	s->sumsq = 0.0;
+	for (i = 0; i < NDEF; i++) {
+		if (fabs(s->d[i]) > s->defect)
+			s->defect = fabs(s->d[i]);
+		s->sumsq += s->d[i] * s->d[i];
+	}
+	/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
+	   what matters, and |det| ~ 1 unless the basis has collapsed. */
+	{
+		long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
+		long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
+		det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
+		    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
+		    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
+	}
+	s->det = (double)det;
+	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+}
+
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+              const double loc[3], int normalize_n, sample_metrics *s)
+{
+	int i;
+	double n[3];
+	read_input(k, prec, n_in, n, s);
+	run_kernel(k, prec, n, loc, s);
+	input_norm(c, n);
 	s->in_norm = c->last_norm;
 
 	if (!finite6(s->out, s->ncomp) || !finite6(s->w, 3)) {
@@ -692,29 +761,8 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 		return;
 	}
 
-	if (k->m) {
-		/* Orthonormality defect of the rounded outputs. */
-		long double det;
-		basis_defects(c, s->out, n, normalize_n, s->d);
-		s->defect = 0.0;
-		s->sumsq = 0.0;
-		for (i = 0; i < NDEF; i++) {
-			if (fabs(s->d[i]) > s->defect)
-				s->defect = fabs(s->d[i]);
-			s->sumsq += s->d[i] * s->d[i];
-		}
-		/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
-		   what matters, and |det| ~ 1 unless the basis has collapsed. */
-		{
-			long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
-			long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
-			det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
-			    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
-			    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
-		}
-		s->det = (double)det;
-		s->wrong_hand = !(s->det * k->m->handedness > 0.0);
-	}
+	if (k->m)
+		basis_output_defects(c, k, n, normalize_n, s);
 
 	/* Forward error against the kernel's own formula. */
 	reference(c, k, s->branch, loc);

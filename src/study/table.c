@@ -134,13 +134,44 @@ static int parse_prec(const char *s)
 	return strcmp(s, "double") == 0 ? 1 : strcmp(s, "float") == 0 ? 0 : -1;
 }
 
-int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows_out)
+typedef struct {
+	tradeoff_row *v;
+	int n, cap;
+} row_set;
+
+/* The row of method at precision dbl, appended (every figure NaN) when new.
+   Its index, or -1 (reported). */
+static int row_of(row_set *s, const char *method, int dbl)
+{
+	int r = find_row(s->v, s->n, method, dbl);
+	if (r >= 0)
+		return r;
+	if (s->n == s->cap) {
+		tradeoff_row *t;
+		s->cap = s->cap ? 2 * s->cap : 64;
+		t = realloc(s->v, (size_t)s->cap * sizeof *t);
+		if (!t) {
+			study_error("table: out of memory");
+			return -1;
+		}
+		s->v = t;
+	}
+	r = s->n++;
+	memset(&s->v[r], 0, sizeof s->v[r]);
+	snprintf(s->v[r].method, sizeof s->v[r].method, "%s", method);
+	s->v[r].dbl = dbl;
+	s->v[r].batch1 = s->v[r].batchn = s->v[r].call_ns = NAN;
+	s->v[r].rmse_uniform = s->v[r].max_south = s->v[r].max_threshold = s->v[r].max_worst = NAN;
+	s->v[r].max_uniform = s->v[r].max_floor_uniform = s->v[r].x_floor = NAN;
+	s->v[r].rms_ratio_uniform = s->v[r].max_ratio_uniform = NAN;
+	return r;
+}
+
+/* The speeds of bench.csv's L2 batch and call_throughput rows into s.  0, or -1 (reported). */
+static int load_speeds(const char *bench_csv, row_set *s)
 {
 	csv_file c;
-	tradeoff_row *rows = NULL;
-	int n = 0, cap = 0, nf, i;
-	int cm, cp, cmode, ct, ccls, cmbs, cns, cdist, crmse, cmax, cnf, cfl, crr, cmr;
-	*rows_out = NULL;
+	int nf, i, cm, cp, cmode, ct, ccls, cmbs, cns;
 
 	if (csv_open(&c, bench_csv) != 0)
 		return -1;
@@ -173,117 +204,137 @@ int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tr
 			continue;
 		if (ccls >= 0 && strcmp(c.fld[ccls], "l2") != 0)
 			continue;
-		r = find_row(rows, n, c.fld[cm], dbl);
-		if (r < 0) {
-			if (n == cap) {
-				tradeoff_row *t;
-				cap = cap ? 2 * cap : 64;
-				t = realloc(rows, (size_t)cap * sizeof *t);
-				if (!t) {
-					study_error("table: out of memory");
-					goto fail;
-				}
-				rows = t;
-			}
-			r = n++;
-			memset(&rows[r], 0, sizeof rows[r]);
-			snprintf(rows[r].method, sizeof rows[r].method, "%s", c.fld[cm]);
-			rows[r].dbl = dbl;
-			rows[r].batch1 = rows[r].batchn = rows[r].call_ns = NAN;
-			rows[r].rmse_uniform = rows[r].max_south = rows[r].max_threshold = rows[r].max_worst = NAN;
-			rows[r].max_uniform = rows[r].max_floor_uniform = rows[r].x_floor = NAN;
-			rows[r].rms_ratio_uniform = rows[r].max_ratio_uniform = NAN;
-		}
+		r = row_of(s, c.fld[cm], dbl);
+		if (r < 0)
+			goto fail;
 		thr = atoi(c.fld[ct]);
 		if (strcmp(mode, "batch") == 0) {
 			if (thr <= 1)
-				rows[r].batch1 = num(c.fld[cmbs]);
+				s->v[r].batch1 = num(c.fld[cmbs]);
 			else {
-				rows[r].batchn = num(c.fld[cmbs]);
-				rows[r].threads = thr;
+				s->v[r].batchn = num(c.fld[cmbs]);
+				s->v[r].threads = thr;
 			}
 		} else
-			rows[r].call_ns = num(c.fld[cns]);
+			s->v[r].call_ns = num(c.fld[cns]);
 	}
 	fclose(c.f);
-	for (i = 0; i < n; i++)
-		rows[i].has_speed = !isnan(rows[i].batch1);
-
-	if (csv_open(&c, summary_csv) != 0)
-		goto fail_closed;
-	cm = col(c.hdr, c.nh, "method");
-	cp = col(c.hdr, c.nh, "precision");
-	cdist = col(c.hdr, c.nh, "distribution");
-	crmse = col(c.hdr, c.nh, "rmse");
-	cmax = col(c.hdr, c.nh, "max_defect");
-	cnf = col(c.hdr, c.nh, "nonfinite");
-	cfl = col(c.hdr, c.nh, "max_floor");       /* the floor: optional (older runs lack it) */
-	crr = col(c.hdr, c.nh, "rms_floor_ratio");
-	cmr = col(c.hdr, c.nh, "max_floor_ratio");
-	if (cm < 0 || cp < 0 || cdist < 0 || crmse < 0 || cmax < 0) {
-		study_error("table: '%s' lacks one of the columns method,precision,distribution,rmse,max_defect", summary_csv);
-		goto fail;
-	}
-	{
-		/* bit 0 uniform, 1 south, 2 threshold seen */
-		int *seen = calloc((size_t)(n ? n : 1), sizeof *seen);
-		if (!seen) {
-			study_error("table: out of memory");
-			goto fail;
-		}
-		while ((nf = csv_next(&c)) > 0) {
-			const char *d;
-			int dbl, r, bit;
-			double mx;
-			if (nf != c.nh) {
-				study_error("table: %s:%ld: %d fields, the header has %d", summary_csv, c.lineno, nf, c.nh);
-				free(seen);
-				goto fail;
-			}
-			dbl = parse_prec(c.fld[cp]);
-			r = dbl < 0 ? -1 : find_row(rows, n, c.fld[cm], dbl);
-			if (r < 0)
-				continue;
-			d = c.fld[cdist];
-			bit = strcmp(d, "uniform") == 0 ? 1 : strcmp(d, "south") == 0 ? 2 : strcmp(d, "threshold") == 0 ? 4 : 0;
-			if (!bit)
-				continue;
-			mx = num(c.fld[cmax]);
-			if (bit == 1) {
-				rows[r].rmse_uniform = num(c.fld[crmse]);
-				rows[r].max_uniform = mx;
-				if (cfl >= 0)
-					rows[r].max_floor_uniform = num(c.fld[cfl]);
-				if (crr >= 0)
-					rows[r].rms_ratio_uniform = num(c.fld[crr]);
-				if (cmr >= 0)
-					rows[r].max_ratio_uniform = num(c.fld[cmr]);
-				rows[r].x_floor = rows[r].max_floor_uniform > 0.0 ? mx / rows[r].max_floor_uniform : NAN;
-			} else if (bit == 2)
-				rows[r].max_south = mx;
-			else
-				rows[r].max_threshold = mx;
-			if (isnan(mx))
-				mx = INFINITY;
-			if (!(seen[r] & 7) || mx > rows[r].max_worst)
-				rows[r].max_worst = mx;
-			if (cnf >= 0)
-				rows[r].nonfinite += atol(c.fld[cnf]);
-			seen[r] |= bit;
-		}
-		for (i = 0; i < n; i++)
-			rows[i].has_accuracy = seen[i] == 7;
-		free(seen);
-	}
-	fclose(c.f);
-	tradeoff_pareto(rows, n, tol);
-	*rows_out = rows;
-	return n;
+	for (i = 0; i < s->n; i++)
+		s->v[i].has_speed = !isnan(s->v[i].batch1);
+	return 0;
 fail:
 	fclose(c.f);
-fail_closed:
-	free(rows);
 	return -1;
+}
+
+/* The columns of summary.csv; the last four optional (-1 when absent). */
+typedef struct {
+	int m, p, dist, rmse, max, nf, fl, rr, mr;
+} sum_cols;
+
+/* One summary row of distribution bit (1 uniform, 2 south, 4 threshold) into
+   row r; seen holds the bits seen so far. */
+static void set_accuracy(tradeoff_row *r, char **fld, const sum_cols *k, int bit, int *seen)
+{
+	double mx = num(fld[k->max]);
+	if (bit == 1) {
+		r->rmse_uniform = num(fld[k->rmse]);
+		r->max_uniform = mx;
+		if (k->fl >= 0)
+			r->max_floor_uniform = num(fld[k->fl]);
+		if (k->rr >= 0)
+			r->rms_ratio_uniform = num(fld[k->rr]);
+		if (k->mr >= 0)
+			r->max_ratio_uniform = num(fld[k->mr]);
+		r->x_floor = r->max_floor_uniform > 0.0 ? mx / r->max_floor_uniform : NAN;
+	} else if (bit == 2)
+		r->max_south = mx;
+	else
+		r->max_threshold = mx;
+	if (isnan(mx))
+		mx = INFINITY;
+	if (!(*seen & 7) || mx > r->max_worst)
+		r->max_worst = mx;
+	if (k->nf >= 0)
+		r->nonfinite += atol(fld[k->nf]);
+	*seen |= bit;
+}
+
+/* The rows of csv c, open at its data, into rows[0..n-1]; seen[i]: bit 0
+   uniform, 1 south, 2 threshold seen.  0, or -1 (reported). */
+static int read_accuracy(csv_file *c, const char *summary_csv, const sum_cols *k, tradeoff_row *rows, int n, int *seen)
+{
+	int nf;
+	while ((nf = csv_next(c)) > 0) {
+		const char *d;
+		int dbl, r, bit;
+		if (nf != c->nh) {
+			study_error("table: %s:%ld: %d fields, the header has %d", summary_csv, c->lineno, nf, c->nh);
+			return -1;
+		}
+		dbl = parse_prec(c->fld[k->p]);
+		r = dbl < 0 ? -1 : find_row(rows, n, c->fld[k->m], dbl);
+		if (r < 0)
+			continue;
+		d = c->fld[k->dist];
+		bit = strcmp(d, "uniform") == 0 ? 1 : strcmp(d, "south") == 0 ? 2 : strcmp(d, "threshold") == 0 ? 4 : 0;
+		if (!bit)
+			continue;
+		set_accuracy(&rows[r], c->fld, k, bit, &seen[r]);
+	}
+	return 0;
+}
+
+/* The accuracy of summary.csv's uniform, south and threshold rows into the
+   rows found in bench.csv.  0, or -1 (reported). */
+static int load_accuracy(const char *summary_csv, tradeoff_row *rows, int n)
+{
+	csv_file c;
+	sum_cols k;
+	int *seen, i, rc;
+
+	if (csv_open(&c, summary_csv) != 0)
+		return -1;
+	k.m = col(c.hdr, c.nh, "method");
+	k.p = col(c.hdr, c.nh, "precision");
+	k.dist = col(c.hdr, c.nh, "distribution");
+	k.rmse = col(c.hdr, c.nh, "rmse");
+	k.max = col(c.hdr, c.nh, "max_defect");
+	k.nf = col(c.hdr, c.nh, "nonfinite");
+	k.fl = col(c.hdr, c.nh, "max_floor");       /* the floor: optional (older runs lack it) */
+	k.rr = col(c.hdr, c.nh, "rms_floor_ratio");
+	k.mr = col(c.hdr, c.nh, "max_floor_ratio");
+	if (k.m < 0 || k.p < 0 || k.dist < 0 || k.rmse < 0 || k.max < 0) {
+		study_error("table: '%s' lacks one of the columns method,precision,distribution,rmse,max_defect", summary_csv);
+		fclose(c.f);
+		return -1;
+	}
+	seen = calloc((size_t)(n ? n : 1), sizeof *seen);
+	if (!seen) {
+		study_error("table: out of memory");
+		fclose(c.f);
+		return -1;
+	}
+	rc = read_accuracy(&c, summary_csv, &k, rows, n, seen);
+	if (rc == 0)
+		for (i = 0; i < n; i++)
+			rows[i].has_accuracy = seen[i] == 7;
+	free(seen);
+	fclose(c.f);
+	return rc;
+}
+
+int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows_out)
+{
+	row_set s = { NULL, 0, 0 };
+	*rows_out = NULL;
+	if (load_speeds(bench_csv, &s) != 0 || load_accuracy(summary_csv, s.v, s.n) != 0) {
+		free(s.v);
+		return -1;
+	}
+	tradeoff_pareto(s.v, s.n, tol);
+	*rows_out = s.v;
+	return s.n;
 }
 
 static double err_of(const tradeoff_row *r)

@@ -17,7 +17,7 @@ SMALL="--samples 3000 --exhaustive-count 2048 --azimuths 2 --grid 8x16 --seed 42
 # 1. same seed, 1 and 2 threads: identical data in every file
 ./onbstudy sweep $SMALL --threads 1 --out "$T/t1" >/dev/null 2>"$T/e1" || bad "sweep --threads 1 failed: $(cat "$T/e1")"
 ./onbstudy sweep $SMALL --threads 2 --out "$T/t2" >/dev/null 2>"$T/e2" || bad "sweep --threads 2 failed: $(cat "$T/e2")"
-for f in summary.csv by_nz.csv worst.csv grid.csv; do
+for f in summary.csv by_nz.csv worst.csv grid.csv reference.csv; do
 	[ -s "$T/t1/$f" ] && [ -s "$T/t2/$f" ] && ok || bad "$f missing with 1 or 2 threads"
 	data "$T/t1/$f" > "$T/a"; data "$T/t2/$f" > "$T/b"
 	if [ -s "$T/a" ] && cmp -s "$T/a" "$T/b"; then ok; else bad "$f differs between 1 and 2 threads"; fi

@@ -359,20 +359,214 @@ static unsigned char *obj_join(const unsigned char *buf, size_t len)
 	return j;
 }
 
+/* The state of one OBJ parse. */
+typedef struct {
+	mctx *c;
+	gvec pos, vwhere, vn, vnwhere, corners, cnorm, faces;
+	uint64_t line;        /* the first physical line of the current logical one */
+	uint64_t pending;     /* newlines joined into it by continuations */
+	size_t nvt;           /* 'vt' lines so far */
+	int want_cnorm;       /* keep each corner's normal index (for the geometry) */
+} obj_st;
+
+/* 'v' (up to 7 numbers) or 'vn' (isn; 3): the numbers after the keyword. */
+static int obj_vertex(obj_st *st, int isn, const unsigned char *q, const unsigned char *le)
+{
+	mctx *c = st->c;
+	const unsigned char *t;
+	size_t tl;
+	double v[7];
+	int k = 0;
+	char sb[64];
+	while (next_tok(&q, le, &t, &tl)) {
+		if (k == (isn ? 3 : 7))
+			return fail(c, "line %llu: too many numbers in '%s' (at most %d)", (unsigned long long)st->line, isn ? "vn" : "v", isn ? 3 : 7);
+		if (!tok_double(t, tl, &v[k]))
+			return fail(c, "line %llu: bad number '%s'", (unsigned long long)st->line, tok_show(t, tl, sb, sizeof sb));
+		k++;
+	}
+	if (k < 3)
+		return fail(c, "line %llu: '%s' needs 3 numbers, got %d", (unsigned long long)st->line, isn ? "vn" : "v", k);
+	if (gvec_push(isn ? &st->vn : &st->pos, v) != 0 || gvec_push(isn ? &st->vnwhere : &st->vwhere, &st->line) != 0)
+		return fail(c, "line %llu: too many vertices or normals, or out of memory", (unsigned long long)st->line);
+	return 0;
+}
+
+/* 'vt': 1 to 3 numbers, only counted (face corners may refer to them). */
+static int obj_texcoord(obj_st *st, const unsigned char *q, const unsigned char *le)
+{
+	const unsigned char *t;
+	size_t tl;
+	double v;
+	int k = 0;
+	char sb[64];
+	while (next_tok(&q, le, &t, &tl)) {
+		if (!tok_double(t, tl, &v) || ++k > 3)
+			return fail(st->c, "line %llu: bad texture coordinate '%s'", (unsigned long long)st->line, tok_show(t, tl, sb, sizeof sb));
+	}
+	if (k < 1)
+		return fail(st->c, "line %llu: 'vt' needs 1 to 3 numbers", (unsigned long long)st->line);
+	st->nvt++;
+	return 0;
+}
+
+/* One corner of an 'f' line: v, v/vt, v//vn or v/vt/vn. */
+static int obj_corner(obj_st *st, const unsigned char *t, size_t tl)
+{
+	mctx *c = st->c;
+	const unsigned char *s1 = memchr(t, '/', tl), *s2 = NULL;
+	size_t vi, other;
+	uint32_t u, un = MESH_NO_NORMAL;
+	char sb[64];
+	if (s1)
+		s2 = memchr(s1 + 1, '/', tl - (size_t)(s1 + 1 - t));
+	if (s2 && memchr(s2 + 1, '/', tl - (size_t)(s2 + 1 - t)))
+		return fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)st->line, tok_show(t, tl, sb, sizeof sb));
+	if (obj_index(c, st->line, "vertex", t, s1 ? (size_t)(s1 - t) : tl, st->pos.n, &vi) != 0)
+		return -1;
+	if (s1) {
+		const unsigned char *b = s1 + 1, *be = s2 ? s2 : t + tl;
+		if (be > b && obj_index(c, st->line, "texture", b, (size_t)(be - b), st->nvt, &other) != 0)
+			return -1;
+		if (!s2 && be == b)
+			return fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)st->line, tok_show(t, tl, sb, sizeof sb));
+		if (s2 && obj_index(c, st->line, "normal", s2 + 1, (size_t)(t + tl - s2 - 1), st->vn.n, &other) != 0)
+			return -1;
+		if (s2)
+			un = (uint32_t)other;
+	}
+	u = (uint32_t)vi;
+	if (gvec_push(&st->corners, &u) != 0 || (st->want_cnorm && gvec_push(&st->cnorm, &un) != 0))
+		return fail(c, "line %llu: too many face corners, or out of memory", (unsigned long long)st->line);
+	return 0;
+}
+
+/* 'f': at least 3 corners. */
+static int obj_face(obj_st *st, const unsigned char *q, const unsigned char *le)
+{
+	const unsigned char *t;
+	size_t tl;
+	face_rec fr;
+	fr.first = st->corners.n;
+	fr.count = 0;
+	fr.where = st->line;
+	while (next_tok(&q, le, &t, &tl)) {
+		if (obj_corner(st, t, tl) != 0)
+			return -1;
+		fr.count++;
+	}
+	if (fr.count < 3)
+		return fail(st->c, "line %llu: a face needs at least 3 vertices, got %zu", (unsigned long long)st->line, fr.count);
+	if (gvec_push(&st->faces, &fr) != 0)
+		return fail(st->c, "line %llu: too many faces, or out of memory", (unsigned long long)st->line);
+	return 0;
+}
+
+/* One logical line [q, le), its comment cut off. */
+static int obj_statement(obj_st *st, const unsigned char *q, const unsigned char *le)
+{
+	const unsigned char *t;
+	size_t tl;
+	if (!next_tok(&q, le, &t, &tl))
+		return 0;
+	if (tok_eq(t, tl, "v") || tok_eq(t, tl, "vn"))
+		return obj_vertex(st, tl == 2, q, le);
+	if (tok_eq(t, tl, "vt"))
+		return obj_texcoord(st, q, le);
+	if (tok_eq(t, tl, "f"))
+		return obj_face(st, q, le);
+	/* every other statement (vp, l, p, g, o, s, usemtl, mtllib, ...)
+	   carries no normal and is skipped */
+	return 0;
+}
+
+/* The newlines in [o, oe). */
+static uint64_t obj_newlines(const unsigned char *o, const unsigned char *oe)
+{
+	const unsigned char *hit;
+	uint64_t n = 0;
+	while ((hit = memchr(o, '\n', (size_t)(oe - o))) != NULL) {
+		n++;
+		o = hit + 1;
+	}
+	return n;
+}
+
+/* Every logical line of [p, end).  joined: the copy p and end point into
+   when lines were joined (buf is then the original, whose newlines the
+   line numbers count), or NULL. */
+static int obj_lines(obj_st *st, const unsigned char *buf, const unsigned char *joined,
+                     const unsigned char *p, const unsigned char *end)
+{
+	while (p < end) {
+		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
+		const unsigned char *le = eol ? eol : end, *hash, *q;
+		st->line += 1 + st->pending; /* the first physical line of this logical one */
+		st->pending = 0;
+		if (joined) /* the newlines joined into it */
+			st->pending = obj_newlines(buf + (p - joined), buf + (le - joined));
+		hash = memchr(p, '#', (size_t)(le - p));
+		if (hash)
+			le = hash;
+		q = p;
+		p = eol ? eol + 1 : end;
+		if (obj_statement(st, q, le) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* The counts, and the normals: the 'vn' lines as stored, else computed
+   from the faces. */
+static int obj_normals(obj_st *st, mesh_normals *m)
+{
+	mctx *c = st->c;
+	const face_rec *fr = st->faces.p;
+	size_t f, i, t;
+	int rc;
+	m->nvertices = st->pos.n;
+	m->nfaces = st->faces.n;
+	for (f = 0; f < st->faces.n; f++)
+		m->ntriangles += fr[f].count - 2;
+	if (st->vn.n > 0) {
+		const double *v = st->vn.p;
+		if (alloc_normals(m, st->vn.n) != 0)
+			return fail(c, "out of memory for %zu normals", st->vn.n);
+		for (i = 0; i < st->vn.n; i++) {
+			m->x[i] = v[3 * i]; m->y[i] = v[3 * i + 1]; m->z[i] = v[3 * i + 2];
+			m->where[i] = ((const uint64_t *)st->vnwhere.p)[i];
+			m->index[i] = i;
+		}
+		m->count = st->vn.n;
+		m->origin = MESH_STORED;
+		m->stored_type = MESH_T_TEXT;
+		return 0;
+	}
+	if (st->faces.n == 0)
+		return fail(c, "no normals: no 'vn' lines and no faces to compute them from (%llu lines, %zu vertices)",
+		            (unsigned long long)(st->line + st->pending), st->pos.n);
+	t = m->ntriangles;
+	m->ntriangles = 0;
+	rc = compute_normals(c, m, st->pos.p, st->pos.n, st->vwhere.p, st->corners.p, st->faces.p, st->faces.n);
+	m->ntriangles = t;
+	m->stored_type = MESH_T_TEXT;
+	return rc;
+}
+
 static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
 {
 	unsigned char *joined = NULL;
-	uint64_t pending = 0;
-	gvec pos, vwhere, vn, vnwhere, corners, cnorm, faces;
 	const unsigned char *p = buf, *end = buf + len;
-	uint64_t line = 0;
-	size_t nvt = 0;
+	obj_st st;
 	int rc = -1;
-	char sb[64];
-	gvec_init(&pos, 3 * sizeof(double)); gvec_init(&vwhere, sizeof(uint64_t));
-	gvec_init(&vn, 3 * sizeof(double)); gvec_init(&vnwhere, sizeof(uint64_t));
-	gvec_init(&corners, sizeof(uint32_t)); gvec_init(&faces, sizeof(face_rec));
-	gvec_init(&cnorm, sizeof(uint32_t));
+	st.c = c;
+	st.line = st.pending = 0;
+	st.nvt = 0;
+	st.want_cnorm = geom != NULL;
+	gvec_init(&st.pos, 3 * sizeof(double)); gvec_init(&st.vwhere, sizeof(uint64_t));
+	gvec_init(&st.vn, 3 * sizeof(double)); gvec_init(&st.vnwhere, sizeof(uint64_t));
+	gvec_init(&st.corners, sizeof(uint32_t)); gvec_init(&st.faces, sizeof(face_rec));
+	gvec_init(&st.cnorm, sizeof(uint32_t));
 	m->format = MESH_OBJ;
 	if (len >= 2 && ((buf[0] == 0xfe && buf[1] == 0xff) || (buf[0] == 0xff && buf[1] == 0xfe))) {
 		fail(c, "line 1: UTF-16 text (byte-order mark %02x %02x) is not supported; convert to UTF-8", buf[0], buf[1]);
@@ -394,151 +588,11 @@ static int read_obj(mctx *c, const unsigned char *buf, size_t len, mesh_normals 
 		p = joined + (p - buf);
 		end = joined + len;
 	}
-	while (p < end) {
-		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
-		const unsigned char *le = eol ? eol : end, *hash, *q, *t;
-		size_t tl;
-		line += 1 + pending; /* the first physical line of this logical one */
-		pending = 0;
-		if (joined) { /* the newlines joined into it */
-			const unsigned char *o = buf + (p - joined), *oe = buf + (le - joined), *hit;
-			while ((hit = memchr(o, '\n', (size_t)(oe - o))) != NULL) {
-				pending++;
-				o = hit + 1;
-			}
-		}
-		hash = memchr(p, '#', (size_t)(le - p));
-		if (hash)
-			le = hash;
-		q = p;
-		p = eol ? eol + 1 : end;
-		if (!next_tok(&q, le, &t, &tl))
-			continue;
-		if (tok_eq(t, tl, "v") || tok_eq(t, tl, "vn")) {
-			int isn = tl == 2;
-			double v[7];
-			int k = 0;
-			while (next_tok(&q, le, &t, &tl)) {
-				if (k == (isn ? 3 : 7)) {
-					fail(c, "line %llu: too many numbers in '%s' (at most %d)", (unsigned long long)line, isn ? "vn" : "v", isn ? 3 : 7);
-					goto out;
-				}
-				if (!tok_double(t, tl, &v[k])) {
-					fail(c, "line %llu: bad number '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
-					goto out;
-				}
-				k++;
-			}
-			if (k < 3) {
-				fail(c, "line %llu: '%s' needs 3 numbers, got %d", (unsigned long long)line, isn ? "vn" : "v", k);
-				goto out;
-			}
-			if (gvec_push(isn ? &vn : &pos, v) != 0 || gvec_push(isn ? &vnwhere : &vwhere, &line) != 0) {
-				fail(c, "line %llu: too many vertices or normals, or out of memory", (unsigned long long)line);
-				goto out;
-			}
-		} else if (tok_eq(t, tl, "vt")) {
-			double v;
-			int k = 0;
-			while (next_tok(&q, le, &t, &tl)) {
-				if (!tok_double(t, tl, &v) || ++k > 3) {
-					fail(c, "line %llu: bad texture coordinate '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
-					goto out;
-				}
-			}
-			if (k < 1) {
-				fail(c, "line %llu: 'vt' needs 1 to 3 numbers", (unsigned long long)line);
-				goto out;
-			}
-			nvt++;
-		} else if (tok_eq(t, tl, "f")) {
-			face_rec fr;
-			fr.first = corners.n;
-			fr.count = 0;
-			fr.where = line;
-			while (next_tok(&q, le, &t, &tl)) {
-				const unsigned char *s1 = memchr(t, '/', tl), *s2 = NULL;
-				size_t vi, other;
-				uint32_t u, un = MESH_NO_NORMAL;
-				if (s1)
-					s2 = memchr(s1 + 1, '/', tl - (size_t)(s1 + 1 - t));
-				if (s2 && memchr(s2 + 1, '/', tl - (size_t)(s2 + 1 - t))) {
-					fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
-					goto out;
-				}
-				if (obj_index(c, line, "vertex", t, s1 ? (size_t)(s1 - t) : tl, pos.n, &vi) != 0)
-					goto out;
-				if (s1) {
-					const unsigned char *b = s1 + 1, *be = s2 ? s2 : t + tl;
-					if (be > b && obj_index(c, line, "texture", b, (size_t)(be - b), nvt, &other) != 0)
-						goto out;
-					if (!s2 && be == b) {
-						fail(c, "line %llu: bad face vertex '%s'", (unsigned long long)line, tok_show(t, tl, sb, sizeof sb));
-						goto out;
-					}
-					if (s2 && obj_index(c, line, "normal", s2 + 1, (size_t)(t + tl - s2 - 1), vn.n, &other) != 0)
-						goto out;
-					if (s2)
-						un = (uint32_t)other;
-				}
-				u = (uint32_t)vi;
-				if (gvec_push(&corners, &u) != 0 || (geom && gvec_push(&cnorm, &un) != 0)) {
-					fail(c, "line %llu: too many face corners, or out of memory", (unsigned long long)line);
-					goto out;
-				}
-				fr.count++;
-			}
-			if (fr.count < 3) {
-				fail(c, "line %llu: a face needs at least 3 vertices, got %zu", (unsigned long long)line, fr.count);
-				goto out;
-			}
-			if (gvec_push(&faces, &fr) != 0) {
-				fail(c, "line %llu: too many faces, or out of memory", (unsigned long long)line);
-				goto out;
-			}
-		}
-		/* every other statement (vp, l, p, g, o, s, usemtl, mtllib, ...)
-		   carries no normal and is skipped */
-	}
-	m->nvertices = pos.n;
-	m->nfaces = faces.n;
-	{
-		size_t f;
-		const face_rec *fr = faces.p;
-		for (f = 0; f < faces.n; f++)
-			m->ntriangles += fr[f].count - 2;
-	}
-	if (vn.n > 0) {
-		size_t i;
-		const double *v = vn.p;
-		if (alloc_normals(m, vn.n) != 0) {
-			fail(c, "out of memory for %zu normals", vn.n);
-			goto out;
-		}
-		for (i = 0; i < vn.n; i++) {
-			m->x[i] = v[3 * i]; m->y[i] = v[3 * i + 1]; m->z[i] = v[3 * i + 2];
-			m->where[i] = ((const uint64_t *)vnwhere.p)[i];
-			m->index[i] = i;
-		}
-		m->count = vn.n;
-		m->origin = MESH_STORED;
-		m->stored_type = MESH_T_TEXT;
-		rc = 0;
-	} else if (faces.n > 0) {
-		size_t t = m->ntriangles;
-		m->ntriangles = 0;
-		rc = compute_normals(c, m, pos.p, pos.n, vwhere.p, corners.p, faces.p, faces.n);
-		m->ntriangles = t;
-		m->stored_type = MESH_T_TEXT;
-	} else {
-		fail(c, "no normals: no 'vn' lines and no faces to compute them from (%llu lines, %zu vertices)",
-		     (unsigned long long)(line + pending), pos.n);
-	}
-	if (rc == 0 && geom)
-		rc = obj_geom(c, m, &pos, &vn, &corners, &cnorm, &faces, geom);
+	if (obj_lines(&st, buf, joined, p, end) == 0 && obj_normals(&st, m) == 0)
+		rc = geom ? obj_geom(c, m, &st.pos, &st.vn, &st.corners, &st.cnorm, &st.faces, geom) : 0;
 out:
-	gvec_free(&pos); gvec_free(&vwhere); gvec_free(&vn); gvec_free(&vnwhere);
-	gvec_free(&corners); gvec_free(&cnorm); gvec_free(&faces);
+	gvec_free(&st.pos); gvec_free(&st.vwhere); gvec_free(&st.vn); gvec_free(&st.vnwhere);
+	gvec_free(&st.corners); gvec_free(&st.cnorm); gvec_free(&st.faces);
 	free(joined);
 	return rc;
 }
@@ -708,401 +762,471 @@ static int ply_geom(mctx *c, const mesh_normals *m, const double *pos, size_t nv
 	return 0;
 }
 
-static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
-{
-	ply_elem *el = NULL;
-	int ne = 0, i, normal_elems = 0, rc = -1;
-	const unsigned char *p = buf, *end = buf + len;
-	uint64_t line = 0;
-	int fmt = -1, have_end = 0, magic = 0;
-	ply_rd r;
-	double *pos = NULL;
-	uint64_t *vwhere = NULL;
+/* The state of one PLY parse. */
+typedef struct {
+	mctx *c;
+	ply_elem *el;
+	int ne;
+	int fmt;                /* -1 none yet, 0 ascii, 1 little, 2 big */
+	uint64_t line;          /* header lines read */
+	int vert_e, face_e;     /* the 'vertex' and 'face' elements, or -1 */
+	int normal_elems;       /* elements with nx, ny, nz */
+	unsigned long long nnorm, nvert;
+	int positions;          /* read positions and faces (to compute normals, or for a renderer) */
+	double *pos;
+	uint64_t *vwhere;
 	gvec corners, faces;
-	unsigned long long nnorm = 0, nvert = 0;
-	int vert_e = -1, face_e = -1, compute;
-	char sb[64];
+	size_t kn;              /* normals stored so far */
+} ply_st;
 
-	gvec_init(&corners, sizeof(uint32_t));
-	gvec_init(&faces, sizeof(face_rec));
-	m->format = MESH_PLY;
-	el = xcalloc(PLY_MAX_ELEMS, sizeof *el);
-	if (!el)
-		return fail(c, "out of memory");
-	/* header: one statement a line, up to end_header */
+static int ply_isn(const ply_elem *e) { return e->inx >= 0 && e->iny >= 0 && e->inz >= 0; }
+
+/* "format ascii|binary_little_endian|binary_big_endian 1.0"; lo: the line's byte offset. */
+static int ply_hdr_format(ply_st *s, const unsigned char *q, const unsigned char *le, unsigned long long lo)
+{
+	const unsigned char *t2, *t3;
+	size_t l2, l3;
+	char sb[64];
+	if (s->fmt >= 0)
+		return fail(s->c, "byte %llu (line %llu): second 'format' line", lo, (unsigned long long)s->line);
+	if (!next_tok(&q, le, &t2, &l2) || !next_tok(&q, le, &t3, &l3) || !tok_eq(t3, l3, "1.0"))
+		return fail(s->c, "byte %llu (line %llu): expected 'format ascii|binary_little_endian|binary_big_endian 1.0'", lo, (unsigned long long)s->line);
+	if (tok_eq(t2, l2, "ascii")) s->fmt = 0;
+	else if (tok_eq(t2, l2, "binary_little_endian")) s->fmt = 1;
+	else if (tok_eq(t2, l2, "binary_big_endian")) s->fmt = 2;
+	else
+		return fail(s->c, "byte %llu (line %llu): unknown format '%s'", lo, (unsigned long long)s->line, tok_show(t2, l2, sb, sizeof sb));
+	return 0;
+}
+
+/* "element NAME COUNT" */
+static int ply_hdr_element(ply_st *s, const unsigned char *q, const unsigned char *le, unsigned long long lo)
+{
+	const unsigned char *t, *t2, *t3;
+	size_t tl, l2, l3;
+	long long cnt;
+	ply_elem *e;
+	if (s->ne == PLY_MAX_ELEMS)
+		return fail(s->c, "byte %llu (line %llu): more than %d elements", lo, (unsigned long long)s->line, PLY_MAX_ELEMS);
+	if (!next_tok(&q, le, &t2, &l2) || l2 >= PLY_NAME || !next_tok(&q, le, &t3, &l3)
+	    || !tok_ll(t3, l3, &cnt) || cnt < 0 || next_tok(&q, le, &t, &tl))
+		return fail(s->c, "byte %llu (line %llu): expected 'element NAME COUNT' with a count >= 0", lo, (unsigned long long)s->line);
+	e = &s->el[s->ne++];
+	memcpy(e->name, t2, l2);
+	e->name[l2] = '\0';
+	e->count = (unsigned long long)cnt;
+	e->ix = e->iy = e->iz = e->inx = e->iny = e->inz = e->ilist = -1;
+	return 0;
+}
+
+/* The rest of "property TYPE NAME" or "property list COUNTTYPE ITEMTYPE
+   NAME" into pr; 0, or -1 when it is neither (no message). */
+static int ply_prop_parse(const unsigned char *q, const unsigned char *le, ply_prop *pr)
+{
+	const unsigned char *t, *t2, *tn;
+	size_t tl, l2, ln;
+	memset(pr, 0, sizeof *pr);
+	if (!next_tok(&q, le, &t2, &l2))
+		return -1;
+	if (tok_eq(t2, l2, "list")) {
+		const unsigned char *t3, *t4;
+		size_t l3, l4;
+		if (!next_tok(&q, le, &t3, &l3) || !next_tok(&q, le, &t4, &l4))
+			return -1;
+		pr->list = 1;
+		pr->ctype = pt_lookup(t3, l3);
+		pr->type = pt_lookup(t4, l4);
+		if (pr->ctype == PT_NONE || pr->type == PT_NONE || pr->ctype == PT_F32 || pr->ctype == PT_F64)
+			return -1;
+	} else {
+		pr->type = pt_lookup(t2, l2);
+		if (pr->type == PT_NONE)
+			return -1;
+	}
+	if (!next_tok(&q, le, &tn, &ln) || ln >= PLY_NAME || next_tok(&q, le, &t, &tl))
+		return -1;
+	memcpy(pr->name, tn, ln);
+	pr->name[ln] = '\0';
+	return 0;
+}
+
+/* The property index slot a scalar property NAME fills, or NULL. */
+static int *ply_slot(ply_elem *e, const char *name)
+{
+	if (!strcmp(name, "x")) return &e->ix;
+	if (!strcmp(name, "y")) return &e->iy;
+	if (!strcmp(name, "z")) return &e->iz;
+	/* normal_x ...: the PCL and Open3D names */
+	if (!strcmp(name, "nx") || !strcmp(name, "normal_x")) return &e->inx;
+	if (!strcmp(name, "ny") || !strcmp(name, "normal_y")) return &e->iny;
+	if (!strcmp(name, "nz") || !strcmp(name, "normal_z")) return &e->inz;
+	return NULL;
+}
+
+/* "property ..." of the last element */
+static int ply_hdr_property(ply_st *s, const unsigned char *q, const unsigned char *le, unsigned long long lo)
+{
+	unsigned long long ln = (unsigned long long)s->line;
+	ply_prop pr;
+	ply_elem *e;
+	if (s->ne == 0)
+		return fail(s->c, "byte %llu (line %llu): 'property' before any 'element'", lo, ln);
+	e = &s->el[s->ne - 1];
+	if (e->nprop == PLY_MAX_PROPS)
+		return fail(s->c, "byte %llu (line %llu): more than %d properties in element '%s'", lo, ln, PLY_MAX_PROPS, e->name);
+	if (ply_prop_parse(q, le, &pr) != 0)
+		return fail(s->c, "byte %llu (line %llu): expected 'property TYPE NAME' or 'property list COUNTTYPE ITEMTYPE NAME' (integer count type)",
+		            lo, ln);
+	if (!pr.list) {
+		int *slot = ply_slot(e, pr.name);
+		if (slot) {
+			if (*slot >= 0)
+				return fail(s->c, "byte %llu (line %llu): property '%s' twice in element '%s' (nx and normal_x name the same)", lo, ln, pr.name, e->name);
+			*slot = e->nprop;
+		}
+	} else if (!strcmp(pr.name, "vertex_indices") || !strcmp(pr.name, "vertex_index")) {
+		if (pr.type == PT_F32 || pr.type == PT_F64)
+			return fail(s->c, "byte %llu (line %llu): list '%s' must hold integers", lo, ln, pr.name);
+		e->ilist = e->nprop;
+	}
+	e->prop[e->nprop++] = pr;
+	return 0;
+}
+
+/* One header statement (t: its keyword; [q, le): the rest; lo: its byte offset). */
+static int ply_hdr_statement(ply_st *s, mesh_normals *m, const unsigned char *t, size_t tl,
+                             const unsigned char *q, const unsigned char *le, unsigned long long lo)
+{
+	if (tok_eq(t, tl, "format"))
+		return ply_hdr_format(s, q, le, lo);
+	if (tok_eq(t, tl, "comment") || tok_eq(t, tl, "obj_info"))
+		return 0;
+	if (tok_eq(t, tl, "element"))
+		return ply_hdr_element(s, q, le, lo);
+	if (tok_eq(t, tl, "property"))
+		return ply_hdr_property(s, q, le, lo);
+	/* not in the PLY grammar (e.g. Blender 2.4's "Created by ..."
+	   line): skipped, counted and reported, as most readers do */
+	if (m->header_skipped++ == 0)
+		m->header_skipped_line = s->line;
+	return 0;
+}
+
+/* The header: one statement a line, up to end_header; *pp is left after it. */
+static int ply_header(ply_st *s, const unsigned char *buf, const unsigned char **pp, const unsigned char *end,
+                      mesh_normals *m)
+{
+	const unsigned char *p = *pp;
+	int have_end = 0, magic = 0;
 	while (p < end) {
 		const unsigned char *eol = memchr(p, '\n', (size_t)(end - p));
 		const unsigned char *le = eol ? eol : end, *q = p, *t;
 		unsigned long long lo = (unsigned long long)(p - buf);
 		size_t tl;
-		line++;
+		s->line++;
 		p = eol ? eol + 1 : end;
 		if (!next_tok(&q, le, &t, &tl)) {
-			if (line == 1)
+			if (s->line == 1)
 				break;
 			continue;
 		}
-		if (line == 1) {
+		if (s->line == 1) {
 			if (!tok_eq(t, tl, "ply") || next_tok(&q, le, &t, &tl))
 				break;
 			magic = 1;
 			continue;
 		}
-		if (tok_eq(t, tl, "format")) {
-			const unsigned char *t2, *t3;
-			size_t l2, l3;
-			if (fmt >= 0) {
-				fail(c, "byte %llu (line %llu): second 'format' line", lo, (unsigned long long)line);
-				goto out;
-			}
-			if (!next_tok(&q, le, &t2, &l2) || !next_tok(&q, le, &t3, &l3) || !tok_eq(t3, l3, "1.0")) {
-				fail(c, "byte %llu (line %llu): expected 'format ascii|binary_little_endian|binary_big_endian 1.0'", lo, (unsigned long long)line);
-				goto out;
-			}
-			if (tok_eq(t2, l2, "ascii")) fmt = 0;
-			else if (tok_eq(t2, l2, "binary_little_endian")) fmt = 1;
-			else if (tok_eq(t2, l2, "binary_big_endian")) fmt = 2;
-			else {
-				fail(c, "byte %llu (line %llu): unknown format '%s'", lo, (unsigned long long)line, tok_show(t2, l2, sb, sizeof sb));
-				goto out;
-			}
-		} else if (tok_eq(t, tl, "comment") || tok_eq(t, tl, "obj_info")) {
-			continue;
-		} else if (tok_eq(t, tl, "element")) {
-			const unsigned char *t2, *t3;
-			size_t l2, l3;
-			long long cnt;
-			ply_elem *e;
-			if (ne == PLY_MAX_ELEMS) {
-				fail(c, "byte %llu (line %llu): more than %d elements", lo, (unsigned long long)line, PLY_MAX_ELEMS);
-				goto out;
-			}
-			if (!next_tok(&q, le, &t2, &l2) || l2 >= PLY_NAME || !next_tok(&q, le, &t3, &l3)
-			    || !tok_ll(t3, l3, &cnt) || cnt < 0 || next_tok(&q, le, &t, &tl)) {
-				fail(c, "byte %llu (line %llu): expected 'element NAME COUNT' with a count >= 0", lo, (unsigned long long)line);
-				goto out;
-			}
-			e = &el[ne++];
-			memcpy(e->name, t2, l2);
-			e->name[l2] = '\0';
-			e->count = (unsigned long long)cnt;
-			e->ix = e->iy = e->iz = e->inx = e->iny = e->inz = e->ilist = -1;
-		} else if (tok_eq(t, tl, "property")) {
-			const unsigned char *t2, *tn;
-			size_t l2, ln;
-			ply_prop pr;
-			ply_elem *e;
-			memset(&pr, 0, sizeof pr);
-			if (ne == 0) {
-				fail(c, "byte %llu (line %llu): 'property' before any 'element'", lo, (unsigned long long)line);
-				goto out;
-			}
-			e = &el[ne - 1];
-			if (e->nprop == PLY_MAX_PROPS) {
-				fail(c, "byte %llu (line %llu): more than %d properties in element '%s'", lo, (unsigned long long)line, PLY_MAX_PROPS, e->name);
-				goto out;
-			}
-			if (!next_tok(&q, le, &t2, &l2))
-				goto badprop;
-			if (tok_eq(t2, l2, "list")) {
-				const unsigned char *t3, *t4;
-				size_t l3, l4;
-				if (!next_tok(&q, le, &t3, &l3) || !next_tok(&q, le, &t4, &l4))
-					goto badprop;
-				pr.list = 1;
-				pr.ctype = pt_lookup(t3, l3);
-				pr.type = pt_lookup(t4, l4);
-				if (pr.ctype == PT_NONE || pr.type == PT_NONE || pr.ctype == PT_F32 || pr.ctype == PT_F64)
-					goto badprop;
-			} else {
-				pr.type = pt_lookup(t2, l2);
-				if (pr.type == PT_NONE)
-					goto badprop;
-			}
-			if (!next_tok(&q, le, &tn, &ln) || ln >= PLY_NAME || next_tok(&q, le, &t, &tl))
-				goto badprop;
-			memcpy(pr.name, tn, ln);
-			pr.name[ln] = '\0';
-			if (!pr.list) {
-				int *slot = NULL;
-				if (!strcmp(pr.name, "x")) slot = &e->ix;
-				else if (!strcmp(pr.name, "y")) slot = &e->iy;
-				else if (!strcmp(pr.name, "z")) slot = &e->iz;
-				/* normal_x ...: the PCL and Open3D names */
-				else if (!strcmp(pr.name, "nx") || !strcmp(pr.name, "normal_x")) slot = &e->inx;
-				else if (!strcmp(pr.name, "ny") || !strcmp(pr.name, "normal_y")) slot = &e->iny;
-				else if (!strcmp(pr.name, "nz") || !strcmp(pr.name, "normal_z")) slot = &e->inz;
-				if (slot) {
-					if (*slot >= 0) {
-						fail(c, "byte %llu (line %llu): property '%s' twice in element '%s' (nx and normal_x name the same)", lo, (unsigned long long)line, pr.name, e->name);
-						goto out;
-					}
-					*slot = e->nprop;
-				}
-			} else if (!strcmp(pr.name, "vertex_indices") || !strcmp(pr.name, "vertex_index")) {
-				if (pr.type == PT_F32 || pr.type == PT_F64) {
-					fail(c, "byte %llu (line %llu): list '%s' must hold integers", lo, (unsigned long long)line, pr.name);
-					goto out;
-				}
-				e->ilist = e->nprop;
-			}
-			e->prop[e->nprop++] = pr;
-			continue;
-badprop:
-			fail(c, "byte %llu (line %llu): expected 'property TYPE NAME' or 'property list COUNTTYPE ITEMTYPE NAME' (integer count type)",
-			     lo, (unsigned long long)line);
-			goto out;
-		} else if (tok_eq(t, tl, "end_header")) {
+		if (tok_eq(t, tl, "end_header")) {
 			have_end = 1;
 			break;
-		} else {
-			/* not in the PLY grammar (e.g. Blender 2.4's "Created by ..."
-			   line): skipped, counted and reported, as most readers do */
-			if (m->header_skipped++ == 0)
-				m->header_skipped_line = line;
 		}
+		if (ply_hdr_statement(s, m, t, tl, q, le, lo) != 0)
+			return -1;
 	}
-	if (!magic) {
-		fail(c, "byte 0: not a PLY file (first line is not 'ply')");
-		goto out;
-	}
-	if (!have_end) {
-		fail(c, "byte %llu: header has no 'end_header' line", (unsigned long long)len);
-		goto out;
-	}
-	if (fmt < 0) {
-		fail(c, "byte 0: header has no 'format' line");
-		goto out;
-	}
-	m->ply_binary = fmt;
+	*pp = p;
+	if (!magic)
+		return fail(s->c, "byte 0: not a PLY file (first line is not 'ply')");
+	if (!have_end)
+		return fail(s->c, "byte %llu: header has no 'end_header' line", (unsigned long long)(end - buf));
+	if (s->fmt < 0)
+		return fail(s->c, "byte 0: header has no 'format' line");
+	return 0;
+}
 
-	/* what to read, and counts against the bytes that remain */
-	{
-		unsigned long long remain = (unsigned long long)(end - p), need = 0;
-		for (i = 0; i < ne; i++) {
-			ply_elem *e = &el[i];
-			unsigned long long rec = 0;
-			int k;
-			if (e->count == 0)
-				continue;
-			if (e->nprop == 0) {
-				fail(c, "byte %llu: element '%s' has %llu records but no properties", (unsigned long long)(p - buf), e->name, e->count);
-				goto out;
-			}
-			for (k = 0; k < e->nprop; k++)
-				rec += fmt == 0 ? 2 : pt_size[e->prop[k].list ? e->prop[k].ctype : e->prop[k].type];
-			/* ascii: each value is at least one character and a separator */
-			if (e->count > (remain + 1) / rec || need + e->count * rec > remain + 1) {
-				fail(c, "byte %llu: element '%s' count %llu needs at least %llu bytes per record, but only %llu bytes follow the header",
-				     (unsigned long long)(p - buf), e->name, e->count, rec, remain);
-				goto out;
-			}
-			need += e->count * rec;
-			if (e->inx >= 0 && e->iny >= 0 && e->inz >= 0) {
-				normal_elems++;
-				nnorm += e->count;
-			}
-			if (!strcmp(e->name, "vertex") && vert_e < 0)
-				vert_e = i;
-			if (!strcmp(e->name, "face") && face_e < 0)
-				face_e = i;
+/* What to read: each element's count against the `remain` bytes that
+   follow the header (at byte `at`); the vertex and face elements; the
+   number of normals. */
+static int ply_plan(ply_st *s, unsigned long long at, unsigned long long remain)
+{
+	unsigned long long need = 0;
+	int i;
+	for (i = 0; i < s->ne; i++) {
+		ply_elem *e = &s->el[i];
+		unsigned long long rec = 0;
+		int k;
+		if (e->count == 0)
+			continue;
+		if (e->nprop == 0)
+			return fail(s->c, "byte %llu: element '%s' has %llu records but no properties", at, e->name, e->count);
+		for (k = 0; k < e->nprop; k++)
+			rec += s->fmt == 0 ? 2 : pt_size[e->prop[k].list ? e->prop[k].ctype : e->prop[k].type];
+		/* ascii: each value is at least one character and a separator */
+		if (e->count > (remain + 1) / rec || need + e->count * rec > remain + 1)
+			return fail(s->c, "byte %llu: element '%s' count %llu needs at least %llu bytes per record, but only %llu bytes follow the header",
+			            at, e->name, e->count, rec, remain);
+		need += e->count * rec;
+		if (ply_isn(e)) {
+			s->normal_elems++;
+			s->nnorm += e->count;
 		}
-		for (i = 0; i < ne && vert_e < 0; i++)
-			if (!strcmp(el[i].name, "vertex"))
-				vert_e = i;
-		for (i = 0; i < ne && face_e < 0; i++)
-			if (!strcmp(el[i].name, "face"))
-				face_e = i;
+		if (!strcmp(e->name, "vertex") && s->vert_e < 0)
+			s->vert_e = i;
+		if (!strcmp(e->name, "face") && s->face_e < 0)
+			s->face_e = i;
 	}
-	if (nnorm > MESH_MAX_ITEMS) {
-		fail(c, "%llu normals: more than the %llu accepted", nnorm, (unsigned long long)MESH_MAX_ITEMS);
-		goto out;
-	}
-	compute = normal_elems == 0;
-	if (vert_e >= 0)
-		nvert = el[vert_e].count;
-	m->nvertices = (size_t)nvert;
+	for (i = 0; i < s->ne && s->vert_e < 0; i++)
+		if (!strcmp(s->el[i].name, "vertex"))
+			s->vert_e = i;
+	for (i = 0; i < s->ne && s->face_e < 0; i++)
+		if (!strcmp(s->el[i].name, "face"))
+			s->face_e = i;
+	if (s->nnorm > MESH_MAX_ITEMS)
+		return fail(s->c, "%llu normals: more than the %llu accepted", s->nnorm, (unsigned long long)MESH_MAX_ITEMS);
+	return 0;
+}
+
+/* 1 when there is a 'vertex' element with x, y, z and a 'face' element with vertex_indices. */
+static int ply_has_mesh(const ply_st *s)
+{
+	const ply_elem *el = s->el;
+	return !(s->vert_e < 0 || el[s->vert_e].ix < 0 || el[s->vert_e].iy < 0 || el[s->vert_e].iz < 0
+	         || s->face_e < 0 || el[s->face_e].ilist < 0);
+}
+
+/* The type the stored normals all have, or MESH_T_OTHER. */
+static int ply_stored_type(const ply_st *s)
+{
+	int all_f = 1, all_d = 1, i, k;
+	for (i = 0; i < s->ne; i++)
+		if (ply_isn(&s->el[i])) {
+			const ply_elem *e = &s->el[i];
+			int ts[3];
+			ts[0] = e->prop[e->inx].type; ts[1] = e->prop[e->iny].type; ts[2] = e->prop[e->inz].type;
+			for (k = 0; k < 3; k++) {
+				all_f &= ts[k] == PT_F32;
+				all_d &= ts[k] == PT_F64;
+			}
+		}
+	return all_f ? MESH_T_FLOAT : all_d ? MESH_T_DOUBLE : MESH_T_OTHER;
+}
+
+/* Stored normals: room for them in m, and what they are; to be computed:
+   checks that they can be. */
+static int ply_setup_normals(ply_st *s, int compute, mesh_normals *m)
+{
+	int i;
 	if (compute) {
-		if (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0) {
-			fail(c, "no normals: no element has nx, ny, nz (or normal_x, normal_y, normal_z), and there is no 'vertex' element with x, y, z and 'face' element with vertex_indices to compute them from");
-			goto out;
-		}
-		if (nvert > MESH_MAX_ITEMS) {
-			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
-			goto out;
-		}
-	} else {
-		if (alloc_normals(m, (size_t)nnorm) != 0) {
-			fail(c, "out of memory for %llu normals", nnorm);
-			goto out;
-		}
-		m->count = (size_t)nnorm;
-		m->element[0] = '\0';
-		for (i = 0; i < ne; i++)
-			if (el[i].inx >= 0 && el[i].iny >= 0 && el[i].inz >= 0 && el[i].count) {
-				size_t l = strlen(m->element);
-				snprintf(m->element + l, sizeof m->element - l, "%s%s", l ? "," : "", el[i].name);
-			}
-		{
-			int all_f = 1, all_d = 1;
-			for (i = 0; i < ne; i++)
-				if (el[i].inx >= 0 && el[i].iny >= 0 && el[i].inz >= 0) {
-					int ts[3], k;
-					ts[0] = el[i].prop[el[i].inx].type; ts[1] = el[i].prop[el[i].iny].type; ts[2] = el[i].prop[el[i].inz].type;
-					for (k = 0; k < 3; k++) {
-						all_f &= ts[k] == PT_F32;
-						all_d &= ts[k] == PT_F64;
-					}
-				}
-			m->stored_type = all_f ? MESH_T_FLOAT : all_d ? MESH_T_DOUBLE : MESH_T_OTHER;
-		}
-		m->origin = MESH_STORED;
+		if (!ply_has_mesh(s))
+			return fail(s->c, "no normals: no element has nx, ny, nz (or normal_x, normal_y, normal_z), and there is no 'vertex' element with x, y, z and 'face' element with vertex_indices to compute them from");
+		if (s->nvert > MESH_MAX_ITEMS)
+			return fail(s->c, "%llu vertices: more than the %llu accepted", s->nvert, (unsigned long long)MESH_MAX_ITEMS);
+		return 0;
 	}
+	if (alloc_normals(m, (size_t)s->nnorm) != 0)
+		return fail(s->c, "out of memory for %llu normals", s->nnorm);
+	m->count = (size_t)s->nnorm;
+	m->element[0] = '\0';
+	for (i = 0; i < s->ne; i++)
+		if (ply_isn(&s->el[i]) && s->el[i].count) {
+			size_t l = strlen(m->element);
+			snprintf(m->element + l, sizeof m->element - l, "%s%s", l ? "," : "", s->el[i].name);
+		}
+	m->stored_type = ply_stored_type(s);
+	m->origin = MESH_STORED;
+	return 0;
+}
 
-	/* positions and faces: for computed normals, and for a renderer */
-	if (compute || geom) {
-		if (geom && (vert_e < 0 || el[vert_e].ix < 0 || el[vert_e].iy < 0 || el[vert_e].iz < 0 || face_e < 0 || el[face_e].ilist < 0)) {
-			fail(c, "no geometry: no 'vertex' element with x, y, z and 'face' element with vertex_indices");
-			goto out;
-		}
-		if (nvert > MESH_MAX_ITEMS) {
-			fail(c, "%llu vertices: more than the %llu accepted", nvert, (unsigned long long)MESH_MAX_ITEMS);
-			goto out;
-		}
-		pos = xcalloc((size_t)nvert, 3 * sizeof *pos);
-		vwhere = xcalloc((size_t)nvert, sizeof *vwhere);
-		if (!pos || !vwhere) {
-			fail(c, "out of memory for %llu vertices", nvert);
-			goto out;
-		}
-	}
+/* Room for the positions (to compute normals, or for a renderer: geom). */
+static int ply_alloc_positions(ply_st *s, int geom)
+{
+	if (geom && !ply_has_mesh(s))
+		return fail(s->c, "no geometry: no 'vertex' element with x, y, z and 'face' element with vertex_indices");
+	if (s->nvert > MESH_MAX_ITEMS)
+		return fail(s->c, "%llu vertices: more than the %llu accepted", s->nvert, (unsigned long long)MESH_MAX_ITEMS);
+	s->pos = xcalloc((size_t)s->nvert, 3 * sizeof *s->pos);
+	s->vwhere = xcalloc((size_t)s->nvert, sizeof *s->vwhere);
+	if (!s->pos || !s->vwhere)
+		return fail(s->c, "out of memory for %llu vertices", s->nvert);
+	return 0;
+}
 
-	/* body */
-	r.c = c; r.buf = buf; r.p = p; r.end = end; r.fmt = fmt; r.line = line + 1;
-	{
-		size_t kn = 0;
-		for (i = 0; i < ne; i++) {
-			ply_elem *e = &el[i];
-			int isn = e->inx >= 0 && e->iny >= 0 && e->inz >= 0;
-			int isv = (compute || geom) && i == vert_e, isf = (compute || geom) && i == face_e;
-			unsigned long long ei;
-			for (ei = 0; ei < e->count; ei++) {
-				unsigned long long at;
-				double nv[3] = { 0, 0, 0 }, dv;
-				long long iv;
-				face_rec fr;
-				int k;
-				/* the record starts at its first value (ascii: after blanks) */
-				if (fmt == 0)
-					while (r.p < r.end && (is_space(*r.p) || *r.p == '\n')) {
-						if (*r.p == '\n')
-							r.line++;
-						r.p++;
-					}
-				at = off(&r);
-				for (k = 0; k < e->nprop; k++) {
-					const ply_prop *pr = &e->prop[k];
-					if (!pr->list) {
-						if (ply_value(&r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
-							goto out;
-						if (isn) {
-							if (k == e->inx) nv[0] = dv;
-							else if (k == e->iny) nv[1] = dv;
-							else if (k == e->inz) nv[2] = dv;
-						}
-						if (isv) {
-							if (k == e->ix) pos[3 * ei] = dv;
-							else if (k == e->iy) pos[3 * ei + 1] = dv;
-							else if (k == e->iz) pos[3 * ei + 2] = dv;
-						}
-					} else {
-						long long cnt, j;
-						unsigned long long cat = off(&r), remain;
-						/* face indices are checked whether or not
-						   normals are computed from them */
-						int isidx = i == face_e && k == e->ilist;
-						if (ply_value(&r, pr->ctype, e, ei, pr->name, &dv, &cnt) != 0)
-							goto out;
-						remain = (unsigned long long)(r.end - r.p);
-						if (cnt < 0 || (unsigned long long)cnt > (fmt == 0 ? remain / 2 + 1 : remain / pt_size[pr->type])) {
-							fail(c, "byte %llu: truncated or bad count: list '%s' of element '%s' %llu has count %lld, but only %llu bytes remain",
-							     cat, pr->name, e->name, ei, cnt, remain);
-							goto out;
-						}
-						if (isidx) {
-							fr.first = corners.n;
-							fr.count = (size_t)cnt;
-							fr.where = at;
-						}
-						for (j = 0; j < cnt; j++) {
-							unsigned long long iat = off(&r);
-							if (ply_value(&r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
-								goto out;
-							if (isidx) {
-								uint32_t u;
-								if (iv < 0 || (unsigned long long)iv >= nvert) {
-									fail(c, "byte %llu: face %llu: vertex index %lld out of range [0, %llu)", iat, ei, iv, nvert);
-									goto out;
-								}
-								u = (uint32_t)iv;
-								if (isf && gvec_push(&corners, &u) != 0) {
-									fail(c, "byte %llu: too many face corners, or out of memory", iat);
-									goto out;
-								}
-							}
-						}
-						if (isf && isidx && cnt >= 3) {
-							if (gvec_push(&faces, &fr) != 0) {
-								fail(c, "byte %llu: too many faces, or out of memory", at);
-								goto out;
-							}
-						}
-					}
-				}
-				if (isn) {
-					m->x[kn] = nv[0]; m->y[kn] = nv[1]; m->z[kn] = nv[2];
-					m->where[kn] = at;
-					m->index[kn] = (size_t)ei;
-					kn++;
-				}
-				if (isv)
-					vwhere[ei] = at;
-			}
-		}
-		if (fmt == 0) {
-			while (r.p < r.end && (is_space(*r.p) || *r.p == '\n' || *r.p == '\0'))
-				r.p++;
-			if (r.p < r.end) {
-				fail(c, "byte %llu: data after the last element (the header's counts are wrong?)", off(&r));
-				goto out;
-			}
-		} else if (r.p < r.end) {
-			/* assimp and others read such files: a warning, not an error */
-			snprintf(m->warning, sizeof m->warning, "byte %llu: %llu bytes after the last element ignored (the header's counts are wrong?)",
-			         off(&r), (unsigned long long)(r.end - r.p));
+/* List property k of record ei of element i (the record starts at byte
+   at).  The face element's vertex indices are checked whether or not
+   normals are computed from them, and kept when positions are read. */
+static int ply_list(ply_st *s, ply_rd *r, int i, unsigned long long ei, int k, unsigned long long at)
+{
+	mctx *c = s->c;
+	const ply_elem *e = &s->el[i];
+	const ply_prop *pr = &e->prop[k];
+	int isidx = i == s->face_e && k == e->ilist, isf = s->positions && i == s->face_e;
+	unsigned long long cat = off(r), remain;
+	long long cnt, j, iv;
+	double dv;
+	face_rec fr;
+	if (ply_value(r, pr->ctype, e, ei, pr->name, &dv, &cnt) != 0)
+		return -1;
+	remain = (unsigned long long)(r->end - r->p);
+	if (cnt < 0 || (unsigned long long)cnt > (r->fmt == 0 ? remain / 2 + 1 : remain / pt_size[pr->type]))
+		return fail(c, "byte %llu: truncated or bad count: list '%s' of element '%s' %llu has count %lld, but only %llu bytes remain",
+		            cat, pr->name, e->name, ei, cnt, remain);
+	fr.first = s->corners.n;
+	fr.count = (size_t)cnt;
+	fr.where = at;
+	for (j = 0; j < cnt; j++) {
+		unsigned long long iat = off(r);
+		if (ply_value(r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
+			return -1;
+		if (isidx) {
+			uint32_t u;
+			if (iv < 0 || (unsigned long long)iv >= s->nvert)
+				return fail(c, "byte %llu: face %llu: vertex index %lld out of range [0, %llu)", iat, ei, iv, s->nvert);
+			u = (uint32_t)iv;
+			if (isf && gvec_push(&s->corners, &u) != 0)
+				return fail(c, "byte %llu: too many face corners, or out of memory", iat);
 		}
 	}
-	if (face_e >= 0)
-		m->nfaces = (size_t)el[face_e].count;
-	if (compute) {
-		if (faces.n == 0) {
-			fail(c, "no normals: no element has nx, ny, nz, and no face has 3 or more vertices");
-			goto out;
+	if (isf && isidx && cnt >= 3 && gvec_push(&s->faces, &fr) != 0)
+		return fail(c, "byte %llu: too many faces, or out of memory", at);
+	return 0;
+}
+
+/* Record ei of element i: its normal into m, its position into s->pos. */
+static int ply_record(ply_st *s, ply_rd *r, mesh_normals *m, int i, unsigned long long ei)
+{
+	const ply_elem *e = &s->el[i];
+	int isn = ply_isn(e), isv = s->positions && i == s->vert_e, k;
+	unsigned long long at;
+	double nv[3] = { 0, 0, 0 }, dv;
+	long long iv;
+	/* the record starts at its first value (ascii: after blanks) */
+	if (r->fmt == 0)
+		while (r->p < r->end && (is_space(*r->p) || *r->p == '\n')) {
+			if (*r->p == '\n')
+				r->line++;
+			r->p++;
 		}
-		m->nfaces = faces.n;
-		if (compute_normals(c, m, pos, (size_t)nvert, vwhere, corners.p, faces.p, faces.n) != 0)
-			goto out;
-		m->stored_type = MESH_T_DOUBLE;
-		snprintf(m->element, sizeof m->element, "vertex");
+	at = off(r);
+	for (k = 0; k < e->nprop; k++) {
+		const ply_prop *pr = &e->prop[k];
+		if (pr->list) {
+			if (ply_list(s, r, i, ei, k, at) != 0)
+				return -1;
+			continue;
+		}
+		if (ply_value(r, pr->type, e, ei, pr->name, &dv, &iv) != 0)
+			return -1;
+		if (isn) {
+			if (k == e->inx) nv[0] = dv;
+			else if (k == e->iny) nv[1] = dv;
+			else if (k == e->inz) nv[2] = dv;
+		}
+		if (isv) {
+			if (k == e->ix) s->pos[3 * ei] = dv;
+			else if (k == e->iy) s->pos[3 * ei + 1] = dv;
+			else if (k == e->iz) s->pos[3 * ei + 2] = dv;
+		}
 	}
-	if (geom && ply_geom(c, m, pos, (size_t)nvert, el, vert_e, &corners, &faces, geom) != 0)
+	if (isn) {
+		m->x[s->kn] = nv[0]; m->y[s->kn] = nv[1]; m->z[s->kn] = nv[2];
+		m->where[s->kn] = at;
+		m->index[s->kn] = (size_t)ei;
+		s->kn++;
+	}
+	if (isv)
+		s->vwhere[ei] = at;
+	return 0;
+}
+
+/* The body: every record of every element, then what follows the last. */
+static int ply_body(ply_st *s, ply_rd *r, mesh_normals *m)
+{
+	unsigned long long ei;
+	int i;
+	for (i = 0; i < s->ne; i++)
+		for (ei = 0; ei < s->el[i].count; ei++)
+			if (ply_record(s, r, m, i, ei) != 0)
+				return -1;
+	if (r->fmt == 0) {
+		while (r->p < r->end && (is_space(*r->p) || *r->p == '\n' || *r->p == '\0'))
+			r->p++;
+		if (r->p < r->end)
+			return fail(s->c, "byte %llu: data after the last element (the header's counts are wrong?)", off(r));
+	} else if (r->p < r->end) {
+		/* assimp and others read such files: a warning, not an error */
+		snprintf(m->warning, sizeof m->warning, "byte %llu: %llu bytes after the last element ignored (the header's counts are wrong?)",
+		         off(r), (unsigned long long)(r->end - r->p));
+	}
+	return 0;
+}
+
+/* Area-weighted vertex normals from the faces read. */
+static int ply_compute(ply_st *s, mesh_normals *m)
+{
+	if (s->faces.n == 0)
+		return fail(s->c, "no normals: no element has nx, ny, nz, and no face has 3 or more vertices");
+	m->nfaces = s->faces.n;
+	if (compute_normals(s->c, m, s->pos, (size_t)s->nvert, s->vwhere, s->corners.p, s->faces.p, s->faces.n) != 0)
+		return -1;
+	m->stored_type = MESH_T_DOUBLE;
+	snprintf(m->element, sizeof m->element, "vertex");
+	return 0;
+}
+
+static int read_ply(mctx *c, const unsigned char *buf, size_t len, mesh_normals *m, mesh_geom *geom)
+{
+	const unsigned char *p = buf, *end = buf + len;
+	ply_st s;
+	ply_rd r;
+	int compute, rc = -1;
+	memset(&s, 0, sizeof s);
+	s.c = c;
+	s.fmt = -1;
+	s.vert_e = s.face_e = -1;
+	gvec_init(&s.corners, sizeof(uint32_t));
+	gvec_init(&s.faces, sizeof(face_rec));
+	m->format = MESH_PLY;
+	s.el = xcalloc(PLY_MAX_ELEMS, sizeof *s.el);
+	if (!s.el)
+		return fail(c, "out of memory");
+	if (ply_header(&s, buf, &p, end, m) != 0)
+		goto out;
+	m->ply_binary = s.fmt;
+	if (ply_plan(&s, (unsigned long long)(p - buf), (unsigned long long)(end - p)) != 0)
+		goto out;
+	compute = s.normal_elems == 0;
+	if (s.vert_e >= 0)
+		s.nvert = s.el[s.vert_e].count;
+	m->nvertices = (size_t)s.nvert;
+	if (ply_setup_normals(&s, compute, m) != 0)
+		goto out;
+	s.positions = compute || geom;
+	if (s.positions && ply_alloc_positions(&s, geom != NULL) != 0)
+		goto out;
+	r.c = c; r.buf = buf; r.p = p; r.end = end; r.fmt = s.fmt; r.line = s.line + 1;
+	if (ply_body(&s, &r, m) != 0)
+		goto out;
+	if (s.face_e >= 0)
+		m->nfaces = (size_t)s.el[s.face_e].count;
+	if (compute && ply_compute(&s, m) != 0)
+		goto out;
+	if (geom && ply_geom(c, m, s.pos, (size_t)s.nvert, s.el, s.vert_e, &s.corners, &s.faces, geom) != 0)
 		goto out;
 	rc = 0;
 out:
 	if (rc != 0)
 		mesh_free(m);
-	free(el); free(pos); free(vwhere);
-	gvec_free(&corners); gvec_free(&faces);
+	free(s.el); free(s.pos); free(s.vwhere);
+	gvec_free(&s.corners); gvec_free(&s.faces);
 	return rc;
 }
 

@@ -52,6 +52,14 @@ typedef struct {
 	fx bx, bx2, bxy;      /* bits: sum of x, x^2, x y                      */
 } stratum_t;
 
+/* Per stratum sums of the floor's estimates (issue 16): inputs with a
+   finite floor (fn, sum of floor^2), and of those with the kernel's output
+   finite too (rn, sum of ratio^2, rat: ratio <= 1). */
+typedef struct {
+	uint64_t fn, rn, rat;
+	fx f2, r2;
+} fstrat_t;
+
 typedef struct {
 	uint64_t count, finite, nonfinite, wrong, comps;
 	fx sumsq, sumdef2, bits, dirn2, dirc2;
@@ -72,6 +80,7 @@ typedef struct {
 	double max_floor, max_floor_dir, max_ratio;
 	double ratio_in[3];  /* the input of max_ratio; ratio_idx UINT64_MAX: none */
 	int ratio_src;
+	fstrat_t fst[NSTRAT]; /* the same per stratum, for the stratified estimates */
 } cell_t;
 
 /* Everything that defines a run's data (not its thread count or output). */

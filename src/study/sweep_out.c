@@ -275,18 +275,32 @@ static double st_rmse(const cell_t *c, int d)
    RMS, its direction error's max, and the ratio of the method's per-input
    error to it (reference.c floor_eval): max, RMS, the share of inputs at
    or below the floor (ratio <= 1), and the input of the largest ratio as
-   hex floats. */
-static double sqrt_mean(const fx *sum, uint64_t n)
+   hex floats.  The RMS and the share are stratified like st_mean: each
+   over its own inputs per stratum, strata with none left out and the
+   weights renormalized (one stratum of weight 1: the plain mean). */
+enum { F_FLOOR2, F_RATIO2, F_AT };
+static double fl_mean(const cell_t *c, int d, int q)
 {
-	return n ? sqrt(fx_value(sum) / (double)n) : NAN;
+	double W = 0.0, m = 0.0;
+	int h;
+	for (h = 0; h < NSTRAT; h++) {
+		const fstrat_t *t = &c->fst[h];
+		const uint64_t n = q == F_FLOOR2 ? t->fn : t->rn;
+		const double w = dist_stratum_weight(d, h);
+		const double x = q == F_FLOOR2 ? fx_value(&t->f2) : q == F_RATIO2 ? fx_value(&t->r2) : (double)t->rat;
+		if (!n || w == 0.0)
+			continue;
+		W += w; m += w * (x / (double)n);
+	}
+	return W > 0.0 ? m / W : NAN;
 }
 
-static void floor_cols(FILE *f, const cell_t *c)
+static void floor_cols(FILE *f, const cell_t *c, int d)
 {
 	const int some = c->ratio_idx != UINT64_MAX;
-	fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", c->floor_n ? c->max_floor : NAN, sqrt_mean(&c->floor2, c->floor_n),
+	fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", c->floor_n ? c->max_floor : NAN, sqrt(fl_mean(c, d, F_FLOOR2)),
 	        c->floor_n ? c->max_floor_dir : NAN, some ? c->max_ratio : NAN,
-	        sqrt_mean(&c->ratio2, c->ratio_n), c->ratio_n ? (double)c->ratio_at / (double)c->ratio_n : NAN);
+	        sqrt(fl_mean(c, d, F_RATIO2)), fl_mean(c, d, F_AT));
 	if (some)
 		fprintf(f, "%a,%a,%a,", c->ratio_in[0], c->ratio_in[1], c->ratio_in[2]);
 	else
@@ -313,7 +327,7 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 	        c->finite ? c->max_abs_eps : nan, c->finite ? c->max_bits : nan, c->max_in_norm,
 	        c->finite ? c->max_dir_norm : nan, c->finite ? c->max_dir_cos : nan,
 	        r[2], jump, r[3], basis && c->finite ? c->max_duff_rms : nan);
-	floor_cols(f, c);
+	floor_cols(f, c, d);
 	fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
 	        lo[0], hi[0], lo[1], hi[1], bits - bhw, bits + bhw, lo[2], hi[2], lo[3], hi[3]);
 }
@@ -357,7 +371,7 @@ static int write_summary(const sweep_state *s, const char *dir, const char *name
 	fprintf(o.f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
 	fprintf(o.f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
 	fprintf(o.f, "# max_floor, rms_floor: the accuracy floor, the per-input error (defect; frisvad_rotate: direction error) of the method's exact formula on its branch rounded once to the format; max_floor_dir: its direction error; max_floor_ratio, rms_floor_ratio: the per-input ratio max(error, u^2) / max(floor, u^2), u = 2^-24 or 2^-53; at_floor: the share of inputs with ratio <= 1; floor_ratio_n*: the input of the largest ratio\n");
-	fprintf(o.f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns); rms_floor, rms_floor_ratio and at_floor are plain averages over the inputs as drawn (for uniform: the stratified sample, not weighted)\n", NSTRAT, NSTRAT);
+	fprintf(o.f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns); rms_floor, rms_floor_ratio, at_floor: estimated the same way (stratified, each over its own inputs: floor finite; for the ratio, the method's output finite too)\n", NSTRAT, NSTRAT);
 	fprintf(o.f, "%s\n", SUMMARY_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)

@@ -13,7 +13,7 @@
 #include "sweep.h"
 #include "study.h"
 
-#define STATE_MAGIC "onbsweep-state3"
+#define STATE_MAGIC "onbsweep-state4"
 
 cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k)
 {
@@ -101,6 +101,12 @@ static void stratum_add(stratum_t *t, const sample_metrics *m)
 	fx_add_double(&t->bxy, m->bits_sum * m->nbits);
 }
 
+static void fstrat_merge(fstrat_t *d, const fstrat_t *s)
+{
+	d->fn += s->fn; d->rn += s->rn; d->rat += s->rat;
+	fx_add(&d->f2, &s->f2); fx_add(&d->r2, &s->r2);
+}
+
 void cell_merge(cell_t *d, const cell_t *s)
 {
 	int i;
@@ -117,8 +123,10 @@ void cell_merge(cell_t *d, const cell_t *s)
 	d->max_dir_cos = dmax(d->max_dir_cos, s->max_dir_cos);
 	fx_add(&d->duffms, &s->duffms);
 	d->max_duff_rms = dmax(d->max_duff_rms, s->max_duff_rms);
-	for (i = 0; i < NSTRAT; i++)
+	for (i = 0; i < NSTRAT; i++) {
 		stratum_merge(&d->st[i], &s->st[i]);
+		fstrat_merge(&d->fst[i], &s->fst[i]);
+	}
 	for (i = 0; i < NWORST; i++)
 		if (s->worst[i].index != UINT64_MAX)
 			worst_insert(d, &s->worst[i]);
@@ -148,11 +156,16 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 {
 	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
 	const double r = m->floor_ratio;
+	fstrat_t *t = m->stratum >= 0 && m->stratum < NSTRAT ? &c->fst[m->stratum] : NULL;
 	int i;
 	if (isnan(f))
 		return;
 	c->floor_n++;
 	fx_add_double(&c->floor2, f * f);
+	if (t) {
+		t->fn++;
+		fx_add_double(&t->f2, f * f);
+	}
 	c->max_floor = dmax(c->max_floor, f);
 	c->max_floor_dir = dmax(c->max_floor_dir, dmax(m->floor_dir_norm, m->floor_dir_cos));
 	for (i = 0; i < 4; i++)
@@ -166,6 +179,11 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 	c->ratio_n++;
 	c->ratio_at += r <= 1.0;
 	fx_add_double(&c->ratio2, r * r);
+	if (t) {
+		t->rn++;
+		t->rat += r <= 1.0;
+		fx_add_double(&t->r2, r * r);
+	}
 	if (ratio_wins(r, index, source, c)) {
 		c->max_ratio = r;
 		c->ratio_idx = index;

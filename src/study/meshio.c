@@ -29,6 +29,7 @@
 int mio_fail(mctx *c, const char *fmt, ...)
 {
 	va_list ap;
+	char *p;
 	int w;
 	if (!c->err || c->errlen == 0)
 		return -1;
@@ -38,6 +39,12 @@ int mio_fail(mctx *c, const char *fmt, ...)
 	va_start(ap, fmt);
 	vsnprintf(c->err + w, c->errlen - (size_t)w, fmt, ap);
 	va_end(ap);
+	/* A message is one line of text even when it quotes the file (a glTF
+	   version or uri string may hold a newline or other control bytes):
+	   every control byte becomes '?'. */
+	for (p = c->err; *p; p++)
+		if ((unsigned char)*p < 0x20 || *p == 0x7f)
+			*p = '?';
 	return -1;
 }
 

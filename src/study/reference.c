@@ -695,6 +695,13 @@ static void run_kernel(const study_kernel *k, int prec, const double n[3], const
 	}
 }
 
+void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const double loc[3],
+                    double n[3], sample_metrics *s)
+{
+	read_input(k, prec, n_in, n, s);
+	run_kernel(k, prec, n, loc, s);
+}
+
 /* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
    the sweep evaluates every kernel on an input in a row.  Compared by
    bit pattern, so -0 and +0 are different inputs. */
@@ -744,8 +751,7 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 {
 	int i;
 	double n[3];
-	read_input(k, prec, n_in, n, s);
-	run_kernel(k, prec, n, loc, s);
+	ref_run_kernel(k, prec, n_in, loc, n, s);
 	input_norm(c, n);
 	s->in_norm = c->last_norm;
 

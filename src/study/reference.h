@@ -69,6 +69,13 @@ typedef struct {
 void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3],
               const double loc[3], int normalize_n, sample_metrics *s);
 
+/* ref_eval's first half, shared with the fast reference (reffast.c): n =
+   n_in as the kernel receives it (rounded to `prec`), s cleared with its
+   branch, the kernel's outputs s->out (6, or 3 for a rotation) and the
+   direction through its basis with loc, s->w. */
+void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const double loc[3],
+                    double n[3], sample_metrics *s);
+
 /* The five defects of the basis b = (b1, b2) for the input n, all doubles:
    |b1|-1, |b2|-1, b1.n, b2.n, b1.b2, each to 2^-50 relative or better. */
 void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF]);

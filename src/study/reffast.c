@@ -949,62 +949,6 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	return rc;
 }
 
-/* ref_eval's first half, unchanged: the input as the kernel receives it,
-   the kernel's outputs and the rotated direction. */
-static void run_kernel(const study_kernel *k, int prec, const double n_in[3], const double loc[3],
-                       double n[3], sample_metrics *s)
-{
-	int i;
-	for (i = 0; i < 3; i++) {
-		if (prec == PREC_FLOAT) {
-			volatile float f = (float)n_in[i];
-			n[i] = f;
-		} else {
-			n[i] = n_in[i];
-		}
-	}
-	memset(s, 0, sizeof *s);
-	s->has_basis = k->m != NULL;
-	s->ncomp = k->m ? 6 : 3;
-	s->branch = k->branch(k, prec, n);
-	s->in_norm = NAN;
-	for (i = 0; i < NDEF; i++)
-		s->d[i] = NAN;
-	s->defect = s->sumsq = s->det = NAN;
-	if (prec == PREC_FLOAT) {
-		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
-		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
-		onb_vec3f b1, b2, w;
-		if (k->m) {
-			k->basisf(nf, &b1, &b2);
-			w.x = x * b1.x + y * b2.x + z * nf.x;
-			w.y = x * b1.y + y * b2.y + z * nf.y;
-			w.z = x * b1.z + y * b2.z + z * nf.z;
-			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
-			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
-		} else {
-			w = k->rotf(nf, x, y, z);
-			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
-		}
-		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
-	} else {
-		const onb_vec3 nd = { n[0], n[1], n[2] };
-		onb_vec3 b1, b2, w;
-		if (k->m) {
-			k->basis(nd, &b1, &b2);
-			w.x = loc[0] * b1.x + loc[1] * b2.x + loc[2] * nd.x;
-			w.y = loc[0] * b1.y + loc[1] * b2.y + loc[2] * nd.y;
-			w.z = loc[0] * b1.z + loc[1] * b2.z + loc[2] * nd.z;
-			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
-			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
-		} else {
-			w = k->rot(nd, loc[0], loc[1], loc[2]);
-			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
-		}
-		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
-	}
-}
-
 /* |n| - 1 and, for nonunit inputs, 1/|n| = rec_sqrt(dot(n, n)) of the
    input, once per input (the sweep evaluates every kernel in a row). */
 static int input_terms(reffast_ctx *c, const double n[3], int normalize_n, xv *inv)
@@ -1146,7 +1090,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
 	int i, bad = 0, rc = REFFAST_DONE;
 	double undet[2] = { 0.0, 0.0 };
-	run_kernel(k, prec, n_in, loc, n, s);
+	ref_run_kernel(k, prec, n_in, loc, n, s);
 	if (!input_terms(c, n, normalize_n, &inv))
 		return REFFAST_MPFR;
 	s->in_norm = c->last_norm;

@@ -37,8 +37,26 @@
 #include <float.h>
 #include "reffast.h"
 
+/* The formula of a family on one input, shared by every kernel of that
+   family on that input (the sweep evaluates all kernels of an input in a
+   row): its value with bounds and its floor figures.  The key is the
+   input (n, loc, precision, normalize_n) plus the formula: family, branch
+   and whether it normalizes (naive and hughes_moeller have a _nonorm). */
+#define FCACHE 32
+#define XV_BYTES 48             /* sizeof(xv) at most (pairs of long doubles) */
+typedef struct {
+	int key;                  /* family * 64 + branch * 2 + normalizes, -1: empty */
+	int ok;                   /* the formula's bounds hold (else MPFR decides) */
+	int floor_ok;             /* floor figures determined                      */
+	unsigned char xr[6 * XV_BYTES]; /* r1[3], r2[3] as this file's xv (opaque here) */
+	double floor, floor_dir_norm, floor_dir_cos;
+} fentry;
+
 struct reffast_ctx {
 	int prec;                 /* MPFR precision p of the reference mirrored */
+	double key_n[3], key_loc[3]; /* the input the formula cache holds        */
+	int key_prec, key_norm, nf;
+	fentry fc[FCACHE];
 	double up;                /* 2^-p */
 	double last[3];           /* cache: the last input, its |n|-1 and 1/|n| */
 	double last_norm;
@@ -276,6 +294,7 @@ static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
 }
 
 typedef struct { ld h, l; double e; } xv;
+typedef char xv_fits_the_cache[sizeof(xv) <= XV_BYTES ? 1 : -1];
 
 static inline xv xc(double d) { xv r = { d, 0.0, 0.0 }; return r; }
 
@@ -563,7 +582,8 @@ static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
    unchanged and move it into t[k-1]; the rest is added in double with an
    error <= k u sum|t[i<k-1]|, and the pair is made a dd by TwoSum.
    Passes repeat (at most 4) until that bound is below 2^-95 of the sum;
-   it is 0 when the last pass's TwoSums were all exact.
+   it is 0 when the last pass's TwoSums were all exact.  Zero
+   terms are dropped first: they change no partial sum, ours or MPFR's.
    MPFR's error: its sequential path adds k terms at p bits (error
    <= (k-1) 2^-p sum|terms| <= 4 2^-p S, S <= bound (1 + 2^-40)); it
    refines with mpfr_sum (error <= 2^-p |X|) when |X_mpfr| < 2^(E-59),
@@ -572,54 +592,64 @@ static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
 static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int allneg0, int *bad)
 {
 	xv r;
-	double lo = 0.0, sabs = 0.0, err = 0.0, V, merr;
-	int pass, i, E, minlsb = 100000, exact = 1;
+	double lo = 0.0, sabs = 0.0, err = 0.0, merr, orig[8];
+	int pass, i, m = 0, exact = 1;
 	if (!isfinite(bound)) { *bad = 1; return xc(0.0); }
+	/* zero terms change no partial sum, here or in MPFR: drop them (the
+	   low parts of products of floats, which are exact in double) */
 	for (i = 0; i < k; i++)
 		if (t[i] != 0.0) {
 			if (fabs(t[i]) < 0x1p-1000) { *bad = 1; return xc(0.0); }
-			if (dlsb(t[i]) < minlsb)
-				minlsb = dlsb(t[i]);
+			orig[m] = t[m] = t[i];
+			m++;
 		}
+	if (m == 0)
+		return xc(allneg0 ? -0.0 : 0.0); /* exact zero: +0, -0 when every term is -0 */
 	for (pass = 0; pass < 4; pass++) {
-		for (i = 1; i < k; i++)
+		for (i = 1; i < m; i++)
 			two_sum(t[i], t[i - 1], &t[i], &t[i - 1]);
-		/* lo = t[0] + ... + t[k-2] by TwoSum, noting whether it is exact */
+		/* lo = t[0] + ... + t[m-2] by TwoSum, noting whether it is exact */
 		lo = 0.0;
 		sabs = 0.0;
 		exact = 1;
-		for (i = 0; i < k - 1; i++) {
+		for (i = 0; i < m - 1; i++) {
 			double q;
 			two_sum(lo, t[i], &lo, &q);
 			exact &= q == 0.0;
 			sabs += fabs(t[i]);
 		}
-		err = exact ? 0.0 : (double)k * 0x1p-53 * sabs * INFL;
-		if (err <= 0x1p-95 * fabs(t[k - 1]))
+		err = exact ? 0.0 : (double)m * 0x1p-53 * sabs * INFL;
+		if (err <= 0x1p-95 * fabs(t[m - 1]))
 			break;
 	}
 	{
 		double sh, sl;
-		two_sum(t[k - 1], lo, &sh, &sl);
+		two_sum(t[m - 1], lo, &sh, &sl);
 		fast_two_sum_l(sh, sl, &r.h, &r.l); /* normalized as a pair of long doubles */
 	}
-	if (sabs == 0.0 && r.h == 0.0) { /* exact zero */
-		r = xc(allneg0 ? -0.0 : 0.0);
-		return r;
-	}
+	if (sabs == 0.0 && r.h == 0.0)
+		return xc(0.0); /* an exact zero sum of nonzero terms: +0 in RN, IEEE and MPFR */
 	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
-	E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
-	if (E + 1 - minlsb <= c->prec) {
-		/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
-		   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
-		   sum is exact, and so is ours when no TwoSum above lost a bit */
-		merr = 0.0;
-	} else {
-		V = (double)PFABS(r.h) * (1.0 + 0x1p-50) + err;
-		if (V <= pow2(E - 61))
-			merr = c->up * V;
-		else
-			merr = 4.0 * c->up * bound * INFL + c->up * V;
+	{
+		const int E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
+		int minlsb = 100000;
+		if (err == 0.0) {
+			for (i = 0; i < m; i++)
+				if (dlsb(orig[i]) < minlsb)
+					minlsb = dlsb(orig[i]);
+		}
+		if (err == 0.0 && E + 1 - minlsb <= c->prec) {
+			/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
+			   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
+			   sum is exact, and so is ours (no TwoSum above lost a bit) */
+			merr = 0.0;
+		} else {
+			const double V = (double)PFABS(r.h) * (1.0 + 0x1p-50) + err;
+			if (V <= pow2(E - 61))
+				merr = c->up * V;
+			else
+				merr = 4.0 * c->up * bound * INFL + c->up * V;
+		}
 	}
 	r.e = err == 0.0 && merr == 0.0 ? 0.0 : (err + merr) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
@@ -1022,22 +1052,25 @@ static int basis_defects(const reffast_ctx *c, const study_kernel *k, const doub
    /work/notes/floor-metric.md): the exact formula r1, r2 rounded once to
    the format (Ziv's test decides RN of the exact value, as floor_round
    does in MPFR), the defects and direction error of that basis by the
-   same helpers as the kernel's, and the ratio.  0 when anything is
-   undetermined (the caller then runs ref_eval). */
-static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, const double n[3], const double loc[3],
-                      int normalize_n, xv inv, const xv *r1, const xv *r2, sample_metrics *s)
+   same helpers as the kernel's, into f (floor, floor_dir_norm,
+   floor_dir_cos).  It depends on the kernel only through its formula, so
+   the caller keeps it per formula.  0 when anything is undetermined (the
+   caller then runs ref_eval). */
+static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                      const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2, double f[3])
 {
 	const int nc = k->m ? 6 : 3;
 	double fb[6], w[3], d[NDEF];
 	int i, bad = 0;
 	for (i = 0; i < nc; i++) {
-		if (k->m && k->family == FAM_NAIVE && i == 3 + s->branch) {
+		if (k->m && k->family == FAM_NAIVE && i == 3 + br) {
 			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
 			continue;
 		}
 		if (!ziv(i < 3 ? r1[i] : r2[i - 3], prec == PREC_FLOAT ? 24 : 53, &fb[i]))
 			return 0;
 	}
+	f[0] = NAN;
 	if (k->m) {
 		if (prec == PREC_FLOAT) {
 			const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
@@ -1054,31 +1087,98 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, con
 		    !defect_dot(c, fb + 3, n, 0.0, normalize_n, inv, &d[DEF_D2N]) ||
 		    !defect_dot(c, fb, fb + 3, 0.0, 0, inv, &d[DEF_D12]))
 			return 0;
-		s->floor = 0.0;
+		f[0] = 0.0;
 		for (i = 0; i < NDEF; i++)
-			if (fabs(d[i]) > s->floor)
-				s->floor = fabs(d[i]);
+			if (fabs(d[i]) > f[0])
+				f[0] = fabs(d[i]);
 	} else {
 		for (i = 0; i < 3; i++)
 			w[i] = fb[i];
 	}
-	if (!norm_m1_fast(c, w, &s->floor_dir_norm))
+	if (!norm_m1_fast(c, w, &f[1]))
 		return 0;
-	s->floor_dir_norm = fabs(s->floor_dir_norm);
+	f[1] = fabs(f[1]);
 	{
 		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
 		xv x = xdot_exact(c, w, n, normalize_n ? 0.0 : z, &bad);
 		if (normalize_n)
 			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, &s->floor_dir_cos))
+		if (bad || !ziv_d(x, &f[2]))
 			return 0;
-		s->floor_dir_cos = fabs(s->floor_dir_cos);
+		f[2] = fabs(f[2]);
 	}
-	if (!s->nonfinite) {
+	return 1;
+}
+
+/* The cache entry of kernel k's formula on branch br for this input (the
+   formula evaluated on a miss), its value in r1, r2; NULL when the cache
+   is full (then the caller evaluates it alone). */
+static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                       const double loc[3], int normalize_n, xv *r1, xv *r2, int *bad)
+{
+	int fam = k->family, i;
+	fentry *e;
+	if (c->key_prec != prec || c->key_norm != normalize_n || memcmp(c->key_n, n, sizeof c->key_n) != 0 ||
+	    memcmp(c->key_loc, loc, sizeof c->key_loc) != 0) {
+		memcpy(c->key_n, n, sizeof c->key_n);
+		memcpy(c->key_loc, loc, sizeof c->key_loc);
+		c->key_prec = prec;
+		c->key_norm = normalize_n;
+		c->nf = 0;
+	}
+	if (fam == FAM_DUFF && br == 0)
+		fam = FAM_FRISVAD; /* duff's upper branch is Frisvad's formula */
+	{
+		const int key = fam * 64 + br * 2 +
+		                ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
+		for (i = 0; i < c->nf; i++)
+			if (c->fc[i].key == key) {
+				memcpy(r1, c->fc[i].xr, 3 * sizeof *r1);
+				memcpy(r2, c->fc[i].xr + 3 * sizeof *r1, 3 * sizeof *r2);
+				*bad = !c->fc[i].ok;
+				return &c->fc[i];
+			}
+		xreference(k, br, loc, n, r1, r2, bad);
+		if (c->nf == FCACHE)
+			return NULL;
+		e = &c->fc[c->nf++];
+		e->key = key;
+	}
+	e->ok = !*bad;
+	e->floor_ok = -1;
+	memcpy(e->xr, r1, 3 * sizeof *r1);
+	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
+	return e;
+}
+
+/* s->floor, floor_dir_norm, floor_dir_cos from the cache entry e (filled
+   on first use), and the ratio; 0 when MPFR must decide. */
+static int floor_figures(const reffast_ctx *c, fentry *e, const study_kernel *k, int prec, const double n[3],
+                         const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2,
+                         sample_metrics *s)
+{
+	double f[3] = { NAN, NAN, NAN };
+	if (!e || e->floor_ok < 0) {
+		const int ok = floor_fast(c, k, prec, s->branch, n, loc, normalize_n, inv, r1, r2, f);
+		if (e) {
+			e->floor_ok = ok;
+			e->floor = f[0]; e->floor_dir_norm = f[1]; e->floor_dir_cos = f[2];
+		}
+		if (!ok)
+			return 0;
+	} else {
+		if (!e->floor_ok)
+			return 0;
+		f[0] = e->floor; f[1] = e->floor_dir_norm; f[2] = e->floor_dir_cos;
+	}
+	s->floor = f[0];
+	s->floor_dir_norm = f[1];
+	s->floor_dir_cos = f[2];
+	{
 		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
-		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
-		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
-		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
+		const double ev = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
+		const double fv = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
+		s->floor_ratio = fmax(ev, u2) / fmax(fv, u2);
 	}
 	return 1;
 }
@@ -1090,6 +1190,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
 	int i, bad = 0, rc = REFFAST_DONE;
 	double undet[2] = { 0.0, 0.0 };
+	fentry *e;
 	ref_run_kernel(k, prec, n_in, loc, n, s);
 	if (!input_terms(c, n, normalize_n, &inv))
 		return REFFAST_MPFR;
@@ -1109,7 +1210,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 		return 0;
 
 	/* Forward error against the kernel's own formula. */
-	xreference(k, s->branch, loc, n, r1, r2, &bad);
+	e = formula(c, k, prec, s->branch, n, loc, normalize_n, r1, r2, &bad);
 	if (bad)
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
@@ -1138,8 +1239,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			return 0;
 		s->dir_cos = fabs(s->dir_cos);
 	}
-	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
-	if (!floor_fast(c, k, prec, n, loc, normalize_n, inv, r1, r2, s))
+	if (!floor_figures(c, e, k, prec, n, loc, normalize_n, inv, r1, r2, s))
 		return 0;
 	return rc;
 }

@@ -366,10 +366,8 @@ static int exact_pair_sum(xv a, xv b, xv *r)
 		bit_span(r->l, &h1, &l1);
 		l0 = l1;
 	}
-	if (h0 - l0 + 1 > 127 || !ok(*r))
-		return 0;
-	r->e = 0.0;
-	return 1;
+	r->e = 0.0; /* before ok(), which reads it */
+	return h0 - l0 + 1 <= 127 && ok(*r);
 }
 
 /* a + b (mpfr_add).  Relative rounding: pair < 2^-126, MPFR <= 2^-127 of

@@ -684,12 +684,97 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
 	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
 }
 
+/* RN(a.b - z) in double for vectors of floats (the float precision's
+   outputs, inputs and directions; z = 0, 1 or a float): 1 and *out when
+   decided, 0 when the general path must (exact zeros, cancellation to
+   below Ziv's reach).  The products of floats are exact in double (48
+   bits, no underflow above 2^-298), and so in MPFR.  Three TwoSums in
+   MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
+   - every e zero: s3 is X, and each of MPFR's partial sums (the same
+     doubles) was exact too;
+   - else lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of
+     their sum, and MPFR's value within 3 2^-p S + 2^-p |X| of X
+     (sequential sums at p bits, S = sum of |terms|; or mpfr_sum, 2^-p
+     |X|); Ziv's test on s3 + lo with both bounds decides. */
+#ifdef REFFAST_PAIR_DOUBLE
+HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+{
+	const double p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+	double s1, e1, s2, e2, s3, e3, S, E;
+	xv v;
+	two_sum(p0, p1, &s1, &e1);
+	two_sum(s1, p2, &s2, &e2);
+	two_sum(s2, -z, &s3, &e3);
+	if (s3 == 0.0 || !isfinite(s3))
+		return 0;
+	if (e1 == 0.0 && e2 == 0.0 && e3 == 0.0) {
+		*out = s3;
+		return 1;
+	}
+	S = (fabs(p0) + fabs(p1) + fabs(p2) + fabs(z)) * INFL;
+	E = 2.0 * 0x1p-53 * (fabs(e1) + fabs(e2) + fabs(e3)) * INFL;
+	two_sum(s3, (e1 + e2) + e3, &v.h, &v.l);
+	v.e = (E + 3.0 * c->up * S + c->up * 2.0 * fabs(v.h)) * INFL + FLOOR;
+	return ziv_d(v, out);
+}
+#else
+/* The same for vectors of doubles (the double precision's): products by
+   TwoProd, p_i + t_i = a_i b_i exactly (no underflow: checked), exact in
+   MPFR too (106 bits).  Two levels of TwoSums: s3 + e1 + e2 + e3 = the
+   sum of p0, p1, p2, -z (MPFR's order), then u5 + f1 + ... + f5 = t0 +
+   t1 + t2 + e1 + e2 + e3, so X = s3 + u5 + sum f exactly.  F = the f's
+   added plainly: error <= 4u sum|f| <= 4u * u * 6u S, about 2^-150 S,
+   far below a defect's ulp (defects of double outputs sit near 2^-53 S).
+   MPFR's error as in the float case. */
+HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+{
+	double p[3], t[3], s1, e1, s2, e2, s3, e3, u, f[5], F, h, l, S;
+	int i;
+	xv v;
+	for (i = 0; i < 3; i++) {
+		two_prod(a[i], b[i], &p[i], &t[i]);
+		if (p[i] == 0.0 ? (a[i] != 0.0 && b[i] != 0.0) : fabs(p[i]) < 0x1p-960)
+			return 0; /* underflow: TwoProd is not exact */
+	}
+	two_sum(p[0], p[1], &s1, &e1);
+	two_sum(s1, p[2], &s2, &e2);
+	two_sum(s2, -z, &s3, &e3);
+	if (!isfinite(s3))
+		return 0;
+	two_sum(t[0], t[1], &u, &f[0]);
+	two_sum(u, t[2], &u, &f[1]);
+	two_sum(u, e1, &u, &f[2]);
+	two_sum(u, e2, &u, &f[3]);
+	two_sum(u, e3, &u, &f[4]);
+	if (u == 0.0 && f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0 && f[3] == 0.0 && f[4] == 0.0) {
+		if (s3 == 0.0)
+			return 0; /* an exact zero: its sign is the general path's business */
+		*out = s3;      /* every partial sum exact, here and in MPFR */
+		return 1;
+	}
+	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
+	two_sum(s3, u, &h, &l);
+	if (h == 0.0)
+		return 0;
+	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
+	v.h = h;
+	v.l = l + F; /* |l| <= u|h|/2, |F| tiny: (h, l + F) is a normalized pair within u|l + F| */
+	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
+	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
+	return ziv_d(v, out);
+}
+#endif
+
 /* norm_m1_exact: |v| - 1 from RN(v.v - 1) in double, as reference.c. */
 HOT int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
 {
 	double t[8], e;
 	int i, bad = 0;
 	xv s;
+	if (fdot_round(c, v, v, 1.0, &e)) {
+		*out = e / (sqrt(1.0 + e) + 1.0);
+		return 1;
+	}
 	for (i = 0; i < 3; i++)
 		if (!prod_terms(v[i], v[i], t + 2 * i))
 			return 0;
@@ -1017,10 +1102,35 @@ static int defect_dot(const reffast_ctx *c, const double *a, const double *b, do
                       int normalize_n, xv inv, double *out)
 {
 	int bad = 0;
-	xv x = xdot_exact(c, a, b, z, &bad);
+	xv x;
+	if (!normalize_n && fdot_round(c, a, b, z, out))
+		return 1;
+	x = xdot_exact(c, a, b, z, &bad);
 	if (normalize_n)
 		x = xmul(x, inv, &bad);
 	return !bad && ziv_d(x, out);
+}
+
+/* reference.c dir_errors: | |w| - 1 | and | w.n - z | (w.(n/|n|) - z
+   when normalize_n) of the direction w; 0 when MPFR must decide. */
+static int dir_errors(const reffast_ctx *c, const double w[3], const double n[3], const double loc[3], int prec,
+                      int normalize_n, xv inv, double *dir_norm, double *dir_cos)
+{
+	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+	int bad = 0;
+	if (!norm_m1_fast(c, w, dir_norm))
+		return 0;
+	*dir_norm = fabs(*dir_norm);
+	if (!normalize_n) {
+		if (!defect_dot(c, w, n, z, 0, inv, dir_cos))
+			return 0;
+	} else {
+		const xv x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
+		if (bad || !ziv_d(x, dir_cos))
+			return 0;
+	}
+	*dir_cos = fabs(*dir_cos);
+	return 1;
 }
 
 /* The orthonormality defect and the handedness, as ref_eval. */
@@ -1066,7 +1176,7 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int
 {
 	const int nc = k->m ? 6 : 3;
 	double fb[6], w[3], d[NDEF];
-	int i, bad = 0;
+	int i;
 	for (i = 0; i < nc; i++) {
 		if (k->m && k->family == FAM_NAIVE && i == 3 + br) {
 			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
@@ -1100,19 +1210,7 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int
 		for (i = 0; i < 3; i++)
 			w[i] = fb[i];
 	}
-	if (!norm_m1_fast(c, w, &f[1]))
-		return 0;
-	f[1] = fabs(f[1]);
-	{
-		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-		xv x = xdot_exact(c, w, n, normalize_n ? 0.0 : z, &bad);
-		if (normalize_n)
-			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, &f[2]))
-			return 0;
-		f[2] = fabs(f[2]);
-	}
-	return 1;
+	return dir_errors(c, w, n, loc, prec, normalize_n, inv, &f[1], &f[2]);
 }
 
 /* The cache entry of kernel k's formula on branch br for this input (the
@@ -1232,18 +1330,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 		return 0;
 
 	/* Direction error: | |w| - 1 | and | w.n - z |. */
-	if (!norm_m1_fast(c, s->w, &s->dir_norm))
+	if (!dir_errors(c, s->w, n, loc, prec, normalize_n, inv, &s->dir_norm, &s->dir_cos))
 		return 0;
-	s->dir_norm = fabs(s->dir_norm);
-	{
-		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-		xv x = xdot_exact(c, s->w, n, normalize_n ? 0.0 : z, &bad);
-		if (normalize_n)
-			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, &s->dir_cos))
-			return 0;
-		s->dir_cos = fabs(s->dir_cos);
-	}
 	if (!floor_figures(c, e, k, prec, n, loc, normalize_n, inv, r1, r2, s))
 		return 0;
 	return rc;

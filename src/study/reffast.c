@@ -690,12 +690,10 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
    below Ziv's reach).  The products of floats are exact in double (48
    bits, no underflow above 2^-298), and so in MPFR.  Three TwoSums in
    MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
-   - every e zero: s3 is X, and each of MPFR's partial sums (the same
-     doubles) was exact too;
-   - else lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of
-     their sum, and MPFR's value within 3 2^-p S + 2^-p |X| of X
-     (sequential sums at p bits, S = sum of |terms|; or mpfr_sum, 2^-p
-     |X|); Ziv's test on s3 + lo with both bounds decides. */
+   lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of their
+   sum, and MPFR's value within 3 2^-p S + 2^-p |X| of X (sequential sums
+   at p bits, S = sum of |terms|; or mpfr_sum, 2^-p |X|); Ziv's test on
+   s3 + lo with both bounds decides (an exact X = s3 passes it too). */
 #ifdef REFFAST_PAIR_DOUBLE
 HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
 {
@@ -707,10 +705,8 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	two_sum(s2, -z, &s3, &e3);
 	if (s3 == 0.0 || !isfinite(s3))
 		return 0;
-	if (e1 == 0.0 && e2 == 0.0 && e3 == 0.0) {
-		*out = s3;
-		return 1;
-	}
+	/* no branch on whether the e's are zero (data-dependent, so often
+	   mispredicted): an exact X = s3 passes Ziv's test as well */
 	S = (fabs(p0) + fabs(p1) + fabs(p2) + fabs(z)) * INFL;
 	E = 2.0 * 0x1p-53 * (fabs(e1) + fabs(e2) + fabs(e3)) * INFL;
 	two_sum(s3, (e1 + e2) + e3, &v.h, &v.l);
@@ -746,22 +742,96 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	two_sum(u, e1, &u, &f[2]);
 	two_sum(u, e2, &u, &f[3]);
 	two_sum(u, e3, &u, &f[4]);
-	if (u == 0.0 && f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0 && f[3] == 0.0 && f[4] == 0.0) {
-		if (s3 == 0.0)
-			return 0; /* an exact zero: its sign is the general path's business */
-		*out = s3;      /* every partial sum exact, here and in MPFR */
-		return 1;
-	}
 	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
 	two_sum(s3, u, &h, &l);
 	if (h == 0.0)
-		return 0;
+		return 0; /* (nearly) zero: exact zeros and their signs are the general path's */
 	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 	v.h = h;
 	v.l = l + F; /* |l| <= u|h|/2, |F| tiny: (h, l + F) is a normalized pair within u|l + F| */
 	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
 	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
 	return ziv_d(v, out);
+}
+#endif
+
+/* Four fdot_round of floats at once, in AVX vectors (GCC's vector
+   extension; contraction stays off for them too): lane j is a_j . b_j -
+   z_j, computed by exactly the scalar function's operations, so a lane
+   decides exactly when fdot_round would and to the same value.  Returns
+   the mask of the lanes decided (bit j), their values in out[j]. */
+#if defined(REFFAST_PAIR_DOUBLE) && defined(__GNUC__) && defined(__AVX__)
+#define REFFAST_VEC 1
+typedef double v4d __attribute__((vector_size(32)));
+typedef long long v4i __attribute__((vector_size(32)));
+#define VABS(x) ((v4d)((v4i)(x) & 0x7fffffffffffffffLL))
+#define VTWO_SUM(a, b, s, t) do { const v4d x_ = (a) + (b), z_ = x_ - (a); \
+	(t) = ((a) - (x_ - z_)) + ((b) - z_); (s) = x_; } while (0)
+
+static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+{
+	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, off, m, ulp, upg, dng;
+	v4i hb, fail;
+	int j, mask = 0;
+	VTWO_SUM(p0, p1, s1, e1);
+	VTWO_SUM(s1, p2, s2, e2);
+	VTWO_SUM(s2, -z, s3, e3);
+	S = (VABS(p0) + VABS(p1) + VABS(p2) + VABS(z)) * INFL;
+	E = 2.0 * 0x1p-53 * (VABS(e1) + VABS(e2) + VABS(e3)) * INFL;
+	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
+	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
+	/* ziv_d on (h, l, e): candidate h, offset l away from zero, the half
+	   gaps from h's exponent bits (normal: |h| >= TINY is required) */
+	hb = (v4i)h;
+	off = (v4d)((v4i)l ^ (hb & (long long)0x8000000000000000ULL));
+	m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
+	ulp = (v4d)((hb & 0x7ff0000000000000LL) - (52LL << 52));
+	upg = 0.5 * ulp;
+	dng = upg - (v4d)((v4i)(0.25 * ulp) & ((hb & 0x000fffffffffffffLL) == 0));
+	fail = (s3 == 0.0) | (VABS(s3) > DBL_MAX) | (VABS(h) < TINY) | (VABS(h) > DBL_MAX) |
+	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+	for (j = 0; j < 4; j++)
+		if (!fail[j]) {
+			out[j] = h[j];
+			mask |= 1 << j;
+		}
+	return mask;
+}
+
+/* The lanes of shape() below, decided in two vectors: bits 0-4 the five
+   defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
+   lanes against n/|n| (normalize_n) are left to the scalar path. */
+static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], const double n[3],
+                     const double w[3], double z, int normalize_n, double v[8])
+{
+	double o[8];
+	int i, mask = 0;
+	const v4d zb = { 0.0, 1.0, z, 0.0 };
+	v4d a[3], bb[3];
+	for (i = 0; i < 3; i++) {
+		const v4d ai = { b[i], w[i], w[i], 0.0 }, bi = { b[3 + i], w[i], n[i], 0.0 };
+		a[i] = ai; bb[i] = bi;
+	}
+	mask = fdot4(c, a, bb, zb, o + 4) << 4;
+	if (has_basis) {
+		const v4d za = { 1.0, 1.0, 0.0, 0.0 };
+		for (i = 0; i < 3; i++) {
+			const v4d ai = { b[i], b[3 + i], b[i], b[3 + i] }, bi = { b[i], b[3 + i], n[i], n[i] };
+			a[i] = ai; bb[i] = bi;
+		}
+		mask |= fdot4(c, a, bb, za, o);
+	} else {
+		mask &= ~(1 << 4);
+	}
+	mask &= 0x7f;
+	if (normalize_n)
+		mask &= ~(4 | 8 | 64);
+	for (i = 0; i < 7; i++)
+		if (mask & (1 << i)) {
+			v[i] = (i == 0 || i == 1 || i == 5) ? o[i] / (sqrt(1.0 + o[i]) + 1.0) : o[i];
+		}
+	return mask;
 }
 #endif
 
@@ -1111,39 +1181,49 @@ static int defect_dot(const reffast_ctx *c, const double *a, const double *b, do
 	return !bad && ziv_d(x, out);
 }
 
-/* reference.c dir_errors: | |w| - 1 | and | w.n - z | (w.(n/|n|) - z
-   when normalize_n) of the direction w; 0 when MPFR must decide. */
-static int dir_errors(const reffast_ctx *c, const double w[3], const double n[3], const double loc[3], int prec,
-                      int normalize_n, xv inv, double *dir_norm, double *dir_cos)
+/* The shape of a basis b and a direction w (reference.c basis_defects
+   and dir_errors): the five defects d[] of b for the input n (when
+   has_basis), | |w| - 1 | and | w.n - z | (w.(n/|n|) - z when
+   normalize_n).  The vector path decides most lanes at once; the others
+   take the scalar one.  0 when MPFR must decide. */
+static int shape(const reffast_ctx *c, int has_basis, const double b[6], const double n[3], const double w[3],
+                 double z, int normalize_n, xv inv, double d[NDEF], double *dir_norm, double *dir_cos)
 {
-	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-	int bad = 0;
-	if (!norm_m1_fast(c, w, dir_norm))
-		return 0;
-	*dir_norm = fabs(*dir_norm);
-	if (!normalize_n) {
-		if (!defect_dot(c, w, n, z, 0, inv, dir_cos))
+	double v[8];
+	int dec = 0, bad = 0;
+#ifdef REFFAST_VEC
+	dec = shape_vec(c, has_basis, b, n, w, z, normalize_n, v);
+#endif
+	if (has_basis) {
+		if ((!(dec & 1) && !norm_m1_fast(c, b, &v[0])) || (!(dec & 2) && !norm_m1_fast(c, b + 3, &v[1])) ||
+		    (!(dec & 4) && !defect_dot(c, b, n, 0.0, normalize_n, inv, &v[2])) ||
+		    (!(dec & 8) && !defect_dot(c, b + 3, n, 0.0, normalize_n, inv, &v[3])) ||
+		    (!(dec & 16) && !defect_dot(c, b, b + 3, 0.0, 0, inv, &v[4])))
 			return 0;
-	} else {
-		const xv x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, dir_cos))
-			return 0;
+		memcpy(d, v, NDEF * sizeof *d);
 	}
-	*dir_cos = fabs(*dir_cos);
+	if (!(dec & 32) && !norm_m1_fast(c, w, &v[5]))
+		return 0;
+	if (!(dec & 64)) {
+		if (!normalize_n) {
+			if (!defect_dot(c, w, n, z, 0, inv, &v[6]))
+				return 0;
+		} else {
+			const xv x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
+			if (bad || !ziv_d(x, &v[6]))
+				return 0;
+		}
+	}
+	*dir_norm = fabs(v[5]);
+	*dir_cos = fabs(v[6]);
 	return 1;
 }
 
-/* The orthonormality defect and the handedness, as ref_eval. */
-static int basis_defects(const reffast_ctx *c, const study_kernel *k, const double n[3],
-                         int normalize_n, xv inv, sample_metrics *s)
+/* The orthonormality defect and the handedness from s->d, as ref_eval. */
+static void defect_summary(const study_kernel *k, const double n[3], sample_metrics *s)
 {
 	long double det;
 	int i;
-	if (!norm_m1_fast(c, s->out, &s->d[DEF_N1]) || !norm_m1_fast(c, s->out + 3, &s->d[DEF_N2]) ||
-	    !defect_dot(c, s->out, n, 0.0, normalize_n, inv, &s->d[DEF_D1N]) ||
-	    !defect_dot(c, s->out + 3, n, 0.0, normalize_n, inv, &s->d[DEF_D2N]) ||
-	    !defect_dot(c, s->out, s->out + 3, 0.0, 0, inv, &s->d[DEF_D12]))
-		return 0;
 	s->defect = 0.0;
 	s->sumsq = 0.0;
 	for (i = 0; i < NDEF; i++) {
@@ -1160,7 +1240,6 @@ static int basis_defects(const reffast_ctx *c, const study_kernel *k, const doub
 	}
 	s->det = (double)det;
 	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
-	return 1;
 }
 
 /* The accuracy floor (issue 16; reference.c floor_eval and
@@ -1197,20 +1276,20 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int
 			for (i = 0; i < 3; i++)
 				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
 		}
-		if (!norm_m1_fast(c, fb, &d[DEF_N1]) || !norm_m1_fast(c, fb + 3, &d[DEF_N2]) ||
-		    !defect_dot(c, fb, n, 0.0, normalize_n, inv, &d[DEF_D1N]) ||
-		    !defect_dot(c, fb + 3, n, 0.0, normalize_n, inv, &d[DEF_D2N]) ||
-		    !defect_dot(c, fb, fb + 3, 0.0, 0, inv, &d[DEF_D12]))
-			return 0;
-		f[0] = 0.0;
-		for (i = 0; i < NDEF; i++)
-			if (fabs(d[i]) > f[0])
-				f[0] = fabs(d[i]);
 	} else {
 		for (i = 0; i < 3; i++)
 			w[i] = fb[i];
 	}
-	return dir_errors(c, w, n, loc, prec, normalize_n, inv, &f[1], &f[2]);
+	if (!shape(c, k->m != NULL, fb, n, w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2], normalize_n, inv,
+	           d, &f[1], &f[2]))
+		return 0;
+	if (k->m) {
+		f[0] = 0.0;
+		for (i = 0; i < NDEF; i++)
+			if (fabs(d[i]) > f[0])
+				f[0] = fabs(d[i]);
+	}
+	return 1;
 }
 
 /* The cache entry of kernel k's formula on branch br for this input (the
@@ -1309,8 +1388,11 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			s->ref[i] = NAN;
 		return REFFAST_MPFR; /* the floor of a singular input: left to MPFR */
 	}
-	if (k->m && !basis_defects(c, k, n, normalize_n, inv, s))
+	if (!shape(c, k->m != NULL, s->out, n, s->w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2], normalize_n,
+	           inv, s->d, &s->dir_norm, &s->dir_cos))
 		return 0;
+	if (k->m)
+		defect_summary(k, n, s);
 
 	/* Forward error against the kernel's own formula. */
 	e = formula(c, k, prec, s->branch, n, loc, normalize_n, r1, r2, &bad);
@@ -1329,9 +1411,6 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	if (!(undet[0] <= s->abs_eps_max) || !(undet[1] <= s->ulp_max))
 		return 0;
 
-	/* Direction error: | |w| - 1 | and | w.n - z |. */
-	if (!dir_errors(c, s->w, n, loc, prec, normalize_n, inv, &s->dir_norm, &s->dir_cos))
-		return 0;
 	if (!floor_figures(c, e, k, prec, n, loc, normalize_n, inv, r1, r2, s))
 		return 0;
 	return rc;

@@ -45,6 +45,61 @@ static void duff_lost_ulpf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b1->x = nextafterf(b1->x, 2.0f);
 }
 
+/* fx_add_double as first written (frexp and ldexp): the bit reading in
+   fx.h must add the same integer for every double. */
+static void fx_add_double_frexp(fx *a, double v)
+{
+	int e, s;
+	uint64_t m;
+	if (!(v > 0.0))
+		return;
+	if (!(v < 0x1p80)) {
+		a->saturated = 1;
+		return;
+	}
+	m = (uint64_t)ldexp(frexp(v, &e), 53);
+	s = e - 53 + FX_SHIFT;
+	if (s < 0) {
+		if (s <= -64)
+			return;
+		m >>= -s;
+		s = 0;
+	}
+	fx_add_limbs(a, s / 64, m << (s % 64));
+	if (s % 64)
+		fx_add_limbs(a, s / 64 + 1, m >> (64 - s % 64));
+}
+
+/* Random mantissas at every exponent from subnormal to 2^70 (short of
+   saturating the sum, which reaches the top limb), the
+   edges of the resolution (2^-300, 2^-364) and long carry chains (many
+   terms with all mantissa bits set on one limb boundary). */
+static int fx_bits_agree(void)
+{
+	fx a, b;
+	uint64_t x = 0x9e3779b97f4a7c15ull;
+	int i, bad = 0;
+	const double edge[] = { 0x1p-300, 0x1.fffffffffffffp-301, 0x1p-363, 0x1.fffffffffffffp-364, 0x1p-364,
+	                        0x1p-1074, 0x1p-1022, 0x1.fffffffffffffp70, 0x1p-236, 0x1.fffffffffffffp-237 };
+	memset(&a, 0, sizeof a);
+	memset(&b, 0, sizeof b);
+	for (i = 0; i < 400000; i++) {
+		uint64_t u;
+		double v;
+		x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+		u = (x & 0xfffffffffffffull) | ((uint64_t)(i % 1094) << 52);
+		if (i % 7 == 0)
+			u |= 0xfffffffffffffull; /* all ones: carries */
+		memcpy(&v, &u, sizeof v);
+		if (i % 1000 == 0)
+			v = edge[(i / 1000) % (int)(sizeof edge / sizeof edge[0])];
+		fx_add_double(&a, v);
+		fx_add_double_frexp(&b, v);
+		bad += memcmp(&a, &b, sizeof a) != 0;
+	}
+	return bad == 0 && a.l[FX_LIMBS - 1] != 0 && !a.saturated;
+}
+
 int main(void)
 {
 	ref_ctx *c = ref_new(127), *c2 = ref_new(191);
@@ -193,6 +248,7 @@ int main(void)
 		memset(&a, 0, sizeof a);
 		for (i = 0; i < 1000; i++) fx_add_double(&a, 0.1);
 		CHECK(fabs(fx_value(&a) - 100.0) < 1e-12, "fx: 1000 x 0.1 = 100 (got %.17g)", fx_value(&a));
+		CHECK(fx_bits_agree(), "fx: fx_add_double (bits) adds what frexp/ldexp's reading adds, carries and edges included");
 	}
 
 	/* 6. Distributions: pure functions of (seed, index), in the format. */

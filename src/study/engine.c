@@ -111,10 +111,41 @@ static int worker_init(worker *w, const sweep_plan *pl)
 	return w->rc1 && w->rc2 && w->loc ? 0 : -1;
 }
 
+/* The worst rows of the thread's cells whose ref[] the fast reference
+   left to MPFR (REFFAST_NOREF: NaN where undetermined): the input again,
+   and ref[] from ref_eval, the bytes the MPFR path would have stored
+   (every other field of the row is already MPFR's).  A row of a finite
+   key with a NaN that MPFR wrote itself is evaluated again to the same
+   bytes.  Only the rows kept at the end pay: filling each one as it
+   entered the list cost an MPFR evaluation for every new worst input
+   (half a million in the default sweep). */
+static void worker_fill_refs(engine *e, worker *w, sweep_state *st)
+{
+	int k, i, j;
+	for (k = 0; k < st->cfg.nk; k++)
+		for (i = 0; i < NWORST; i++) {
+			worst_t *r = &w->loc[k].worst[i];
+			double n[3], lv[3], aux;
+			sample_metrics m;
+			if (r->index == UINT64_MAX || r->source != 0 || !isfinite(r->key))
+				continue;
+			for (j = 0; j < 6 && !isnan(r->ref[j]); j++)
+				;
+			if (j == 6)
+				continue;
+			dist_sample(&e->ds[w->p][w->d], r->index, n, lv, &aux);
+			ref_eval(w->rc1, &st->kernels[k], w->p, n, lv, w->d == DIST_NONUNIT, &m);
+			memcpy(r->ref, m.ref, sizeof r->ref);
+			w->rworst[w->p][k]++;
+		}
+}
+
 /* Fold the thread's cells into the state, and start (p, d) afresh. */
-static void worker_fold(worker *w, sweep_state *st, int p, int d)
+static void worker_fold(engine *e, worker *w, sweep_state *st, int p, int d)
 {
 	int k;
+	if (w->p >= 0 && w->fc)
+		worker_fill_refs(e, w, st);
 	if (w->p >= 0) {
 #pragma omp critical(engine_fold)
 		for (k = 0; k < st->cfg.nk; k++)
@@ -156,11 +187,10 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 			if (f == REFFAST_MPFR) {
 				ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
 				w->rfall[p][k]++;
-			} else if (f == REFFAST_NOREF && cell_keeps(&w->loc[k], idx, &m, 0)) {
-				/* ref[] (worst rows only) was left to MPFR: fill it in */
-				ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
-				w->rworst[p][k]++;
 			}
+			/* REFFAST_NOREF: ref[] (worst rows only) holds NaN where MPFR
+			   must fill it in; worker_fill_refs does, for the rows still
+			   kept when the thread folds its cells */
 		}
 		if (idx % (uint64_t)cfg->check_every == 0) {
 			sample_metrics m2;
@@ -195,7 +225,7 @@ static unsigned long long run_chunk(engine *e, worker *w, sweep_state *st, uint6
 	if (plan_locate(e->pl, g, &p, &d, &c) != 0)
 		return 0;
 	if (p != w->p || d != w->d)
-		worker_fold(w, st, p, d);
+		worker_fold(e, w, st, p, d);
 	i0 = c * PLAN_CHUNK;
 	i1 = i0 + PLAN_CHUNK;
 	if (i1 > e->ds[p][d].count)
@@ -279,7 +309,7 @@ int engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, engine_prog
 			}
 		}
 		if (w.loc && !e->fail)
-			worker_fold(&w, st, -1, -1);
+			worker_fold(e, &w, st, -1, -1);
 #pragma omp critical(engine_fold)
 		{
 			int p, k;

@@ -14,6 +14,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #define FX_LIMBS 6
 #define FX_SHIFT 300
@@ -35,28 +36,46 @@ static inline void fx_add_limbs(fx *a, int from, uint64_t v)
 		a->saturated = 1;
 }
 
-/* a += v, for v >= 0 (NaN and negative values are ignored by the callers). */
+/* a += v, for v >= 0 (NaN and negative values are ignored by the callers).
+   v = m * 2^(E-1075) is read from its bits (E = the biased exponent, m
+   with the hidden bit: frexp's fraction times 2^53), so that m's last bit
+   lands on bit s = E - 1075 + FX_SHIFT of the sum; subnormals (E = 0) lie
+   below 2^-1022, far under the resolution, and add nothing.  m spans at
+   most two limbs (v < 2^80 puts its top bit below bit 380).  This runs
+   some 30 times per input of a sweep: no libm call, and the carry loop
+   only when a limb wraps. */
 static inline void fx_add_double(fx *a, double v)
 {
-	int e, s;
-	uint64_t m;
+	int s, i, r;
+	uint64_t m, u, lo, hi;
 	if (!(v > 0.0))
 		return;
 	if (!(v < 0x1p80)) {
 		a->saturated = 1;
 		return;
 	}
-	m = (uint64_t)ldexp(frexp(v, &e), 53); /* v = m * 2^(e-53) */
-	s = e - 53 + FX_SHIFT;                 /* bit position of m's last bit */
+	memcpy(&u, &v, sizeof u);
+	m = (u & 0xfffffffffffffull) | 0x10000000000000ull;
+	s = (int)(u >> 52) - 1075 + FX_SHIFT;
 	if (s < 0) {
 		if (s <= -64)
 			return;
 		m >>= -s;
 		s = 0;
 	}
-	fx_add_limbs(a, s / 64, m << (s % 64));
-	if (s % 64)
-		fx_add_limbs(a, s / 64 + 1, m >> (64 - s % 64));
+	i = s / 64;
+	r = s % 64;
+	lo = m << r;
+	hi = (m >> 1) >> (63 - r);         /* m >> (64 - r), 0 for r = 0 */
+	a->l[i] += lo;
+	hi += a->l[i] < lo;                /* the carry: hi < 2^53, no overflow */
+	if (i + 1 < FX_LIMBS) {
+		a->l[i + 1] += hi;
+		if (a->l[i + 1] < hi)
+			fx_add_limbs(a, i + 2, 1);
+	} else if (hi) {
+		a->saturated = 1;
+	}
 }
 
 static inline void fx_add(fx *a, const fx *b)

@@ -116,8 +116,6 @@ cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
 void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
-/* 1 when cell_add would keep this sample among the cell's worst. */
-int  cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source);
 
 int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
 void sweep_free(sweep_state *s);

@@ -202,23 +202,6 @@ static void bin_add(bin_t *b, double e)
 
 static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
-/* cell_add's key of a sample. */
-static double sample_key(const sample_metrics *m)
-{
-	if (m->nonfinite)
-		return INFINITY;
-	return m->has_basis ? m->defect : dmax(m->dir_norm, m->dir_cos);
-}
-
-int cell_keeps(const cell_t *c, uint64_t index, const sample_metrics *m, int source)
-{
-	worst_t w;
-	w.key = sample_key(m);
-	w.index = index;
-	w.source = source;
-	return worse(&w, &c->worst[NWORST - 1]);
-}
-
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
 {
 	worst_t w;

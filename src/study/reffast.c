@@ -764,15 +764,34 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 #define REFFAST_VEC 1
 typedef double v4d __attribute__((vector_size(32)));
 typedef long long v4i __attribute__((vector_size(32)));
+typedef float v4f __attribute__((vector_size(16)));
 #define VABS(x) ((v4d)((v4i)(x) & 0x7fffffffffffffffLL))
 #define VTWO_SUM(a, b, s, t) do { const v4d x_ = (a) + (b), z_ = x_ - (a); \
 	(t) = ((a) - (x_ - z_)) + ((b) - z_); (s) = x_; } while (0)
 
+/* ziv() of four pairs (h, l) with bounds e > 0 at 53 or 24 bits: the
+   lanes that fail (all bits set; NaN and infinite lanes fail), the
+   candidates in *out.  The same
+   operations as the scalar test's inexact branch, lane by lane. */
+static v4i vziv(v4d h, v4d l, v4d e, int bits, v4d *out)
+{
+	const v4d c = bits == 24 ? __builtin_convertvector(__builtin_convertvector(h, v4f), v4d) : h;
+	const v4i cb = (v4i)c;
+	const v4d off = (v4d)((v4i)((h - c) + l) ^ (cb & (long long)0x8000000000000000ULL));
+	const v4d m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
+	const v4d ulp = (v4d)((cb & 0x7ff0000000000000LL) - ((long long)(bits - 1) << 52));
+	const v4d upg = 0.5 * ulp;
+	const v4d dng = upg - (v4d)((v4i)(0.25 * ulp) & ((cb & 0x000fffffffffffffLL) == 0));
+	*out = c;
+	return ~((VABS(h) <= DBL_MAX) & (VABS(c) <= DBL_MAX)) | (VABS(c) < (bits == 24 ? 0x1p-126 : TINY)) |
+	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+}
+
 static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
 {
 	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
-	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, off, m, ulp, upg, dng;
-	v4i hb, fail;
+	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, r;
+	v4i fail;
 	int j, mask = 0;
 	VTWO_SUM(p0, p1, s1, e1);
 	VTWO_SUM(s1, p2, s2, e2);
@@ -781,19 +800,10 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	E = 2.0 * 0x1p-53 * (VABS(e1) + VABS(e2) + VABS(e3)) * INFL;
 	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
 	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
-	/* ziv_d on (h, l, e): candidate h, offset l away from zero, the half
-	   gaps from h's exponent bits (normal: |h| >= TINY is required) */
-	hb = (v4i)h;
-	off = (v4d)((v4i)l ^ (hb & (long long)0x8000000000000000ULL));
-	m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
-	ulp = (v4d)((hb & 0x7ff0000000000000LL) - (52LL << 52));
-	upg = 0.5 * ulp;
-	dng = upg - (v4d)((v4i)(0.25 * ulp) & ((hb & 0x000fffffffffffffLL) == 0));
-	fail = (s3 == 0.0) | (VABS(s3) > DBL_MAX) | (VABS(h) < TINY) | (VABS(h) > DBL_MAX) |
-	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+	fail = (s3 == 0.0) | ~(VABS(s3) <= DBL_MAX) | vziv(h, l, e, 53, &r); /* NaN fails too */
 	for (j = 0; j < 4; j++)
 		if (!fail[j]) {
-			out[j] = h[j];
+			out[j] = r[j];
 			mask |= 1 << j;
 		}
 	return mask;
@@ -1073,14 +1083,52 @@ static double float_distance(double a, double b, int prec)
    MPFR's E carries 2^-127 of noise) enters only the maxima abs_eps_max
    and ulp_max: its upper bound goes to undet[0] (in eps) and undet[1]
    (in ulps), and the caller checks that neither reaches the maxima. */
-static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
+/* xforward's figures from its parts: diff = RN(E - cv) when have_diff,
+   else its bound `upper`; rounded = E rounded to the format (0 when E is
+   tiny). */
+static void fwd_accumulate(int prec, double cv, int have_diff, double diff, double upper, double rounded,
+                           sample_metrics *s, double undet[2])
 {
 	const int p = prec == PREC_FLOAT ? 24 : 53;
 	const int emin = prec == PREC_FLOAT ? -125 : -1021;
 	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
+	double bits;
+	if (have_diff) {
+		/* x / 2^k and x * 2^-k are the same correctly rounded value */
+		const double d = fabs(diff) * (prec == PREC_FLOAT ? 0x1p23 : 0x1p52);
+		diff = fabs(diff);
+		s->abs_eps_max = d > s->abs_eps_max ? d : s->abs_eps_max;
+	} else if (upper / eps > undet[0]) {
+		undet[0] = upper / eps;
+	}
+	if (rounded != 0.0 && fabs(rounded) >= eps) {
+		int ex = dexp(rounded) + 1; /* frexp's exponent */
+		ex = (ex < emin ? emin : ex) - p;
+		if (!have_diff) {
+			const double ulp = pow2(ex);
+			if (upper / ulp > undet[1])
+				undet[1] = upper / ulp;
+		} else {
+			const double d = diff * pow2(-ex); /* diff / ulp */
+			s->ulp_max = d > s->ulp_max ? d : s->ulp_max;
+		}
+		{
+			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
+			const double dist = float_distance(cv, rounded, prec);
+			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
+		}
+		s->bits_sum += bits;
+		s->nbits++;
+		s->bits_max = bits > s->bits_max ? bits : s->bits_max;
+	}
+}
+
+static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
+{
+	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
 	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
 	const int tiny = (double)PFABS(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
-	double diff, rounded, bits, ulp = 0.0, upper = 0.0;
+	double diff = 0.0, rounded, upper = 0.0;
 	int bad = 0, rc = 1, have_diff;
 	xv D;
 	if (!ziv_d(E, refd)) {
@@ -1097,16 +1145,8 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	if (bad)
 		return 0;
 	have_diff = ziv_d(D, &diff);
-	if (have_diff) {
-		/* x / 2^k and x * 2^-k are the same correctly rounded value */
-		const double d = fabs(diff) * (prec == PREC_FLOAT ? 0x1p23 : 0x1p52);
-		diff = fabs(diff);
-		s->abs_eps_max = d > s->abs_eps_max ? d : s->abs_eps_max;
-	} else {
+	if (!have_diff)
 		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
-		if (upper / eps > undet[0])
-			undet[0] = upper / eps;
-	}
 	if (tiny) {
 		rounded = 0.0;
 	} else if (prec == PREC_FLOAT) {
@@ -1115,26 +1155,22 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	} else {
 		rounded = *refd;
 	}
-	if (rounded != 0.0 && fabs(rounded) >= eps) {
-		int ex;
-		ex = dexp(rounded) + 1; /* frexp's exponent */
-		ex = (ex < emin ? emin : ex) - p;
-		ulp = pow2(ex);
-		if (!have_diff) {
-			if (upper / ulp > undet[1])
-				undet[1] = upper / ulp;
-		} else {
-			const double d = diff * pow2(-ex); /* diff / ulp */
-			s->ulp_max = d > s->ulp_max ? d : s->ulp_max;
-		}
-		{
-			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
-			const double dist = float_distance(cv, rounded, prec);
-			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
-		}
-		s->bits_sum += bits;
-		s->nbits++;
-		s->bits_max = bits > s->bits_max ? bits : s->bits_max;
+	fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
+	return rc;
+}
+
+/* The forward figures of every component of the kernel's output against
+   the formula r1, r2: 1 (ref[] determined), 2 (ref[] left to MPFR) or 0
+   (MPFR decides the sample). */
+static int forward_all(const xv *r1, const xv *r2, int prec, sample_metrics *s, double undet[2])
+{
+	int i, rc = 1;
+	for (i = 0; i < s->ncomp; i++) {
+		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+		if (!f)
+			return 0;
+		if (f == 2)
+			rc = 2;
 	}
 	return rc;
 }
@@ -1399,8 +1435,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	if (bad)
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
-	for (i = 0; i < s->ncomp; i++) {
-		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+	{
+		const int f = forward_all(r1, r2, prec, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)

@@ -747,10 +747,35 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	if (h == 0.0)
 		return 0; /* (nearly) zero: exact zeros and their signs are the general path's */
 	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
-	v.h = h;
-	v.l = l + F; /* |l| <= u|h|/2, |F| tiny: (h, l + F) is a normalized pair within u|l + F| */
+	{
+		/* (h, l + F) within u|l + F| of X; normalized by TwoSum (under heavy
+		   cancellation F reaches an ulp of h) */
+		double vh, vl;
+		two_sum(h, l + F, &vh, &vl);
+		v.h = vh;
+		v.l = vl;
+	}
 	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
 	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
+	if (ziv_d(v, out))
+		return 1;
+	/* A defect of doubles often has 54 bits, and then lies exactly on a
+	   midpoint: decided only as an exact value.  X = h + l exactly when
+	   every f is zero; MPFR's sum is exact when all its partial sums fit
+	   p bits (as in sum_terms); then RN(X) with ties to even. */
+	if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0 || f[3] != 0.0 || f[4] != 0.0)
+		return 0;
+	{
+		const double terms[7] = { p[0], t[0], p[1], t[1], p[2], t[2], z };
+		int minlsb = 100000;
+		for (i = 0; i < 7; i++)
+			if (terms[i] != 0.0 && dlsb(terms[i]) < minlsb)
+				minlsb = dlsb(terms[i]);
+		if (dexp(S) + 2 - minlsb > c->prec)
+			return 0;
+	}
+	two_sum_l(h, l, &v.h, &v.l); /* X = h + l: 54 bits or so, exact in a long double */
+	v.e = 0.0;
 	return ziv_d(v, out);
 }
 #endif

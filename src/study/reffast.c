@@ -35,6 +35,9 @@
 #include <math.h>
 #include <stdint.h>
 #include <float.h>
+#if defined(__GNUC__) && defined(__AVX__) && defined(__FMA__)
+#include <immintrin.h>
+#endif
 #include "reffast.h"
 
 /* The formula of a family on one input, shared by every kernel of that
@@ -785,7 +788,7 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
    z_j, computed by exactly the scalar function's operations, so a lane
    decides exactly when fdot_round would and to the same value.  Returns
    the mask of the lanes decided (bit j), their values in out[j]. */
-#if defined(REFFAST_PAIR_DOUBLE) && defined(__GNUC__) && defined(__AVX__)
+#if defined(__GNUC__) && defined(__AVX__) && (defined(REFFAST_PAIR_DOUBLE) || defined(__FMA__))
 #define REFFAST_VEC 1
 typedef double v4d __attribute__((vector_size(32)));
 typedef long long v4i __attribute__((vector_size(32)));
@@ -812,6 +815,7 @@ static v4i vziv(v4d h, v4d l, v4d e, int bits, v4d *out)
 	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
 }
 
+#ifdef REFFAST_PAIR_DOUBLE
 static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
 {
 	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
@@ -833,6 +837,43 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 		}
 	return mask;
 }
+#else
+/* The double precision's fdot_round, four lanes (TwoProd by the fma
+   instruction); a lane that fails here (exact midpoints among them) takes
+   the scalar function, which decides those too. */
+static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+{
+	v4d p[3], t[3], s1, e1, s2, e2, s3, e3, u, f0, f1, f2, f3, f4, F, h, l, vh, vl, S, e, r;
+	v4i fail = (v4i){ 0, 0, 0, 0 };
+	int i, j, mask = 0;
+	for (i = 0; i < 3; i++) {
+		p[i] = a[i] * b[i];
+		t[i] = (v4d)_mm256_fmadd_pd((__m256d)a[i], (__m256d)b[i], (__m256d)-p[i]);
+		fail |= ((p[i] == 0.0) & (a[i] != 0.0) & (b[i] != 0.0)) | ((p[i] != 0.0) & (VABS(p[i]) < 0x1p-960));
+	}
+	VTWO_SUM(p[0], p[1], s1, e1);
+	VTWO_SUM(s1, p[2], s2, e2);
+	VTWO_SUM(s2, -z, s3, e3);
+	VTWO_SUM(t[0], t[1], u, f0);
+	VTWO_SUM(u, t[2], u, f1);
+	VTWO_SUM(u, e1, u, f2);
+	VTWO_SUM(u, e2, u, f3);
+	VTWO_SUM(u, e3, u, f4);
+	F = (((f0 + f1) + f2) + f3) + f4;
+	VTWO_SUM(s3, u, h, l);
+	S = (VABS(p[0]) + VABS(p[1]) + VABS(p[2]) + VABS(z)) * INFL;
+	VTWO_SUM(h, l + F, vh, vl);
+	e = ((4.0 * 0x1p-53 * (VABS(f0) + VABS(f1) + VABS(f2) + VABS(f3) + VABS(f4)) + 0x1p-53 * VABS(l + F)) * INFL +
+	     3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
+	fail |= ~(VABS(s3) <= DBL_MAX) | (h == 0.0) | vziv(vh, vl, e, 53, &r);
+	for (j = 0; j < 4; j++)
+		if (!fail[j]) {
+			out[j] = r[j];
+			mask |= 1 << j;
+		}
+	return mask;
+}
+#endif
 
 /* The lanes of shape() below, decided in two vectors: bits 0-4 the five
    defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;

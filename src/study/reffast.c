@@ -53,6 +53,12 @@ typedef struct {
 	int floor_ok;             /* floor figures determined                      */
 	unsigned char xr[6 * XV_BYTES]; /* r1[3], r2[3] as this file's xv (opaque here) */
 	double floor, floor_dir_norm, floor_dir_cos;
+	/* per component, what the forward error takes from the formula alone
+	   (E rounded to double and to the format, see xforward): 0 not yet,
+	   1 done, 2 done with E's double undetermined (ref[] left to MPFR),
+	   -1 MPFR must decide */
+	signed char fwd[6];
+	double refd[6], rounded[6];
 } fentry;
 
 struct reffast_ctx {
@@ -1189,50 +1195,81 @@ static void fwd_accumulate(int prec, double cv, int have_diff, double diff, doub
 	}
 }
 
-static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
+/* The parts of a forward error that depend on E alone: *refd (E to
+   double; NaN when undetermined but E is tiny) and *rounded (E to the
+   format; 0 when tiny).  1, 2 (ref[] left to MPFR) or -1 (MPFR decides). */
+static int fwd_parts(xv E, int prec, double *refd, double *rounded)
 {
 	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
 	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
 	const int tiny = (double)PFABS(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
-	double diff = 0.0, rounded, upper = 0.0;
-	int bad = 0, rc = 1, have_diff;
-	xv D;
+	int rc = 1;
 	if (!ziv_d(E, refd)) {
 		/* The exact double of E is undetermined (an exact zero that MPFR
 		   computes as rounding noise, say).  When tiny, it takes part in
 		   no other figure: only ref[] is left to MPFR, and only if the
 		   sample is kept among the worst. */
 		if (!tiny)
-			return 0;
+			return -1;
 		*refd = NAN;
 		rc = 2;
 	}
+	if (tiny) {
+		*rounded = 0.0;
+	} else if (prec == PREC_FLOAT) {
+		if (!ziv_f(E, rounded))
+			return -1;
+	} else {
+		*rounded = *refd;
+	}
+	return rc;
+}
+
+/* The forward error of component value cv against E, from E's parts
+   (fwd_parts): 1, 2 (ref[] left to MPFR) or 0 (MPFR decides). */
+static int xforward(xv E, double cv, int prec, int parts, double refd, double rounded, sample_metrics *s,
+                    double undet[2])
+{
+	double diff = 0.0, upper = 0.0;
+	int bad = 0, have_diff;
+	xv D;
+	if (parts < 0)
+		return 0;
 	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
 	if (bad)
 		return 0;
 	have_diff = ziv_d(D, &diff);
 	if (!have_diff)
 		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
-	if (tiny) {
-		rounded = 0.0;
-	} else if (prec == PREC_FLOAT) {
-		if (!ziv_f(E, &rounded))
-			return 0;
-	} else {
-		rounded = *refd;
-	}
 	fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
-	return rc;
+	(void)refd;
+	return parts;
 }
 
 /* The forward figures of every component of the kernel's output against
    the formula r1, r2: 1 (ref[] determined), 2 (ref[] left to MPFR) or 0
    (MPFR decides the sample). */
-static int forward_all(const xv *r1, const xv *r2, int prec, sample_metrics *s, double undet[2])
+static int forward_all(fentry *e, const xv *r1, const xv *r2, int prec, sample_metrics *s, double undet[2])
 {
 	int i, rc = 1;
 	for (i = 0; i < s->ncomp; i++) {
-		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+		const xv E = i < 3 ? r1[i] : r2[i - 3];
+		double refd = NAN, rounded = 0.0;
+		int parts, f;
+		if (e && e->fwd[i]) {
+			parts = e->fwd[i];
+			refd = e->refd[i];
+			rounded = e->rounded[i];
+		} else {
+			parts = fwd_parts(E, prec, &refd, &rounded);
+			if (e) {
+				e->fwd[i] = (signed char)parts;
+				e->refd[i] = refd;
+				e->rounded[i] = rounded;
+			}
+		}
+		s->ref[i] = refd;
+		f = xforward(E, s->out[i], prec, parts, refd, rounded, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)
@@ -1430,6 +1467,7 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, 
 	}
 	e->ok = !*bad;
 	e->floor_ok = -1;
+	memset(e->fwd, 0, sizeof e->fwd);
 	memcpy(e->xr, r1, 3 * sizeof *r1);
 	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
 	return e;
@@ -1502,7 +1540,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
 	{
-		const int f = forward_all(r1, r2, prec, s, undet);
+		const int f = forward_all(e, r1, r2, prec, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)

@@ -321,7 +321,8 @@ static inline double mag(xv a) { return (double)PFABS(a.h) * (1.0 + 0x1p-50) + a
 static inline int ok(xv r)
 {
 	const ld a = PFABS(r.h);
-	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0 || a >= TINY);
+	/* one branch for the caller, not three (NaN fails each comparison) */
+	return ((double)a <= DBL_MAX) & (r.e <= DBL_MAX) & ((a == 0.0) | (a >= TINY));
 }
 
 static inline xv xneg(xv a) { xv r = { -a.h, -a.l, a.e }; return r; }
@@ -1500,7 +1501,8 @@ static int floor_figures(const reffast_ctx *c, fentry *e, const study_kernel *k,
 		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
 		const double ev = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
 		const double fv = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
-		s->floor_ratio = fmax(ev, u2) / fmax(fv, u2);
+		/* fmax(x, u2) for x = NaN is u2, as here; no libm call */
+		s->floor_ratio = (ev > u2 ? ev : u2) / (fv > u2 ? fv : u2);
 	}
 	return 1;
 }

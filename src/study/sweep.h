@@ -117,6 +117,10 @@ void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
 
+/* by_nz's bin of h in quarter decades, clampi((int)floor((log10(h) +
+   off4 / 4) * 4), 0, nb - 1) for h > 0, else 0; exposed for the tests. */
+int  sweep_log_bin(double h, int off4, int nb);
+
 int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
 void sweep_free(sweep_state *s);
 /* Restore the kernels from cfg.names. */

@@ -147,6 +147,8 @@ static void worker_fold(engine *e, worker *w, sweep_state *st, int p, int d)
 	if (w->p >= 0 && w->fc)
 		worker_fill_refs(e, w, st);
 	if (w->p >= 0) {
+		for (k = 0; k < st->cfg.nk; k++)
+			cell_settle(&w->loc[k]); /* filled by cell_add_lazy since cell_init */
 #pragma omp critical(engine_fold)
 		for (k = 0; k < st->cfg.nk; k++)
 			cell_merge(sweep_cell(st, w->p, w->d, k), &w->loc[k]);
@@ -206,7 +208,7 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 			}
 		}
 		m.stratum = dist_stratum(&e->ds[p][d], idx);
-		cell_add(&w->loc[k], idx, &m, n, 0);
+		cell_add_lazy(&w->loc[k], idx, &m, n, 0);
 		if (d == DIST_GRID) {
 			const size_t j = ((size_t)p * (size_t)cfg->nk + (size_t)k) * GG + (size_t)aux;
 			st->g_err[j] = m.nonfinite ? INFINITY : st->kernels[k].m ? m.defect : fmax(m.dir_norm, m.dir_cos);

@@ -152,7 +152,7 @@ void cell_merge(cell_t *d, const cell_t *s)
 
 /* The floor's share of cell_add: its own statistics, and the ratio. */
 static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source,
-                      bin_t *b[4])
+                      bin_t *b[4], int lazy)
 {
 	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
 	const double r = m->floor_ratio;
@@ -161,7 +161,8 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 	if (isnan(f))
 		return;
 	c->floor_n++;
-	fx_add_double(&c->floor2, f * f);
+	if (!lazy)
+		fx_add_double(&c->floor2, f * f);
 	if (t) {
 		t->fn++;
 		fx_add_double(&t->f2, f * f);
@@ -178,7 +179,8 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 		return;
 	c->ratio_n++;
 	c->ratio_at += r <= 1.0;
-	fx_add_double(&c->ratio2, r * r);
+	if (!lazy)
+		fx_add_double(&c->ratio2, r * r);
 	if (t) {
 		t->rn++;
 		t->rat += r <= 1.0;
@@ -245,11 +247,14 @@ int sweep_log_bin(double h, int off4, int nb)
 	return j;
 }
 
-void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+/* cell_add, and with lazy (cell_add_lazy) the sums a stratum holds too
+   left to cell_settle. */
+static void cell_add_to(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source, int lazy)
 {
 	worst_t w;
 	double key;
 	bin_t *fb[4] = { NULL, NULL, NULL, NULL }; /* the bins of this input, for the floor */
+	lazy = lazy && m->stratum >= 0 && m->stratum < NSTRAT;
 	c->count++;
 	if (m->nonfinite) {
 		c->nonfinite++;
@@ -258,11 +263,13 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		c->finite++;
 		if (m->has_basis) {
 			fx_add_double(&c->sumsq, m->sumsq);
-			fx_add_double(&c->sumdef2, m->defect * m->defect);
+			if (!lazy)
+				fx_add_double(&c->sumdef2, m->defect * m->defect);
 			c->max_defect = dmax(c->max_defect, m->defect);
 			{	/* footnote 1: |n|-1 with the five defects, mean square */
 				const double ms = (m->in_norm * m->in_norm + m->sumsq) / 6.0;
-				fx_add_double(&c->duffms, ms);
+				if (!lazy)
+					fx_add_double(&c->duffms, ms);
 				c->max_duff_rms = dmax(c->max_duff_rms, sqrt(ms));
 			}
 			c->wrong += (uint64_t)m->wrong_hand;
@@ -271,7 +278,8 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			key = dmax(m->dir_norm, m->dir_cos);
 		}
 		c->comps += (uint64_t)m->nbits;
-		fx_add_double(&c->bits, m->bits_sum);
+		if (!lazy)
+			fx_add_double(&c->bits, m->bits_sum);
 		if (m->stratum >= 0 && m->stratum < NSTRAT)
 			stratum_add(&c->st[m->stratum], m);
 		c->max_ulp = dmax(c->max_ulp, m->ulp_max);
@@ -280,7 +288,8 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		c->max_dir_norm = dmax(c->max_dir_norm, m->dir_norm);
 		c->max_dir_cos = dmax(c->max_dir_cos, m->dir_cos);
 		fx_add_double(&c->dirn2, m->dir_norm * m->dir_norm);
-		fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
+		if (!lazy)
+			fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
 		/* bins of the per-input error */
 		fb[0] = &c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)];
 		bin_add(fb[0], key);
@@ -295,7 +304,7 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			bin_add(fb[3], key);
 		}
 	}
-	floor_add(c, index, m, n, source, fb);
+	floor_add(c, index, m, n, source, fb, lazy);
 	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
 	w.key = key;
 	w.index = index;
@@ -312,6 +321,32 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 	w.dir_norm = m->dir_norm;
 	w.dir_cos = m->dir_cos;
 	worst_insert(c, &w);
+}
+
+void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+{
+	cell_add_to(c, index, m, n, source, 0);
+}
+
+void cell_add_lazy(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+{
+	cell_add_to(c, index, m, n, source, 1);
+}
+
+/* The stratum sums (stratum_add, floor_add) hold the same terms as these
+   six cell sums, whenever the input's stratum is one of the NSTRAT: the
+   sum over the strata is the same integer. */
+void cell_settle(cell_t *c)
+{
+	int h;
+	for (h = 0; h < NSTRAT; h++) {
+		fx_add(&c->sumdef2, &c->st[h].s[Q_DEF2]);
+		fx_add(&c->duffms, &c->st[h].s[Q_DUFF]);
+		fx_add(&c->dirc2, &c->st[h].s[Q_DIRC2]);
+		fx_add(&c->bits, &c->st[h].bx);
+		fx_add(&c->floor2, &c->fst[h].f2);
+		fx_add(&c->ratio2, &c->fst[h].r2);
+	}
 }
 
 static size_t grid_cells(const sweep_state *s)

@@ -37,8 +37,26 @@
 #include <float.h>
 #include "reffast.h"
 
+/* The formula of a family on one input, shared by every kernel of that
+   family on that input (the sweep evaluates all kernels of an input in a
+   row): its value with bounds and its floor figures.  The key is the
+   input (n, loc, precision, normalize_n) plus the formula: family, branch
+   and whether it normalizes (naive and hughes_moeller have a _nonorm). */
+#define FCACHE 32
+#define XV_BYTES 48             /* sizeof(xv) at most (pairs of long doubles) */
+typedef struct {
+	int key;                  /* family * 64 + branch * 2 + normalizes, -1: empty */
+	int ok;                   /* the formula's bounds hold (else MPFR decides) */
+	int floor_ok;             /* floor figures determined                      */
+	unsigned char xr[6 * XV_BYTES]; /* r1[3], r2[3] as this file's xv (opaque here) */
+	double floor, floor_dir_norm, floor_dir_cos;
+} fentry;
+
 struct reffast_ctx {
 	int prec;                 /* MPFR precision p of the reference mirrored */
+	double key_n[3], key_loc[3]; /* the input the formula cache holds        */
+	int key_prec, key_norm, nf;
+	fentry fc[FCACHE];
 	double up;                /* 2^-p */
 	double last[3];           /* cache: the last input, its |n|-1 and 1/|n| */
 	double last_norm;
@@ -46,6 +64,14 @@ struct reffast_ctx {
 	long double inv_h, inv_l;
 	double inv_e;
 };
+
+/* The hot helpers are inlined into their callers (measured: about a
+   fifth of the fast path's time went to calls and spills). */
+#if defined(__GNUC__)
+#define HOT static inline __attribute__((always_inline))
+#else
+#define HOT static inline
+#endif
 
 #define INFL (1.0 + 0x1p-40)     /* inflation of every computed bound        */
 #define TINY 0x1p-900            /* smallest magnitude allowed (no underflow) */
@@ -276,6 +302,7 @@ static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
 }
 
 typedef struct { ld h, l; double e; } xv;
+typedef char xv_fits_the_cache[sizeof(xv) <= XV_BYTES ? 1 : -1];
 
 static inline xv xc(double d) { xv r = { d, 0.0, 0.0 }; return r; }
 
@@ -339,15 +366,13 @@ static int exact_pair_sum(xv a, xv b, xv *r)
 		bit_span(r->l, &h1, &l1);
 		l0 = l1;
 	}
-	if (h0 - l0 + 1 > 127 || !ok(*r))
-		return 0;
-	r->e = 0.0;
-	return 1;
+	r->e = 0.0; /* before ok(), which reads it */
+	return h0 - l0 + 1 <= 127 && ok(*r);
 }
 
 /* a + b (mpfr_add).  Relative rounding: pair < 2^-126, MPFR <= 2^-127 of
    |X_mpfr| <= |r| + 2(ea + eb): DDREL |r| and the inflation cover both. */
-static xv xadd(xv a, xv b, int *bad)
+HOT xv xadd(xv a, xv b, int *bad)
 {
 	xv r;
 	if (is_zero(b) && a.h != 0.0) /* MPFR: x + 0 = x exactly */
@@ -383,10 +408,10 @@ static xv xadd(xv a, xv b, int *bad)
 	return r;
 }
 
-static xv xsub(xv a, xv b, int *bad) { return xadd(a, xneg(b), bad); }
+HOT xv xsub(xv a, xv b, int *bad) { return xadd(a, xneg(b), bad); }
 
 /* a b (mpfr_mul, mpfr_sqr). */
-static xv xmul(xv a, xv b, int *bad)
+HOT xv xmul(xv a, xv b, int *bad)
 {
 	xv r;
 	double prop;
@@ -504,11 +529,11 @@ static xv xrsqrt(xv s, int *bad)
    X_mpfr both are): 1 and *out when they all round to the same value,
    strictly inside its rounding interval; else 0.  c = RN(h) is the
    candidate; off = v - c = (h - c) + l, h - c exact, one rounding. */
-static int ziv(xv v, int bits, double *out)
+HOT int ziv(xv v, int bits, double *out)
 {
-	double c, a, ulp, upg, dng, m, t;
+	double c, a, ulp, upg, dng, m;
 	ld off;
-	int ex;
+	int ex, fail;
 	if (!isfinite((double)v.h))
 		return 0;
 	c = bits == 24 ? (double)(float)v.h : (double)v.h;
@@ -537,22 +562,19 @@ static int ziv(xv v, int bits, double *out)
 		*out = c;
 		return 1;
 	}
-	off = (v.h - (ld)c) + v.l;
-	if (c < 0)
-		off = -off;                                    /* offset away from zero  */
+	/* off: the offset of v from c, away from zero; no branch on signs
+	   (random here: a mispredicted branch cost more than the test) */
+	off = ((v.h - (ld)c) + v.l) * (ld)copysign(1.0, c);
 	m = 2.0 * v.e * INFL + (double)PFABS(off) * OFF_SLOP;
-	t = (double)off + m;
-	if (t > 0 && t * (1.0 + 0x1p-50) >= upg)
-		return 0;
-	t = m - (double)off;
-	if (t > 0 && t * (1.0 + 0x1p-50) >= dng)
-		return 0;
-	*out = c;
-	return 1;
+	/* a t <= 0 passes either test, as it must */
+	fail = (((double)off + m) * (1.0 + 0x1p-50) >= upg) | ((m - (double)off) * (1.0 + 0x1p-50) >= dng);
+	if (!fail)
+		*out = c;
+	return !fail;
 }
 
-static int ziv_d(xv v, double *out) { return ziv(v, 53, out); }
-static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
+HOT int ziv_d(xv v, double *out) { return ziv(v, 53, out); }
+HOT int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
 
 /* ---- exact sums of products (reference.c's exact_sum) ---- */
 
@@ -563,63 +585,74 @@ static int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
    unchanged and move it into t[k-1]; the rest is added in double with an
    error <= k u sum|t[i<k-1]|, and the pair is made a dd by TwoSum.
    Passes repeat (at most 4) until that bound is below 2^-95 of the sum;
-   it is 0 when the last pass's TwoSums were all exact.
+   it is 0 when the last pass's TwoSums were all exact.  Zero
+   terms are dropped first: they change no partial sum, ours or MPFR's.
    MPFR's error: its sequential path adds k terms at p bits (error
    <= (k-1) 2^-p sum|terms| <= 4 2^-p S, S <= bound (1 + 2^-40)); it
    refines with mpfr_sum (error <= 2^-p |X|) when |X_mpfr| < 2^(E-59),
    bound in [2^(E-1), 2^E), which certainly happens when |X| <= 2^(E-61).
    An exact zero sum is +0 in both paths, -0 when every term is -0. */
-static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int allneg0, int *bad)
+HOT xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int allneg0, int *bad)
 {
 	xv r;
-	double lo = 0.0, sabs = 0.0, err = 0.0, V, merr;
-	int pass, i, E, minlsb = 100000, exact = 1;
+	double lo = 0.0, sabs = 0.0, err = 0.0, merr, orig[8];
+	int pass, i, m = 0, exact = 1;
 	if (!isfinite(bound)) { *bad = 1; return xc(0.0); }
+	/* zero terms change no partial sum, here or in MPFR: drop them (the
+	   low parts of products of floats, which are exact in double) */
 	for (i = 0; i < k; i++)
 		if (t[i] != 0.0) {
 			if (fabs(t[i]) < 0x1p-1000) { *bad = 1; return xc(0.0); }
-			if (dlsb(t[i]) < minlsb)
-				minlsb = dlsb(t[i]);
+			orig[m] = t[m] = t[i];
+			m++;
 		}
+	if (m == 0)
+		return xc(allneg0 ? -0.0 : 0.0); /* exact zero: +0, -0 when every term is -0 */
 	for (pass = 0; pass < 4; pass++) {
-		for (i = 1; i < k; i++)
+		for (i = 1; i < m; i++)
 			two_sum(t[i], t[i - 1], &t[i], &t[i - 1]);
-		/* lo = t[0] + ... + t[k-2] by TwoSum, noting whether it is exact */
+		/* lo = t[0] + ... + t[m-2] by TwoSum, noting whether it is exact */
 		lo = 0.0;
 		sabs = 0.0;
 		exact = 1;
-		for (i = 0; i < k - 1; i++) {
+		for (i = 0; i < m - 1; i++) {
 			double q;
 			two_sum(lo, t[i], &lo, &q);
 			exact &= q == 0.0;
 			sabs += fabs(t[i]);
 		}
-		err = exact ? 0.0 : (double)k * 0x1p-53 * sabs * INFL;
-		if (err <= 0x1p-95 * fabs(t[k - 1]))
+		err = exact ? 0.0 : (double)m * 0x1p-53 * sabs * INFL;
+		if (err <= 0x1p-95 * fabs(t[m - 1]))
 			break;
 	}
 	{
 		double sh, sl;
-		two_sum(t[k - 1], lo, &sh, &sl);
+		two_sum(t[m - 1], lo, &sh, &sl);
 		fast_two_sum_l(sh, sl, &r.h, &r.l); /* normalized as a pair of long doubles */
 	}
-	if (sabs == 0.0 && r.h == 0.0) { /* exact zero */
-		r = xc(allneg0 ? -0.0 : 0.0);
-		return r;
-	}
+	if (sabs == 0.0 && r.h == 0.0)
+		return xc(0.0); /* an exact zero sum of nonzero terms: +0 in RN, IEEE and MPFR */
 	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
-	E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
-	if (E + 1 - minlsb <= c->prec) {
-		/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
-		   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
-		   sum is exact, and so is ours when no TwoSum above lost a bit */
-		merr = 0.0;
-	} else {
-		V = (double)PFABS(r.h) * (1.0 + 0x1p-50) + err;
-		if (V <= pow2(E - 61))
-			merr = c->up * V;
-		else
-			merr = 4.0 * c->up * bound * INFL + c->up * V;
+	{
+		const int E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
+		int minlsb = 100000;
+		if (err == 0.0) {
+			for (i = 0; i < m; i++)
+				if (dlsb(orig[i]) < minlsb)
+					minlsb = dlsb(orig[i]);
+		}
+		if (err == 0.0 && E + 1 - minlsb <= c->prec) {
+			/* every partial sum of MPFR's terms (at most bound (1 + 2^-50) <
+			   2^(E+1), lowest bit at or above 2^minlsb) fits p bits: MPFR's
+			   sum is exact, and so is ours (no TwoSum above lost a bit) */
+			merr = 0.0;
+		} else {
+			const double V = (double)PFABS(r.h) * (1.0 + 0x1p-50) + err;
+			if (V <= pow2(E - 61))
+				merr = c->up * V;
+			else
+				merr = 4.0 * c->up * bound * INFL + c->up * V;
+		}
 	}
 	r.e = err == 0.0 && merr == 0.0 ? 0.0 : (err + merr) * INFL + FLOOR;
 	if (!ok(r)) *bad = 1;
@@ -627,7 +660,7 @@ static xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int al
 }
 
 /* Products a b into t (hi, lo); 0 if one underflowed. */
-static int prod_terms(double a, double b, double *t)
+HOT int prod_terms(double a, double b, double *t)
 {
 	two_prod(a, b, &t[0], &t[1]);
 	if (t[0] == 0.0 ? (a != 0.0 && b != 0.0) : fabs(t[0]) < 0x1p-960)
@@ -636,7 +669,7 @@ static int prod_terms(double a, double b, double *t)
 }
 
 /* dot_exact: a.b - z (z's term only when z != 0, as in reference.c). */
-static xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double z, int *bad)
+HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double z, int *bad)
 {
 	double t[8];
 	int i, k = 6, neg0 = 1;
@@ -651,12 +684,167 @@ static xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, dou
 	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
 }
 
+/* RN(a.b - z) in double for vectors of floats (the float precision's
+   outputs, inputs and directions; z = 0, 1 or a float): 1 and *out when
+   decided, 0 when the general path must (exact zeros, cancellation to
+   below Ziv's reach).  The products of floats are exact in double (48
+   bits, no underflow above 2^-298), and so in MPFR.  Three TwoSums in
+   MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
+   lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of their
+   sum, and MPFR's value within 3 2^-p S + 2^-p |X| of X (sequential sums
+   at p bits, S = sum of |terms|; or mpfr_sum, 2^-p |X|); Ziv's test on
+   s3 + lo with both bounds decides (an exact X = s3 passes it too). */
+#ifdef REFFAST_PAIR_DOUBLE
+HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+{
+	const double p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+	double s1, e1, s2, e2, s3, e3, S, E;
+	xv v;
+	two_sum(p0, p1, &s1, &e1);
+	two_sum(s1, p2, &s2, &e2);
+	two_sum(s2, -z, &s3, &e3);
+	if (s3 == 0.0 || !isfinite(s3))
+		return 0;
+	/* no branch on whether the e's are zero (data-dependent, so often
+	   mispredicted): an exact X = s3 passes Ziv's test as well */
+	S = (fabs(p0) + fabs(p1) + fabs(p2) + fabs(z)) * INFL;
+	E = 2.0 * 0x1p-53 * (fabs(e1) + fabs(e2) + fabs(e3)) * INFL;
+	two_sum(s3, (e1 + e2) + e3, &v.h, &v.l);
+	v.e = (E + 3.0 * c->up * S + c->up * 2.0 * fabs(v.h)) * INFL + FLOOR;
+	return ziv_d(v, out);
+}
+#else
+/* The same for vectors of doubles (the double precision's): products by
+   TwoProd, p_i + t_i = a_i b_i exactly (no underflow: checked), exact in
+   MPFR too (106 bits).  Two levels of TwoSums: s3 + e1 + e2 + e3 = the
+   sum of p0, p1, p2, -z (MPFR's order), then u5 + f1 + ... + f5 = t0 +
+   t1 + t2 + e1 + e2 + e3, so X = s3 + u5 + sum f exactly.  F = the f's
+   added plainly: error <= 4u sum|f| <= 4u * u * 6u S, about 2^-150 S,
+   far below a defect's ulp (defects of double outputs sit near 2^-53 S).
+   MPFR's error as in the float case. */
+HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+{
+	double p[3], t[3], s1, e1, s2, e2, s3, e3, u, f[5], F, h, l, S;
+	int i;
+	xv v;
+	for (i = 0; i < 3; i++) {
+		two_prod(a[i], b[i], &p[i], &t[i]);
+		if (p[i] == 0.0 ? (a[i] != 0.0 && b[i] != 0.0) : fabs(p[i]) < 0x1p-960)
+			return 0; /* underflow: TwoProd is not exact */
+	}
+	two_sum(p[0], p[1], &s1, &e1);
+	two_sum(s1, p[2], &s2, &e2);
+	two_sum(s2, -z, &s3, &e3);
+	if (!isfinite(s3))
+		return 0;
+	two_sum(t[0], t[1], &u, &f[0]);
+	two_sum(u, t[2], &u, &f[1]);
+	two_sum(u, e1, &u, &f[2]);
+	two_sum(u, e2, &u, &f[3]);
+	two_sum(u, e3, &u, &f[4]);
+	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
+	two_sum(s3, u, &h, &l);
+	if (h == 0.0)
+		return 0; /* (nearly) zero: exact zeros and their signs are the general path's */
+	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
+	v.h = h;
+	v.l = l + F; /* |l| <= u|h|/2, |F| tiny: (h, l + F) is a normalized pair within u|l + F| */
+	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
+	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
+	return ziv_d(v, out);
+}
+#endif
+
+/* Four fdot_round of floats at once, in AVX vectors (GCC's vector
+   extension; contraction stays off for them too): lane j is a_j . b_j -
+   z_j, computed by exactly the scalar function's operations, so a lane
+   decides exactly when fdot_round would and to the same value.  Returns
+   the mask of the lanes decided (bit j), their values in out[j]. */
+#if defined(REFFAST_PAIR_DOUBLE) && defined(__GNUC__) && defined(__AVX__)
+#define REFFAST_VEC 1
+typedef double v4d __attribute__((vector_size(32)));
+typedef long long v4i __attribute__((vector_size(32)));
+#define VABS(x) ((v4d)((v4i)(x) & 0x7fffffffffffffffLL))
+#define VTWO_SUM(a, b, s, t) do { const v4d x_ = (a) + (b), z_ = x_ - (a); \
+	(t) = ((a) - (x_ - z_)) + ((b) - z_); (s) = x_; } while (0)
+
+static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+{
+	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
+	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, off, m, ulp, upg, dng;
+	v4i hb, fail;
+	int j, mask = 0;
+	VTWO_SUM(p0, p1, s1, e1);
+	VTWO_SUM(s1, p2, s2, e2);
+	VTWO_SUM(s2, -z, s3, e3);
+	S = (VABS(p0) + VABS(p1) + VABS(p2) + VABS(z)) * INFL;
+	E = 2.0 * 0x1p-53 * (VABS(e1) + VABS(e2) + VABS(e3)) * INFL;
+	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
+	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
+	/* ziv_d on (h, l, e): candidate h, offset l away from zero, the half
+	   gaps from h's exponent bits (normal: |h| >= TINY is required) */
+	hb = (v4i)h;
+	off = (v4d)((v4i)l ^ (hb & (long long)0x8000000000000000ULL));
+	m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
+	ulp = (v4d)((hb & 0x7ff0000000000000LL) - (52LL << 52));
+	upg = 0.5 * ulp;
+	dng = upg - (v4d)((v4i)(0.25 * ulp) & ((hb & 0x000fffffffffffffLL) == 0));
+	fail = (s3 == 0.0) | (VABS(s3) > DBL_MAX) | (VABS(h) < TINY) | (VABS(h) > DBL_MAX) |
+	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+	for (j = 0; j < 4; j++)
+		if (!fail[j]) {
+			out[j] = h[j];
+			mask |= 1 << j;
+		}
+	return mask;
+}
+
+/* The lanes of shape() below, decided in two vectors: bits 0-4 the five
+   defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
+   lanes against n/|n| (normalize_n) are left to the scalar path. */
+static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], const double n[3],
+                     const double w[3], double z, int normalize_n, double v[8])
+{
+	double o[8];
+	int i, mask = 0;
+	const v4d zb = { 0.0, 1.0, z, 0.0 };
+	v4d a[3], bb[3];
+	for (i = 0; i < 3; i++) {
+		const v4d ai = { b[i], w[i], w[i], 0.0 }, bi = { b[3 + i], w[i], n[i], 0.0 };
+		a[i] = ai; bb[i] = bi;
+	}
+	mask = fdot4(c, a, bb, zb, o + 4) << 4;
+	if (has_basis) {
+		const v4d za = { 1.0, 1.0, 0.0, 0.0 };
+		for (i = 0; i < 3; i++) {
+			const v4d ai = { b[i], b[3 + i], b[i], b[3 + i] }, bi = { b[i], b[3 + i], n[i], n[i] };
+			a[i] = ai; bb[i] = bi;
+		}
+		mask |= fdot4(c, a, bb, za, o);
+	} else {
+		mask &= ~(1 << 4);
+	}
+	mask &= 0x7f;
+	if (normalize_n)
+		mask &= ~(4 | 8 | 64);
+	for (i = 0; i < 7; i++)
+		if (mask & (1 << i)) {
+			v[i] = (i == 0 || i == 1 || i == 5) ? o[i] / (sqrt(1.0 + o[i]) + 1.0) : o[i];
+		}
+	return mask;
+}
+#endif
+
 /* norm_m1_exact: |v| - 1 from RN(v.v - 1) in double, as reference.c. */
-static int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
+HOT int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
 {
 	double t[8], e;
 	int i, bad = 0;
 	xv s;
+	if (fdot_round(c, v, v, 1.0, &e)) {
+		*out = e / (sqrt(1.0 + e) + 1.0);
+		return 1;
+	}
 	for (i = 0; i < 3; i++)
 		if (!prod_terms(v[i], v[i], t + 2 * i))
 			return 0;
@@ -910,9 +1098,10 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 		return 0;
 	have_diff = ziv_d(D, &diff);
 	if (have_diff) {
+		/* x / 2^k and x * 2^-k are the same correctly rounded value */
+		const double d = fabs(diff) * (prec == PREC_FLOAT ? 0x1p23 : 0x1p52);
 		diff = fabs(diff);
-		if (diff / eps > s->abs_eps_max)
-			s->abs_eps_max = diff / eps;
+		s->abs_eps_max = d > s->abs_eps_max ? d : s->abs_eps_max;
 	} else {
 		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
 		if (upper / eps > undet[0])
@@ -929,12 +1118,14 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 	if (rounded != 0.0 && fabs(rounded) >= eps) {
 		int ex;
 		ex = dexp(rounded) + 1; /* frexp's exponent */
-		ulp = pow2((ex < emin ? emin : ex) - p);
+		ex = (ex < emin ? emin : ex) - p;
+		ulp = pow2(ex);
 		if (!have_diff) {
 			if (upper / ulp > undet[1])
 				undet[1] = upper / ulp;
-		} else if (diff / ulp > s->ulp_max) {
-			s->ulp_max = diff / ulp;
+		} else {
+			const double d = diff * pow2(-ex); /* diff / ulp */
+			s->ulp_max = d > s->ulp_max ? d : s->ulp_max;
 		}
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
@@ -943,8 +1134,7 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 		}
 		s->bits_sum += bits;
 		s->nbits++;
-		if (bits > s->bits_max)
-			s->bits_max = bits;
+		s->bits_max = bits > s->bits_max ? bits : s->bits_max;
 	}
 	return rc;
 }
@@ -982,23 +1172,58 @@ static int defect_dot(const reffast_ctx *c, const double *a, const double *b, do
                       int normalize_n, xv inv, double *out)
 {
 	int bad = 0;
-	xv x = xdot_exact(c, a, b, z, &bad);
+	xv x;
+	if (!normalize_n && fdot_round(c, a, b, z, out))
+		return 1;
+	x = xdot_exact(c, a, b, z, &bad);
 	if (normalize_n)
 		x = xmul(x, inv, &bad);
 	return !bad && ziv_d(x, out);
 }
 
-/* The orthonormality defect and the handedness, as ref_eval. */
-static int basis_defects(const reffast_ctx *c, const study_kernel *k, const double n[3],
-                         int normalize_n, xv inv, sample_metrics *s)
+/* The shape of a basis b and a direction w (reference.c basis_defects
+   and dir_errors): the five defects d[] of b for the input n (when
+   has_basis), | |w| - 1 | and | w.n - z | (w.(n/|n|) - z when
+   normalize_n).  The vector path decides most lanes at once; the others
+   take the scalar one.  0 when MPFR must decide. */
+static int shape(const reffast_ctx *c, int has_basis, const double b[6], const double n[3], const double w[3],
+                 double z, int normalize_n, xv inv, double d[NDEF], double *dir_norm, double *dir_cos)
+{
+	double v[8];
+	int dec = 0, bad = 0;
+#ifdef REFFAST_VEC
+	dec = shape_vec(c, has_basis, b, n, w, z, normalize_n, v);
+#endif
+	if (has_basis) {
+		if ((!(dec & 1) && !norm_m1_fast(c, b, &v[0])) || (!(dec & 2) && !norm_m1_fast(c, b + 3, &v[1])) ||
+		    (!(dec & 4) && !defect_dot(c, b, n, 0.0, normalize_n, inv, &v[2])) ||
+		    (!(dec & 8) && !defect_dot(c, b + 3, n, 0.0, normalize_n, inv, &v[3])) ||
+		    (!(dec & 16) && !defect_dot(c, b, b + 3, 0.0, 0, inv, &v[4])))
+			return 0;
+		memcpy(d, v, NDEF * sizeof *d);
+	}
+	if (!(dec & 32) && !norm_m1_fast(c, w, &v[5]))
+		return 0;
+	if (!(dec & 64)) {
+		if (!normalize_n) {
+			if (!defect_dot(c, w, n, z, 0, inv, &v[6]))
+				return 0;
+		} else {
+			const xv x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
+			if (bad || !ziv_d(x, &v[6]))
+				return 0;
+		}
+	}
+	*dir_norm = fabs(v[5]);
+	*dir_cos = fabs(v[6]);
+	return 1;
+}
+
+/* The orthonormality defect and the handedness from s->d, as ref_eval. */
+static void defect_summary(const study_kernel *k, const double n[3], sample_metrics *s)
 {
 	long double det;
 	int i;
-	if (!norm_m1_fast(c, s->out, &s->d[DEF_N1]) || !norm_m1_fast(c, s->out + 3, &s->d[DEF_N2]) ||
-	    !defect_dot(c, s->out, n, 0.0, normalize_n, inv, &s->d[DEF_D1N]) ||
-	    !defect_dot(c, s->out + 3, n, 0.0, normalize_n, inv, &s->d[DEF_D2N]) ||
-	    !defect_dot(c, s->out, s->out + 3, 0.0, 0, inv, &s->d[DEF_D12]))
-		return 0;
 	s->defect = 0.0;
 	s->sumsq = 0.0;
 	for (i = 0; i < NDEF; i++) {
@@ -1015,29 +1240,31 @@ static int basis_defects(const reffast_ctx *c, const study_kernel *k, const doub
 	}
 	s->det = (double)det;
 	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
-	return 1;
 }
 
 /* The accuracy floor (issue 16; reference.c floor_eval and
    /work/notes/floor-metric.md): the exact formula r1, r2 rounded once to
    the format (Ziv's test decides RN of the exact value, as floor_round
    does in MPFR), the defects and direction error of that basis by the
-   same helpers as the kernel's, and the ratio.  0 when anything is
-   undetermined (the caller then runs ref_eval). */
-static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, const double n[3], const double loc[3],
-                      int normalize_n, xv inv, const xv *r1, const xv *r2, sample_metrics *s)
+   same helpers as the kernel's, into f (floor, floor_dir_norm,
+   floor_dir_cos).  It depends on the kernel only through its formula, so
+   the caller keeps it per formula.  0 when anything is undetermined (the
+   caller then runs ref_eval). */
+static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                      const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2, double f[3])
 {
 	const int nc = k->m ? 6 : 3;
 	double fb[6], w[3], d[NDEF];
-	int i, bad = 0;
+	int i;
 	for (i = 0; i < nc; i++) {
-		if (k->m && k->family == FAM_NAIVE && i == 3 + s->branch) {
+		if (k->m && k->family == FAM_NAIVE && i == 3 + br) {
 			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
 			continue;
 		}
 		if (!ziv(i < 3 ? r1[i] : r2[i - 3], prec == PREC_FLOAT ? 24 : 53, &fb[i]))
 			return 0;
 	}
+	f[0] = NAN;
 	if (k->m) {
 		if (prec == PREC_FLOAT) {
 			const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
@@ -1049,36 +1276,91 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, con
 			for (i = 0; i < 3; i++)
 				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
 		}
-		if (!norm_m1_fast(c, fb, &d[DEF_N1]) || !norm_m1_fast(c, fb + 3, &d[DEF_N2]) ||
-		    !defect_dot(c, fb, n, 0.0, normalize_n, inv, &d[DEF_D1N]) ||
-		    !defect_dot(c, fb + 3, n, 0.0, normalize_n, inv, &d[DEF_D2N]) ||
-		    !defect_dot(c, fb, fb + 3, 0.0, 0, inv, &d[DEF_D12]))
-			return 0;
-		s->floor = 0.0;
-		for (i = 0; i < NDEF; i++)
-			if (fabs(d[i]) > s->floor)
-				s->floor = fabs(d[i]);
 	} else {
 		for (i = 0; i < 3; i++)
 			w[i] = fb[i];
 	}
-	if (!norm_m1_fast(c, w, &s->floor_dir_norm))
+	if (!shape(c, k->m != NULL, fb, n, w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2], normalize_n, inv,
+	           d, &f[1], &f[2]))
 		return 0;
-	s->floor_dir_norm = fabs(s->floor_dir_norm);
-	{
-		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-		xv x = xdot_exact(c, w, n, normalize_n ? 0.0 : z, &bad);
-		if (normalize_n)
-			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, &s->floor_dir_cos))
-			return 0;
-		s->floor_dir_cos = fabs(s->floor_dir_cos);
+	if (k->m) {
+		f[0] = 0.0;
+		for (i = 0; i < NDEF; i++)
+			if (fabs(d[i]) > f[0])
+				f[0] = fabs(d[i]);
 	}
-	if (!s->nonfinite) {
+	return 1;
+}
+
+/* The cache entry of kernel k's formula on branch br for this input (the
+   formula evaluated on a miss), its value in r1, r2; NULL when the cache
+   is full (then the caller evaluates it alone). */
+static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                       const double loc[3], int normalize_n, xv *r1, xv *r2, int *bad)
+{
+	int fam = k->family, i;
+	fentry *e;
+	if (c->key_prec != prec || c->key_norm != normalize_n || memcmp(c->key_n, n, sizeof c->key_n) != 0 ||
+	    memcmp(c->key_loc, loc, sizeof c->key_loc) != 0) {
+		memcpy(c->key_n, n, sizeof c->key_n);
+		memcpy(c->key_loc, loc, sizeof c->key_loc);
+		c->key_prec = prec;
+		c->key_norm = normalize_n;
+		c->nf = 0;
+	}
+	if (fam == FAM_DUFF && br == 0)
+		fam = FAM_FRISVAD; /* duff's upper branch is Frisvad's formula */
+	{
+		const int key = fam * 64 + br * 2 +
+		                ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
+		for (i = 0; i < c->nf; i++)
+			if (c->fc[i].key == key) {
+				memcpy(r1, c->fc[i].xr, 3 * sizeof *r1);
+				memcpy(r2, c->fc[i].xr + 3 * sizeof *r1, 3 * sizeof *r2);
+				*bad = !c->fc[i].ok;
+				return &c->fc[i];
+			}
+		xreference(k, br, loc, n, r1, r2, bad);
+		if (c->nf == FCACHE)
+			return NULL;
+		e = &c->fc[c->nf++];
+		e->key = key;
+	}
+	e->ok = !*bad;
+	e->floor_ok = -1;
+	memcpy(e->xr, r1, 3 * sizeof *r1);
+	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
+	return e;
+}
+
+/* s->floor, floor_dir_norm, floor_dir_cos from the cache entry e (filled
+   on first use), and the ratio; 0 when MPFR must decide. */
+static int floor_figures(const reffast_ctx *c, fentry *e, const study_kernel *k, int prec, const double n[3],
+                         const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2,
+                         sample_metrics *s)
+{
+	double f[3] = { NAN, NAN, NAN };
+	if (!e || e->floor_ok < 0) {
+		const int ok = floor_fast(c, k, prec, s->branch, n, loc, normalize_n, inv, r1, r2, f);
+		if (e) {
+			e->floor_ok = ok;
+			e->floor = f[0]; e->floor_dir_norm = f[1]; e->floor_dir_cos = f[2];
+		}
+		if (!ok)
+			return 0;
+	} else {
+		if (!e->floor_ok)
+			return 0;
+		f[0] = e->floor; f[1] = e->floor_dir_norm; f[2] = e->floor_dir_cos;
+	}
+	s->floor = f[0];
+	s->floor_dir_norm = f[1];
+	s->floor_dir_cos = f[2];
+	{
 		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
-		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
-		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
-		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
+		const double ev = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
+		const double fv = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
+		s->floor_ratio = fmax(ev, u2) / fmax(fv, u2);
 	}
 	return 1;
 }
@@ -1090,6 +1372,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
 	int i, bad = 0, rc = REFFAST_DONE;
 	double undet[2] = { 0.0, 0.0 };
+	fentry *e;
 	ref_run_kernel(k, prec, n_in, loc, n, s);
 	if (!input_terms(c, n, normalize_n, &inv))
 		return REFFAST_MPFR;
@@ -1105,11 +1388,14 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			s->ref[i] = NAN;
 		return REFFAST_MPFR; /* the floor of a singular input: left to MPFR */
 	}
-	if (k->m && !basis_defects(c, k, n, normalize_n, inv, s))
+	if (!shape(c, k->m != NULL, s->out, n, s->w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2], normalize_n,
+	           inv, s->d, &s->dir_norm, &s->dir_cos))
 		return 0;
+	if (k->m)
+		defect_summary(k, n, s);
 
 	/* Forward error against the kernel's own formula. */
-	xreference(k, s->branch, loc, n, r1, r2, &bad);
+	e = formula(c, k, prec, s->branch, n, loc, normalize_n, r1, r2, &bad);
 	if (bad)
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
@@ -1125,21 +1411,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	if (!(undet[0] <= s->abs_eps_max) || !(undet[1] <= s->ulp_max))
 		return 0;
 
-	/* Direction error: | |w| - 1 | and | w.n - z |. */
-	if (!norm_m1_fast(c, s->w, &s->dir_norm))
-		return 0;
-	s->dir_norm = fabs(s->dir_norm);
-	{
-		const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-		xv x = xdot_exact(c, s->w, n, normalize_n ? 0.0 : z, &bad);
-		if (normalize_n)
-			x = xsub(xmul(x, inv, &bad), xc(z), &bad);
-		if (bad || !ziv_d(x, &s->dir_cos))
-			return 0;
-		s->dir_cos = fabs(s->dir_cos);
-	}
-	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
-	if (!floor_fast(c, k, prec, n, loc, normalize_n, inv, r1, r2, s))
+	if (!floor_figures(c, e, k, prec, n, loc, normalize_n, inv, r1, r2, s))
 		return 0;
 	return rc;
 }

@@ -224,7 +224,7 @@ static const double p10[69] = {
    relative in h^4 moves log10(h) by 2^-33.2, and the expression's own
    error (log10 within 2 ulps of a value below 32, the sum with off4 / 4
    half an ulp) stays below 2^-46 after the factor 4. */
-int sweep_log_bin(double h, int off4, int nb)
+static inline int log_bin(double h, int off4, int nb)
 {
 	const double y = (h * h) * (h * h);
 	uint64_t u;
@@ -246,6 +246,8 @@ int sweep_log_bin(double h, int off4, int nb)
 		return clampi((int)floor((log10(h) + off4 / 4.0) * 4.0), 0, nb - 1);
 	return j;
 }
+
+int sweep_log_bin(double h, int off4, int nb) { return log_bin(h, off4, nb); }
 
 /* cell_add, and with lazy (cell_add_lazy) the sums a stratum holds too
    left to cell_settle. */
@@ -294,13 +296,13 @@ static void cell_add_to(cell_t *c, uint64_t index, const sample_metrics *m, cons
 		fb[0] = &c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)];
 		bin_add(fb[0], key);
 		if (n[2] <= 0.0) {
-			fb[1] = &c->bins[NB_NZ + sweep_log_bin(1.0 + n[2], 68, NB_LOG)];
+			fb[1] = &c->bins[NB_NZ + log_bin(1.0 + n[2], 68, NB_LOG)];
 			bin_add(fb[1], key);
 		}
-		fb[2] = &c->bins[NB_NZ + NB_LOG + sweep_log_bin(fabs(m->in_norm), 36, NB_NORM)];
+		fb[2] = &c->bins[NB_NZ + NB_LOG + log_bin(fabs(m->in_norm), 36, NB_NORM)];
 		bin_add(fb[2], key);
 		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
-			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + sweep_log_bin(1.0 - n[2], 68, NB_LOG)];
+			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + log_bin(1.0 - n[2], 68, NB_LOG)];
 			bin_add(fb[3], key);
 		}
 	}

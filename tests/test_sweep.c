@@ -45,6 +45,16 @@ static void duff_lost_ulpf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b1->x = nextafterf(b1->x, 2.0f);
 }
 
+/* The by_nz bin as first written (sweep_state.c). */
+static int clampi_log(double h, int off4, int nb)
+{
+	int b;
+	if (!(h > 0.0))
+		return 0;
+	b = (int)floor((log10(h) + off4 / 4.0) * 4.0);
+	return b < 0 ? 0 : b > nb - 1 ? nb - 1 : b;
+}
+
 /* fx_add_double as first written (frexp and ldexp): the bit reading in
    fx.h must add the same integer for every double. */
 static void fx_add_double_frexp(fx *a, double v)
@@ -249,6 +259,37 @@ int main(void)
 		for (i = 0; i < 1000; i++) fx_add_double(&a, 0.1);
 		CHECK(fabs(fx_value(&a) - 100.0) < 1e-12, "fx: 1000 x 0.1 = 100 (got %.17g)", fx_value(&a));
 		CHECK(fx_bits_agree(), "fx: fx_add_double (bits) adds what frexp/ldexp's reading adds, carries and edges included");
+	}
+
+	/* 5b. by_nz's log bins without log10: the same bin as the expression,
+	   at the edges (every double within 64 steps of each 10^(j/4 - off)),
+	   and for random doubles over the whole range. */
+	{
+		int bad = 0, off4, j, tested = 0;
+		uint64_t x = 12345;
+		for (off4 = 36; off4 <= 68; off4 += 32) {
+			const int nb = off4 == 68 ? NB_LOG : NB_NORM;
+			for (j = -2; j <= nb + 2; j++) {
+				const double t = pow(10.0, j / 4.0 - off4 / 4.0);
+				double h = t;
+				for (i = 0; i < 64; i++)
+					h = nextafter(h, 0.0);
+				for (i = 0; i < 128; i++, h = nextafter(h, INFINITY), tested++)
+					bad += sweep_log_bin(h, off4, nb) != clampi_log(h, off4, nb);
+			}
+			for (i = 0; i < 200000; i++, tested++) {
+				double h;
+				uint64_t u;
+				x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+				u = x >> 1; /* every positive double, and NaN, inf */
+				memcpy(&h, &u, sizeof h);
+				if (i % 2)
+					h = pow(10.0, -20.0 * (double)(x >> 11) * 0x1p-53); /* where the bins are */
+				bad += sweep_log_bin(h, off4, nb) != clampi_log(h, off4, nb);
+			}
+		}
+		CHECK(bad == 0 && sweep_log_bin(0.0, 68, NB_LOG) == 0 && sweep_log_bin(-1.0, 68, NB_LOG) == 0,
+		      "by_nz log bins: %d of %d doubles binned differently from the log10 expression", bad, tested);
 	}
 
 	/* 6. Distributions: pure functions of (seed, index), in the format. */

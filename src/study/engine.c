@@ -147,6 +147,8 @@ static void worker_fold(engine *e, worker *w, sweep_state *st, int p, int d)
 	if (w->p >= 0 && w->fc)
 		worker_fill_refs(e, w, st);
 	if (w->p >= 0) {
+		for (k = 0; k < st->cfg.nk; k++)
+			cell_settle(&w->loc[k]); /* filled by cell_add_lazy since cell_init */
 #pragma omp critical(engine_fold)
 		for (k = 0; k < st->cfg.nk; k++)
 			cell_merge(sweep_cell(st, w->p, w->d, k), &w->loc[k]);
@@ -173,6 +175,7 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 	const size_t GG = (size_t)cfg->grid_rows * (size_t)cfg->grid_cols;
 	double n[3], lv[3], aux;
 	int k;
+	const int check = idx % (uint64_t)cfg->check_every == 0, stratum = dist_stratum(&e->ds[p][d], idx);
 	dist_sample(&e->ds[p][d], idx, n, lv, &aux);
 	for (k = 0; k < cfg->nk; k++) {
 		sample_metrics m;
@@ -192,7 +195,7 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 			   must fill it in; worker_fill_refs does, for the rows still
 			   kept when the thread folds its cells */
 		}
-		if (idx % (uint64_t)cfg->check_every == 0) {
+		if (check) {
 			sample_metrics m2;
 			char why[256];
 			ref_eval(w->rc2, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m2);
@@ -205,8 +208,8 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 				e->fail = ENGINE_DISAGREE;
 			}
 		}
-		m.stratum = dist_stratum(&e->ds[p][d], idx);
-		cell_add(&w->loc[k], idx, &m, n, 0);
+		m.stratum = stratum;
+		cell_add_lazy(&w->loc[k], idx, &m, n, 0);
 		if (d == DIST_GRID) {
 			const size_t j = ((size_t)p * (size_t)cfg->nk + (size_t)k) * GG + (size_t)aux;
 			st->g_err[j] = m.nonfinite ? INFINITY : st->kernels[k].m ? m.defect : fmax(m.dir_norm, m.dir_cos);

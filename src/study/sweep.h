@@ -116,6 +116,17 @@ cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
 void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
+/* The same, faster, for a cell filled from cell_init and settled once
+   before it is read: six of the cell's sums (sumdef2, duffms, dirc2, bits,
+   floor2, ratio2) are left out, and cell_settle adds them from the strata
+   that hold the same terms.  Mixing cell_add into such a cell, or settling
+   twice, counts those terms twice. */
+void cell_add_lazy(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
+void cell_settle(cell_t *c);
+
+/* by_nz's bin of h in quarter decades, clampi((int)floor((log10(h) +
+   off4 / 4) * 4), 0, nb - 1) for h > 0, else 0; exposed for the tests. */
+int  sweep_log_bin(double h, int off4, int nb);
 
 int  sweep_alloc(sweep_state *s);          /* 0, or -1 after a message */
 void sweep_free(sweep_state *s);

@@ -152,7 +152,7 @@ void cell_merge(cell_t *d, const cell_t *s)
 
 /* The floor's share of cell_add: its own statistics, and the ratio. */
 static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source,
-                      bin_t *b[4])
+                      bin_t *b[4], int lazy)
 {
 	const double f = m->has_basis ? m->floor : dmax(m->floor_dir_norm, m->floor_dir_cos);
 	const double r = m->floor_ratio;
@@ -161,7 +161,8 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 	if (isnan(f))
 		return;
 	c->floor_n++;
-	fx_add_double(&c->floor2, f * f);
+	if (!lazy)
+		fx_add_double(&c->floor2, f * f);
 	if (t) {
 		t->fn++;
 		fx_add_double(&t->f2, f * f);
@@ -178,7 +179,8 @@ static void floor_add(cell_t *c, uint64_t index, const sample_metrics *m, const 
 		return;
 	c->ratio_n++;
 	c->ratio_at += r <= 1.0;
-	fx_add_double(&c->ratio2, r * r);
+	if (!lazy)
+		fx_add_double(&c->ratio2, r * r);
 	if (t) {
 		t->rn++;
 		t->rat += r <= 1.0;
@@ -202,11 +204,59 @@ static void bin_add(bin_t *b, double e)
 
 static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
-void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+/* 10^-k, k = 0 .. 68: the by_nz bins' edges, as the nearest doubles. */
+static const double p10[69] = {
+	1e-0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14,
+	1e-15, 1e-16, 1e-17, 1e-18, 1e-19, 1e-20, 1e-21, 1e-22, 1e-23, 1e-24, 1e-25, 1e-26, 1e-27, 1e-28,
+	1e-29, 1e-30, 1e-31, 1e-32, 1e-33, 1e-34, 1e-35, 1e-36, 1e-37, 1e-38, 1e-39, 1e-40, 1e-41, 1e-42,
+	1e-43, 1e-44, 1e-45, 1e-46, 1e-47, 1e-48, 1e-49, 1e-50, 1e-51, 1e-52, 1e-53, 1e-54, 1e-55, 1e-56,
+	1e-57, 1e-58, 1e-59, 1e-60, 1e-61, 1e-62, 1e-63, 1e-64, 1e-65, 1e-66, 1e-67, 1e-68
+};
+
+/* The by_nz bin of h > 0 in quarter decades: the figure the files were
+   first written with, clampi((int)floor((log10(h) + off4 / 4) * 4), 0,
+   nb - 1), for off4 = 68 or 36 and nb <= off4, without log10 (three calls
+   per input were a sixth of cell_add).  That expression is floor(log10
+   y) + off4 for y = h^4, clamped: the number of edges t_j = 10^(j - off4),
+   j = 1 .. nb-1, that y reaches.  y and the t_j here are rounded (y to
+   3 ulps, t_j to half an ulp), so an edge within a relative 2^-30 of y
+   is left to the expression itself; farther out both agree: 2^-30
+   relative in h^4 moves log10(h) by 2^-33.2, and the expression's own
+   error (log10 within 2 ulps of a value below 32, the sum with off4 / 4
+   half an ulp) stays below 2^-46 after the factor 4. */
+static inline int log_bin(double h, int off4, int nb)
+{
+	const double y = (h * h) * (h * h);
+	uint64_t u;
+	int e, j;
+	if (!(h > 0.0))
+		return 0;
+	if (!(y >= 0x1p-1000 && y < 0x1p1000))
+		return clampi((int)floor((log10(h) + off4 / 4.0) * 4.0), 0, nb - 1);
+	/* y = 2^e (1 + f): log2(1 + f) - f lies in [0, 0.0861], so log10 y
+	   is (e + f) log10 2 or at most 0.026 above it: the bin is j below or
+	   the next one */
+	memcpy(&u, &y, sizeof u);
+	e = (int)(u >> 52) - 1023;
+	j = clampi((int)floor((e + (double)(u & 0xfffffffffffffull) * 0x1p-52) * 0.30102999566398120) + off4, 0, nb - 1);
+	if (j + 1 < nb && y >= p10[off4 - j - 1])
+		j++;
+	/* t_j (1 + 2^-30) <= y < t_(j+1) (1 - 2^-30): bin j however j was found */
+	if ((j > 0 && y < p10[off4 - j] * (1.0 + 0x1p-30)) || (j + 1 < nb && y >= p10[off4 - j - 1] * (1.0 - 0x1p-30)))
+		return clampi((int)floor((log10(h) + off4 / 4.0) * 4.0), 0, nb - 1);
+	return j;
+}
+
+int sweep_log_bin(double h, int off4, int nb) { return log_bin(h, off4, nb); }
+
+/* cell_add, and with lazy (cell_add_lazy) the sums a stratum holds too
+   left to cell_settle. */
+static void cell_add_to(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source, int lazy)
 {
 	worst_t w;
 	double key;
 	bin_t *fb[4] = { NULL, NULL, NULL, NULL }; /* the bins of this input, for the floor */
+	lazy = lazy && m->stratum >= 0 && m->stratum < NSTRAT;
 	c->count++;
 	if (m->nonfinite) {
 		c->nonfinite++;
@@ -215,11 +265,13 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		c->finite++;
 		if (m->has_basis) {
 			fx_add_double(&c->sumsq, m->sumsq);
-			fx_add_double(&c->sumdef2, m->defect * m->defect);
+			if (!lazy)
+				fx_add_double(&c->sumdef2, m->defect * m->defect);
 			c->max_defect = dmax(c->max_defect, m->defect);
 			{	/* footnote 1: |n|-1 with the five defects, mean square */
 				const double ms = (m->in_norm * m->in_norm + m->sumsq) / 6.0;
-				fx_add_double(&c->duffms, ms);
+				if (!lazy)
+					fx_add_double(&c->duffms, ms);
 				c->max_duff_rms = dmax(c->max_duff_rms, sqrt(ms));
 			}
 			c->wrong += (uint64_t)m->wrong_hand;
@@ -228,7 +280,8 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 			key = dmax(m->dir_norm, m->dir_cos);
 		}
 		c->comps += (uint64_t)m->nbits;
-		fx_add_double(&c->bits, m->bits_sum);
+		if (!lazy)
+			fx_add_double(&c->bits, m->bits_sum);
 		if (m->stratum >= 0 && m->stratum < NSTRAT)
 			stratum_add(&c->st[m->stratum], m);
 		c->max_ulp = dmax(c->max_ulp, m->ulp_max);
@@ -237,30 +290,23 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 		c->max_dir_norm = dmax(c->max_dir_norm, m->dir_norm);
 		c->max_dir_cos = dmax(c->max_dir_cos, m->dir_cos);
 		fx_add_double(&c->dirn2, m->dir_norm * m->dir_norm);
-		fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
+		if (!lazy)
+			fx_add_double(&c->dirc2, m->dir_cos * m->dir_cos);
 		/* bins of the per-input error */
 		fb[0] = &c->bins[clampi((int)floor((n[2] + 1.0) * 0.5 * NB_NZ), 0, NB_NZ - 1)];
 		bin_add(fb[0], key);
 		if (n[2] <= 0.0) {
-			const double h = 1.0 + n[2];
-			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			fb[1] = &c->bins[NB_NZ + b];
+			fb[1] = &c->bins[NB_NZ + log_bin(1.0 + n[2], 68, NB_LOG)];
 			bin_add(fb[1], key);
 		}
-		{
-			const double a = fabs(m->in_norm);
-			const int b = a > 0.0 ? clampi((int)floor((log10(a) + 9.0) * 4.0), 0, NB_NORM - 1) : 0;
-			fb[2] = &c->bins[NB_NZ + NB_LOG + b];
-			bin_add(fb[2], key);
-		}
+		fb[2] = &c->bins[NB_NZ + NB_LOG + log_bin(fabs(m->in_norm), 36, NB_NORM)];
+		bin_add(fb[2], key);
 		if (n[2] >= 0.0) { /* the north pole's cancellation, 1 - n.z */
-			const double h = 1.0 - n[2];
-			const int b = h > 0.0 ? clampi((int)floor((log10(h) + 17.0) * 4.0), 0, NB_LOG - 1) : 0;
-			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + b];
+			fb[3] = &c->bins[NB_NZ + NB_LOG + NB_NORM + log_bin(1.0 - n[2], 68, NB_LOG)];
 			bin_add(fb[3], key);
 		}
 	}
-	floor_add(c, index, m, n, source, fb);
+	floor_add(c, index, m, n, source, fb, lazy);
 	c->max_in_norm = dmax(c->max_in_norm, fabs(m->in_norm));
 	w.key = key;
 	w.index = index;
@@ -277,6 +323,32 @@ void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n
 	w.dir_norm = m->dir_norm;
 	w.dir_cos = m->dir_cos;
 	worst_insert(c, &w);
+}
+
+void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+{
+	cell_add_to(c, index, m, n, source, 0);
+}
+
+void cell_add_lazy(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source)
+{
+	cell_add_to(c, index, m, n, source, 1);
+}
+
+/* The stratum sums (stratum_add, floor_add) hold the same terms as these
+   six cell sums, whenever the input's stratum is one of the NSTRAT: the
+   sum over the strata is the same integer. */
+void cell_settle(cell_t *c)
+{
+	int h;
+	for (h = 0; h < NSTRAT; h++) {
+		fx_add(&c->sumdef2, &c->st[h].s[Q_DEF2]);
+		fx_add(&c->duffms, &c->st[h].s[Q_DUFF]);
+		fx_add(&c->dirc2, &c->st[h].s[Q_DIRC2]);
+		fx_add(&c->bits, &c->st[h].bx);
+		fx_add(&c->floor2, &c->fst[h].f2);
+		fx_add(&c->ratio2, &c->fst[h].r2);
+	}
 }
 
 static size_t grid_cells(const sweep_state *s)

@@ -553,7 +553,7 @@ static xv xrsqrt(xv s, int *bad)
    candidate; off = v - c = (h - c) + l, h - c exact, one rounding. */
 HOT int ziv(xv v, int bits, double *out)
 {
-	double c, a, ulp, upg, dng, m;
+	double c, a, ulp, upg, dng, m, od;
 	ld off;
 	int ex, fail;
 	if (!isfinite((double)v.h))
@@ -587,9 +587,10 @@ HOT int ziv(xv v, int bits, double *out)
 	/* off: the offset of v from c, away from zero; no branch on signs
 	   (random here: a mispredicted branch cost more than the test) */
 	off = ((v.h - (ld)c) + v.l) * (ld)copysign(1.0, c);
-	m = 2.0 * v.e * INFL + (double)PFABS(off) * OFF_SLOP;
+	od = (double)off; /* one conversion (x87 to SSE goes through memory) */
+	m = 2.0 * v.e * INFL + fabs(od) * OFF_SLOP;
 	/* a t <= 0 passes either test, as it must */
-	fail = (((double)off + m) * (1.0 + 0x1p-50) >= upg) | ((m - (double)off) * (1.0 + 0x1p-50) >= dng);
+	fail = ((od + m) * (1.0 + 0x1p-50) >= upg) | ((m - od) * (1.0 + 0x1p-50) >= dng);
 	if (!fail)
 		*out = c;
 	return !fail;

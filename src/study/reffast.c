@@ -35,6 +35,9 @@
 #include <math.h>
 #include <stdint.h>
 #include <float.h>
+#if defined(__GNUC__) && defined(__AVX__) && defined(__FMA__)
+#include <immintrin.h>
+#endif
 #include "reffast.h"
 
 /* The formula of a family on one input, shared by every kernel of that
@@ -50,6 +53,12 @@ typedef struct {
 	int floor_ok;             /* floor figures determined                      */
 	unsigned char xr[6 * XV_BYTES]; /* r1[3], r2[3] as this file's xv (opaque here) */
 	double floor, floor_dir_norm, floor_dir_cos;
+	/* per component, what the forward error takes from the formula alone
+	   (E rounded to double and to the format, see xforward): 0 not yet,
+	   1 done, 2 done with E's double undetermined (ref[] left to MPFR),
+	   -1 MPFR must decide */
+	signed char fwd[6];
+	double refd[6], rounded[6];
 } fentry;
 
 struct reffast_ctx {
@@ -312,7 +321,8 @@ static inline double mag(xv a) { return (double)PFABS(a.h) * (1.0 + 0x1p-50) + a
 static inline int ok(xv r)
 {
 	const ld a = PFABS(r.h);
-	return isfinite((double)r.h) && isfinite(r.e) && (a == 0.0 || a >= TINY);
+	/* one branch for the caller, not three (NaN fails each comparison) */
+	return ((double)a <= DBL_MAX) & (r.e <= DBL_MAX) & ((a == 0.0) | (a >= TINY));
 }
 
 static inline xv xneg(xv a) { xv r = { -a.h, -a.l, a.e }; return r; }
@@ -747,10 +757,35 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	if (h == 0.0)
 		return 0; /* (nearly) zero: exact zeros and their signs are the general path's */
 	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
-	v.h = h;
-	v.l = l + F; /* |l| <= u|h|/2, |F| tiny: (h, l + F) is a normalized pair within u|l + F| */
+	{
+		/* (h, l + F) within u|l + F| of X; normalized by TwoSum (under heavy
+		   cancellation F reaches an ulp of h) */
+		double vh, vl;
+		two_sum(h, l + F, &vh, &vl);
+		v.h = vh;
+		v.l = vl;
+	}
 	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
 	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
+	if (ziv_d(v, out))
+		return 1;
+	/* A defect of doubles often has 54 bits, and then lies exactly on a
+	   midpoint: decided only as an exact value.  X = h + l exactly when
+	   every f is zero; MPFR's sum is exact when all its partial sums fit
+	   p bits (as in sum_terms); then RN(X) with ties to even. */
+	if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0 || f[3] != 0.0 || f[4] != 0.0)
+		return 0;
+	{
+		const double terms[7] = { p[0], t[0], p[1], t[1], p[2], t[2], z };
+		int minlsb = 100000;
+		for (i = 0; i < 7; i++)
+			if (terms[i] != 0.0 && dlsb(terms[i]) < minlsb)
+				minlsb = dlsb(terms[i]);
+		if (dexp(S) + 2 - minlsb > c->prec)
+			return 0;
+	}
+	two_sum_l(h, l, &v.h, &v.l); /* X = h + l: 54 bits or so, exact in a long double */
+	v.e = 0.0;
 	return ziv_d(v, out);
 }
 #endif
@@ -760,19 +795,39 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
    z_j, computed by exactly the scalar function's operations, so a lane
    decides exactly when fdot_round would and to the same value.  Returns
    the mask of the lanes decided (bit j), their values in out[j]. */
-#if defined(REFFAST_PAIR_DOUBLE) && defined(__GNUC__) && defined(__AVX__)
+#if defined(__GNUC__) && defined(__AVX__) && (defined(REFFAST_PAIR_DOUBLE) || defined(__FMA__))
 #define REFFAST_VEC 1
 typedef double v4d __attribute__((vector_size(32)));
 typedef long long v4i __attribute__((vector_size(32)));
+typedef float v4f __attribute__((vector_size(16)));
 #define VABS(x) ((v4d)((v4i)(x) & 0x7fffffffffffffffLL))
 #define VTWO_SUM(a, b, s, t) do { const v4d x_ = (a) + (b), z_ = x_ - (a); \
 	(t) = ((a) - (x_ - z_)) + ((b) - z_); (s) = x_; } while (0)
 
+/* ziv() of four pairs (h, l) with bounds e > 0 at 53 or 24 bits: the
+   lanes that fail (all bits set; NaN and infinite lanes fail), the
+   candidates in *out.  The same
+   operations as the scalar test's inexact branch, lane by lane. */
+static v4i vziv(v4d h, v4d l, v4d e, int bits, v4d *out)
+{
+	const v4d c = bits == 24 ? __builtin_convertvector(__builtin_convertvector(h, v4f), v4d) : h;
+	const v4i cb = (v4i)c;
+	const v4d off = (v4d)((v4i)((h - c) + l) ^ (cb & (long long)0x8000000000000000ULL));
+	const v4d m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
+	const v4d ulp = (v4d)((cb & 0x7ff0000000000000LL) - ((long long)(bits - 1) << 52));
+	const v4d upg = 0.5 * ulp;
+	const v4d dng = upg - (v4d)((v4i)(0.25 * ulp) & ((cb & 0x000fffffffffffffLL) == 0));
+	*out = c;
+	return ~((VABS(h) <= DBL_MAX) & (VABS(c) <= DBL_MAX)) | (VABS(c) < (bits == 24 ? 0x1p-126 : TINY)) |
+	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+}
+
+#ifdef REFFAST_PAIR_DOUBLE
 static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
 {
 	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
-	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, off, m, ulp, upg, dng;
-	v4i hb, fail;
+	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, r;
+	v4i fail;
 	int j, mask = 0;
 	VTWO_SUM(p0, p1, s1, e1);
 	VTWO_SUM(s1, p2, s2, e2);
@@ -781,23 +836,51 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	E = 2.0 * 0x1p-53 * (VABS(e1) + VABS(e2) + VABS(e3)) * INFL;
 	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
 	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
-	/* ziv_d on (h, l, e): candidate h, offset l away from zero, the half
-	   gaps from h's exponent bits (normal: |h| >= TINY is required) */
-	hb = (v4i)h;
-	off = (v4d)((v4i)l ^ (hb & (long long)0x8000000000000000ULL));
-	m = 2.0 * e * INFL + VABS(off) * OFF_SLOP;
-	ulp = (v4d)((hb & 0x7ff0000000000000LL) - (52LL << 52));
-	upg = 0.5 * ulp;
-	dng = upg - (v4d)((v4i)(0.25 * ulp) & ((hb & 0x000fffffffffffffLL) == 0));
-	fail = (s3 == 0.0) | (VABS(s3) > DBL_MAX) | (VABS(h) < TINY) | (VABS(h) > DBL_MAX) |
-	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
+	fail = (s3 == 0.0) | ~(VABS(s3) <= DBL_MAX) | vziv(h, l, e, 53, &r); /* NaN fails too */
 	for (j = 0; j < 4; j++)
 		if (!fail[j]) {
-			out[j] = h[j];
+			out[j] = r[j];
 			mask |= 1 << j;
 		}
 	return mask;
 }
+#else
+/* The double precision's fdot_round, four lanes (TwoProd by the fma
+   instruction); a lane that fails here (exact midpoints among them) takes
+   the scalar function, which decides those too. */
+static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+{
+	v4d p[3], t[3], s1, e1, s2, e2, s3, e3, u, f0, f1, f2, f3, f4, F, h, l, vh, vl, S, e, r;
+	v4i fail = (v4i){ 0, 0, 0, 0 };
+	int i, j, mask = 0;
+	for (i = 0; i < 3; i++) {
+		p[i] = a[i] * b[i];
+		t[i] = (v4d)_mm256_fmadd_pd((__m256d)a[i], (__m256d)b[i], (__m256d)-p[i]);
+		fail |= ((p[i] == 0.0) & (a[i] != 0.0) & (b[i] != 0.0)) | ((p[i] != 0.0) & (VABS(p[i]) < 0x1p-960));
+	}
+	VTWO_SUM(p[0], p[1], s1, e1);
+	VTWO_SUM(s1, p[2], s2, e2);
+	VTWO_SUM(s2, -z, s3, e3);
+	VTWO_SUM(t[0], t[1], u, f0);
+	VTWO_SUM(u, t[2], u, f1);
+	VTWO_SUM(u, e1, u, f2);
+	VTWO_SUM(u, e2, u, f3);
+	VTWO_SUM(u, e3, u, f4);
+	F = (((f0 + f1) + f2) + f3) + f4;
+	VTWO_SUM(s3, u, h, l);
+	S = (VABS(p[0]) + VABS(p[1]) + VABS(p[2]) + VABS(z)) * INFL;
+	VTWO_SUM(h, l + F, vh, vl);
+	e = ((4.0 * 0x1p-53 * (VABS(f0) + VABS(f1) + VABS(f2) + VABS(f3) + VABS(f4)) + 0x1p-53 * VABS(l + F)) * INFL +
+	     3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
+	fail |= ~(VABS(s3) <= DBL_MAX) | (h == 0.0) | vziv(vh, vl, e, 53, &r);
+	for (j = 0; j < 4; j++)
+		if (!fail[j]) {
+			out[j] = r[j];
+			mask |= 1 << j;
+		}
+	return mask;
+}
+#endif
 
 /* The lanes of shape() below, decided in two vectors: bits 0-4 the five
    defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
@@ -1073,54 +1156,29 @@ static double float_distance(double a, double b, int prec)
    MPFR's E carries 2^-127 of noise) enters only the maxima abs_eps_max
    and ulp_max: its upper bound goes to undet[0] (in eps) and undet[1]
    (in ulps), and the caller checks that neither reaches the maxima. */
-static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, double undet[2])
+/* xforward's figures from its parts: diff = RN(E - cv) when have_diff,
+   else its bound `upper`; rounded = E rounded to the format (0 when E is
+   tiny). */
+static void fwd_accumulate(int prec, double cv, int have_diff, double diff, double upper, double rounded,
+                           sample_metrics *s, double undet[2])
 {
 	const int p = prec == PREC_FLOAT ? 24 : 53;
 	const int emin = prec == PREC_FLOAT ? -125 : -1021;
 	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
-	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
-	const int tiny = (double)PFABS(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
-	double diff, rounded, bits, ulp = 0.0, upper = 0.0;
-	int bad = 0, rc = 1, have_diff;
-	xv D;
-	if (!ziv_d(E, refd)) {
-		/* The exact double of E is undetermined (an exact zero that MPFR
-		   computes as rounding noise, say).  When tiny, it takes part in
-		   no other figure: only ref[] is left to MPFR, and only if the
-		   sample is kept among the worst. */
-		if (!tiny)
-			return 0;
-		*refd = NAN;
-		rc = 2;
-	}
-	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
-	if (bad)
-		return 0;
-	have_diff = ziv_d(D, &diff);
+	double bits;
 	if (have_diff) {
 		/* x / 2^k and x * 2^-k are the same correctly rounded value */
 		const double d = fabs(diff) * (prec == PREC_FLOAT ? 0x1p23 : 0x1p52);
 		diff = fabs(diff);
 		s->abs_eps_max = d > s->abs_eps_max ? d : s->abs_eps_max;
-	} else {
-		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
-		if (upper / eps > undet[0])
-			undet[0] = upper / eps;
-	}
-	if (tiny) {
-		rounded = 0.0;
-	} else if (prec == PREC_FLOAT) {
-		if (!ziv_f(E, &rounded))
-			return 0;
-	} else {
-		rounded = *refd;
+	} else if (upper / eps > undet[0]) {
+		undet[0] = upper / eps;
 	}
 	if (rounded != 0.0 && fabs(rounded) >= eps) {
-		int ex;
-		ex = dexp(rounded) + 1; /* frexp's exponent */
+		int ex = dexp(rounded) + 1; /* frexp's exponent */
 		ex = (ex < emin ? emin : ex) - p;
-		ulp = pow2(ex);
 		if (!have_diff) {
+			const double ulp = pow2(ex);
 			if (upper / ulp > undet[1])
 				undet[1] = upper / ulp;
 		} else {
@@ -1135,6 +1193,88 @@ static int xforward(xv E, double cv, int prec, sample_metrics *s, double *refd, 
 		s->bits_sum += bits;
 		s->nbits++;
 		s->bits_max = bits > s->bits_max ? bits : s->bits_max;
+	}
+}
+
+/* The parts of a forward error that depend on E alone: *refd (E to
+   double; NaN when undetermined but E is tiny) and *rounded (E to the
+   format; 0 when tiny).  1, 2 (ref[] left to MPFR) or -1 (MPFR decides). */
+static int fwd_parts(xv E, int prec, double *refd, double *rounded)
+{
+	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
+	/* |E| < eps/2 for sure: E rounds below eps, no ulp or bits from it */
+	const int tiny = (double)PFABS(E.h) * (1.0 + 0x1p-50) + 2.0 * E.e * INFL < 0.5 * eps;
+	int rc = 1;
+	if (!ziv_d(E, refd)) {
+		/* The exact double of E is undetermined (an exact zero that MPFR
+		   computes as rounding noise, say).  When tiny, it takes part in
+		   no other figure: only ref[] is left to MPFR, and only if the
+		   sample is kept among the worst. */
+		if (!tiny)
+			return -1;
+		*refd = NAN;
+		rc = 2;
+	}
+	if (tiny) {
+		*rounded = 0.0;
+	} else if (prec == PREC_FLOAT) {
+		if (!ziv_f(E, rounded))
+			return -1;
+	} else {
+		*rounded = *refd;
+	}
+	return rc;
+}
+
+/* The forward error of component value cv against E, from E's parts
+   (fwd_parts): 1, 2 (ref[] left to MPFR) or 0 (MPFR decides). */
+static int xforward(xv E, double cv, int prec, int parts, double refd, double rounded, sample_metrics *s,
+                    double undet[2])
+{
+	double diff = 0.0, upper = 0.0;
+	int bad = 0, have_diff;
+	xv D;
+	if (parts < 0)
+		return 0;
+	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
+	if (bad)
+		return 0;
+	have_diff = ziv_d(D, &diff);
+	if (!have_diff)
+		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
+	fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
+	(void)refd;
+	return parts;
+}
+
+/* The forward figures of every component of the kernel's output against
+   the formula r1, r2: 1 (ref[] determined), 2 (ref[] left to MPFR) or 0
+   (MPFR decides the sample). */
+static int forward_all(fentry *e, const xv *r1, const xv *r2, int prec, sample_metrics *s, double undet[2])
+{
+	int i, rc = 1;
+	for (i = 0; i < s->ncomp; i++) {
+		const xv E = i < 3 ? r1[i] : r2[i - 3];
+		double refd = NAN, rounded = 0.0;
+		int parts, f;
+		if (e && e->fwd[i]) {
+			parts = e->fwd[i];
+			refd = e->refd[i];
+			rounded = e->rounded[i];
+		} else {
+			parts = fwd_parts(E, prec, &refd, &rounded);
+			if (e) {
+				e->fwd[i] = (signed char)parts;
+				e->refd[i] = refd;
+				e->rounded[i] = rounded;
+			}
+		}
+		s->ref[i] = refd;
+		f = xforward(E, s->out[i], prec, parts, refd, rounded, s, undet);
+		if (!f)
+			return 0;
+		if (f == 2)
+			rc = 2;
 	}
 	return rc;
 }
@@ -1328,6 +1468,7 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, 
 	}
 	e->ok = !*bad;
 	e->floor_ok = -1;
+	memset(e->fwd, 0, sizeof e->fwd);
 	memcpy(e->xr, r1, 3 * sizeof *r1);
 	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
 	return e;
@@ -1360,7 +1501,8 @@ static int floor_figures(const reffast_ctx *c, fentry *e, const study_kernel *k,
 		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
 		const double ev = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
 		const double fv = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
-		s->floor_ratio = fmax(ev, u2) / fmax(fv, u2);
+		/* fmax(x, u2) for x = NaN is u2, as here; no libm call */
+		s->floor_ratio = (ev > u2 ? ev : u2) / (fv > u2 ? fv : u2);
 	}
 	return 1;
 }
@@ -1399,8 +1541,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	if (bad)
 		return 0;
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
-	for (i = 0; i < s->ncomp; i++) {
-		const int f = xforward(i < 3 ? r1[i] : r2[i - 3], s->out[i], prec, s, &s->ref[i], undet);
+	{
+		const int f = forward_all(e, r1, r2, prec, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)

@@ -6,9 +6,10 @@
  * precision, one thread.  Written to bench-reference.csv with provenance.
  *
  * What a sweep adds is not timed: its MPFR re-evaluation for ref[] of the
- * samples it keeps among the worst (about 3% of the fast path's samples
- * in the default sweep, stated in its reference.csv), the 1-in-509
- * cross-check at 191 bits, and the accumulators.  Both paths run the same
+ * rows it keeps among the worst (a few hundred per default sweep, filled
+ * when a thread folds its accumulators; the count is in the sweep's log),
+ * the 1-in-509 cross-check at 191 bits, input generation and the
+ * accumulators.  Both paths run the same
  * inputs in the same order; the rate is the median over repetitions.
  */
 #include <stdio.h>

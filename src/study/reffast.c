@@ -841,13 +841,24 @@ static v4i vziv(v4d h, v4d l, v4d e, int bits, v4d *out)
 	       ((off + m) * (1.0 + 0x1p-50) >= upg) | ((m - off) * (1.0 + 0x1p-50) >= dng);
 }
 
+/* The lanes that did not fail: their values into out[j], bit j of the mask. */
+static int vlanes(v4i fail, v4d r, double out[4])
+{
+	int j, mask = 0;
+	for (j = 0; j < 4; j++)
+		if (!fail[j]) {
+			out[j] = r[j];
+			mask |= 1 << j;
+		}
+	return mask;
+}
+
 #ifdef REFFAST_PAIR_DOUBLE
 static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
 {
 	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
 	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, r;
 	v4i fail;
-	int j, mask = 0;
 	VTWO_SUM(p0, p1, s1, e1);
 	VTWO_SUM(s1, p2, s2, e2);
 	VTWO_SUM(s2, -z, s3, e3);
@@ -856,12 +867,7 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
 	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
 	fail = (s3 == 0.0) | ~(VABS(s3) <= DBL_MAX) | vziv(h, l, e, 53, &r); /* NaN fails too */
-	for (j = 0; j < 4; j++)
-		if (!fail[j]) {
-			out[j] = r[j];
-			mask |= 1 << j;
-		}
-	return mask;
+	return vlanes(fail, r, out);
 }
 #else
 /* The double precision's fdot_round, four lanes (TwoProd by the fma
@@ -871,7 +877,7 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 {
 	v4d p[3], t[3], s1, e1, s2, e2, s3, e3, u, f0, f1, f2, f3, f4, F, h, l, vh, vl, S, e, r;
 	v4i fail = (v4i){ 0, 0, 0, 0 };
-	int i, j, mask = 0;
+	int i;
 	for (i = 0; i < 3; i++) {
 		p[i] = a[i] * b[i];
 		t[i] = (v4d)_mm256_fmadd_pd((__m256d)a[i], (__m256d)b[i], (__m256d)-p[i]);
@@ -892,12 +898,7 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	e = ((4.0 * 0x1p-53 * (VABS(f0) + VABS(f1) + VABS(f2) + VABS(f3) + VABS(f4)) + 0x1p-53 * VABS(l + F)) * INFL +
 	     3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
 	fail |= ~(VABS(s3) <= DBL_MAX) | (h == 0.0) | vziv(vh, vl, e, 53, &r);
-	for (j = 0; j < 4; j++)
-		if (!fail[j]) {
-			out[j] = r[j];
-			mask |= 1 << j;
-		}
-	return mask;
+	return vlanes(fail, r, out);
 }
 #endif
 

@@ -7,7 +7,10 @@
  * inputs that defeat the fast path (signed zeros, axes, subnormal and
  * tiny components, huge and non-finite inputs, each method's fallback
  * branch).  It also fails if the fast path decides too few samples (so a
- * path that always falls back cannot pass) and prints the fallback rate.
+ * path that always falls back cannot pass) and prints the fallback rate,
+ * and if a second context, called right after the first on the same
+ * sample, decides differently (the fast path once read a bound it had
+ * not set yet, so its decisions followed stack garbage).
  * Usage: test_reffast [N] (inputs per distribution, default 2000).
  */
 #include <stdio.h>
@@ -28,7 +31,8 @@ static int passed, failed;
 
 static study_kernel ks[64];
 static int nk;
-static unsigned long long decided[2], total[2], noref[2], mismatches;
+static unsigned long long decided[2], total[2], noref[2], mismatches, undetermined;
+static reffast_ctx *fc2; /* a second context: decisions must not depend on stack garbage */
 
 static void show(const char *what, const sample_metrics *a)
 {
@@ -56,6 +60,20 @@ static int one(ref_ctx *rc, reffast_ctx *fc, int p, const double n[3], const dou
 		ref_eval(rc, &ks[k], p, n, loc, nonunit, &a);
 		total[p]++;
 		f = reffast_eval(fc, &ks[k], p, n, loc, nonunit, &b);
+		if (fc2) {
+			/* the same call on a second context, right after the first
+			   (other garbage on the stack, no MPFR call between): the same
+			   decision and bytes, or the fast path read something unset */
+			sample_metrics c2;
+			memset(&c2, 0, sizeof c2);
+			if (reffast_eval(fc2, &ks[k], p, n, loc, nonunit, &c2) != f ||
+			    (f != REFFAST_MPFR && memcmp(&b, &c2, sizeof b) != 0)) {
+				if (undetermined++ < 5)
+					printf("NONDETERMINISTIC %s %s n = (%a, %a, %a)\n", ks[k].name, p ? "double" : "float",
+					       n[0], n[1], n[2]);
+				good = 0;
+			}
+		}
 		if (f == REFFAST_MPFR)
 			continue;
 		decided[p]++;
@@ -143,7 +161,8 @@ int main(int argc, char **argv)
 		return 0;
 	}
 	nk = kernels_select(NULL, fma_available(), ks, 64);
-	CHECK(nk > 0 && rc && fc, "setup");
+	fc2 = reffast_new(127);
+	CHECK(nk > 0 && rc && fc && fc2, "setup");
 	special(rc, fc);
 	for (p = 0; p < 2; p++)
 		for (d = 0; d < NDIST; d++)
@@ -152,6 +171,7 @@ int main(int argc, char **argv)
 	   -1 are in the run above; these are further in (n.z near -0.99) */
 	dist(rc, fc, DIST_EXHAUSTIVE, PREC_FLOAT, 4 * N, 0, -0.99);
 	CHECK(mismatches == 0, "%llu samples where a decided fast result differs from MPFR", mismatches);
+	CHECK(undetermined == 0, "%llu samples decided differently by a second context", undetermined);
 	for (p = 0; p < 2; p++) {
 		const double rate = 1.0 - (double)decided[p] / (double)total[p];
 		printf("  %s: fast path decided %llu of %llu samples (fallback %.4f%%; %llu with ref[] left to MPFR)\n",
@@ -162,6 +182,7 @@ int main(int argc, char **argv)
 	}
 	ref_free(rc);
 	reffast_free(fc);
+	reffast_free(fc2);
 	printf("test_reffast: %d passed, %d failed\n", passed, failed);
 	return failed != 0;
 }

@@ -381,30 +381,6 @@ static void reference(ref_ctx *c, const study_kernel *k, int br, const double lo
 	}
 }
 
-/* Distance in representable values between a and b, of the format. */
-static double float_distance(double a, double b, int prec)
-{
-	if (prec == PREC_FLOAT) {
-		float fa = (float)a, fb = (float)b;
-		uint32_t ua, ub;
-		int64_t oa, ob;
-		memcpy(&ua, &fa, 4);
-		memcpy(&ub, &fb, 4);
-		oa = (ua >> 31) ? -(int64_t)(ua & 0x7fffffffu) : (int64_t)ua;
-		ob = (ub >> 31) ? -(int64_t)(ub & 0x7fffffffu) : (int64_t)ub;
-		return (double)(oa > ob ? oa - ob : ob - oa);
-	} else {
-		uint64_t ua, ub, ma, mb;
-		memcpy(&ua, &a, 8);
-		memcpy(&ub, &b, 8);
-		ma = ua & 0x7fffffffffffffffu;
-		mb = ub & 0x7fffffffffffffffu;
-		if ((ua >> 63) != (ub >> 63))
-			return (double)ma + (double)mb;
-		return (double)(ma > mb ? ma - mb : mb - ma);
-	}
-}
-
 /* Forward error of component value cv against the exact value e. */
 static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s, double *refd)
 {
@@ -436,7 +412,7 @@ static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s
 			s->ulp_max = diff / ulp;
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
-			const double dist = float_distance(cv, rounded, prec);
+			const double dist = ref_float_distance(cv, rounded, prec);
 			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
 		}
 		s->bits_sum += bits;
@@ -719,13 +695,10 @@ static void input_norm(ref_ctx *c, const double n[3])
 	}
 }
 
-/* Orthonormality defect of the rounded outputs, and their handedness. */
-static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double n[3], int normalize_n,
-                                 sample_metrics *s)
+void ref_defect_summary(const study_kernel *k, const double n[3], sample_metrics *s)
 {
 	long double det;
 	int i;
-	basis_defects(c, s->out, n, normalize_n, s->d);
 	s->defect = 0.0;
 	s->sumsq = 0.0;
 	for (i = 0; i < NDEF; i++) {
@@ -744,6 +717,14 @@ static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double
 	}
 	s->det = (double)det;
 	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+}
+
+/* Orthonormality defect of the rounded outputs, and their handedness. */
+static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double n[3], int normalize_n,
+                                 sample_metrics *s)
+{
+	basis_defects(c, s->out, n, normalize_n, s->d);
+	ref_defect_summary(k, n, s);
 }
 
 void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],

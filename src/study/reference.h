@@ -20,6 +20,8 @@
 #define ONB_REFERENCE_H
 
 #include <mpfr.h>
+#include <stdint.h>
+#include <string.h>
 #include "kernels.h"
 
 typedef struct ref_ctx ref_ctx;
@@ -79,6 +81,35 @@ void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const
 /* The five defects of the basis b = (b1, b2) for the input n, all doubles:
    |b1|-1, |b2|-1, b1.n, b2.n, b1.b2, each to 2^-50 relative or better. */
 void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF]);
+
+/* From s->d and s->out: defect (max |d|), sumsq, det(b1, b2, n) in long
+   double and wrong_hand, as ref_eval sets them (shared with reffast.c). */
+void ref_defect_summary(const study_kernel *k, const double n[3], sample_metrics *s);
+
+/* Representable values of the format (PREC_FLOAT or PREC_DOUBLE) between
+   a and b: the forward error in "bits" counts them. */
+static inline double ref_float_distance(double a, double b, int prec)
+{
+	if (prec == PREC_FLOAT) {
+		float fa = (float)a, fb = (float)b;
+		uint32_t ua, ub;
+		int64_t oa, ob;
+		memcpy(&ua, &fa, 4);
+		memcpy(&ub, &fb, 4);
+		oa = (ua >> 31) ? -(int64_t)(ua & 0x7fffffffu) : (int64_t)ua;
+		ob = (ub >> 31) ? -(int64_t)(ub & 0x7fffffffu) : (int64_t)ub;
+		return (double)(oa > ob ? oa - ob : ob - oa);
+	} else {
+		uint64_t ua, ub, ma, mb;
+		memcpy(&ua, &a, 8);
+		memcpy(&ub, &b, 8);
+		ma = ua & 0x7fffffffffffffffu;
+		mb = ub & 0x7fffffffffffffffu;
+		if ((ua >> 63) != (ub >> 63))
+			return (double)ma + (double)mb;
+		return (double)(ma > mb ? ma - mb : mb - ma);
+	}
+}
 
 /* 1 when two evaluations of the same input (at different MPFR precisions)
    agree in every reported metric to a relative 2^-40; else 0 and a

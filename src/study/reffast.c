@@ -1145,30 +1145,6 @@ static void xreference(const study_kernel *k, int br, const double loc[3], const
 	}
 }
 
-/* reference.c's float_distance: representable values between a and b. */
-static double float_distance(double a, double b, int prec)
-{
-	if (prec == PREC_FLOAT) {
-		float fa = (float)a, fb = (float)b;
-		uint32_t ua, ub;
-		int64_t oa, ob;
-		memcpy(&ua, &fa, 4);
-		memcpy(&ub, &fb, 4);
-		oa = (ua >> 31) ? -(int64_t)(ua & 0x7fffffffu) : (int64_t)ua;
-		ob = (ub >> 31) ? -(int64_t)(ub & 0x7fffffffu) : (int64_t)ub;
-		return (double)(oa > ob ? oa - ob : ob - oa);
-	} else {
-		uint64_t ua, ub, ma, mb;
-		memcpy(&ua, &a, 8);
-		memcpy(&ub, &b, 8);
-		ma = ua & 0x7fffffffffffffffu;
-		mb = ub & 0x7fffffffffffffffu;
-		if ((ua >> 63) != (ub >> 63))
-			return (double)ma + (double)mb;
-		return (double)(ma > mb ? ma - mb : mb - ma);
-	}
-}
-
 /* forward(): the forward error of component cv against E.  1 when every
    figure is determined, 2 when ref[] is not (then NaN), 0 when MPFR must
    decide.  A diff = |RN(E - cv)| that stays undetermined (E - cv within
@@ -1207,7 +1183,7 @@ static void fwd_accumulate(int prec, double cv, int have_diff, double diff, doub
 		}
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
-			const double dist = float_distance(cv, rounded, prec);
+			const double dist = ref_float_distance(cv, rounded, prec);
 			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
 		}
 		s->bits_sum += bits;
@@ -1248,7 +1224,7 @@ static int fwd_parts(xv E, int prec, double *refd, double *rounded)
 
 /* The forward error of component value cv against E, from E's parts
    (fwd_parts): 1, 2 (ref[] left to MPFR) or 0 (MPFR decides). */
-static int xforward(xv E, double cv, int prec, int parts, double refd, double rounded, sample_metrics *s,
+static int xforward(xv E, double cv, int prec, int parts, double rounded, sample_metrics *s,
                     double undet[2])
 {
 	double diff = 0.0, upper = 0.0;
@@ -1263,7 +1239,6 @@ static int xforward(xv E, double cv, int prec, int parts, double refd, double ro
 	if (!have_diff)
 		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
 	fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
-	(void)refd;
 	return parts;
 }
 
@@ -1290,7 +1265,7 @@ static int forward_all(fentry *e, const xv *r1, const xv *r2, int prec, sample_m
 			}
 		}
 		s->ref[i] = refd;
-		f = xforward(E, s->out[i], prec, parts, refd, rounded, s, undet);
+		f = xforward(E, s->out[i], prec, parts, rounded, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)
@@ -1377,29 +1352,6 @@ static int shape(const reffast_ctx *c, int has_basis, const double b[6], const d
 	*dir_norm = fabs(v[5]);
 	*dir_cos = fabs(v[6]);
 	return 1;
-}
-
-/* The orthonormality defect and the handedness from s->d, as ref_eval. */
-static void defect_summary(const study_kernel *k, const double n[3], sample_metrics *s)
-{
-	long double det;
-	int i;
-	s->defect = 0.0;
-	s->sumsq = 0.0;
-	for (i = 0; i < NDEF; i++) {
-		if (fabs(s->d[i]) > s->defect)
-			s->defect = fabs(s->d[i]);
-		s->sumsq += s->d[i] * s->d[i];
-	}
-	{
-		long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
-		long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
-		det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
-		    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
-		    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
-	}
-	s->det = (double)det;
-	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
 }
 
 /* The accuracy floor (issue 16; reference.c floor_eval and
@@ -1564,7 +1516,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	           inv, s->d, &s->dir_norm, &s->dir_cos))
 		return 0;
 	if (k->m)
-		defect_summary(k, n, s);
+		ref_defect_summary(k, n, s);
 
 	/* Forward error against the kernel's own formula. */
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;

@@ -71,19 +71,30 @@ typedef struct {
 	   -1 MPFR must decide */
 	signed char fwd[6];
 	double refd[6], rounded[6];
-	/* the last sample decided with this formula and its return code (0:
-	   none): a kernel of the family that returns the same bits (frisvad
-	   and frisvad_max almost always; duff's upper branch and frisvad)
-	   has the same figures, every one a function of those bits */
-	int smp_rc;
-	sample_metrics smp;
 } fentry;
+
+/* The samples decided on this input, by the bits of the kernel's outputs
+   and direction (out[], w[]): a kernel that returns the same bits as an
+   earlier one on the same input has the same shape figures (defects, det,
+   direction errors: functions of those bits, n and loc alone), and, when
+   its formula is the same too (frisvad and frisvad_max almost always;
+   duff's upper branch and frisvad; duff_branchless, duff_wide and
+   duff_comp; the naive and hughes_moeller normalizations), every figure. */
+#define MEMO 48
+typedef struct {
+	uint64_t hash;            /* of out[], w[] and has_basis                */
+	int key;                  /* the formula's key (fentry.key)              */
+	int rc;                   /* what reffast_eval returned for it          */
+	sample_metrics smp;
+} memo_entry;
 
 struct reffast_ctx {
 	int prec;                 /* MPFR precision p of the reference mirrored */
 	double key_n[3], key_loc[3]; /* the input the formula cache holds        */
 	int key_prec, key_norm, nf;
 	fentry fc[FCACHE];
+	int nmemo;
+	memo_entry memo[MEMO];
 	double up;                /* 2^-p */
 	double last[3];           /* cache: the last input, its |n|-1 and 1/|n| */
 	double last_norm;
@@ -265,6 +276,7 @@ typedef double ld;
 #define RHO_SLOP 0x1p-99         /* error of a residual 1 - b y (recip)      */
 #define RHO_SLOP2 0x1p-98        /* error of a residual 1 - s y^2 (rsqrt)    */
 #define OFF_SLOP 0x1p-52         /* rounding of (h - c) + l in ziv           */
+#define PAIR_U 0x1p-52           /* twice the unit roundoff of a pair's part */
 #define EVAL_NAME reffast_eval_pairs_of_doubles
 #else
 typedef long double ld;
@@ -274,6 +286,7 @@ typedef long double ld;
 #define RHO_SLOP 0x1p-121
 #define RHO_SLOP2 0x1p-120
 #define OFF_SLOP 0x1p-62
+#define PAIR_U 0x1p-63
 #define EVAL_NAME reffast_eval_pairs_of_long_doubles
 #endif
 
@@ -437,6 +450,25 @@ HOT xv xadd(xv a, xv b, int *bad)
 }
 
 HOT xv xsub(xv a, xv b, int *bad) { return xadd(a, xneg(b), bad); }
+
+/* a - d for an inexact a (a.e > 0) and a double d (mpfr_sub_d), leaner
+   than xadd: TwoSum gives s + t = h - d exactly, q = RN(t + l) is within
+   u |q| of t + l (u the pair's unit roundoff: PAIR_U = 2u covers it),
+   and TwoSum again makes the pair s + q exact.  So our value is within
+   e + PAIR_U |q| of X - d, and MPFR's one rounding at p bits adds
+   2^-p |X_mpfr - d| <= 2^-p (|r| (1 + 2^-50) + 2e): DDREL |r| and the
+   inflation of e cover it, as in xadd. */
+HOT xv xsub_inexact(xv a, double d, int *bad)
+{
+	xv r;
+	ld s, t, q;
+	two_sum_l(a.h, -(ld)d, &s, &t);
+	q = t + a.l;
+	two_sum_l(s, q, &r.h, &r.l);
+	r.e = ((a.e + PAIR_U * (double)PFABS(q)) * INFL + DDREL * (double)PFABS(r.h)) * INFL + FLOOR;
+	if (!ok(r)) *bad = 1;
+	return r;
+}
 
 /* a b (mpfr_mul, mpfr_sqr). */
 HOT xv xmul(xv a, xv b, int *bad)
@@ -1232,7 +1264,8 @@ static int xforward(xv E, double cv, int prec, int parts, double rounded, sample
 	xv D;
 	if (parts < 0)
 		return 0;
-	D = xsub(E, xc(cv), &bad);      /* mpfr_sub_d: one rounding at p bits */
+	/* mpfr_sub_d: one rounding at p bits */
+	D = E.e > 0.0 ? xsub_inexact(E, cv, &bad) : xsub(E, xc(cv), &bad);
 	if (bad)
 		return 0;
 	have_diff = ziv_d(D, &diff);
@@ -1404,14 +1437,20 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int
 	return 1;
 }
 
-/* The cache entry of kernel k's formula on branch br for this input (the
-   formula evaluated on a miss), its value in r1, r2; NULL when the cache
-   is full (then the caller evaluates it alone). */
-static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
-                       const double loc[3], int normalize_n, xv *r1, xv *r2, int *bad)
+/* The key of kernel k's formula on branch br: family * 64 + branch * 2 +
+   whether it normalizes (naive and hughes_moeller have a _nonorm). */
+static int formula_key(const study_kernel *k, int br)
 {
-	int fam = k->family, i;
-	fentry *e;
+	int fam = k->family;
+	if (fam == FAM_DUFF && br == 0)
+		fam = FAM_FRISVAD; /* duff's upper branch is Frisvad's formula */
+	return fam * 64 + br * 2 + ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
+}
+
+/* Start the formula cache and the memo anew when the input (n, loc,
+   precision, normalize_n) is not the one they hold. */
+static void same_input(reffast_ctx *c, int prec, const double n[3], const double loc[3], int normalize_n)
+{
 	if (c->key_prec != prec || c->key_norm != normalize_n || memcmp(c->key_n, n, sizeof c->key_n) != 0 ||
 	    memcmp(c->key_loc, loc, sizeof c->key_loc) != 0) {
 		memcpy(c->key_n, n, sizeof c->key_n);
@@ -1419,12 +1458,51 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, 
 		c->key_prec = prec;
 		c->key_norm = normalize_n;
 		c->nf = 0;
+		c->nmemo = 0;
 	}
-	if (fam == FAM_DUFF && br == 0)
-		fam = FAM_FRISVAD; /* duff's upper branch is Frisvad's formula */
+}
+
+/* A cheap hash of the kernel's output bits (out[], w[]) and has_basis:
+   memo_find compares the bits themselves. */
+static uint64_t out_hash(const sample_metrics *s, int has_basis)
+{
+	uint64_t a, b, w0, w2;
+	memcpy(&a, &s->out[0], 8);
+	memcpy(&b, &s->out[4], 8);
+	memcpy(&w0, &s->w[0], 8);
+	memcpy(&w2, &s->w[2], 8);
+	return (a ^ (b << 17 | b >> 47) ^ (w0 << 31 | w0 >> 33) ^ w2) + (uint64_t)has_basis;
+}
+
+/* The memo's entry with the same output bits as s (and has_basis), the
+   one of the same formula key if there is one; NULL if none. */
+static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, int key, const sample_metrics *s)
+{
+	const memo_entry *any = NULL;
+	int i;
+	for (i = 0; i < c->nmemo; i++) {
+		const memo_entry *m = &c->memo[i];
+		if (m->hash != hash || memcmp(m->smp.out, s->out, sizeof s->out) != 0 ||
+		    memcmp(m->smp.w, s->w, sizeof s->w) != 0 || m->smp.has_basis != s->has_basis)
+			continue;
+		if (m->key == key)
+			return m;
+		any = m;
+	}
+	return any;
+}
+
+/* The cache entry of kernel k's formula on branch br for this input (the
+   formula evaluated on a miss), its value in r1, r2; NULL when the cache
+   is full (then the caller evaluates it alone). */
+static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                       const double loc[3], int normalize_n, xv *r1, xv *r2, int *bad)
+{
+	int i;
+	fentry *e;
+	(void)prec; (void)normalize_n; /* the input's key: same_input() */
 	{
-		const int key = fam * 64 + br * 2 +
-		                ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
+		const int key = formula_key(k, br);
 		for (i = 0; i < c->nf; i++)
 			if (c->fc[i].key == key) {
 				memcpy(r1, c->fc[i].xr, 3 * sizeof *r1);
@@ -1440,7 +1518,6 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, 
 	}
 	e->ok = !*bad;
 	e->floor_ok = -1;
-	e->smp_rc = 0;
 	memset(e->fwd, 0, sizeof e->fwd);
 	memcpy(e->xr, r1, 3 * sizeof *r1);
 	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
@@ -1488,6 +1565,9 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	int i, bad = 0, rc = REFFAST_DONE;
 	double undet[2] = { 0.0, 0.0 };
 	fentry *e;
+	const memo_entry *mm;
+	uint64_t hash;
+	int key;
 	ref_run_kernel(k, prec, n_in, loc, n, s);
 	if (!input_terms(c, n, normalize_n, &inv))
 		return REFFAST_MPFR;
@@ -1503,20 +1583,35 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			s->ref[i] = NAN;
 		return REFFAST_MPFR; /* the floor of a singular input: left to MPFR */
 	}
+	same_input(c, prec, n, loc, normalize_n);
+	key = formula_key(k, s->branch);
+	hash = out_hash(s, s->has_basis);
+	mm = memo_find(c, hash, key, s);
+	if (mm && mm->key == key) { /* the same bits and formula: the same figures */
+		*s = mm->smp;
+		if (k->m)
+			s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+		return mm->rc;
+	}
 	e = formula(c, k, prec, s->branch, n, loc, normalize_n, r1, r2, &bad);
 	if (bad)
 		return 0;
-	if (e && e->smp_rc && memcmp(e->smp.out, s->out, sizeof s->out) == 0 && memcmp(e->smp.w, s->w, sizeof s->w) == 0) {
-		*s = e->smp;
+	if (mm) { /* the same bits, another formula: the same shape figures */
+		memcpy(s->d, mm->smp.d, sizeof s->d);
+		s->defect = mm->smp.defect;
+		s->sumsq = mm->smp.sumsq;
+		s->det = mm->smp.det;
+		s->dir_norm = mm->smp.dir_norm;
+		s->dir_cos = mm->smp.dir_cos;
 		if (k->m)
 			s->wrong_hand = !(s->det * k->m->handedness > 0.0);
-		return e->smp_rc;
+	} else {
+		if (!shape(c, k->m != NULL, s->out, n, s->w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2],
+		           normalize_n, inv, s->d, &s->dir_norm, &s->dir_cos))
+			return 0;
+		if (k->m)
+			ref_defect_summary(k, n, s);
 	}
-	if (!shape(c, k->m != NULL, s->out, n, s->w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2], normalize_n,
-	           inv, s->d, &s->dir_norm, &s->dir_cos))
-		return 0;
-	if (k->m)
-		ref_defect_summary(k, n, s);
 
 	/* Forward error against the kernel's own formula. */
 	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
@@ -1534,9 +1629,12 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 
 	if (!floor_figures(c, e, k, prec, n, loc, normalize_n, inv, r1, r2, s))
 		return 0;
-	if (e) {
-		e->smp = *s;
-		e->smp_rc = rc;
+	if (c->nmemo < MEMO) {
+		memo_entry *m = &c->memo[c->nmemo++];
+		m->hash = hash;
+		m->key = key;
+		m->rc = rc;
+		m->smp = *s;
 	}
 	return rc;
 }

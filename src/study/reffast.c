@@ -1395,8 +1395,9 @@ static int shape(const reffast_ctx *c, int has_basis, const double b[6], const d
    floor_dir_cos).  It depends on the kernel only through its formula, so
    the caller keeps it per formula.  0 when anything is undetermined (the
    caller then runs ref_eval). */
-static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
-                      const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2, double f[3])
+static int floor_fast(const reffast_ctx *c, const fentry *e, const study_kernel *k, int prec, int br,
+                      const double n[3], const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2,
+                      double f[3])
 {
 	const int nc = k->m ? 6 : 3;
 	double fb[6], w[3], d[NDEF];
@@ -1404,6 +1405,13 @@ static int floor_fast(const reffast_ctx *c, const study_kernel *k, int prec, int
 	for (i = 0; i < nc; i++) {
 		if (k->m && k->family == FAM_NAIVE && i == 3 + br) {
 			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
+			continue;
+		}
+		/* the forward error's parts already hold E to the format, the same
+		   ziv() on the same value: RN_f(E) unless E was tiny (then 0.0
+		   there), RN_d(E) when determined */
+		if (e && e->fwd[i] > 0 && (prec == PREC_FLOAT ? e->rounded[i] != 0.0 : e->fwd[i] == 1)) {
+			fb[i] = prec == PREC_FLOAT ? e->rounded[i] : e->refd[i];
 			continue;
 		}
 		if (!ziv(i < 3 ? r1[i] : r2[i - 3], prec == PREC_FLOAT ? 24 : 53, &fb[i]))
@@ -1532,7 +1540,7 @@ static int floor_figures(const reffast_ctx *c, fentry *e, const study_kernel *k,
 {
 	double f[3] = { NAN, NAN, NAN };
 	if (!e || e->floor_ok < 0) {
-		const int ok = floor_fast(c, k, prec, s->branch, n, loc, normalize_n, inv, r1, r2, f);
+		const int ok = floor_fast(c, e, k, prec, s->branch, n, loc, normalize_n, inv, r1, r2, f);
 		if (e) {
 			e->floor_ok = ok;
 			e->floor = f[0]; e->floor_dir_norm = f[1]; e->floor_dir_cos = f[2];

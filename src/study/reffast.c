@@ -886,7 +886,7 @@ static int vlanes(v4i fail, v4d r, double out[4])
 }
 
 #ifdef REFFAST_PAIR_DOUBLE
-static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+static inline v4i fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, v4d *out)
 {
 	const v4d p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
 	v4d s1, e1, s2, e2, s3, e3, h, l, S, E, e, r;
@@ -899,13 +899,14 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
 	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
 	fail = (s3 == 0.0) | ~(VABS(s3) <= DBL_MAX) | vziv(h, l, e, 53, &r); /* NaN fails too */
-	return vlanes(fail, r, out);
+	*out = r;
+	return fail;
 }
 #else
 /* The double precision's fdot_round, four lanes (TwoProd by the fma
    instruction); a lane that fails here (exact midpoints among them) takes
    the scalar function, which decides those too. */
-static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, double out[4])
+static inline v4i fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, v4d *out)
 {
 	v4d p[3], t[3], s1, e1, s2, e2, s3, e3, u, f0, f1, f2, f3, f4, F, h, l, vh, vl, S, e, r;
 	v4i fail = (v4i){ 0, 0, 0, 0 };
@@ -930,7 +931,8 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 	e = ((4.0 * 0x1p-53 * (VABS(f0) + VABS(f1) + VABS(f2) + VABS(f3) + VABS(f4)) + 0x1p-53 * VABS(l + F)) * INFL +
 	     3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
 	fail |= ~(VABS(s3) <= DBL_MAX) | (h == 0.0) | vziv(vh, vl, e, 53, &r);
-	return vlanes(fail, r, out);
+	*out = r;
+	return fail;
 }
 #endif
 
@@ -940,32 +942,36 @@ static int fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4d z, do
 static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], const double n[3],
                      const double w[3], double z, int normalize_n, double v[8])
 {
-	double o[8];
-	int i, mask = 0;
-	const v4d zb = { 0.0, 1.0, z, 0.0 };
-	v4d a[3], bb[3];
+	int mask;
+	const v4d zb = { 0.0, 1.0, z, 0.0 }, one = { 1.0, 1.0, 1.0, 1.0 };
+	const v4i normb = { 0, -1, 0, 0 }, norma = { -1, -1, 0, 0 };
+	v4d a[3], bb[3], ra, rb;
+	v4i fa, fb;
+	int i;
 	for (i = 0; i < 3; i++) {
 		const v4d ai = { b[i], w[i], w[i], 0.0 }, bi = { b[3 + i], w[i], n[i], 0.0 };
 		a[i] = ai; bb[i] = bi;
 	}
-	mask = fdot4(c, a, bb, zb, o + 4) << 4;
+	fb = fdot4(c, a, bb, zb, &rb);
+	/* |v| - 1 = e / (sqrt(1 + e) + 1), lane by lane the scalar operations
+	   (IEEE sqrt and division: the same roundings) */
+	rb = (v4d)(((v4i)(rb / (__builtin_ia32_sqrtpd256(one + rb) + one)) & normb) | ((v4i)rb & ~normb));
+	mask = vlanes(fb, rb, v + 4) << 4;
 	if (has_basis) {
 		const v4d za = { 1.0, 1.0, 0.0, 0.0 };
 		for (i = 0; i < 3; i++) {
 			const v4d ai = { b[i], b[3 + i], b[i], b[3 + i] }, bi = { b[i], b[3 + i], n[i], n[i] };
 			a[i] = ai; bb[i] = bi;
 		}
-		mask |= fdot4(c, a, bb, za, o);
+		fa = fdot4(c, a, bb, za, &ra);
+		ra = (v4d)(((v4i)(ra / (__builtin_ia32_sqrtpd256(one + ra) + one)) & norma) | ((v4i)ra & ~norma));
+		mask |= vlanes(fa, ra, v);
 	} else {
 		mask &= ~(1 << 4);
 	}
 	mask &= 0x7f;
 	if (normalize_n)
 		mask &= ~(4 | 8 | 64);
-	for (i = 0; i < 7; i++)
-		if (mask & (1 << i)) {
-			v[i] = (i == 0 || i == 1 || i == 5) ? o[i] / (sqrt(1.0 + o[i]) + 1.0) : o[i];
-		}
 	return mask;
 }
 #endif

@@ -1456,8 +1456,12 @@ static int floor_fast(const reffast_ctx *c, const fentry *e, const study_kernel 
 static int formula_key(const study_kernel *k, int br)
 {
 	int fam = k->family;
-	if (fam == FAM_DUFF && br == 0)
-		fam = FAM_FRISVAD; /* duff's upper branch is Frisvad's formula */
+	/* duff's upper branch is Frisvad's formula, and so is duff_branchless's
+	   (s = 1): a = -1/(1 + z) there, and every intermediate is Frisvad's
+	   or its exact negation, in MPFR (rounding to nearest is symmetric) as
+	   in the pairs; the same values to the last bit (reference.c) */
+	if ((fam == FAM_DUFF || fam == FAM_DUFF_BRANCHLESS) && br == 0)
+		fam = FAM_FRISVAD;
 	return fam * 64 + br * 2 + ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
 }
 

@@ -764,6 +764,13 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	two_sum(p0, p1, &s1, &e1);
 	two_sum(s1, p2, &s2, &e2);
 	two_sum(s2, -z, &s3, &e3);
+	if (s3 == 0.0 && e1 == 0.0 && e2 == 0.0 && e3 == 0.0) {
+		/* X = 0 exactly, and in MPFR (its sums are exact): -0 when every
+		   term is -0 (z's term counts only when z != 0), else +0 */
+		*out = z == 0.0 && signbit(p0) && signbit(p1) && signbit(p2) && p0 == 0.0 && p1 == 0.0 && p2 == 0.0
+		       ? -0.0 : 0.0;
+		return 1;
+	}
 	if (s3 == 0.0 || !isfinite(s3))
 		return 0;
 	/* no branch on whether the e's are zero (data-dependent, so often
@@ -899,6 +906,8 @@ static inline v4i fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4
 	VTWO_SUM(s3, (e1 + e2) + e3, h, l);
 	e = (E + 3.0 * c->up * S + c->up * 2.0 * VABS(h)) * INFL + FLOOR;
 	fail = (s3 == 0.0) | ~(VABS(s3) <= DBL_MAX) | vziv(h, l, e, 53, &r); /* NaN fails too */
+	/* an exact zero fails here and is decided by the scalar fdot_round
+	   (deciding it here too measured 10% slower: the same figures) */
 	*out = r;
 	return fail;
 }

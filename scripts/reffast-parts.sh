@@ -1,16 +1,20 @@
 #!/bin/sh
-# reffast-parts.sh [REPS] - where the fast reference's time goes (issue 14):
+# reffast-parts.sh [REPS] [float|double] - where the fast reference's time goes (issue 14):
 # each part of reffast_eval is run twice on the same data in a copy of
 # src/study/reffast.c (the second result is discarded, so the data and every
 # decision stay the same), and the extra time per evaluation is that part's
 # cost.  Parts that overlap with the rest of the work show less than their
-# own cost.  Float, on bench --reference's inputs (every method on 1024
+# own cost (and a part the compiler can merge with its first run shows
+# nothing: the kernel's shape dots are not listed for that reason).  Float
+# (default) or double, on bench --reference's inputs (every method on 1024
 # inputs of each distribution of the default sweep), one thread; each line
 # is the best of REPS (default 5) alternating runs of the plain copy and
 # the doubled one.  Needs `make` first (links build/libstudy.a).  Prints
 # ns per evaluation; takes about two minutes.
 set -eu
 REPS=${1:-5}
+PREC=${2:-float}
+case $PREC in float) P=PREC_FLOAT ;; double) P=PREC_DOUBLE ;; *) echo "reffast-parts: precision float or double" >&2; exit 2 ;; esac
 [ -f build/libstudy.a ] && [ -f libonb.a ] || { echo "reffast-parts: run make first" >&2; exit 2; }
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
@@ -23,7 +27,7 @@ int main(int argc, char **argv)
 	static study_kernel ks[BR_MAX_KERNELS];
 	static br_input in[BR_MAX_INPUTS];
 	const int reps = argc > 1 ? atoi(argv[1]) : 8;
-	const int nk = kernels_select(NULL, 0, ks, BR_MAX_KERNELS), m = br_inputs(PREC_FLOAT, 1, 1024, in);
+	const int nk = kernels_select(NULL, 0, ks, BR_MAX_KERNELS), m = br_inputs(PREC, 1, 1024, in);
 	ref_ctx *rc = ref_new(127);
 	reffast_ctx *fc = reffast_new(127);
 	double check = 0.0, best = 1e30;
@@ -32,7 +36,7 @@ int main(int argc, char **argv)
 	for (r = 0; r < reps; r++) {
 		const double t0 = bench_now();
 		double t;
-		ev = br_pass(in, m, ks, nk, PREC_FLOAT, rc, fc, &fb, &check);
+		ev = br_pass(in, m, ks, nk, PREC, rc, fc, &fb, &check);
 		t = bench_now() - t0;
 		best = t < best ? t : best;
 	}
@@ -47,7 +51,7 @@ variant() {
 	printf '#define REFFAST_PAIR_DOUBLE 1\n#include "%s.c"\n' "$1" > "$W/$1_f.c"
 	$CC $F -I"$W" -c "$W/$1_f.c" -o "$W/$1_f.o"
 	$CC $F -I"$W" -c "$W/$1.c" -o "$W/$1_l.o"
-	$CC $F -fopenmp -o "$W/$1" -Isrc/study "$W/driver.c" "$W/$1_f.o" "$W/$1_l.o" build/libstudy.a libonb.a \
+	$CC $F -DPREC=$P -fopenmp -o "$W/$1" -Isrc/study "$W/driver.c" "$W/$1_f.o" "$W/$1_l.o" build/libstudy.a libonb.a \
 		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 }
 SINK='__asm__ volatile("" ::: "memory");'
@@ -61,7 +65,7 @@ variant floor '		const int ok = floor_fast(c, e, k, prec, s->branch, n, loc, nor
 variant kernel '	ref_run_kernel(k, prec, n_in, loc, n, s);' \
 	"	{ sample_metrics s2; double n2[3]; ref_run_kernel(k, prec, n_in, loc, n2, &s2); __asm__ volatile(\"\" :: \"m\"(s2), \"m\"(n2)); }"
 variant memo_copy '		m->smp = *s;' "		$SINK m->smp = *s;"
-echo "# reffast-parts: revision $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown); load $(cut -d' ' -f1-3 /proc/loadavg); best of $REPS alternating runs, ns per float evaluation"
+echo "# reffast-parts: revision $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown); load $(cut -d' ' -f1-3 /proc/loadavg); best of $REPS alternating runs, ns per $PREC evaluation"
 for v in formula forward floor kernel memo_copy; do
 	a=1e30; b=1e30
 	i=0

@@ -71,6 +71,7 @@ typedef struct {
 	   -1 MPFR must decide */
 	signed char fwd[6];
 	double refd[6], rounded[6];
+	double t4[6][4];          /* E as four doubles (to_e4, double only)     */
 } fentry;
 
 /* The samples decided on this input, by the bits of the kernel's outputs
@@ -1271,7 +1272,65 @@ static int fwd_parts(xv E, int prec, double *refd, double *rounded)
 
 /* The forward error of component value cv against E, from E's parts
    (fwd_parts): 1, 2 (ref[] left to MPFR) or 0 (MPFR decides). */
-static int xforward(xv E, double cv, int prec, int parts, double rounded, sample_metrics *s,
+#ifndef REFFAST_PAIR_DOUBLE
+/* The double precision's forward error in SSE doubles instead of x87
+   pairs: E = h + l as four doubles, h1 = RN(h), h2 = h - h1, l1 = RN(l),
+   l2 = l - l1 (each remainder exact in the long double and at most 11
+   bits: a double), so h1 + h2 + l1 + l2 = E exactly.  Once per component
+   and formula (fentry). */
+static void to_e4(xv E, double t[4])
+{
+	t[0] = (double)E.h;
+	t[1] = (double)(E.h - (ld)t[0]);
+	t[2] = (double)E.l;
+	t[3] = (double)(E.l - (ld)t[2]);
+}
+
+/* Ziv's test at 53 bits on an exact pair of doubles h + l (|l| <= ulp(h)/2)
+   with a bound e > 0: ziv()'s inexact branch, whose candidate RN(h) is h. */
+static inline int dziv53(double h, double l, double e, double *out)
+{
+	const double a = fabs(h);
+	double ulp, off, m;
+	if (!(a <= DBL_MAX) || a < TINY)
+		return 0;
+	ulp = pow2(dexp(a) - 52);
+	off = l * copysign(1.0, h);
+	m = 2.0 * e * INFL + fabs(off) * 0x1p-52;
+	if ((off + m) * (1.0 + 0x1p-50) >= 0.5 * ulp || (m - off) * (1.0 + 0x1p-50) >= (dpow2(a) ? 0.25 : 0.5) * ulp)
+		return 0;
+	*out = h;
+	return 1;
+}
+
+/* RN(E - cv) for an inexact E (bound e) from its four doubles t (to_e4):
+   TwoSum s + r = h1 - cv, a + b = s + h2 and c + d = a + l1 exactly (the
+   large parts first: E - cv cancels most of h1), q = ((b + r) + d) + l2
+   within 2^-51 (|b| + |r| + |d| + |l2|) of their sum, and TwoSum makes
+   (dh, dl) = c + q exact.  So dh + dl is within e + 2^-51 (...) of
+   X - cv, and MPFR's mpfr_sub_d (one rounding at p >= 127 bits of
+   X_mpfr - cv, |X_mpfr - X| <= e) within e + 2^-127 (|dh| (1 + 2^-50)
+   + 2 eD): 2^-120 |dh| and the inflations cover it.  0 when MPFR must
+   decide (D not ok()). */
+static int e4_diff(const double t[4], double e, double cv, int *have, double *diff, double *upper)
+{
+	double s, r, a, b, c, d, q, dh, dl, eD;
+	two_sum(t[0], -cv, &s, &r);
+	two_sum(s, t[1], &a, &b);
+	two_sum(a, t[2], &c, &d);
+	q = ((b + r) + d) + t[3];
+	two_sum(c, q, &dh, &dl);
+	eD = ((e + 0x1p-51 * (fabs(b) + fabs(r) + fabs(d) + fabs(t[3]))) * INFL + 0x1p-120 * fabs(dh)) * INFL + FLOOR;
+	if (!(fabs(dh) <= DBL_MAX) || !(eD <= DBL_MAX) || (dh != 0.0 && fabs(dh) < TINY))
+		return 0;
+	*have = dziv53(dh, dl, eD, diff);
+	if (!*have)
+		*upper = (fabs(dh) * (1.0 + 0x1p-50) + 2.0 * eD * INFL) * (1.0 + 0x1p-50);
+	return 1;
+}
+#endif
+
+static int xforward(xv E, const double *t4, double cv, int prec, int parts, double rounded, sample_metrics *s,
                     double undet[2])
 {
 	double diff = 0.0, upper = 0.0;
@@ -1279,6 +1338,21 @@ static int xforward(xv E, double cv, int prec, int parts, double rounded, sample
 	xv D;
 	if (parts < 0)
 		return 0;
+#ifndef REFFAST_PAIR_DOUBLE
+	if (E.e > 0.0) {
+		double t[4];
+		if (!t4) {
+			to_e4(E, t);
+			t4 = t;
+		}
+		if (!e4_diff(t4, E.e, cv, &have_diff, &diff, &upper))
+			return 0;
+		fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
+		return parts;
+	}
+#else
+	(void)t4;
+#endif
 	/* mpfr_sub_d: one rounding at p bits */
 	D = E.e > 0.0 ? xsub_inexact(E, cv, &bad) : xsub(E, xc(cv), &bad);
 	if (bad)
@@ -1310,10 +1384,13 @@ static int forward_all(fentry *e, const xv *r1, const xv *r2, int prec, sample_m
 				e->fwd[i] = (signed char)parts;
 				e->refd[i] = refd;
 				e->rounded[i] = rounded;
+#ifndef REFFAST_PAIR_DOUBLE
+				to_e4(E, e->t4[i]);
+#endif
 			}
 		}
 		s->ref[i] = refd;
-		f = xforward(E, s->out[i], prec, parts, rounded, s, undet);
+		f = xforward(E, e ? e->t4[i] : NULL, s->out[i], prec, parts, rounded, s, undet);
 		if (!f)
 			return 0;
 		if (f == 2)

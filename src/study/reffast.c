@@ -58,12 +58,15 @@
    input (n, loc, precision, normalize_n) plus the formula: family, branch
    and whether it normalizes (naive and hughes_moeller have a _nonorm). */
 #define FCACHE 32
-#define XV_BYTES 48             /* sizeof(xv) at most (pairs of long doubles) */
+/* A value with its bound (xv below) in each of the two instantiations:
+   the context is shared by both, so its entries hold either kind. */
+typedef struct { double h, l, e; } xv_pd;              /* reffast_f.c */
+typedef struct { long double h, l; double e; } xv_pl;  /* reffast.c   */
 typedef struct {
 	int key;                  /* family * 64 + branch * 2 + normalizes, -1: empty */
 	int ok;                   /* the formula's bounds hold (else MPFR decides) */
 	int floor_ok;             /* floor figures determined                      */
-	unsigned char xr[6 * XV_BYTES]; /* r1[3], r2[3] as this file's xv (opaque here) */
+	union { xv_pd d[6]; xv_pl l[6]; } xr; /* r1[3], r2[3] (XR: this file's) */
 	double floor, floor_dir_norm, floor_dir_cos;
 	/* per component, what the forward error takes from the formula alone
 	   (E rounded to double and to the format, see xforward): 0 not yet,
@@ -344,8 +347,13 @@ static inline void dd_mul(ld xh, ld xl, ld yh, ld yl, ld *zh, ld *zl)
 	fast_two_sum_l(ch, cl3, zh, zl);
 }
 
-typedef struct { ld h, l; double e; } xv;
-typedef char xv_fits_the_cache[sizeof(xv) <= XV_BYTES ? 1 : -1];
+#ifdef REFFAST_PAIR_DOUBLE
+typedef xv_pd xv;
+#define XR(e) ((e)->xr.d)
+#else
+typedef xv_pl xv;
+#define XR(e) ((e)->xr.l)
+#endif
 
 static inline xv xc(double d) { xv r = { d, 0.0, 0.0 }; return r; }
 
@@ -1599,34 +1607,37 @@ static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, int key,
 }
 
 /* The cache entry of kernel k's formula on branch br for this input (the
-   formula evaluated on a miss), its value in r1, r2; NULL when the cache
-   is full (then the caller evaluates it alone). */
-static fentry *formula(reffast_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
-                       const double loc[3], int normalize_n, xv *r1, xv *r2, int *bad)
+   formula evaluated into it on a miss), its value in *r1, *r2 (pointers
+   into the entry: no copy); when the cache is full, NULL and the formula
+   evaluated into scratch (3 + 3 values) instead. */
+static fentry *formula(reffast_ctx *c, const study_kernel *k, int br, const double n[3], const double loc[3],
+                       xv *scratch, const xv **r1, const xv **r2, int *bad)
 {
-	int i;
+	const int key = formula_key(k, br);
 	fentry *e;
-	(void)prec; (void)normalize_n; /* the input's key: same_input() */
-	{
-		const int key = formula_key(k, br);
-		for (i = 0; i < c->nf; i++)
-			if (c->fc[i].key == key) {
-				memcpy(r1, c->fc[i].xr, 3 * sizeof *r1);
-				memcpy(r2, c->fc[i].xr + 3 * sizeof *r1, 3 * sizeof *r2);
-				*bad = !c->fc[i].ok;
-				return &c->fc[i];
-			}
-		xreference(k, br, loc, n, r1, r2, bad);
-		if (c->nf == FCACHE)
-			return NULL;
-		e = &c->fc[c->nf++];
-		e->key = key;
+	int i;
+	for (i = 0; i < c->nf; i++)
+		if (c->fc[i].key == key) {
+			e = &c->fc[i];
+			*r1 = XR(e);
+			*r2 = XR(e) + 3;
+			*bad = !e->ok;
+			return e;
+		}
+	if (c->nf == FCACHE) {
+		xreference(k, br, loc, n, scratch, scratch + 3, bad);
+		*r1 = scratch;
+		*r2 = scratch + 3;
+		return NULL;
 	}
+	e = &c->fc[c->nf++];
+	e->key = key;
+	xreference(k, br, loc, n, XR(e), XR(e) + 3, bad);
 	e->ok = !*bad;
 	e->floor_ok = -1;
 	memset(e->fwd, 0, sizeof e->fwd);
-	memcpy(e->xr, r1, 3 * sizeof *r1);
-	memcpy(e->xr + 3 * sizeof *r1, r2, 3 * sizeof *r2);
+	*r1 = XR(e);
+	*r2 = XR(e) + 3;
 	return e;
 }
 
@@ -1667,7 +1678,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
               const double loc[3], int normalize_n, sample_metrics *s)
 {
 	double n[3];
-	xv inv = { 1.0, 0.0, 0.0 }, r1[3], r2[3];
+	xv inv = { 1.0, 0.0, 0.0 }, scratch[6];
+	const xv *r1, *r2;
 	int i, bad = 0, rc = REFFAST_DONE;
 	double undet[2] = { 0.0, 0.0 };
 	fentry *e;
@@ -1699,7 +1711,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 			s->wrong_hand = !(s->det * k->m->handedness > 0.0);
 		return mm->rc;
 	}
-	e = formula(c, k, prec, s->branch, n, loc, normalize_n, r1, r2, &bad);
+	e = formula(c, k, s->branch, n, loc, scratch, &r1, &r2, &bad);
 	if (bad)
 		return 0;
 	if (mm) { /* the same bits, another formula: the same shape figures */

@@ -823,8 +823,17 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	two_sum(u, e3, &u, &f[4]);
 	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
 	two_sum(s3, u, &h, &l);
-	if (h == 0.0)
-		return 0; /* (nearly) zero: exact zeros and their signs are the general path's */
+	if (h == 0.0) {
+		/* s3 = -u exactly: X = the sum of the f's.  X = 0 exactly when they
+		   are all zero, in MPFR too (its sums of the exact products are
+		   exact): -0 when every term is -0 (z's term counts only when
+		   z != 0), else +0; anything else near zero is the general path's */
+		if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0 || f[3] != 0.0 || f[4] != 0.0)
+			return 0;
+		*out = z == 0.0 && signbit(p[0]) && signbit(p[1]) && signbit(p[2]) && p[0] == 0.0 && p[1] == 0.0 &&
+		       p[2] == 0.0 ? -0.0 : 0.0;
+		return 1;
+	}
 	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 	{
 		/* (h, l + F) within u|l + F| of X; normalized by TwoSum (under heavy

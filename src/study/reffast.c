@@ -704,7 +704,11 @@ HOT xv sum_terms(const reffast_ctx *c, double *t, int k, double bound, int allne
 	}
 	if (sabs == 0.0 && r.h == 0.0)
 		return xc(0.0); /* an exact zero sum of nonzero terms: +0 in RN, IEEE and MPFR */
-	if (bound == 0.0) { *bad = 1; return r; } /* a product underflowed in double */
+	if (bound == 0.0) { /* a product underflowed in double */
+		*bad = 1;
+		r.e = 0.0;
+		return r;
+	}
 	{
 		const int E = dexp(bound) + 1; /* bound in [2^(E-1), 2^E) */
 		int minlsb = 100000;
@@ -756,10 +760,10 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
 	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
 }
 
-/* RN(a.b - z) in double for vectors of floats (the float precision's
-   outputs, inputs and directions; z = 0, 1 or a float): 1 and *out when
-   decided, 0 when the general path must (exact zeros, cancellation to
-   below Ziv's reach).  The products of floats are exact in double (48
+/* The lean dot: a.b - z as a value with its bound (an xv, 1), or 0 when
+   the general path must take it (an underflow, X near zero but not
+   exactly zero).  For vectors of floats (the float precision's outputs,
+   inputs and directions; z = 0, 1 or a float):  The products of floats are exact in double (48
    bits, no underflow above 2^-298), and so in MPFR.  Three TwoSums in
    MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
    lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of their
@@ -767,19 +771,18 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
    at p bits, S = sum of |terms|; or mpfr_sum, 2^-p |X|); Ziv's test on
    s3 + lo with both bounds decides (an exact X = s3 passes it too). */
 #ifdef REFFAST_PAIR_DOUBLE
-HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double z, xv *v)
 {
 	const double p0 = a[0] * b[0], p1 = a[1] * b[1], p2 = a[2] * b[2];
 	double s1, e1, s2, e2, s3, e3, S, E;
-	xv v;
 	two_sum(p0, p1, &s1, &e1);
 	two_sum(s1, p2, &s2, &e2);
 	two_sum(s2, -z, &s3, &e3);
 	if (s3 == 0.0 && e1 == 0.0 && e2 == 0.0 && e3 == 0.0) {
 		/* X = 0 exactly, and in MPFR (its sums are exact): -0 when every
 		   term is -0 (z's term counts only when z != 0), else +0 */
-		*out = z == 0.0 && signbit(p0) && signbit(p1) && signbit(p2) && p0 == 0.0 && p1 == 0.0 && p2 == 0.0
-		       ? -0.0 : 0.0;
+		*v = xc(z == 0.0 && signbit(p0) && signbit(p1) && signbit(p2) && p0 == 0.0 && p1 == 0.0 && p2 == 0.0
+		        ? -0.0 : 0.0);
 		return 1;
 	}
 	if (s3 == 0.0 || !isfinite(s3))
@@ -788,9 +791,9 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	   mispredicted): an exact X = s3 passes Ziv's test as well */
 	S = (fabs(p0) + fabs(p1) + fabs(p2) + fabs(z)) * INFL;
 	E = 2.0 * 0x1p-53 * (fabs(e1) + fabs(e2) + fabs(e3)) * INFL;
-	two_sum(s3, (e1 + e2) + e3, &v.h, &v.l);
-	v.e = (E + 3.0 * c->up * S + c->up * 2.0 * fabs(v.h)) * INFL + FLOOR;
-	return ziv_d(v, out);
+	two_sum(s3, (e1 + e2) + e3, &v->h, &v->l);
+	v->e = (E + 3.0 * c->up * S + c->up * 2.0 * fabs(v->h)) * INFL + FLOOR;
+	return 1;
 }
 #else
 /* The same for vectors of doubles (the double precision's): products by
@@ -801,11 +804,10 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
    added plainly: error <= 4u sum|f| <= 4u * u * 6u S, about 2^-150 S,
    far below a defect's ulp (defects of double outputs sit near 2^-53 S).
    MPFR's error as in the float case. */
-HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double z, xv *v)
 {
 	double p[3], t[3], s1, e1, s2, e2, s3, e3, u, f[5], F, h, l, S;
 	int i;
-	xv v;
 	for (i = 0; i < 3; i++) {
 		two_prod(a[i], b[i], &p[i], &t[i]);
 		if (p[i] == 0.0 ? (a[i] != 0.0 && b[i] != 0.0) : fabs(p[i]) < 0x1p-960)
@@ -823,50 +825,56 @@ HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, doubl
 	two_sum(u, e3, &u, &f[4]);
 	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
 	two_sum(s3, u, &h, &l);
-	if (h == 0.0) {
-		/* s3 = -u exactly: X = the sum of the f's.  X = 0 exactly when they
-		   are all zero, in MPFR too (its sums of the exact products are
-		   exact): -0 when every term is -0 (z's term counts only when
-		   z != 0), else +0; anything else near zero is the general path's */
-		if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0 || f[3] != 0.0 || f[4] != 0.0)
-			return 0;
-		*out = z == 0.0 && signbit(p[0]) && signbit(p[1]) && signbit(p[2]) && p[0] == 0.0 && p[1] == 0.0 &&
-		       p[2] == 0.0 ? -0.0 : 0.0;
-		return 1;
+	if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0 && f[3] == 0.0 && f[4] == 0.0) {
+		/* X = h + l exactly.  At h = 0, X = 0, in MPFR too (its sums of the
+		   exact products are exact): -0 when every term is -0 (z's term
+		   counts only when z != 0), else +0.  Otherwise X is decided as an
+		   exact value when MPFR's sum is exact too, all its partial sums
+		   fitting p bits (as in sum_terms): a defect of doubles often has
+		   54 bits, and then lies exactly on a midpoint. */
+		if (h == 0.0) {
+			*v = xc(z == 0.0 && signbit(p[0]) && signbit(p[1]) && signbit(p[2]) && p[0] == 0.0 &&
+			        p[1] == 0.0 && p[2] == 0.0 ? -0.0 : 0.0);
+			return 1;
+		}
+		{
+			const double terms[7] = { p[0], t[0], p[1], t[1], p[2], t[2], z };
+			int minlsb = 100000;
+			for (i = 0; i < 7; i++)
+				if (terms[i] != 0.0 && dlsb(terms[i]) < minlsb)
+					minlsb = dlsb(terms[i]);
+			S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
+			if (dexp(S) + 2 - minlsb <= c->prec) {
+				two_sum_l(h, l, &v->h, &v->l); /* 54 bits or so: exact in a long double */
+				v->e = 0.0;
+				return 1;
+			}
+		}
 	}
+	if (h == 0.0)
+		return 0; /* near zero, not exactly: the general path's */
 	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 	{
 		/* (h, l + F) within u|l + F| of X; normalized by TwoSum (under heavy
 		   cancellation F reaches an ulp of h) */
 		double vh, vl;
 		two_sum(h, l + F, &vh, &vl);
-		v.h = vh;
-		v.l = vl;
+		v->h = vh;
+		v->l = vl;
 	}
-	v.e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
-	        0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
-	if (ziv_d(v, out))
-		return 1;
-	/* A defect of doubles often has 54 bits, and then lies exactly on a
-	   midpoint: decided only as an exact value.  X = h + l exactly when
-	   every f is zero; MPFR's sum is exact when all its partial sums fit
-	   p bits (as in sum_terms); then RN(X) with ties to even. */
-	if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0 || f[3] != 0.0 || f[4] != 0.0)
-		return 0;
-	{
-		const double terms[7] = { p[0], t[0], p[1], t[1], p[2], t[2], z };
-		int minlsb = 100000;
-		for (i = 0; i < 7; i++)
-			if (terms[i] != 0.0 && dlsb(terms[i]) < minlsb)
-				minlsb = dlsb(terms[i]);
-		if (dexp(S) + 2 - minlsb > c->prec)
-			return 0;
-	}
-	two_sum_l(h, l, &v.h, &v.l); /* X = h + l: 54 bits or so, exact in a long double */
-	v.e = 0.0;
-	return ziv_d(v, out);
+	v->e = ((4.0 * 0x1p-53 * (fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]) + fabs(f[4])) +
+	         0x1p-53 * fabs(l + F)) * INFL + 3.0 * c->up * S + c->up * 2.0 * fabs(h)) * INFL + FLOOR;
+	return 1;
 }
 #endif
+
+/* RN(a.b - z) in double from the lean dot: 1 and *out when decided, 0
+   when the general path must decide. */
+HOT int fdot_round(const reffast_ctx *c, const double *a, const double *b, double z, double *out)
+{
+	xv v;
+	return fdot_pair(c, a, b, z, &v) && ziv_d(v, out);
+}
 
 /* Four fdot_round of floats at once, in AVX vectors (GCC's vector
    extension; contraction stays off for them too): lane j is a_j . b_j -
@@ -1452,8 +1460,13 @@ static int defect_dot(const reffast_ctx *c, const double *a, const double *b, do
 {
 	int bad = 0;
 	xv x;
-	if (!normalize_n && fdot_round(c, a, b, z, out))
-		return 1;
+	if (fdot_pair(c, a, b, z, &x)) {
+		if (normalize_n)
+			x = xmul(x, inv, &bad);
+		if (!bad && ziv_d(x, out))
+			return 1;
+		bad = 0;
+	}
 	x = xdot_exact(c, a, b, z, &bad);
 	if (normalize_n)
 		x = xmul(x, inv, &bad);
@@ -1488,9 +1501,16 @@ static int shape(const reffast_ctx *c, int has_basis, const double b[6], const d
 			if (!defect_dot(c, w, n, z, 0, inv, &v[6]))
 				return 0;
 		} else {
-			const xv x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
-			if (bad || !ziv_d(x, &v[6]))
-				return 0;
+			xv x;
+			/* (w.n) / |n| - z: the lean dot first, the general one if it
+			   cannot decide */
+			if (!fdot_pair(c, w, n, 0.0, &x) || (x = xsub(xmul(x, inv, &bad), xc(z), &bad), bad) ||
+			    !ziv_d(x, &v[6])) {
+				bad = 0;
+				x = xsub(xmul(xdot_exact(c, w, n, 0.0, &bad), inv, &bad), xc(z), &bad);
+				if (bad || !ziv_d(x, &v[6]))
+					return 0;
+			}
 		}
 	}
 	*dir_norm = fabs(v[5]);

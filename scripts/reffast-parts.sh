@@ -56,8 +56,8 @@ variant() {
 }
 SINK='__asm__ volatile("" ::: "memory");'
 variant plain '#include "reffast.h"' ''
-variant formula '		xreference(k, br, loc, n, r1, r2, bad);' \
-	"		{ xv q1[3], q2[3]; int qb = 0; xreference(k, br, loc, n, q1, q2, &qb); __asm__ volatile(\"\" :: \"m\"(q1), \"m\"(q2), \"r\"(qb)); }"
+variant formula '	xreference(k, br, loc, n, XR(e), XR(e) + 3, bad);' \
+	"	{ xv q[6]; int qb = 0; xreference(k, br, loc, n, q, q + 3, &qb); __asm__ volatile(\"\" :: \"m\"(q), \"r\"(qb)); }"
 variant forward '		const int f = forward_all(e, r1, r2, prec, s, undet);' \
 	"		{ sample_metrics s2 = *s; double u2[2] = { 0, 0 }; int f2 = forward_all(e, r1, r2, prec, &s2, u2); __asm__ volatile(\"\" :: \"m\"(s2), \"m\"(u2), \"r\"(f2)); }"
 variant floor '		const int ok = floor_fast(c, e, k, prec, s->branch, n, loc, normalize_n, inv, r1, r2, f);' \

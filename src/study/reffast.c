@@ -760,16 +760,16 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
 	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
 }
 
-/* The lean dot: a.b - z as a value with its bound (an xv, 1), or 0 when
-   the general path must take it (an underflow, X near zero but not
+/* The lean dot: a.b - z as a value with its bound (an xv: 1), or 0 when
+   the general path must take it (an underflow; X near zero but not
    exactly zero).  For vectors of floats (the float precision's outputs,
-   inputs and directions; z = 0, 1 or a float):  The products of floats are exact in double (48
-   bits, no underflow above 2^-298), and so in MPFR.  Three TwoSums in
-   MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
+   inputs and directions; z = 0, 1 or a float) the products are exact in
+   double (48 bits, no underflow above 2^-298), and so in MPFR.  Three
+   TwoSums in MPFR's order leave X = s3 + e1 + e2 + e3 exactly:
    lo = RN(RN(e1 + e2) + e3) is within 2u (|e1| + |e2| + |e3|) of their
    sum, and MPFR's value within 3 2^-p S + 2^-p |X| of X (sequential sums
-   at p bits, S = sum of |terms|; or mpfr_sum, 2^-p |X|); Ziv's test on
-   s3 + lo with both bounds decides (an exact X = s3 passes it too). */
+   at p bits, S = sum of |terms|; or mpfr_sum, 2^-p |X|); the bound of
+   s3 + lo covers both (an exact X = s3 passes Ziv's test with it too). */
 #ifdef REFFAST_PAIR_DOUBLE
 HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double z, xv *v)
 {

@@ -282,7 +282,7 @@ typedef double ld;
 #define RHO_SLOP 0x1p-99         /* error of a residual 1 - b y (recip)      */
 #define RHO_SLOP2 0x1p-98        /* error of a residual 1 - s y^2 (rsqrt)    */
 #define OFF_SLOP 0x1p-52         /* rounding of (h - c) + l in ziv           */
-#define PAIR_U 0x1p-52           /* twice the unit roundoff of a pair's part */
+#define PAIR_U 0x1p-52           /* twice u, for xsub_inexact                */
 #define EVAL_NAME reffast_eval_pairs_of_doubles
 #else
 typedef long double ld;
@@ -292,7 +292,6 @@ typedef long double ld;
 #define RHO_SLOP 0x1p-121
 #define RHO_SLOP2 0x1p-120
 #define OFF_SLOP 0x1p-62
-#define PAIR_U 0x1p-63
 #define EVAL_NAME reffast_eval_pairs_of_long_doubles
 #endif
 
@@ -469,6 +468,7 @@ HOT xv xsub(xv a, xv b, int *bad) { return xadd(a, xneg(b), bad); }
    e + PAIR_U |q| of X - d, and MPFR's one rounding at p bits adds
    2^-p |X_mpfr - d| <= 2^-p (|r| (1 + 2^-50) + 2e): DDREL |r| and the
    inflation of e cover it, as in xadd. */
+#ifdef REFFAST_PAIR_DOUBLE
 HOT xv xsub_inexact(xv a, double d, int *bad)
 {
 	xv r;
@@ -480,6 +480,7 @@ HOT xv xsub_inexact(xv a, double d, int *bad)
 	if (!ok(r)) *bad = 1;
 	return r;
 }
+#endif
 
 /* a b (mpfr_mul, mpfr_sqr). */
 HOT xv xmul(xv a, xv b, int *bad)
@@ -760,6 +761,15 @@ HOT xv xdot_exact(const reffast_ctx *c, const double *a, const double *b, double
 	return sum_terms(c, t, k, fabs(a[0] * b[0]) + fabs(a[1] * b[1]) + fabs(a[2] * b[2]) + fabs(z), neg0, bad);
 }
 
+/* The exact zero sum of a dot's terms, as MPFR's exact sum gives it: -0
+   when every term is -0 (the products p0, p1, p2; z's term counts only
+   when z != 0), else +0. */
+static inline double zero_sum(double p0, double p1, double p2, double z)
+{
+	return z == 0.0 && p0 == 0.0 && p1 == 0.0 && p2 == 0.0 && signbit(p0) && signbit(p1) && signbit(p2) ? -0.0
+	                                                                                                   : 0.0;
+}
+
 /* The lean dot: a.b - z as a value with its bound (an xv: 1), or 0 when
    the general path must take it (an underflow; X near zero but not
    exactly zero).  For vectors of floats (the float precision's outputs,
@@ -779,10 +789,7 @@ HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double
 	two_sum(s1, p2, &s2, &e2);
 	two_sum(s2, -z, &s3, &e3);
 	if (s3 == 0.0 && e1 == 0.0 && e2 == 0.0 && e3 == 0.0) {
-		/* X = 0 exactly, and in MPFR (its sums are exact): -0 when every
-		   term is -0 (z's term counts only when z != 0), else +0 */
-		*v = xc(z == 0.0 && signbit(p0) && signbit(p1) && signbit(p2) && p0 == 0.0 && p1 == 0.0 && p2 == 0.0
-		        ? -0.0 : 0.0);
+		*v = xc(zero_sum(p0, p1, p2, z)); /* X = 0 exactly, and in MPFR (its sums are exact) */
 		return 1;
 	}
 	if (s3 == 0.0 || !isfinite(s3))
@@ -825,16 +832,15 @@ HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double
 	two_sum(u, e3, &u, &f[4]);
 	F = (((f[0] + f[1]) + f[2]) + f[3]) + f[4];
 	two_sum(s3, u, &h, &l);
+	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 	if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0 && f[3] == 0.0 && f[4] == 0.0) {
 		/* X = h + l exactly.  At h = 0, X = 0, in MPFR too (its sums of the
-		   exact products are exact): -0 when every term is -0 (z's term
-		   counts only when z != 0), else +0.  Otherwise X is decided as an
-		   exact value when MPFR's sum is exact too, all its partial sums
-		   fitting p bits (as in sum_terms): a defect of doubles often has
-		   54 bits, and then lies exactly on a midpoint. */
+		   exact products are exact).  Otherwise X is decided as an exact
+		   value when MPFR's sum is exact too, all its partial sums fitting
+		   p bits (as in sum_terms): a defect of doubles often has 54 bits,
+		   and then lies exactly on a midpoint. */
 		if (h == 0.0) {
-			*v = xc(z == 0.0 && signbit(p[0]) && signbit(p[1]) && signbit(p[2]) && p[0] == 0.0 &&
-			        p[1] == 0.0 && p[2] == 0.0 ? -0.0 : 0.0);
+			*v = xc(zero_sum(p[0], p[1], p[2], z));
 			return 1;
 		}
 		{
@@ -843,7 +849,6 @@ HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double
 			for (i = 0; i < 7; i++)
 				if (terms[i] != 0.0 && dlsb(terms[i]) < minlsb)
 					minlsb = dlsb(terms[i]);
-			S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 			if (dexp(S) + 2 - minlsb <= c->prec) {
 				two_sum_l(h, l, &v->h, &v->l); /* 54 bits or so: exact in a long double */
 				v->e = 0.0;
@@ -853,7 +858,6 @@ HOT int fdot_pair(const reffast_ctx *c, const double *a, const double *b, double
 	}
 	if (h == 0.0)
 		return 0; /* near zero, not exactly: the general path's */
-	S = (fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(z)) * INFL;
 	{
 		/* (h, l + F) within u|l + F| of X; normalized by TwoSum (under heavy
 		   cancellation F reaches an ulp of h) */
@@ -976,11 +980,20 @@ static inline v4i fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4
 /* The lanes of shape() below, decided in two vectors: bits 0-4 the five
    defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
    lanes against n/|n| (normalize_n) are left to the scalar path. */
+/* |v| - 1 = e / (sqrt(1 + e) + 1) from e = v.v - 1 in the lanes of
+   `lanes` (norm_m1_fast's operations lane by lane: IEEE sqrt and division
+   round the same), e itself in the others. */
+static inline v4d vnorm_m1(v4d e, v4i lanes)
+{
+	const v4d one = { 1.0, 1.0, 1.0, 1.0 };
+	return (v4d)(((v4i)(e / (__builtin_ia32_sqrtpd256(one + e) + one)) & lanes) | ((v4i)e & ~lanes));
+}
+
 static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], const double n[3],
                      const double w[3], double z, int normalize_n, double v[8])
 {
 	int mask;
-	const v4d zb = { 0.0, 1.0, z, 0.0 }, one = { 1.0, 1.0, 1.0, 1.0 };
+	const v4d zb = { 0.0, 1.0, z, 0.0 };
 	const v4i normb = { 0, -1, 0, 0 }, norma = { -1, -1, 0, 0 };
 	v4d a[3], bb[3], ra, rb;
 	v4i fa, fb;
@@ -990,10 +1003,7 @@ static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], con
 		a[i] = ai; bb[i] = bi;
 	}
 	fb = fdot4(c, a, bb, zb, &rb);
-	/* |v| - 1 = e / (sqrt(1 + e) + 1), lane by lane the scalar operations
-	   (IEEE sqrt and division: the same roundings) */
-	rb = (v4d)(((v4i)(rb / (__builtin_ia32_sqrtpd256(one + rb) + one)) & normb) | ((v4i)rb & ~normb));
-	mask = vlanes(fb, rb, v + 4) << 4;
+	mask = vlanes(fb, vnorm_m1(rb, normb), v + 4) << 4;
 	if (has_basis) {
 		const v4d za = { 1.0, 1.0, 0.0, 0.0 };
 		for (i = 0; i < 3; i++) {
@@ -1001,8 +1011,7 @@ static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], con
 			a[i] = ai; bb[i] = bi;
 		}
 		fa = fdot4(c, a, bb, za, &ra);
-		ra = (v4d)(((v4i)(ra / (__builtin_ia32_sqrtpd256(one + ra) + one)) & norma) | ((v4i)ra & ~norma));
-		mask |= vlanes(fa, ra, v);
+		mask |= vlanes(fa, vnorm_m1(ra, norma), v);
 	} else {
 		mask &= ~(1 << 4);
 	}
@@ -1377,11 +1386,11 @@ static int xforward(xv E, const double *t4, double cv, int prec, int parts, doub
 		fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
 		return parts;
 	}
+	D = xsub(E, xc(cv), &bad); /* mpfr_sub_d: one rounding at p bits */
 #else
 	(void)t4;
-#endif
-	/* mpfr_sub_d: one rounding at p bits */
 	D = E.e > 0.0 ? xsub_inexact(E, cv, &bad) : xsub(E, xc(cv), &bad);
+#endif
 	if (bad)
 		return 0;
 	have_diff = ziv_d(D, &diff);

@@ -73,7 +73,6 @@ typedef struct {
 } run_t;
 
 static int rank, nranks;
-static char cmdline_buf[4096];
 static char prov_note[256];
 
 static double cpu_seconds(void)
@@ -691,17 +690,8 @@ static int run(run_t *r, int argc, char **argv)
 int main(int argc, char **argv)
 {
 	static run_t r;
-	int provided, rc, k;
-	size_t len = 0;
-	for (k = 0; k < argc && len + 2 < sizeof cmdline_buf; k++) {
-		int w = snprintf(cmdline_buf + len, sizeof cmdline_buf - len, "%s%s", k ? " " : "", argv[k]);
-		if (w < 0)
-			break;
-		len += (size_t)w;
-		if (len >= sizeof cmdline_buf)
-			len = sizeof cmdline_buf - 1;
-	}
-	study_cmdline = cmdline_buf;
+	int provided, rc;
+	study_set_cmdline(argc, argv);
 	MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
 	MPI_Comm_rank(MPI_COMM_WORLD, &rank);
 	MPI_Comm_size(MPI_COMM_WORLD, &nranks);

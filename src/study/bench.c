@@ -494,7 +494,7 @@ done:
 }
 
 /* The first three fields of /proc/loadavg, or "unknown". */
-static void loadavg(char *buf, size_t n)
+void bench_loadavg(char *buf, size_t n)
 {
 	FILE *f = fopen("/proc/loadavg", "r");
 	double a = 0, b = 0, c = 0;
@@ -720,7 +720,7 @@ int cmd_bench(int argc, char **argv)
 		return bench_reference(out, o.quick, o.seed);
 	l2 = bench_sizes(&o, &n_l2, &n_stream);
 
-	loadavg(load0, sizeof load0);
+	bench_loadavg(load0, sizeof load0);
 	bench_busy = atof(load0) >= BENCH_BUSY_LOAD;
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
@@ -731,7 +731,7 @@ int cmd_bench(int argc, char **argv)
 				return 1;
 			}
 
-	loadavg(load1, sizeof load1);
+	bench_loadavg(load1, sizeof load1);
 	if (study_out_open(&f, out, "bench.csv") != 0) {
 		free(rs.v);
 		return 1;

@@ -14,6 +14,7 @@
 
 /* ---- clocks ------------------------------------------------------- */
 double   bench_now(void);        /* CLOCK_MONOTONIC, seconds            */
+void     bench_loadavg(char *buf, size_t n); /* /proc/loadavg's first three fields, or "unknown" */
 uint64_t bench_tsc(void);        /* rdtsc, or 0 off x86                 */
 /* 1 when /proc/cpuinfo lists both constant_tsc and nonstop_tsc: TSC ticks
    then count wall time at the nominal frequency (not the turbo clock). */

@@ -87,19 +87,6 @@ static unsigned long long br_pass(const br_input *in, int m, const study_kernel 
 	return ev;
 }
 
-/* The first three fields of /proc/loadavg, or "unknown". */
-static void br_load(char *buf, size_t n)
-{
-	FILE *f = fopen("/proc/loadavg", "r");
-	double a = 0, b = 0, c = 0;
-	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
-		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
-	else
-		snprintf(buf, n, "unknown");
-	if (f)
-		fclose(f);
-}
-
 int bench_reference(const char *out, int quick, unsigned long long seed)
 {
 	char load0[64], load1[64];
@@ -125,7 +112,7 @@ int bench_reference(const char *out, int quick, unsigned long long seed)
 		study_error("bench --reference: %s", why);
 		return 1;
 	}
-	br_load(load0, sizeof load0);
+	bench_loadavg(load0, sizeof load0);
 	for (p = 0; p < 2; p++) {
 		const int m = br_inputs(p, seed, per, in);
 		if (m < 0)
@@ -151,7 +138,7 @@ int bench_reference(const char *out, int quick, unsigned long long seed)
 			}
 		}
 	}
-	br_load(load1, sizeof load1);
+	bench_loadavg(load1, sizeof load1);
 	ref_free(rc);
 	reffast_free(fc);
 	if (study_out_open(&f, out, "bench-reference.csv") != 0)

@@ -10,6 +10,22 @@
 
 const char *study_cmdline = "";
 
+void study_set_cmdline(int argc, char **argv)
+{
+	static char buf[4096];
+	size_t len = 0;
+	int k;
+	for (k = 0; k < argc && len + 2 < sizeof buf; k++) {
+		const int w = snprintf(buf + len, sizeof buf - len, "%s%s", k ? " " : "", argv[k]);
+		if (w < 0)
+			break;
+		len += (size_t)w;
+		if (len >= sizeof buf)
+			len = sizeof buf - 1;
+	}
+	study_cmdline = buf;
+}
+
 void study_error(const char *fmt, ...)
 {
 	va_list ap;

@@ -72,24 +72,12 @@ static int dispatch(int argc, char **argv)
 	return ONB_EXIT_USAGE;
 }
 
-static char cmdline_buf[4096];
-
 int main(int argc, char **argv)
 {
-	size_t len = 0;
-	int k;
 	/* stdout line by line, even into a file or a pipe: a stderr message
 	   (progress, summary, warning) then never lands inside a table row,
 	   and study_error flushes stdout before it writes. */
 	setvbuf(stdout, NULL, _IOLBF, 0);
-	for (k = 0; k < argc && len + 2 < sizeof cmdline_buf; k++) {
-		int w = snprintf(cmdline_buf + len, sizeof cmdline_buf - len, "%s%s", k ? " " : "", argv[k]);
-		if (w < 0)
-			break;
-		len += (size_t)w;
-		if (len >= sizeof cmdline_buf)
-			len = sizeof cmdline_buf - 1;
-	}
-	study_cmdline = cmdline_buf;
+	study_set_cmdline(argc, argv);
 	return dispatch(argc, argv);
 }

@@ -84,8 +84,10 @@ int  cli_shard(const char *opt, const char *arg, int *k, int *n);  /* K/N, 0-bas
 void study_missing_shards(const unsigned char *seen, int n, char *buf, size_t len);
 int  cli_format(const char *opt, const char *arg, int with_json);  /* 0 table, 1 csv, 2 json; -1 */
 
-/* The command line as one string, for provenance lines. */
+/* The command line as one string, for provenance lines; set once by
+   study_set_cmdline (argv joined by spaces, cut at 4095 bytes). */
 extern const char *study_cmdline;
+void study_set_cmdline(int argc, char **argv);
 
 /* output.c: atomic result files and provenance.
    A result file is written to a temporary name beside its final name and

@@ -1528,7 +1528,7 @@ static int shape(const reffast_ctx *c, int has_basis, const double b[6], const d
 }
 
 /* The accuracy floor (issue 16; reference.c floor_eval and
-   /work/notes/floor-metric.md): the exact formula r1, r2 rounded once to
+   the README's "The accuracy floor"): the exact formula r1, r2 rounded once to
    the format (Ziv's test decides RN of the exact value, as floor_round
    does in MPFR), the defects and direction error of that basis by the
    same helpers as the kernel's, into f (floor, floor_dir_norm,

@@ -977,9 +977,6 @@ static inline v4i fdot4(const reffast_ctx *c, const v4d a[3], const v4d b[3], v4
 }
 #endif
 
-/* The lanes of shape() below, decided in two vectors: bits 0-4 the five
-   defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
-   lanes against n/|n| (normalize_n) are left to the scalar path. */
 /* |v| - 1 = e / (sqrt(1 + e) + 1) from e = v.v - 1 in the lanes of
    `lanes` (norm_m1_fast's operations lane by lane: IEEE sqrt and division
    round the same), e itself in the others. */
@@ -989,6 +986,9 @@ static inline v4d vnorm_m1(v4d e, v4i lanes)
 	return (v4d)(((v4i)(e / (__builtin_ia32_sqrtpd256(one + e) + one)) & lanes) | ((v4i)e & ~lanes));
 }
 
+/* The lanes of shape() below, decided in two vectors: bits 0-4 the five
+   defects of b (0, 1 and 5 are |v| - 1 already), 5 |w| - 1, 6 w.n - z;
+   lanes against n/|n| (normalize_n) are left to the scalar path. */
 static int shape_vec(const reffast_ctx *c, int has_basis, const double b[6], const double n[3],
                      const double w[3], double z, int normalize_n, double v[8])
 {
@@ -1028,17 +1028,15 @@ HOT int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
 	double t[8], e;
 	int i, bad = 0;
 	xv s;
-	if (fdot_round(c, v, v, 1.0, &e)) {
-		*out = e / (sqrt(1.0 + e) + 1.0);
-		return 1;
-	}
-	for (i = 0; i < 3; i++)
-		if (!prod_terms(v[i], v[i], t + 2 * i))
+	if (!fdot_round(c, v, v, 1.0, &e)) {
+		for (i = 0; i < 3; i++)
+			if (!prod_terms(v[i], v[i], t + 2 * i))
+				return 0;
+		t[6] = -1.0;
+		s = sum_terms(c, t, 7, v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + 1.0, 0, &bad);
+		if (bad || !ziv_d(s, &e))
 			return 0;
-	t[6] = -1.0;
-	s = sum_terms(c, t, 7, v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + 1.0, 0, &bad);
-	if (bad || !ziv_d(s, &e))
-		return 0;
+	}
 	*out = e / (sqrt(1.0 + e) + 1.0);
 	return 1;
 }
@@ -1306,6 +1304,13 @@ static int fwd_parts(xv E, int prec, double *refd, double *rounded)
 	return rc;
 }
 
+/* An upper bound of |X| for a difference X within e of h + l (|l| at
+   most an ulp of h): the bound an undetermined diff leaves in undet[]. */
+static inline double diff_upper(double h, double e)
+{
+	return (fabs(h) * (1.0 + 0x1p-50) + 2.0 * e * INFL) * (1.0 + 0x1p-50);
+}
+
 /* The forward error of component value cv against E, from E's parts
    (fwd_parts): 1, 2 (ref[] left to MPFR) or 0 (MPFR decides). */
 #ifndef REFFAST_PAIR_DOUBLE
@@ -1361,19 +1366,17 @@ static int e4_diff(const double t[4], double e, double cv, int *have, double *di
 		return 0;
 	*have = dziv53(dh, dl, eD, diff);
 	if (!*have)
-		*upper = (fabs(dh) * (1.0 + 0x1p-50) + 2.0 * eD * INFL) * (1.0 + 0x1p-50);
+		*upper = diff_upper(dh, eD);
 	return 1;
 }
 #endif
 
-static int xforward(xv E, const double *t4, double cv, int prec, int parts, double rounded, sample_metrics *s,
-                    double undet[2])
+/* RN(E - cv) into *diff (*have = 1), or else an upper bound of its
+   magnitude into *upper (*have = 0); 0 when MPFR must decide. */
+static int fwd_diff(xv E, const double *t4, double cv, int *have, double *diff, double *upper)
 {
-	double diff = 0.0, upper = 0.0;
-	int bad = 0, have_diff;
+	int bad = 0;
 	xv D;
-	if (parts < 0)
-		return 0;
 #ifndef REFFAST_PAIR_DOUBLE
 	if (E.e > 0.0) {
 		double t[4];
@@ -1381,10 +1384,7 @@ static int xforward(xv E, const double *t4, double cv, int prec, int parts, doub
 			to_e4(E, t);
 			t4 = t;
 		}
-		if (!e4_diff(t4, E.e, cv, &have_diff, &diff, &upper))
-			return 0;
-		fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
-		return parts;
+		return e4_diff(t4, E.e, cv, have, diff, upper);
 	}
 	D = xsub(E, xc(cv), &bad); /* mpfr_sub_d: one rounding at p bits */
 #else
@@ -1393,9 +1393,19 @@ static int xforward(xv E, const double *t4, double cv, int prec, int parts, doub
 #endif
 	if (bad)
 		return 0;
-	have_diff = ziv_d(D, &diff);
-	if (!have_diff)
-		upper = ((double)PFABS(D.h) * (1.0 + 0x1p-50) + 2.0 * D.e * INFL) * (1.0 + 0x1p-50);
+	*have = ziv_d(D, diff);
+	if (!*have)
+		*upper = diff_upper((double)D.h, D.e);
+	return 1;
+}
+
+static int xforward(xv E, const double *t4, double cv, int prec, int parts, double rounded, sample_metrics *s,
+                    double undet[2])
+{
+	double diff = 0.0, upper = 0.0;
+	int have_diff = 0;
+	if (parts < 0 || !fwd_diff(E, t4, cv, &have_diff, &diff, &upper))
+		return 0;
 	fwd_accumulate(prec, cv, have_diff, diff, upper, rounded, s, undet);
 	return parts;
 }
@@ -1644,6 +1654,27 @@ static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, int key,
 	return any;
 }
 
+/* The kernel's handedness verdict from det (ref_defect_summary's rule):
+   the memo's sample may come from a kernel of the other hand. */
+static inline void set_hand(const study_kernel *k, sample_metrics *s)
+{
+	if (k->m)
+		s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+}
+
+/* The shape figures (defects, det, direction errors: functions of the
+   output bits, n and loc alone) of an earlier sample m into s. */
+static void copy_shape(const study_kernel *k, const sample_metrics *m, sample_metrics *s)
+{
+	memcpy(s->d, m->d, sizeof s->d);
+	s->defect = m->defect;
+	s->sumsq = m->sumsq;
+	s->det = m->det;
+	s->dir_norm = m->dir_norm;
+	s->dir_cos = m->dir_cos;
+	set_hand(k, s);
+}
+
 /* The cache entry of kernel k's formula on branch br for this input (the
    formula evaluated into it on a miss), its value in *r1, *r2 (pointers
    into the entry: no copy); when the cache is full, NULL and the formula
@@ -1745,22 +1776,14 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	mm = memo_find(c, hash, key, s);
 	if (mm && mm->key == key) { /* the same bits and formula: the same figures */
 		*s = mm->smp;
-		if (k->m)
-			s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+		set_hand(k, s);
 		return mm->rc;
 	}
 	e = formula(c, k, s->branch, n, loc, scratch, &r1, &r2, &bad);
 	if (bad)
 		return 0;
 	if (mm) { /* the same bits, another formula: the same shape figures */
-		memcpy(s->d, mm->smp.d, sizeof s->d);
-		s->defect = mm->smp.defect;
-		s->sumsq = mm->smp.sumsq;
-		s->det = mm->smp.det;
-		s->dir_norm = mm->smp.dir_norm;
-		s->dir_cos = mm->smp.dir_cos;
-		if (k->m)
-			s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+		copy_shape(k, &mm->smp, s);
 	} else {
 		if (!shape(c, k->m != NULL, s->out, n, s->w, prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2],
 		           normalize_n, inv, s->d, &s->dir_norm, &s->dir_cos))

@@ -49,7 +49,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "onb.h"
-#include "meshio.h"
+#include "mesh/meshio.h"
 
 #define W 160
 #define H 120

@@ -152,7 +152,7 @@ if "$bin" sweep --shard 0/2 --samples 64 --exhaustive-count 64 --grid 4x8 --meth
 #include "sweep.h"
 int main(void) { printf("%lu\n", (unsigned long)offsetof(sweep_cfg, shard_k)); return 0; }
 C
-	if cc -std=c99 -Iinclude -Isrc/study -o "$tmp/off" "$tmp/off.c" 2>/dev/null; then
+	if cc -std=c99 -Iinclude -Isrc -o "$tmp/off" "$tmp/off.c" 2>/dev/null; then
 		off=$("$tmp/off")
 		{ head -c "$off" "$st"; printf '\240\206\001\000'; tail -c +$((off + 5)) "$st"; } > "$tmp/badk.bin"
 		[ "$(wc -c < "$tmp/badk.bin")" -eq "$size" ] && ok || bad "could not build the bad-shard state file"

@@ -32,8 +32,10 @@
 #include <unistd.h>
 #include <fcntl.h>
 #include <sys/resource.h>
-#include "engine.h"
-#include "study.h"
+#include "sweep/engine.h"
+#include "cli/cli.h"
+#include "cli/output.h"
+#include "sweep/sweep.h"
 
 #define CKPT_NAME "sweep-checkpoint.bin"
 #define CKPT_MAGIC "onbckpt1"

@@ -188,7 +188,7 @@ onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 
 # The example renderer links libonb.a and libm, as a user's would, and the
 # scene reader (meshio, whose glTF part links cJSON) for --obj.
-MESHIO_SRC = src/mesh/meshio.c src/mesh/mesh_gltf.c
+MESHIO_SRC = $(wildcard src/mesh/*.c)
 $(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb.a include/onb.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm

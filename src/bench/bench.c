@@ -499,18 +499,6 @@ done:
 }
 
 /* The first three fields of /proc/loadavg, or "unknown". */
-void bench_loadavg(char *buf, size_t n)
-{
-	FILE *f = fopen("/proc/loadavg", "r");
-	double a = 0, b = 0, c = 0;
-	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
-		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
-	else
-		snprintf(buf, n, "unknown");
-	if (f)
-		fclose(f);
-}
-
 static void put_num(FILE *f, double v)
 {
 	if (isnan(v))

@@ -376,3 +376,16 @@ const char *bench_vector_width(const char *symbol)
 			return names[probe_tab[i].width];
 	return "unknown";
 }
+
+/* /proc/loadavg's first three fields, or "unknown" (bench and bench --reference). */
+void bench_loadavg(char *buf, size_t n)
+{
+	FILE *f = fopen("/proc/loadavg", "r");
+	double a = 0, b = 0, c = 0;
+	if (f && fscanf(f, "%lf %lf %lf", &a, &b, &c) == 3)
+		snprintf(buf, n, "%.2f %.2f %.2f", a, b, c);
+	else
+		snprintf(buf, n, "unknown");
+	if (f)
+		fclose(f);
+}

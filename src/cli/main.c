@@ -1,5 +1,9 @@
 /*
- * main.c - onbstudy: subcommand dispatch.
+ * main.c - onbstudy: subcommand dispatch.  main stands above every
+ * command's folder: its includes of sweep/, scene/, bench/ and reproduce/
+ * are the only imports from cli/ upward, and the reason cli/ is drawn
+ * above them.  A new command (certify/, say) is one #include of its
+ * header below and one row of commands[].
  */
 #include <stdlib.h>
 #include <string.h>
@@ -7,6 +11,7 @@
 #include "cli/output.h"
 #include "cli/list.h"
 #include "cli/eval.h"
+/* up: the commands of the other folders */
 #include "sweep/sweep.h"
 #include "sweep/threshold.h"
 #include "scene/scene.h"

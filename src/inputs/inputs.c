@@ -8,7 +8,7 @@
 #include "inputs/inputs.h"
 #include "methods/kernels.h"
 #include "inputs/rng.h"
-#include "cli/cli.h"
+#include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
 
 static const char *const names[NDIST] = {
 	"uniform", "north", "south", "threshold", "exhaustive", "nonunit", "grid"

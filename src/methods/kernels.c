@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "methods/kernels.h"
-#include "cli/cli.h"
+#include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
 
 #define KERNELS_BRANCH_NAME kernels_branch
 #include "methods/branch.inc"
@@ -54,7 +54,7 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 	s->m = m;
 	s->family = kernels_family(m);
 	if (s->family < 0) {
-		study_error("method '%s': no MPFR reference for its family '%s' (src/study/reference.c)", name, m->family);
+		study_error("method '%s': no MPFR reference for its family '%s' (src/reference/reference.c)", name, m->family);
 		return -1;
 	}
 	s->fma = fma;

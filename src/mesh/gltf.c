@@ -1,5 +1,5 @@
 /*
- * mesh_gltf.c - the glTF 2.0 reader of meshio (see meshio.h for what it
+ * gltf.c - the glTF 2.0 reader of meshio (see meshio.h for what it
  * reads).  The JSON is parsed by cJSON; every binary value is read
  * byte by byte as little-endian (so bit-exactly, on any host).
  *
@@ -21,7 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cjson/cJSON.h>
-#include "mesh/meshio_int.h"
+#include "mesh/meshio.h"
+#include "mesh/common.h"
+#include "mesh/gltf.h"
 
 #define GL_BYTE 5120
 #define GL_UBYTE 5121

@@ -498,15 +498,6 @@ done:
 	return rc;
 }
 
-/* The first three fields of /proc/loadavg, or "unknown". */
-static void put_num(FILE *f, double v)
-{
-	if (isnan(v))
-		fputs(",nan", f);
-	else
-		fprintf(f, ",%.6g", v);
-}
-
 #define BENCH_COLUMNS "method,precision,mode,threads,size_class,size,bytes,reps,passes," \
 	"mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best," \
 	"chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum,flag"
@@ -530,15 +521,15 @@ static void write_row(FILE *f, const bench_row *r, int tsc)
 	const double n = (double)r->r.n;
 	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, r->dbl ? "double" : "float", r->mode, r->r.threads,
 	        r->size_class, r->r.n, r->bytes, (size_t)r->r.reps, r->r.passes);
-	put_num(f, n / r->r.median_s * 1e-6);
-	put_num(f, n / r->r.min_s * 1e-6);
-	put_num(f, r->r.median_s / n * 1e9);
-	put_num(f, r->r.min_s / n * 1e9);
-	put_num(f, tsc ? r->r.median_ticks / n : NAN);
-	put_num(f, tsc ? r->r.min_ticks / n : NAN);
-	put_num(f, r->chain_ns);
-	put_num(f, r->frac_roof);
-	put_num(f, r->vs_yard);
+	study_csv_num(f, n / r->r.median_s * 1e-6);
+	study_csv_num(f, n / r->r.min_s * 1e-6);
+	study_csv_num(f, r->r.median_s / n * 1e9);
+	study_csv_num(f, r->r.min_s / n * 1e9);
+	study_csv_num(f, tsc ? r->r.median_ticks / n : NAN);
+	study_csv_num(f, tsc ? r->r.min_ticks / n : NAN);
+	study_csv_num(f, r->chain_ns);
+	study_csv_num(f, r->frac_roof);
+	study_csv_num(f, r->vs_yard);
 	fprintf(f, ",%s,%s,%.17g,%s\n", r->isa, r->vec ? r->vec : "unknown", r->checksum, row_flag(r));
 }
 

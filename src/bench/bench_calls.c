@@ -21,20 +21,14 @@
    b2.x together cover the longest path of every method here (the cross
    product is in b2 for naive-like methods, in b1 for hughes_moeller and
    rtow; the division or square root feeds both). */
-#define BENCH_CALLS(m)                                                          \
+/* The double loops of method m: throughput, then latency. */
+#define BENCH_CALLS_D(m)                                                        \
 	void bench_tp_##m(size_t n, const onb_vec3 *in, bench_pair *out);           \
 	void bench_tp_##m(size_t n, const onb_vec3 *in, bench_pair *out)            \
 	{                                                                           \
 		size_t i;                                                               \
 		for (i = 0; i < n; i++)                                                 \
 			onb_##m(in[i], &out[i].b1, &out[i].b2);                             \
-	}                                                                           \
-	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out);      \
-	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out)       \
-	{                                                                           \
-		size_t i;                                                               \
-		for (i = 0; i < n; i++)                                                 \
-			onb_##m##f(in[i], &out[i].b1, &out[i].b2);                          \
 	}                                                                           \
 	double bench_lat_##m(size_t n, const onb_vec3 *in);                         \
 	double bench_lat_##m(size_t n, const onb_vec3 *in)                          \
@@ -49,30 +43,8 @@
 			s += ((b1.x + b1.y) + b1.z) + ((b2.x + b2.y) + b2.z);               \
 		}                                                                       \
 		return s;                                                               \
-	}                                                                           \
-	double bench_lat_##m##f(size_t n, const onb_vec3f *in);                     \
-	double bench_lat_##m##f(size_t n, const onb_vec3f *in)                      \
-	{                                                                           \
-		onb_vec3f b1 = { 0.0f, 0.0f, 0.0f }, b2 = { 0.0f, 0.0f, 0.0f }, v;      \
-		double s = 0.0;                                                         \
-		size_t i;                                                               \
-		for (i = 0; i < n; i++) {                                               \
-			const float t = (b1.x + b2.x) * 0.0f;                               \
-			v.x = in[i].x + t; v.y = in[i].y + t; v.z = in[i].z + t;            \
-			onb_##m##f(v, &b1, &b2);                                            \
-			s += (((double)b1.x + b1.y) + b1.z) + (((double)b2.x + b2.y) + b2.z); \
-		}                                                                       \
-		return s;                                                               \
 	}
-
-/* The pseudo-method of the chain alone: b1 = b2 = n. */
-static inline void onb_chain (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { *b1 = n; *b2 = n; }
-static inline void onb_chainf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { *b1 = n; *b2 = n; }
-
-ONB_METHOD_LIST(BENCH_CALLS)
-BENCH_CALLS(chain)
-
-/* The float-only methods: the float loops of BENCH_CALLS only. */
+/* The float loops of method m (alone for the float-only methods). */
 #define BENCH_CALLS_F(m)                                                        \
 	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out);      \
 	void bench_tp_##m##f(size_t n, const onb_vec3f *in, bench_pairf *out)       \
@@ -95,6 +67,16 @@ BENCH_CALLS(chain)
 		}                                                                       \
 		return s;                                                               \
 	}
+/* Both precisions. */
+#define BENCH_CALLS(m) BENCH_CALLS_D(m) BENCH_CALLS_F(m)
+
+/* The pseudo-method of the chain alone: b1 = b2 = n. */
+static inline void onb_chain (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { *b1 = n; *b2 = n; }
+static inline void onb_chainf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { *b1 = n; *b2 = n; }
+
+ONB_METHOD_LIST(BENCH_CALLS)
+BENCH_CALLS(chain)
+
 ONB_FLOAT_METHOD_LIST(BENCH_CALLS_F)
 
 #define BENCH_ROW(m) { #m, bench_tp_##m, bench_tp_##m##f, bench_lat_##m, bench_lat_##m##f },

@@ -388,14 +388,6 @@ static int default_path(const char *name, char *buf, size_t n)
 	return -1;
 }
 
-static void put(FILE *f, double v)
-{
-	if (isnan(v))
-		fputs(",nan", f);
-	else
-		fprintf(f, ",%.6g", v);
-}
-
 #define TRADEOFF_COLUMNS "method,precision,batch_mbases_1t,batch_mbases_all,threads_all,call_ns," \
 	"rmse_uniform,max_defect_south,max_defect_threshold,max_defect_worst,nonfinite,pareto," \
 	"max_defect_uniform,max_floor_uniform,x_floor,rms_floor_ratio_uniform,max_floor_ratio_uniform"
@@ -519,20 +511,20 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 			if (r->dbl != p)
 				continue;
 			fprintf(f->f, "%s,%s", r->method, r->dbl ? "double" : "float");
-			put(f->f, r->batch1);
-			put(f->f, r->batchn);
+			study_csv_num(f->f, r->batch1);
+			study_csv_num(f->f, r->batchn);
 			fprintf(f->f, ",%d", r->threads);
-			put(f->f, r->call_ns);
-			put(f->f, r->rmse_uniform);
-			put(f->f, r->max_south);
-			put(f->f, r->max_threshold);
-			put(f->f, r->has_accuracy ? r->max_worst : NAN);
+			study_csv_num(f->f, r->call_ns);
+			study_csv_num(f->f, r->rmse_uniform);
+			study_csv_num(f->f, r->max_south);
+			study_csv_num(f->f, r->max_threshold);
+			study_csv_num(f->f, r->has_accuracy ? r->max_worst : NAN);
 			fprintf(f->f, ",%ld,%s", r->nonfinite, r->has_speed && r->has_accuracy ? (r->pareto ? "1" : "0") : "na");
-			put(f->f, r->max_uniform);
-			put(f->f, r->max_floor_uniform);
-			put(f->f, r->x_floor);
-			put(f->f, r->rms_ratio_uniform);
-			put(f->f, r->max_ratio_uniform);
+			study_csv_num(f->f, r->max_uniform);
+			study_csv_num(f->f, r->max_floor_uniform);
+			study_csv_num(f->f, r->x_floor);
+			study_csv_num(f->f, r->rms_ratio_uniform);
+			study_csv_num(f->f, r->max_ratio_uniform);
 			fputc('\n', f->f);
 		}
 	return study_out_commit(f);

@@ -3,6 +3,7 @@
  */
 #include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,21 +38,33 @@ void study_error(const char *fmt, ...)
 	fputc('\n', stderr);
 }
 
-int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned long long hi, unsigned long long *out)
+/* The digits of s (after one '-' when neg_ok) as a magnitude; a digit
+   must come first (strtoull would skip blanks and accept " -1" as
+   2^64-1).  0, or -1 after "OPT: expected an integer, got 'S'". */
+static int parse_whole(const char *opt, const char *s, int neg_ok, unsigned long long *mag, int *neg)
 {
+	const char *what = neg_ok ? "an integer" : "a non-negative integer";
 	char *end;
-	unsigned long long v;
-	/* a digit first: strtoull would skip blanks and accept " -1" as 2^64-1 */
-	if (!s || !(*s >= '0' && *s <= '9')) {
-		study_error("%s: expected a non-negative integer, got '%s'", opt, s ? s : "");
+	*neg = neg_ok && s && *s == '-';
+	if (!s || !(s[*neg] >= '0' && s[*neg] <= '9')) {
+		study_error("%s: expected %s, got '%s'", opt, what, s ? s : "");
 		return -1;
 	}
 	errno = 0;
-	v = strtoull(s, &end, 10);
-	if (errno || *end) {
-		study_error("%s: expected a non-negative integer, got '%s'", opt, s);
+	*mag = strtoull(s + *neg, &end, 10);
+	if (errno || *end || (neg_ok && *mag > (unsigned long long)LONG_MAX + *neg)) {
+		study_error("%s: expected %s, got '%s'", opt, what, s);
 		return -1;
 	}
+	return 0;
+}
+
+int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned long long hi, unsigned long long *out)
+{
+	unsigned long long v;
+	int neg;
+	if (parse_whole(opt, s, 0, &v, &neg) != 0)
+		return -1;
 	if (v < lo || v > hi) {
 		study_error("%s: %llu is out of range [%llu, %llu]", opt, v, lo, hi);
 		return -1;
@@ -62,18 +75,13 @@ int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned lo
 
 int parse_int(const char *opt, const char *s, long lo, long hi, long *out)
 {
-	char *end;
+	unsigned long long mag;
 	long v;
-	if (!s || !((*s >= '0' && *s <= '9') || (*s == '-' && s[1] >= '0' && s[1] <= '9'))) {
-		study_error("%s: expected an integer, got '%s'", opt, s ? s : "");
+	int neg;
+	if (parse_whole(opt, s, 1, &mag, &neg) != 0)
 		return -1;
-	}
-	errno = 0;
-	v = strtol(s, &end, 10);
-	if (errno || *end) {
-		study_error("%s: expected an integer, got '%s'", opt, s);
-		return -1;
-	}
+	/* -(LONG_MAX + 1) without overflow: negate the magnitude less one */
+	v = !neg ? (long)mag : mag == 0 ? 0 : -(long)(mag - 1) - 1;
 	if (v < lo || v > hi) {
 		study_error("%s: %ld is out of range [%ld, %ld]", opt, v, lo, hi);
 		return -1;

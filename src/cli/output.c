@@ -189,3 +189,29 @@ void study_provenance(FILE *f, const char *what, unsigned long long seed, int th
 	if (study_provenance_note)
 		fprintf(f, "# %s\n", study_provenance_note);
 }
+
+void study_csv_num(FILE *f, double v)
+{
+	if (isnan(v))
+		fputs(",nan", f);
+	else
+		fprintf(f, ",%.6g", v);
+}
+
+double study_duration(double s, const char **unit)
+{
+	if (s < 120) {
+		*unit = "s";
+		return s;
+	}
+	if (s < 7200) {
+		*unit = "min";
+		return s / 60;
+	}
+	if (s < 172800) {
+		*unit = "h";
+		return s / 3600;
+	}
+	*unit = "days";
+	return s / 86400;
+}

@@ -44,6 +44,11 @@ void study_default_run_dir(char *buf, size_t n);
    directory results/latest names, or (none yet) a new results/run-DATE,
    created, which results/latest then names. */
 void study_current_run_dir(char *buf, size_t n);
+/* One CSV cell: ",%.6g" of v, or ",nan". */
+void study_csv_num(FILE *f, double v);
+/* A duration for people: s in seconds (under 120), minutes (under 2 h),
+   hours (under 2 days) or days; returns the value, *unit its unit. */
+double study_duration(double s, const char **unit);
 /* results/latest -> DIR (only for a directory directly under results/). */
 void study_point_latest(const char *dir);
 

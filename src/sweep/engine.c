@@ -22,6 +22,7 @@
 #endif
 #include "sweep/engine.h"
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "reference/reffast.h"
 
 volatile sig_atomic_t engine_stop;
@@ -172,7 +173,6 @@ static void worker_free(worker *w)
 static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64_t idx)
 {
 	const sweep_cfg *cfg = &st->cfg;
-	const size_t GG = (size_t)cfg->grid_rows * (size_t)cfg->grid_cols;
 	double n[3], lv[3], aux;
 	int k;
 	const int check = idx % (uint64_t)cfg->check_every == 0, stratum = dist_stratum(&e->ds[p][d], idx);
@@ -211,11 +211,8 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 		m.stratum = stratum;
 		cell_add_lazy(&w->loc[k], idx, &m, n, 0);
 		if (d == DIST_GRID) {
-			const size_t j = ((size_t)p * (size_t)cfg->nk + (size_t)k) * GG + (size_t)aux;
-			st->g_err[j] = m.nonfinite ? INFINITY : st->kernels[k].m ? m.defect : fmax(m.dir_norm, m.dir_cos);
-			st->g_bits[j] = m.nbits ? m.bits_sum / m.nbits : 0.0;
-			memcpy(&st->g_b1[3 * j], m.out, 3 * sizeof(double));
-			st->g_done[(size_t)p * GG + (size_t)aux] = 1;
+			sweep_grid_put(st, p, k, (size_t)aux, m.nonfinite ? INFINITY : st->kernels[k].m ? m.defect : fmax(m.dir_norm, m.dir_cos),
+			               m.nbits ? m.bits_sum / m.nbits : 0.0, m.out);
 		}
 	}
 }
@@ -238,16 +235,12 @@ static unsigned long long run_chunk(engine *e, worker *w, sweep_state *st, uint6
 	return (unsigned long long)(i1 - i0) * (unsigned long long)kernels_running(st->kernels, st->cfg.nk, p);
 }
 
+/* Fixed width: "  42 s  ", " 3.2 min", " 1.5 h  ", " 2.0 days". */
 static void print_eta(double s)
 {
-	if (s < 120)
-		fprintf(stderr, "%4.0f s  ", s);
-	else if (s < 7200)
-		fprintf(stderr, "%4.1f min", s / 60);
-	else if (s < 172800)
-		fprintf(stderr, "%4.1f h  ", s / 3600);
-	else
-		fprintf(stderr, "%4.1f days", s / 86400);
+	const char *unit;
+	const double v = study_duration(s, &unit);
+	fprintf(stderr, v == s ? "%4.0f %-3s" : "%4.1f %-3s", v, unit);
 }
 
 void engine_progress_line(const char *label, const engine_progress *pr)
@@ -353,4 +346,97 @@ double engine_calibrate(engine *e, int chunks, unsigned long long *evals)
 	*evals = scratch.cfg.evals;
 	sweep_free(&scratch);
 	return t > 0 ? (double)*evals / t : 0.0;
+}
+
+/* ---- the worst-case walk ------------------------------------------------ */
+/* From the worst threshold inputs, move to the neighbouring input (x, y
+   and z each changed by -1, 0 or +1 steps of 1 or 8 representable values)
+   with the largest error while it grows, staying unit to within two
+   rounding errors.  Each accepted step joins the threshold distribution
+   and its worst list (source "walk"). */
+
+#define WALK_STARTS 3
+#define WALK_STEPS 24
+
+static void walk_one(sweep_state *s, ref_ctx *rc, int p, int k)
+{
+	cell_t *c = sweep_cell(s, p, DIST_THRESHOLD, k);
+	const study_kernel *K = &s->kernels[k];
+	worst_t starts[WALK_STARTS];
+	const double loc[3] = { fmt_round(0.6, p), 0.0, fmt_round(0.8, p) };
+	int ns = 0, i;
+	for (i = 0; i < NWORST && ns < WALK_STARTS; i++)
+		if (c->worst[i].index != UINT64_MAX && isfinite(c->worst[i].key))
+			starts[ns++] = c->worst[i];
+	for (i = 0; i < ns; i++) {
+		double cur[3], key = starts[i].key;
+		int step;
+		memcpy(cur, starts[i].n, sizeof cur);
+		for (step = 0; step < WALK_STEPS; step++) {
+			double best[3], best_key = key;
+			sample_metrics bm, m;
+			int dx, dy, dz, sc, moved = 0;
+			for (sc = 1; sc <= 8; sc *= 8)
+				for (dx = -1; dx <= 1; dx++)
+					for (dy = -1; dy <= 1; dy++)
+						for (dz = -1; dz <= 1; dz++) {
+							double nn[3];
+							double kk;
+							if (!dx && !dy && !dz)
+								continue;
+							nn[0] = fmt_step(cur[0], dx * sc, p);
+							nn[1] = fmt_step(cur[1], dy * sc, p);
+							nn[2] = fmt_step(cur[2], dz * sc, p);
+							if (!isfinite(nn[0]) || !isfinite(nn[1]) || !isfinite(nn[2]))
+								continue;
+							/* stay on the sphere, to the format's rounding: a walk that
+							   drifts off it measures non-unit input, not the method */
+							{
+								const long double len = sqrtl((long double)nn[0] * nn[0] + (long double)nn[1] * nn[1] +
+								                              (long double)nn[2] * nn[2]);
+								if (fabsl(len - 1.0L) > 2.0L * (p == PREC_FLOAT ? 0x1p-24L : 0x1p-53L))
+									continue;
+							}
+							ref_eval(rc, K, p, nn, loc, 0, &m);
+							kk = m.nonfinite ? INFINITY : K->m ? m.defect : fmax(m.dir_norm, m.dir_cos);
+							if (kk > best_key) {
+								best_key = kk;
+								memcpy(best, nn, sizeof best);
+								bm = m;
+								moved = 1;
+							}
+						}
+			if (!moved)
+				break;
+			memcpy(cur, best, sizeof cur);
+			key = best_key;
+			cell_add(c, starts[i].index, &bm, cur, 1);
+			if (isinf(key))
+				break;
+		}
+	}
+}
+
+int engine_walk(sweep_state *s, int threads)
+{
+	int p, fail = 0;
+	for (p = 0; p < 2; p++) {
+		int k;
+		if (!s->cfg.prec_on[p] || !s->cfg.dist_on[DIST_THRESHOLD])
+			continue;
+#pragma omp parallel num_threads(threads) reduction(|:fail)
+		{
+			ref_ctx *rc = ref_new(s->cfg.ref_bits);
+			if (!rc)
+				fail = 1;
+#pragma omp for schedule(dynamic, 1)
+			for (k = 0; k < s->cfg.nk; k++)
+				if (rc && s->cfg.prec_on[p] && kernel_runs(&s->kernels[k], p))
+					walk_one(s, rc, p, k);
+			ref_free(rc);
+		}
+	}
+	if (fail)
+		study_error("out of memory in the worst-case walk");
+	return fail ? -1 : 0;
 }

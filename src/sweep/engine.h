@@ -12,7 +12,8 @@
  *	engine *e = engine_new(&plan);         // prepares every distribution
  *	sweep_state st; engine_state_init(&plan, &st);
  *	engine_run(e, &st, 0, plan.chunks, &progress);   // or any [g0, g1)
- *	engine_free(e);  ... sweep_finish(&st, ...) writes the files
+ *	engine_free(e);  engine_walk(&st, threads);  // once, on the whole state
+ *	... sweep_finish(&st, ...) writes the files from the const state
  */
 #ifndef ONB_ENGINE_H
 #define ONB_ENGINE_H
@@ -51,6 +52,11 @@ const char *engine_why(const engine *e);
 /* Evaluations per second per thread, timed on up to `chunks` chunks spread
    over the plan (for --dry-run); *evals gets how many were timed. */
 double  engine_calibrate(engine *e, int chunks, unsigned long long *evals);
+
+/* The worst-case walk, the engine's last stage, run once on a finished
+   (merged) state before the writers: see engine.c.  0, or -1 after a
+   message. */
+int     engine_walk(sweep_state *s, int threads);
 
 double  engine_now(void);                            /* monotonic seconds */
 /* "\r<label> 42.0%  ETA 3.2 min" on stderr. */

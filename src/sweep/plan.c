@@ -358,14 +358,9 @@ int plan_in_shard(const sweep_plan *pl, uint64_t g)
 
 static void print_duration(FILE *f, double s)
 {
-	if (s < 120)
-		fprintf(f, "%.1f s", s);
-	else if (s < 7200)
-		fprintf(f, "%.1f min", s / 60);
-	else if (s < 172800)
-		fprintf(f, "%.1f h", s / 3600);
-	else
-		fprintf(f, "%.1f days", s / 86400);
+	const char *unit;
+	const double v = study_duration(s, &unit);
+	fprintf(f, "%.1f %s", v, unit);
 }
 
 void plan_print(const sweep_plan *pl, FILE *f, double per_thread_rate, unsigned long long calib_evals)

@@ -16,10 +16,14 @@
 
 #define STATE_MAGIC "onbsweep-state4"
 
-cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k)
+/* The cells' layout, [prec][dist][kernel] (the slices' lo and hi count in it). */
+static size_t cell_index(const sweep_state *s, int prec, int dist, int k)
 {
-	return &s->cells[((size_t)prec * NDIST + (size_t)dist) * (size_t)s->cfg.nk + (size_t)k];
+	return ((size_t)prec * NDIST + (size_t)dist) * (size_t)s->cfg.nk + (size_t)k;
 }
+
+const cell_t *sweep_cell_at(const sweep_state *s, int prec, int dist, int k) { return &s->cells[cell_index(s, prec, dist, k)]; }
+cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k) { return &s->cells[cell_index(s, prec, dist, k)]; }
 
 void cell_init(cell_t *c)
 {
@@ -352,19 +356,14 @@ void cell_settle(cell_t *c)
 	}
 }
 
-static size_t grid_cells(const sweep_state *s)
-{
-	return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols;
-}
-
 int sweep_alloc(sweep_state *s)
 {
-	size_t i, nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	size_t i, nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	s->cells = malloc(nc * sizeof *s->cells);
 	s->g_err = malloc(g * sizeof *s->g_err);
 	s->g_bits = malloc(g * sizeof *s->g_bits);
 	s->g_b1 = malloc(3 * g * sizeof *s->g_b1);
-	s->g_done = calloc(2 * grid_cells(s) + 1, 1);
+	s->g_done = calloc(2 * sweep_grid_cells(s) + 1, 1);
 	if (!s->cells || !s->g_err || !s->g_bits || !s->g_b1 || !s->g_done) {
 		study_error("out of memory for the sweep's accumulators (grid %dx%d, %d methods)",
 		            s->cfg.grid_rows, s->cfg.grid_cols, s->cfg.nk);
@@ -419,14 +418,14 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 int sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len)
 {
 	study_out o;
-	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	sweep_cfg cfg = s->cfg;
 	snprintf(cfg.magic, sizeof cfg.magic, "%s", STATE_MAGIC);
 	if (study_out_open(&o, dir, name) != 0)
 		return -1;
 	if (wr(o.f, &cfg, sizeof cfg) || wr(o.f, s->cells, nc * sizeof *s->cells) ||
 	    wr(o.f, s->g_err, g * sizeof *s->g_err) || wr(o.f, s->g_bits, g * sizeof *s->g_bits) ||
-	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * grid_cells(s)) ||
+	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * sweep_grid_cells(s)) ||
 	    (len && wr(o.f, extra, len))) {
 		study_error("%s: write failed: %s", o.path, strerror(errno));
 		study_out_abort(&o);
@@ -492,10 +491,10 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 		return -1;
 	}
 	nc = 2 * NDIST * (size_t)s->cfg.nk;
-	g = grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
 	if (rd(f, s->cells, nc * sizeof *s->cells) || rd(f, s->g_err, g * sizeof *s->g_err) ||
 	    rd(f, s->g_bits, g * sizeof *s->g_bits) || rd(f, s->g_b1, 3 * g * sizeof *s->g_b1) ||
-	    rd(f, s->g_done, 2 * grid_cells(s)) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
+	    rd(f, s->g_done, 2 * sweep_grid_cells(s)) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
 		study_error("%s: truncated or oversized state file", path);
 		fclose(f);
 		sweep_free(s);
@@ -535,27 +534,110 @@ void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s)
 	d->ref_mpfr |= s->ref_mpfr; /* mixed shards: say MPFR took part */
 }
 
+/* ---- the grid layout: the one place that spells it out ------------------- */
+
+size_t sweep_grid_cells(const sweep_state *s)
+{
+	return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols;
+}
+
+size_t sweep_grid_index(const sweep_state *s, int p, int k, size_t cell)
+{
+	return ((size_t)p * (size_t)s->cfg.nk + (size_t)k) * sweep_grid_cells(s) + cell;
+}
+
+void sweep_grid_put(sweep_state *s, int p, int k, size_t cell, double err, double bits, const double b1[3])
+{
+	const size_t j = sweep_grid_index(s, p, k, cell);
+	s->g_err[j] = err;
+	s->g_bits[j] = bits;
+	memcpy(&s->g_b1[3 * j], b1, 3 * sizeof(double));
+	s->g_done[(size_t)p * sweep_grid_cells(s) + cell] = 1;
+}
+
+int sweep_grid_done(const sweep_state *s, int p, size_t cell)
+{
+	return s->g_done[(size_t)p * sweep_grid_cells(s) + cell] != 0;
+}
+
+/* The cells another state computed (done[p][cell] set) into d. */
+static void grid_merge(sweep_state *d, const double *err, const double *bits, const double *b1, const unsigned char *done)
+{
+	const size_t G = sweep_grid_cells(d);
+	size_t i;
+	int p, k;
+	for (p = 0; p < 2; p++)
+		for (i = 0; i < G; i++)
+			if (done[(size_t)p * G + i])
+				for (k = 0; k < d->cfg.nk; k++) {
+					const size_t j = sweep_grid_index(d, p, k, i);
+					sweep_grid_put(d, p, k, i, err[j], bits[j], &b1[3 * j]);
+				}
+}
+
 int sweep_merge_into(sweep_state *d, const sweep_state *s)
 {
-	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk, G = grid_cells(d);
-	int p, k;
+	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk;
 	if (!sweep_cfg_same(&d->cfg, &s->cfg)) {
 		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
 		return -1;
 	}
 	for (i = 0; i < nc; i++)
 		cell_merge(&d->cells[i], &s->cells[i]);
-	for (p = 0; p < 2; p++)
-		for (i = 0; i < G; i++)
-			if (s->g_done[p * G + i]) {
-				d->g_done[p * G + i] = 1;
-				for (k = 0; k < d->cfg.nk; k++) {
-					const size_t j = ((size_t)p * (size_t)d->cfg.nk + (size_t)k) * G + i;
-					d->g_err[j] = s->g_err[j];
-					d->g_bits[j] = s->g_bits[j];
-					memcpy(&d->g_b1[3 * j], &s->g_b1[3 * j], 3 * sizeof(double));
-				}
-			}
+	grid_merge(d, s->g_err, s->g_bits, s->g_b1, s->g_done);
 	sweep_cfg_add_counters(&d->cfg, &s->cfg);
 	return 0;
+}
+
+/* ---- slices: a run's part of a state, as bytes (the MPI driver's deltas) -- */
+
+static size_t grid_bytes(const sweep_state *s)
+{
+	const size_t g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	return g * sizeof(double) * 5 + 2 * sweep_grid_cells(s);
+}
+
+size_t sweep_slice_bytes(const sweep_state *s, size_t lo, size_t hi, int grid)
+{
+	return (hi - lo) * sizeof(cell_t) + (grid ? grid_bytes(s) : 0);
+}
+
+void sweep_slice_pack(const sweep_state *s, size_t lo, size_t hi, int grid, unsigned char *out)
+{
+	const size_t g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	memcpy(out, s->cells + lo, (hi - lo) * sizeof(cell_t));
+	if (grid) {
+		unsigned char *q = out + (hi - lo) * sizeof(cell_t);
+		memcpy(q, s->g_err, g * sizeof(double)); q += g * sizeof(double);
+		memcpy(q, s->g_bits, g * sizeof(double)); q += g * sizeof(double);
+		memcpy(q, s->g_b1, 3 * g * sizeof(double)); q += 3 * g * sizeof(double);
+		memcpy(q, s->g_done, 2 * sweep_grid_cells(s));
+	}
+}
+
+int sweep_slice_merge(sweep_state *d, size_t lo, size_t hi, int grid, const unsigned char *in, size_t n)
+{
+	const size_t g = sweep_grid_cells(d) * 2 * (size_t)d->cfg.nk;
+	size_t i;
+	if (lo > hi || hi > 2 * NDIST * (size_t)d->cfg.nk || n != sweep_slice_bytes(d, lo, hi, grid))
+		return -1;
+	for (i = 0; i < hi - lo; i++) {
+		cell_t c;
+		memcpy(&c, in + i * sizeof c, sizeof c);
+		cell_merge(&d->cells[lo + i], &c);
+	}
+	if (grid) {
+		const double *err = (const double *)(const void *)(in + (hi - lo) * sizeof(cell_t));
+		const double *bits = err + g, *b1 = bits + g;
+		grid_merge(d, err, bits, b1, (const unsigned char *)(b1 + 3 * g));
+	}
+	return 0;
+}
+
+void sweep_clear(sweep_state *s)
+{
+	size_t i;
+	for (i = 0; i < 2 * NDIST * (size_t)s->cfg.nk; i++)
+		cell_init(&s->cells[i]);
+	memset(s->g_done, 0, 2 * sweep_grid_cells(s));
 }

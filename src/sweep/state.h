@@ -113,7 +113,9 @@ typedef struct {
 	unsigned char *g_done;        /* [prec][cell] computed by this state     */
 } sweep_state;
 
+/* The cell of (precision, distribution, kernel); _at for reading. */
 cell_t *sweep_cell(sweep_state *s, int prec, int dist, int k);
+const cell_t *sweep_cell_at(const sweep_state *s, int prec, int dist, int k);
 void cell_init(cell_t *c);
 void cell_merge(cell_t *dst, const cell_t *src);
 void cell_add(cell_t *c, uint64_t index, const sample_metrics *m, const double n[3], int source);
@@ -146,5 +148,22 @@ int  sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra,
 int  sweep_cfg_same(const sweep_cfg *a, const sweep_cfg *b);
 void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s);
 int  sweep_merge_into(sweep_state *dst, const sweep_state *src);
+
+/* The grid, per [prec][kernel][cell]: the layout is spelled out in
+   sweep_grid_index alone.  put sets a cell of kernel k and marks the
+   (prec, cell) computed; done says whether this state computed it. */
+size_t sweep_grid_cells(const sweep_state *s);       /* rows * cols */
+size_t sweep_grid_index(const sweep_state *s, int p, int k, size_t cell);
+void   sweep_grid_put(sweep_state *s, int p, int k, size_t cell, double err, double bits, const double b1[3]);
+int    sweep_grid_done(const sweep_state *s, int p, size_t cell);
+
+/* Slices, the MPI driver's deltas: the cells [lo, hi) (index of
+   sweep_cell's order) and, when grid != 0, the whole grid, as bytes.
+   merge adds such bytes into d (-1 when n or [lo, hi) does not fit d);
+   clear empties every cell and the grid's done marks. */
+size_t sweep_slice_bytes(const sweep_state *s, size_t lo, size_t hi, int grid);
+void   sweep_slice_pack(const sweep_state *s, size_t lo, size_t hi, int grid, unsigned char *out);
+int    sweep_slice_merge(sweep_state *d, size_t lo, size_t hi, int grid, const unsigned char *in, size_t n);
+void   sweep_clear(sweep_state *s);
 
 #endif

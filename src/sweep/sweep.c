@@ -101,7 +101,8 @@ static int sweep_plots(const char *out)
 	return 0;
 }
 
-/* The files: a shard's state, or the whole run's CSV files. */
+/* The files: a shard's state, or (after the worst-case walk) the whole
+   run's CSV files. */
 int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 {
 	const sweep_cfg *cfg = &st->cfg;
@@ -114,7 +115,7 @@ int sweep_write(const sweep_plan *pl, sweep_state *st, double seconds)
 		        cfg->shard_k, cfg->shard_n, pl->out, name);
 		return 0;
 	}
-	if (sweep_finish(st, pl->out, pl->threads, fmt_names[pl->fmt], seconds, 0) != 0)
+	if (engine_walk(st, pl->threads) != 0 || sweep_finish(st, pl->out, pl->threads, fmt_names[pl->fmt], seconds, 0) != 0)
 		return 1;
 	if (!pl->out_given)
 		study_point_latest(pl->out);
@@ -250,7 +251,7 @@ int cmd_merge(int argc, char **argv)
 	else if (rc == 0 && (rc = merge_states(&acc, nfiles, files)) == 0) {
 		acc.cfg.shard_k = 0;
 		acc.cfg.shard_n = 1;
-		rc = sweep_finish(&acc, out, threads, fmt_names[fmt], 0.0, 0) ? 1 : 0;
+		rc = engine_walk(&acc, threads) || sweep_finish(&acc, out, threads, fmt_names[fmt], 0.0, 0) ? 1 : 0;
 		sweep_free(&acc);
 		if (rc == 0)
 			fprintf(stderr, "onbstudy: merged %d shards into %s\n", nfiles, out);

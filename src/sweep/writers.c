@@ -1,6 +1,7 @@
 /*
- * sweep_out.c - the sweep's worst-case walk and its output files:
- * summary.csv, by_nz.csv, worst.csv, grid.csv, and the table on stdout.
+ * writers.c - the sweep's output files, from a const state (the
+ * worst-case walk that comes before them is the engine's): summary.csv,
+ * by_nz.csv, worst.csv, grid.csv, reference.csv, and the table on stdout.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,8 +19,6 @@
 
 static const char *prec_name(int p) { return p == PREC_FLOAT ? "float" : "double"; }
 
-static size_t G(const sweep_state *s) { return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols; }
-
 /* Precision p was run, and kernel k has code in it (not a float-only
    method in double): the (p, k) pairs every file and table lists. */
 static int on(const sweep_state *s, int p, int k)
@@ -30,8 +29,8 @@ static int on(const sweep_state *s, int p, int k)
 static double grid_jump(const sweep_state *s, int p, int k, size_t cell)
 {
 	const size_t rows = (size_t)s->cfg.grid_rows, cols = (size_t)s->cfg.grid_cols;
-	const size_t r = cell / cols, c = cell % cols, base = ((size_t)p * (size_t)s->cfg.nk + (size_t)k) * G(s);
-	const double *a = &s->g_b1[3 * (base + cell)];
+	const size_t r = cell / cols, c = cell % cols;
+	const double *a = &s->g_b1[3 * sweep_grid_index(s, p, k, cell)];
 	size_t nb[2];
 	int i, m = 0;
 	double jump = 0.0;
@@ -39,7 +38,7 @@ static double grid_jump(const sweep_state *s, int p, int k, size_t cell)
 	if (r + 1 < rows)
 		nb[m++] = (r + 1) * cols + c;
 	for (i = 0; i < m; i++) {
-		const double *b = &s->g_b1[3 * (base + nb[i])];
+		const double *b = &s->g_b1[3 * sweep_grid_index(s, p, k, nb[i])];
 		const double d = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 		if (isnan(d))
 			return NAN;
@@ -55,7 +54,7 @@ static double max_grid_jump(const sweep_state *s, int p, int k)
 	double m = 0.0;
 	if (!s->kernels[k].m)
 		return NAN;
-	for (i = 0; i < G(s); i++) {
+	for (i = 0; i < sweep_grid_cells(s); i++) {
 		const double j = grid_jump(s, p, k, i);
 		if (isnan(j))
 			return NAN;
@@ -63,99 +62,6 @@ static double max_grid_jump(const sweep_state *s, int p, int k)
 			m = j;
 	}
 	return m;
-}
-
-/* ---- the worst-case walk ------------------------------------------------ */
-/* From the worst threshold inputs, move to the neighbouring input (x, y
-   and z each changed by -1, 0 or +1 steps of 1 or 8 representable values)
-   with the largest error while it grows, staying unit to within two
-   rounding errors.  Each accepted step joins the threshold distribution
-   and its worst list (source "walk"). */
-
-#define WALK_STARTS 3
-#define WALK_STEPS 24
-
-static void walk_one(sweep_state *s, ref_ctx *rc, int p, int k)
-{
-	cell_t *c = sweep_cell(s, p, DIST_THRESHOLD, k);
-	const study_kernel *K = &s->kernels[k];
-	worst_t starts[WALK_STARTS];
-	const double loc[3] = { fmt_round(0.6, p), 0.0, fmt_round(0.8, p) };
-	int ns = 0, i;
-	for (i = 0; i < NWORST && ns < WALK_STARTS; i++)
-		if (c->worst[i].index != UINT64_MAX && isfinite(c->worst[i].key))
-			starts[ns++] = c->worst[i];
-	for (i = 0; i < ns; i++) {
-		double cur[3], key = starts[i].key;
-		int step;
-		memcpy(cur, starts[i].n, sizeof cur);
-		for (step = 0; step < WALK_STEPS; step++) {
-			double best[3], best_key = key;
-			sample_metrics bm, m;
-			int dx, dy, dz, sc, moved = 0;
-			for (sc = 1; sc <= 8; sc *= 8)
-				for (dx = -1; dx <= 1; dx++)
-					for (dy = -1; dy <= 1; dy++)
-						for (dz = -1; dz <= 1; dz++) {
-							double nn[3];
-							double kk;
-							if (!dx && !dy && !dz)
-								continue;
-							nn[0] = fmt_step(cur[0], dx * sc, p);
-							nn[1] = fmt_step(cur[1], dy * sc, p);
-							nn[2] = fmt_step(cur[2], dz * sc, p);
-							if (!isfinite(nn[0]) || !isfinite(nn[1]) || !isfinite(nn[2]))
-								continue;
-							/* stay on the sphere, to the format's rounding: a walk that
-							   drifts off it measures non-unit input, not the method */
-							{
-								const long double len = sqrtl((long double)nn[0] * nn[0] + (long double)nn[1] * nn[1] +
-								                              (long double)nn[2] * nn[2]);
-								if (fabsl(len - 1.0L) > 2.0L * (p == PREC_FLOAT ? 0x1p-24L : 0x1p-53L))
-									continue;
-							}
-							ref_eval(rc, K, p, nn, loc, 0, &m);
-							kk = m.nonfinite ? INFINITY : K->m ? m.defect : fmax(m.dir_norm, m.dir_cos);
-							if (kk > best_key) {
-								best_key = kk;
-								memcpy(best, nn, sizeof best);
-								bm = m;
-								moved = 1;
-							}
-						}
-			if (!moved)
-				break;
-			memcpy(cur, best, sizeof cur);
-			key = best_key;
-			cell_add(c, starts[i].index, &bm, cur, 1);
-			if (isinf(key))
-				break;
-		}
-	}
-}
-
-static int walk(sweep_state *s, int threads)
-{
-	int p, fail = 0;
-	for (p = 0; p < 2; p++) {
-		int k;
-		if (!s->cfg.prec_on[p] || !s->cfg.dist_on[DIST_THRESHOLD])
-			continue;
-#pragma omp parallel num_threads(threads) reduction(|:fail)
-		{
-			ref_ctx *rc = ref_new(s->cfg.ref_bits);
-			if (!rc)
-				fail = 1;
-#pragma omp for schedule(dynamic, 1)
-			for (k = 0; k < s->cfg.nk; k++)
-				if (rc && on(s, p, k))
-					walk_one(s, rc, p, k);
-			ref_free(rc);
-		}
-	}
-	if (fail)
-		study_error("out of memory in the worst-case walk");
-	return fail ? -1 : 0;
 }
 
 /* ---- files ---------------------------------------------------------------- */
@@ -311,7 +217,7 @@ static void floor_cols(FILE *f, const cell_t *c, int d)
 
 static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, double jump)
 {
-	const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
+	const cell_t *c = sweep_cell_at(s, p, d, k);
 	const int basis = s->kernels[k].m != NULL;
 	const double nan = NAN;
 	double r[4], lo[4], hi[4], bits, bhw;
@@ -335,26 +241,22 @@ static void summary_row(FILE *f, const sweep_state *s, int p, int d, int k, doub
 }
 
 /* reference.csv: the fast reference's fallback rate per method and precision. */
-static int write_reference(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+static void reference_body(FILE *f, const sweep_state *s, int partial)
 {
-	study_out o;
 	int p, k;
-	if (study_out_open(&o, dir, name) != 0)
-		return -1;
-	header(o.f, s, threads, sec, partial);
+	(void)partial; /* the writers' common signature */
 	/* The count of worst rows whose ref[] MPFR filled in is not written here:
 	   it depends on which chunks each thread saw first (thread scheduling),
 	   and a data file holds only figures that identical runs reproduce.  The
 	   log line (sweep_print_reference) gives it, marked as such. */
-	fprintf(o.f, "# per method and precision: referenced evaluations of the sampled inputs, and those the fast reference could not decide (MPFR computed them)\n");
-	fprintf(o.f, "method,precision,evaluations,mpfr_fallback,fallback_rate\n");
+	fprintf(f, "# per method and precision: referenced evaluations of the sampled inputs, and those the fast reference could not decide (MPFR computed them)\n");
+	fprintf(f, "method,precision,evaluations,mpfr_fallback,fallback_rate\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			if (s->cfg.ref_evals[p][k])
-				fprintf(o.f, "%s,%s,%llu,%llu,%.6g\n", s->kernels[k].name, prec_name(p),
+				fprintf(f, "%s,%s,%llu,%llu,%.6g\n", s->kernels[k].name, prec_name(p),
 				        (unsigned long long)s->cfg.ref_evals[p][k], (unsigned long long)s->cfg.ref_fallback[p][k],
 				        (double)s->cfg.ref_fallback[p][k] / (double)s->cfg.ref_evals[p][k]);
-	return study_out_commit(&o);
 }
 
 #define SUMMARY_COLUMNS "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite," \
@@ -362,41 +264,33 @@ static int write_reference(const sweep_state *s, const char *dir, const char *na
 	"max_floor,rms_floor,max_floor_dir,max_floor_ratio,rms_floor_ratio,at_floor,floor_ratio_nx,floor_ratio_ny,floor_ratio_nz," \
 	"rmse_lo,rmse_hi,rms_defect_lo,rms_defect_hi,mean_bits_lo,mean_bits_hi,rms_dir_cos_lo,rms_dir_cos_hi,duff_rms_lo,duff_rms_hi"
 
-static int write_summary(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+static void summary_body(FILE *f, const sweep_state *s, int partial)
 {
-	study_out o;
 	int p, d, k;
-	if (study_out_open(&o, dir, name) != 0)
-		return -1;
-	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
-	fprintf(o.f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
-	fprintf(o.f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
-	fprintf(o.f, "# max_floor, rms_floor: the accuracy floor, the per-input error (defect; frisvad_rotate: direction error) of the method's exact formula on its branch rounded once to the format; max_floor_dir: its direction error; max_floor_ratio, rms_floor_ratio: the per-input ratio max(error, u^2) / max(floor, u^2), u = 2^-24 or 2^-53; at_floor: the share of inputs with ratio <= 1; floor_ratio_n*: the input of the largest ratio\n");
-	fprintf(o.f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns); rms_floor, rms_floor_ratio, at_floor: estimated the same way (stratified, each over its own inputs: floor finite; for the ratio, the method's output finite too)\n", NSTRAT, NSTRAT);
-	fprintf(o.f, "%s\n", SUMMARY_COLUMNS);
+	fprintf(f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
+	fprintf(f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
+	fprintf(f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
+	fprintf(f, "# max_floor, rms_floor: the accuracy floor, the per-input error (defect; frisvad_rotate: direction error) of the method's exact formula on its branch rounded once to the format; max_floor_dir: its direction error; max_floor_ratio, rms_floor_ratio: the per-input ratio max(error, u^2) / max(floor, u^2), u = 2^-24 or 2^-53; at_floor: the share of inputs with ratio <= 1; floor_ratio_n*: the input of the largest ratio\n");
+	fprintf(f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns); rms_floor, rms_floor_ratio, at_floor: estimated the same way (stratified, each over its own inputs: floor finite; for the ratio, the method's output finite too)\n", NSTRAT, NSTRAT);
+	fprintf(f, "%s\n", SUMMARY_COLUMNS);
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++)
 				if (on(s, p, k) && s->cfg.dist_on[d])
-					summary_row(o.f, s, p, d, k, d == DIST_GRID && !partial ? max_grid_jump(s, p, k) : NAN);
-	return study_out_commit(&o);
+					summary_row(f, s, p, d, k, d == DIST_GRID && !partial ? max_grid_jump(s, p, k) : NAN);
 }
 
-static int write_by_nz(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+static void by_nz_body(FILE *f, const sweep_state *s, int partial)
 {
-	study_out o;
 	int p, d, k, b;
-	if (study_out_open(&o, dir, name) != 0)
-		return -1;
-	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, by log10| |n| - 1 |, and by log10(1 - n.z) for n.z >= 0 (axis log10_1mnz); empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
-	fprintf(o.f, "# floor_rms, floor_max: the accuracy floor of the same inputs (the method's exact formula rounded once)\n");
-	fprintf(o.f, "method,precision,distribution,axis,lo,hi,count,rms,max,floor_rms,floor_max\n");
+	(void)partial; /* the writers' common signature */
+	fprintf(f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, by log10| |n| - 1 |, and by log10(1 - n.z) for n.z >= 0 (axis log10_1mnz); empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
+	fprintf(f, "# floor_rms, floor_max: the accuracy floor of the same inputs (the method's exact formula rounded once)\n");
+	fprintf(f, "method,precision,distribution,axis,lo,hi,count,rms,max,floor_rms,floor_max\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
+				const cell_t *c = sweep_cell_at(s, p, d, k);
 				/* threshold and grid are lists, not distributions over n.z:
 				   their errors are in worst.csv and grid.csv */
 				if (!on(s, p, k) || !s->cfg.dist_on[d] || d == DIST_THRESHOLD || d == DIST_GRID)
@@ -416,77 +310,67 @@ static int write_by_nz(const sweep_state *s, const char *dir, const char *name, 
 					} else {
 						axis = "log10_1mnz"; lo = -17.0 + 0.25 * (b - NB_NZ - NB_LOG - NB_NORM); hi = lo + 0.25;
 					}
-					fprintf(o.f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
+					fprintf(f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
 					        dist_name(d), axis, lo, hi, (unsigned long long)x->count,
 					        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max,
 					        x->fcount ? sqrt(fx_value(&x->fsumsq) / (double)x->fcount) : NAN, x->fcount ? x->fmax : NAN);
 				}
 			}
-	return study_out_commit(&o);
 }
 
-static int write_worst(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+static void worst_body(FILE *f, const sweep_state *s, int partial)
 {
-	study_out o;
 	int p, d, k, i, j;
-	if (study_out_open(&o, dir, name) != 0)
-		return -1;
-	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# the %d worst inputs per method, precision and distribution; source: sample, or walk (found by walking neighbouring floats from the worst sampled threshold inputs); index: the input's index (for walk: the start's)\n", NWORST);
-	fprintf(o.f, "# error: the per-input defect (frisvad_rotate: max(| |w|-1 |, | w.n-z |)); inputs and outputs as C99 hex floats; ref: the method's exact formula on the same branch, rounded to double\n");
-	fprintf(o.f, "method,precision,distribution,rank,source,index,branch,error,max_ulp,max_bits,nx,ny,nz,b1x,b1y,b1z,b2x,b2y,b2z,ref_b1x,ref_b1y,ref_b1z,ref_b2x,ref_b2y,ref_b2z\n");
+	(void)partial; /* the writers' common signature */
+	fprintf(f, "# the %d worst inputs per method, precision and distribution; source: sample, or walk (found by walking neighbouring floats from the worst sampled threshold inputs); index: the input's index (for walk: the start's)\n", NWORST);
+	fprintf(f, "# error: the per-input defect (frisvad_rotate: max(| |w|-1 |, | w.n-z |)); inputs and outputs as C99 hex floats; ref: the method's exact formula on the same branch, rounded to double\n");
+	fprintf(f, "method,precision,distribution,rank,source,index,branch,error,max_ulp,max_bits,nx,ny,nz,b1x,b1y,b1z,b2x,b2y,b2z,ref_b1x,ref_b1y,ref_b1z,ref_b2x,ref_b2y,ref_b2z\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
+				const cell_t *c = sweep_cell_at(s, p, d, k);
 				if (!on(s, p, k) || !s->cfg.dist_on[d])
 					continue;
 				for (i = 0; i < NWORST; i++) {
 					const worst_t *w = &c->worst[i];
 					if (w->index == UINT64_MAX)
 						continue;
-					fprintf(o.f, "%s,%s,%s,%d,%s,%llu,%d,%.6g,%.6g,%.6g", s->kernels[k].name, prec_name(p),
+					fprintf(f, "%s,%s,%s,%d,%s,%llu,%d,%.6g,%.6g,%.6g", s->kernels[k].name, prec_name(p),
 					        dist_name(d), i + 1, w->source ? "walk" : "sample", (unsigned long long)w->index,
 					        w->branch, w->key, w->ulp, w->bits_max);
 					for (j = 0; j < 3; j++)
-						fprintf(o.f, ",%a", w->n[j]);
+						fprintf(f, ",%a", w->n[j]);
 					for (j = 0; j < 6; j++)
-						fprintf(o.f, ",%a", w->out[j]);
+						fprintf(f, ",%a", w->out[j]);
 					for (j = 0; j < 6; j++)
-						fprintf(o.f, ",%a", w->ref[j]);
-					fputc('\n', o.f);
+						fprintf(f, ",%a", w->ref[j]);
+					fputc('\n', f);
 				}
 			}
-	return study_out_commit(&o);
 }
 
-static int write_grid(const sweep_state *s, const char *dir, const char *name, int threads, double sec, int partial)
+static void grid_body(FILE *f, const sweep_state *s, int partial)
 {
-	study_out o;
 	int p, k;
 	size_t i;
-	if (study_out_open(&o, dir, name) != 0)
-		return -1;
-	header(o.f, s, threads, sec, partial);
-	fprintf(o.f, "# equal-area grid: row r has n.z in [-1 + 2r/rows, -1 + 2(r+1)/rows], col c has azimuth in [2 pi c/cols, 2 pi (c+1)/cols]; inputs at cell centres\n");
-	fprintf(o.f, "# error: the per-input defect (frisvad_rotate: direction error); b1_jump: max |b1 - b1'| to the next cell in azimuth and in n.z\n");
-	fprintf(o.f, "method,precision,row,col,nz,phi,error,mean_bits,b1_jump\n");
+	fprintf(f, "# equal-area grid: row r has n.z in [-1 + 2r/rows, -1 + 2(r+1)/rows], col c has azimuth in [2 pi c/cols, 2 pi (c+1)/cols]; inputs at cell centres\n");
+	fprintf(f, "# error: the per-input defect (frisvad_rotate: direction error); b1_jump: max |b1 - b1'| to the next cell in azimuth and in n.z\n");
+	fprintf(f, "method,precision,row,col,nz,phi,error,mean_bits,b1_jump\n");
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++) {
 			if (!on(s, p, k))
 				continue;
-			for (i = 0; i < G(s); i++) {
-				const size_t j = ((size_t)p * (size_t)s->cfg.nk + (size_t)k) * G(s) + i;
+			for (i = 0; i < sweep_grid_cells(s); i++) {
+				const size_t j = sweep_grid_index(s, p, k, i);
 				const size_t r = i / (size_t)s->cfg.grid_cols, c = i % (size_t)s->cfg.grid_cols;
-				if (!s->g_done[(size_t)p * G(s) + i])
+				if (!sweep_grid_done(s, p, i))
 					continue;
-				fprintf(o.f, "%s,%s,%zu,%zu,%.4g,%.4g,%.3g,%.3g,%.3g\n", s->kernels[k].name, prec_name(p), r, c,
+				fprintf(f, "%s,%s,%zu,%zu,%.4g,%.4g,%.3g,%.3g,%.3g\n", s->kernels[k].name, prec_name(p), r, c,
 				        -1.0 + 2.0 * ((double)r + 0.5) / s->cfg.grid_rows,
 				        6.283185307179586 * ((double)c + 0.5) / s->cfg.grid_cols,
 				        s->g_err[j], s->g_bits[j], s->kernels[k].m && !partial ? grid_jump(s, p, k, i) : NAN);
 			}
 		}
-	return study_out_commit(&o);
 }
 
 /* ---- stdout ---------------------------------------------------------------- */
@@ -508,7 +392,7 @@ static void print_table(const sweep_state *s)
 		if (!s->cfg.prec_on[p])
 			continue;
 		for (k = 0; k < s->cfg.nk; k++) {
-			const cell_t *u = sweep_cell((sweep_state *)s, p, DIST_UNIFORM, k);
+			const cell_t *u = sweep_cell_at(s, p, DIST_UNIFORM, k);
 			uint64_t nf = 0, wr = 0;
 			const int basis = s->kernels[k].m != NULL;
 			if (!on(s, p, k))
@@ -516,7 +400,7 @@ static void print_table(const sweep_state *s)
 			printf("%-28s %-6s %10.3g", s->kernels[k].name, prec_name(p),
 			       basis && s->cfg.dist_on[DIST_UNIFORM] ? st_rmse(u, DIST_UNIFORM) : NAN);
 			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
+				const cell_t *c = sweep_cell_at(s, p, d, k);
 				if (!s->cfg.dist_on[d])
 					continue;
 				nf += c->nonfinite;
@@ -544,7 +428,7 @@ static void print_csv(const sweep_state *s, int json)
 	for (p = 0; p < 2; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell((sweep_state *)s, p, d, k);
+				const cell_t *c = sweep_cell_at(s, p, d, k);
 				if (!on(s, p, k) || !s->cfg.dist_on[d])
 					continue;
 				if (json) {
@@ -567,20 +451,44 @@ static void print_csv(const sweep_state *s, int json)
 		printf("\n]\n");
 }
 
-int sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial)
+/* The files: each a header (provenance), then its body; the .partial.csv
+   name for an interrupted run.  In this order; grid.csv only with the grid
+   distribution, reference.csv only with the fast reference. */
+typedef struct {
+	const char *base;
+	int (*wanted)(const sweep_state *s);                      /* NULL: always */
+	void (*body)(FILE *f, const sweep_state *s, int partial);
+} writer;
+
+static int has_grid(const sweep_state *s) { return s->cfg.dist_on[DIST_GRID]; }
+static int has_fast_ref(const sweep_state *s) { return !s->cfg.ref_mpfr; }
+
+static const writer writers[] = {
+	{ "summary", NULL, summary_body }, { "by_nz", NULL, by_nz_body }, { "worst", NULL, worst_body },
+	{ "grid", has_grid, grid_body }, { "reference", has_fast_ref, reference_body },
+};
+
+static int write_one(const writer *w, const sweep_state *s, const char *dir, int threads, double sec, int partial)
 {
-	int rc = 0;
-	if (!partial && walk(s, threads) != 0)
+	char name[64];
+	study_out o;
+	snprintf(name, sizeof name, "%s%s.csv", w->base, partial ? ".partial" : "");
+	if (study_out_open(&o, dir, name) != 0)
 		return -1;
+	header(o.f, s, threads, sec, partial);
+	w->body(o.f, s, partial);
+	return study_out_commit(&o);
+}
+
+int sweep_finish(const sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial)
+{
+	size_t i;
+	int rc = 0;
 	if (study_mkdir_p(outdir) != 0)
 		return -1;
-	rc |= write_summary(s, outdir, partial ? "summary.partial.csv" : "summary.csv", threads, seconds, partial);
-	rc |= write_by_nz(s, outdir, partial ? "by_nz.partial.csv" : "by_nz.csv", threads, seconds, partial);
-	rc |= write_worst(s, outdir, partial ? "worst.partial.csv" : "worst.csv", threads, seconds, partial);
-	if (s->cfg.dist_on[DIST_GRID])
-		rc |= write_grid(s, outdir, partial ? "grid.partial.csv" : "grid.csv", threads, seconds, partial);
-	if (!s->cfg.ref_mpfr)
-		rc |= write_reference(s, outdir, partial ? "reference.partial.csv" : "reference.csv", threads, seconds, partial);
+	for (i = 0; i < sizeof writers / sizeof writers[0]; i++)
+		if (!writers[i].wanted || writers[i].wanted(s))
+			rc |= write_one(&writers[i], s, outdir, threads, seconds, partial);
 	if (rc)
 		return -1;
 	if (partial)

@@ -9,8 +9,9 @@
 #include <stdio.h>
 #include "sweep/state.h"
 
-/* Worst-case walk, then every CSV file; fmt is the stdout format. */
-int  sweep_finish(sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial);
+/* Every CSV file (the .partial.csv names when partial), then the table
+   (fmt: the stdout format) of a run the engine has walked; 0 or -1. */
+int  sweep_finish(const sweep_state *s, const char *outdir, int threads, const char *fmt, double seconds, int partial);
 /* The reference path and its fallback rates, one line (prefix first), and
    per method and precision when per_method != 0. */
 void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, int per_method);

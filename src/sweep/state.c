@@ -410,6 +410,44 @@ int sweep_kernels_from_names(sweep_state *s)
 static int wr(FILE *f, const void *p, size_t n) { return fwrite(p, 1, n, f) == n ? 0 : -1; }
 static int rd(FILE *f, void *p, size_t n) { return fread(p, 1, n, f) == n ? 0 : -1; }
 
+/* ---- state files: a header that starts with its magic, then parts --------- */
+
+FILE *state_file_open(const char *path, void *hdr, size_t len, const char *magic, const char *not_one)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f) {
+		study_error("%s: %s", path, strerror(errno));
+		return NULL;
+	}
+	if (rd(f, hdr, len) || memcmp(hdr, magic, strlen(magic) + 1) != 0) {
+		study_error("%s: not a %s", path, not_one);
+		fclose(f);
+		return NULL;
+	}
+	return f;
+}
+
+int state_file_parts(FILE *f, const state_part *parts, int n, int write)
+{
+	int i;
+	for (i = 0; i < n; i++)
+		if (write ? wr(f, parts[i].p, parts[i].bytes) : rd(f, parts[i].p, parts[i].bytes))
+			return -1;
+	return 0;
+}
+
+/* The parts of a sweep state after its cfg, in file order. */
+static int state_parts(const sweep_state *s, state_part *parts)
+{
+	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	parts[0].p = s->cells; parts[0].bytes = nc * sizeof *s->cells;
+	parts[1].p = s->g_err; parts[1].bytes = g * sizeof *s->g_err;
+	parts[2].p = s->g_bits; parts[2].bytes = g * sizeof *s->g_bits;
+	parts[3].p = s->g_b1; parts[3].bytes = 3 * g * sizeof *s->g_b1;
+	parts[4].p = s->g_done; parts[4].bytes = 2 * sweep_grid_cells(s);
+	return 5;
+}
+
 int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 {
 	return sweep_save_state_x(s, dir, name, NULL, 0);
@@ -418,15 +456,13 @@ int sweep_save_state(const sweep_state *s, const char *dir, const char *name)
 int sweep_save_state_x(const sweep_state *s, const char *dir, const char *name, const void *extra, size_t len)
 {
 	study_out o;
-	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	state_part parts[5];
+	const int np = state_parts(s, parts);
 	sweep_cfg cfg = s->cfg;
 	snprintf(cfg.magic, sizeof cfg.magic, "%s", STATE_MAGIC);
 	if (study_out_open(&o, dir, name) != 0)
 		return -1;
-	if (wr(o.f, &cfg, sizeof cfg) || wr(o.f, s->cells, nc * sizeof *s->cells) ||
-	    wr(o.f, s->g_err, g * sizeof *s->g_err) || wr(o.f, s->g_bits, g * sizeof *s->g_bits) ||
-	    wr(o.f, s->g_b1, 3 * g * sizeof *s->g_b1) || wr(o.f, s->g_done, 2 * sweep_grid_cells(s)) ||
-	    (len && wr(o.f, extra, len))) {
+	if (wr(o.f, &cfg, sizeof cfg) || state_file_parts(o.f, parts, np, 1) || (len && wr(o.f, extra, len))) {
 		study_error("%s: write failed: %s", o.path, strerror(errno));
 		study_out_abort(&o);
 		return -1;
@@ -462,19 +498,13 @@ static int read_rest(FILE *f, unsigned char **extra, size_t *len)
 
 int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, size_t *len)
 {
-	FILE *f = fopen(path, "rb");
-	size_t nc, g;
-	int c;
+	FILE *f;
+	state_part parts[5];
+	int c, np;
 	memset(s, 0, sizeof *s);
-	if (!f) {
-		study_error("%s: %s", path, strerror(errno));
+	if (!(f = state_file_open(path, &s->cfg, sizeof s->cfg, STATE_MAGIC,
+	                          "sweep state file of this version (write one with 'sweep --shard K/N')")))
 		return -1;
-	}
-	if (rd(f, &s->cfg, sizeof s->cfg) || strcmp(s->cfg.magic, STATE_MAGIC) != 0) {
-		study_error("%s: not a sweep state file of this version (write one with 'sweep --shard K/N')", path);
-		fclose(f);
-		return -1;
-	}
 	if (s->cfg.nk < 1 || s->cfg.nk > SWEEP_MAX_KERNELS || s->cfg.grid_rows < 2 || s->cfg.grid_cols < 2 ||
 	    (uint64_t)s->cfg.grid_rows * (uint64_t)s->cfg.grid_cols > SWEEP_MAX_GRID_CELLS ||
 	    s->cfg.shard_n < 1 || s->cfg.shard_n > 1000000 || s->cfg.shard_k < 0 || s->cfg.shard_k >= s->cfg.shard_n ||
@@ -490,11 +520,8 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 		fclose(f);
 		return -1;
 	}
-	nc = 2 * NDIST * (size_t)s->cfg.nk;
-	g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
-	if (rd(f, s->cells, nc * sizeof *s->cells) || rd(f, s->g_err, g * sizeof *s->g_err) ||
-	    rd(f, s->g_bits, g * sizeof *s->g_bits) || rd(f, s->g_b1, 3 * g * sizeof *s->g_b1) ||
-	    rd(f, s->g_done, 2 * sweep_grid_cells(s)) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
+	np = state_parts(s, parts);
+	if (state_file_parts(f, parts, np, 0) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
 		study_error("%s: truncated or oversized state file", path);
 		fclose(f);
 		sweep_free(s);

@@ -136,6 +136,14 @@ void sweep_free(sweep_state *s);
 /* Restore the kernels from cfg.names. */
 int  sweep_kernels_from_names(sweep_state *s);
 
+/* State files, sweep's and threshold's: a header starting with its magic
+   string, then parts of known sizes.  open reads the header (NULL after
+   "PATH: not a NOT_ONE" or the system's message); parts reads or writes
+   each part in order (0, or -1 at a short read or write). */
+typedef struct { void *p; size_t bytes; } state_part;
+FILE *state_file_open(const char *path, void *hdr, size_t len, const char *magic, const char *not_one);
+int   state_file_parts(FILE *f, const state_part *parts, int n, int write);
+
 int  sweep_save_state(const sweep_state *s, const char *dir, const char *name);
 int  sweep_load_state(sweep_state *s, const char *path);
 /* The same with extra bytes after the state (the MPI driver's checkpoint:

@@ -26,6 +26,7 @@
 #include <omp.h>
 #endif
 #include "sweep/threshold.h"
+#include "sweep/state.h"  /* its state-file helpers */
 #include "cli/cli.h"
 #include "cli/output.h"
 #include "methods/kernels.h"
@@ -247,26 +248,32 @@ static int th_write(th_state *s, const char *out, int threads)
 	return 0;
 }
 
+/* The parts of precision p in a state file, in file order (state.h). */
+static int th_parts(const th_state *s, int p, state_part *parts)
+{
+	const size_t n = (size_t)s->cfg.count[p];
+	void *const a[6] = { s->v[p], s->fn[p], s->fo[p], s->bn[p], s->bo[p], s->done[p] };
+	int i;
+	for (i = 0; i < 6; i++) {
+		parts[i].p = a[i];
+		parts[i].bytes = i < 5 ? n * sizeof(double) : n;
+	}
+	return 6;
+}
+
 static int th_save(const th_state *s, const char *out)
 {
 	study_out o;
 	char name[64];
+	state_part parts[6];
 	int p, bad = 0;
 	snprintf(name, sizeof name, "threshold-state-%d-of-%d.bin", s->cfg.shard_k, s->cfg.shard_n);
 	if (study_mkdir_p(out) != 0 || study_out_open(&o, out, name) != 0)
 		return -1;
 	bad |= fwrite(&s->cfg, sizeof s->cfg, 1, o.f) != 1;
-	for (p = 0; p < 2; p++) {
-		const size_t n = (size_t)s->cfg.count[p];
-		if (!s->cfg.prec_on[p])
-			continue;
-		bad |= fwrite(s->v[p], sizeof(double), n, o.f) != n;
-		bad |= fwrite(s->fn[p], sizeof(double), n, o.f) != n;
-		bad |= fwrite(s->fo[p], sizeof(double), n, o.f) != n;
-		bad |= fwrite(s->bn[p], sizeof(double), n, o.f) != n;
-		bad |= fwrite(s->bo[p], sizeof(double), n, o.f) != n;
-		bad |= fwrite(s->done[p], 1, n, o.f) != n;
-	}
+	for (p = 0; p < 2; p++)
+		if (s->cfg.prec_on[p])
+			bad |= state_file_parts(o.f, parts, th_parts(s, p, parts), 1) != 0;
 	if (bad) {
 		study_error("%s: write failed", o.path);
 		study_out_abort(&o);
@@ -281,32 +288,19 @@ static int th_save(const th_state *s, const char *out)
 
 static int th_load(th_state *s, const char *path)
 {
-	FILE *f = fopen(path, "rb");
+	FILE *f;
+	state_part parts[6];
 	int p, bad = 0;
 	memset(s, 0, sizeof *s);
-	if (!f) {
-		study_error("%s: %s", path, strerror(errno));
+	if (!(f = state_file_open(path, &s->cfg, sizeof s->cfg, TH_MAGIC, "threshold state file")))
 		return -1;
-	}
-	if (fread(&s->cfg, sizeof s->cfg, 1, f) != 1 || strncmp(s->cfg.magic, TH_MAGIC, sizeof s->cfg.magic) != 0) {
-		study_error("%s: not a threshold state file", path);
-		fclose(f);
-		return -1;
-	}
 	bad = s->cfg.shard_n < 1 || s->cfg.shard_n > 1000000 || s->cfg.shard_k < 0 || s->cfg.shard_k >= s->cfg.shard_n;
 	for (p = 0; p < 2 && !bad; p++) {
-		size_t n;
 		if (!s->cfg.prec_on[p])
 			continue;
 		if (s->cfg.count[p] < 1 || s->cfg.count[p] > (1 << 26)) { bad = 1; break; }
-		n = (size_t)s->cfg.count[p];
 		if (th_alloc(s, p, s->cfg.count[p]) != 0) { bad = 1; break; }
-		bad |= fread(s->v[p], sizeof(double), n, f) != n;
-		bad |= fread(s->fn[p], sizeof(double), n, f) != n;
-		bad |= fread(s->fo[p], sizeof(double), n, f) != n;
-		bad |= fread(s->bn[p], sizeof(double), n, f) != n;
-		bad |= fread(s->bo[p], sizeof(double), n, f) != n;
-		bad |= fread(s->done[p], 1, n, f) != n;
+		bad |= state_file_parts(f, parts, th_parts(s, p, parts), 0) != 0;
 	}
 	if (bad || fgetc(f) != EOF) {
 		study_error("%s: truncated or corrupt threshold state", path);

@@ -436,6 +436,16 @@ int state_file_parts(FILE *f, const state_part *parts, int n, int write)
 	return 0;
 }
 
+int state_file_end(FILE *f, const char *path, int bad, const char *what)
+{
+	if (!bad && fgetc(f) != EOF)
+		bad = 1;
+	fclose(f);
+	if (bad)
+		study_error("%s: %s", path, what);
+	return bad ? -1 : 0;
+}
+
 /* The parts of a sweep state after its cfg, in file order. */
 static int state_parts(const sweep_state *s, state_part *parts)
 {
@@ -521,13 +531,11 @@ int sweep_load_state_x(sweep_state *s, const char *path, unsigned char **extra, 
 		return -1;
 	}
 	np = state_parts(s, parts);
-	if (state_file_parts(f, parts, np, 0) || (extra ? read_rest(f, extra, len) != 0 : fgetc(f) != EOF)) {
-		study_error("%s: truncated or oversized state file", path);
-		fclose(f);
+	if (state_file_end(f, path, state_file_parts(f, parts, np, 0) || (extra && read_rest(f, extra, len) != 0),
+	                   "truncated or oversized state file") != 0) {
 		sweep_free(s);
 		return -1;
 	}
-	fclose(f);
 	return 0;
 }
 

@@ -143,6 +143,9 @@ int  sweep_kernels_from_names(sweep_state *s);
 typedef struct { void *p; size_t bytes; } state_part;
 FILE *state_file_open(const char *path, void *hdr, size_t len, const char *magic, const char *not_one);
 int   state_file_parts(FILE *f, const state_part *parts, int n, int write);
+/* Close a file being read: 0, or -1 after "PATH: WHAT" when bad is set or
+   bytes remain. */
+int   state_file_end(FILE *f, const char *path, int bad, const char *what);
 
 int  sweep_save_state(const sweep_state *s, const char *dir, const char *name);
 int  sweep_load_state(sweep_state *s, const char *path);

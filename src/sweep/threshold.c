@@ -302,13 +302,10 @@ static int th_load(th_state *s, const char *path)
 		if (th_alloc(s, p, s->cfg.count[p]) != 0) { bad = 1; break; }
 		bad |= state_file_parts(f, parts, th_parts(s, p, parts), 0) != 0;
 	}
-	if (bad || fgetc(f) != EOF) {
-		study_error("%s: truncated or corrupt threshold state", path);
-		fclose(f);
+	if (state_file_end(f, path, bad, "truncated or corrupt threshold state") != 0) {
 		th_free(s);
 		return -1;
 	}
-	fclose(f);
 	return 0;
 }
 

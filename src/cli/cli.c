@@ -175,6 +175,26 @@ int cli_next(cli_args *c, const struct option *lo)
 	return CLI_ERROR;
 }
 
+int cli_option_arity(const struct option *lo, const char *a, int exact)
+{
+	const char *eq;
+	size_t len;
+	int hits = 0, value = 0;
+	if (a[0] != '-' || a[1] != '-' || !a[2])
+		return -1;
+	a += 2;
+	eq = strchr(a, '=');
+	len = eq ? (size_t)(eq - a) : strlen(a);
+	for (; lo->name; lo++)
+		if (!strncmp(lo->name, a, len)) {
+			if (strlen(lo->name) == len)
+				return !eq && lo->has_arg == required_argument;
+			hits++;
+			value = lo->has_arg == required_argument;
+		}
+	return exact || hits != 1 ? -1 : !eq && value;
+}
+
 char **cli_rest(cli_args *c, int *n)
 {
 	*n = c->ac - optind;

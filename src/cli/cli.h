@@ -50,6 +50,12 @@ typedef struct {
 } cli_args;
 int  cli_begin(cli_args *c, const char *cmd, int argc, char **argv); /* 0, or -1 after a message */
 int  cli_next(cli_args *c, const struct option *lo); /* val, CLI_HELP, CLI_ERROR (message printed) or -1 at the end */
+/* For pre-scans that split argv before getopt_long sees it (eval's
+   operands, the MPI driver's own options): whether a is "--name" or
+   "--name=value" of the table (a unique prefix of a name too, as
+   getopt_long allows, unless exact), and then 1 when it takes the next
+   argument as its value, else 0; -1 when it is not one of the table's. */
+int  cli_option_arity(const struct option *lo, const char *a, int exact);
 char **cli_rest(cli_args *c, int *n);                 /* the operands, after the options */
 int  cli_no_rest(cli_args *c);                        /* -1 with a message if there are operands */
 void cli_end(cli_args *c);

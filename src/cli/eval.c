@@ -41,25 +41,6 @@ static int is_negative_number(const char *a)
 	                       a[1] == 'n' || a[1] == 'N');
 }
 
-/* Whether "--name" (a unique prefix, as getopt_long allows) needs the next argument. */
-static int takes_value(const struct option *lo, const char *a)
-{
-	size_t len;
-	int hits = 0, value = 0;
-	if (a[0] != '-' || a[1] != '-' || strchr(a, '='))
-		return 0;
-	a += 2;
-	len = strlen(a);
-	for (; lo->name; lo++)
-		if (!strncmp(lo->name, a, len)) {
-			if (strlen(lo->name) == len)
-				return lo->has_arg == required_argument;
-			hits++;
-			value = lo->has_arg == required_argument;
-		}
-	return hits == 1 && value;
-}
-
 static int eval_option(int v, const char *a, eval_opts *o)
 {
 	char tail;
@@ -113,7 +94,7 @@ static int eval_parse(int argc, char **argv, eval_opts *o)
 			dashdash = 1;
 		} else {
 			opts[n++] = argv[i];
-			if (takes_value(lo, a) && i + 1 < argc)
+			if (cli_option_arity(lo, a, 0) == 1 && i + 1 < argc)
 				opts[n++] = argv[++i];
 		}
 	}

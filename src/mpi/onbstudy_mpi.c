@@ -164,38 +164,61 @@ static void mpi_usage(void)
 	       "'onbstudy-mpi sweep --help' lists the sweep's options after these.\n", PLAN_CHUNK);
 }
 
-/* Take the MPI options out of argv (the rest goes to plan_parse). */
+static int mpi_option(int v, const char *a, mpi_opts *o)
+{
+	if (v == 'r') {
+		o->resume = a;
+		return 0;
+	}
+	if (v == 'c') {
+		if (parse_double("--checkpoint-every", a, &o->ckpt_every))
+			return -1;
+		if (o->ckpt_every < 0) {
+			study_error("--checkpoint-every: must be >= 0");
+			return -1;
+		}
+		return 0;
+	}
+	return parse_int("--batch", a, 1, 1L << 30, &o->batch);
+}
+
+/* Take the MPI options (exact names: a prefix may be one of the sweep's)
+   out of argv, the rest to plan_parse, and parse them with the study's
+   getopt_long wrapper. */
 static int mpi_options(int *argc, char **argv, mpi_opts *o)
 {
-	int i, n = 0;
-	memset(o, 0, sizeof *o);
+	static const struct option lo[] = {
+		{ "resume", required_argument, NULL, 'r' }, { "checkpoint-every", required_argument, NULL, 'c' },
+		{ "batch", required_argument, NULL, 'b' }, { NULL, 0, NULL, 0 }
+	};
+	char **mine = malloc(((size_t)*argc + 1) * sizeof *mine);
+	int i, n = 0, m = 0, v, rc = 0;
+	cli_args c;
+	if (!mine) {
+		study_error("out of memory");
+		return -1;
+	}
 	for (i = 0; i < *argc; i++) {
-		const char *a = argv[i], *eq = strchr(a, '=');
-		const size_t len = eq ? (size_t)(eq - a) : strlen(a);
-		const char *v = eq ? eq + 1 : i + 1 < *argc ? argv[i + 1] : NULL;
-		int which = len == 8 && !strncmp(a, "--resume", 8) ? 1 : len == 18 && !strncmp(a, "--checkpoint-every", 18) ? 2 :
-		            len == 7 && !strncmp(a, "--batch", 7) ? 3 : 0;
-		if (!which) {
+		const int ar = cli_option_arity(lo, argv[i], 1);
+		if (ar < 0) {
 			argv[n++] = argv[i];
 			continue;
 		}
-		if (!v) {
-			study_error("%.*s needs a value", (int)len, a);
-			return -1;
-		}
-		if (!eq)
-			i++;
-		if (which == 1)
-			o->resume = v;
-		else if (which == 2 && (parse_double("--checkpoint-every", v, &o->ckpt_every) || o->ckpt_every < 0)) {
-			if (o->ckpt_every < 0)
-				study_error("--checkpoint-every: must be >= 0");
-			return -1;
-		} else if (which == 3 && parse_int("--batch", v, 1, 1L << 30, &o->batch))
-			return -1;
+		mine[m++] = argv[i];
+		if (ar == 1 && i + 1 < *argc)
+			mine[m++] = argv[++i];
 	}
 	*argc = n;
-	return 0;
+	if (cli_begin(&c, "sweep", m, mine) != 0) {
+		free(mine);
+		return -1;
+	}
+	memset(o, 0, sizeof *o);
+	while (rc == 0 && (v = cli_next(&c, lo)) != -1)
+		rc = v == CLI_ERROR || mpi_option(v, c.arg, o) != 0 ? -1 : 0;
+	cli_end(&c);
+	free(mine);
+	return rc;
 }
 
 /* Parse and build the plan on every rank; only rank 0 speaks.  0, or the

@@ -55,7 +55,7 @@ variant() {
 		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 }
 SINK='__asm__ volatile("" ::: "memory");'
-variant plain '#include "reffast.h"' ''
+variant plain '#include "reference/reffast.h"' ''
 variant formula '	xreference(k, br, loc, n, XR(e), XR(e) + 3, bad);' \
 	"	{ xv q[6]; int qb = 0; xreference(k, br, loc, n, q, q + 3, &qb); __asm__ volatile(\"\" :: \"m\"(q), \"r\"(qb)); }"
 variant forward '		const int f = forward_all(e, r1, r2, prec, s, undet);' \

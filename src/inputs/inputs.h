@@ -1,5 +1,7 @@
 /*
- * inputs.h - the input distributions of the sweep.
+ * inputs.h - the input distributions of the sweep.  src/inputs/ holds them
+ * (inputs.c) and the counter-based random numbers they draw (rng.h); the
+ * sweep, threshold and bench --reference sample through them.
  *
  * Every input is a pure function of (distribution, precision, seed,
  * index), so a run is the same whatever its thread count or sharding.

@@ -2,6 +2,13 @@
  * meshio.h - scene normals from Wavefront OBJ, PLY and glTF 2.0 files
  * (study only, not part of libonb; the glTF reader links cJSON).
  *
+ * src/mesh/ holds the readers, the bottom of the study (they import
+ * nothing of it): meshio.c detects the format and calls obj.c, ply.c or
+ * gltf.c, which share common.c (errors, arrays, tokens, vertex normals,
+ * whole-file reads, the classification of normals).  This header is the
+ * folder's face, for `onbstudy scene`, examples/aorender.c and the fuzzers;
+ * common.h, obj.h, ply.h and gltf.h are internal.
+ *
  * Every reader parses a memory buffer (mesh_read_mem), so a fuzzer can call
  * it on arbitrary bytes; mesh_read_file reads a whole file and calls it.
  * The readers never crash and never return a partial result: on malformed

@@ -3,6 +3,12 @@
  * with the library's flags, optionally a second copy compiled with FMA
  * contraction (--fma), and Frisvad's Equation 3 (frisvad_rotate), which
  * rotates a direction instead of returning a basis.
+ *
+ * src/methods/ holds the study's side of each method: this kernel table
+ * (kernels.c), the FMA copy (fma_kernels.c) and the branch rule both
+ * share (branch.inc), which the references follow.  Every command that
+ * evaluates a method (sweep, eval, threshold, bench --reference) goes
+ * through it; it imports only libonb (and cli.h for its messages).
  */
 #ifndef ONB_KERNELS_H
 #define ONB_KERNELS_H

@@ -1,6 +1,13 @@
 /*
  * reference.h - the MPFR reference and the per-input metrics.
  *
+ * src/reference/ holds what every figure is measured against: the MPFR
+ * reference and the accuracy floor (reference.c), and the certified fast
+ * reference in pairs of long doubles and of doubles (reffast.c, compiled a
+ * second time as reffast_f.c; reffast.h), which writes MPFR's bytes and
+ * asks MPFR where it cannot decide.  It imports methods/ (the kernels and
+ * their branches) and nothing above it.
+ *
  * For one kernel, one precision and one input n (the exact binary value
  * the kernel received), ref_eval runs the kernel and measures, in MPFR at
  * the context's precision (never MPFR's default precision):

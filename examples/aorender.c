@@ -648,9 +648,42 @@ static unsigned char pal_index(double v)
 	return (unsigned char)(255 * v + 0.5);
 }
 
-int main(int argc, char **argv)
+/* --diff: the image against the method's own frame made exact (sc, or the
+   sphere scene when sc is NULL), written as a palette PNG with its colour
+   scale, and one summary line on stdout.  0, or 1 when DIFF can't be written. */
+static int write_diff(const char *diff, const char *name, const onb_method *m, int fl, int spp,
+                      const mscene *sc, const double *img, unsigned char *rgb)
 {
 	static unsigned char plte[768];
+	static double ref[W * H];
+	int i, k;
+	double maxd = 0, sumd = 0;
+	int nan = 0, over = 0;
+	if (sc)
+		render_mesh(sc, m, fl, 1, spp, ref);
+	else
+		render(onb_find("duff_branchless"), 0, spp, ref);
+	for (i = 0; i < W * H; i++) {
+		double d = fabs(img[i] - ref[i]);
+		if (d != d) nan++;
+		else { if (d > maxd) maxd = d; sumd += d; over += d > DIFF_MAX / 2; }
+		rgb[i] = pal_index(d / DIFF_MAX);
+	}
+	for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to DIFF_MAX at the right */
+		rgb[i] = pal_index((double)(i % W) / (W - 1));
+	for (k = 0; k < 256; k++) /* the colour scale as a 256-entry palette */
+		colour(k / 255.0, plte + 3 * k);
+	if (write_png(diff, rgb, W, H, 1, plte) != 0) {
+		fprintf(stderr, "aorender: cannot write '%s'\n", diff);
+		return 1;
+	}
+	printf("%-24s %-6s mean |diff| %.4f  max %.3f  pixels > %.3f: %5d  NaN pixels %d\n", name, fl ? "float" : "double",
+	       sumd / (W * H - nan), maxd, DIFF_MAX / 2, over, nan);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
 	const char *name = NULL, *out = NULL, *diff = NULL, *obj = NULL;
 	int fl = 1, spp = 256, k, i, renorm = 1;
 	char up = 'z';
@@ -658,7 +691,7 @@ int main(int argc, char **argv)
 	mesh_normals mn;
 	mesh_geom mg;
 	mscene sc;
-	static double img[W * H], ref[W * H];
+	static double img[W * H];
 	static unsigned char rgb[W * H * 3];
 	crc_init();
 	for (k = 1; k < argc; k++) {
@@ -726,30 +759,8 @@ int main(int argc, char **argv)
 		fprintf(stderr, "aorender: cannot write '%s'\n", out);
 		return 1;
 	}
-	if (diff) {
-		double maxd = 0, sumd = 0;
-		int nan = 0, over = 0;
-		if (obj)
-			render_mesh(&sc, m, fl, 1, spp, ref);
-		else
-			render(onb_find("duff_branchless"), 0, spp, ref);
-		for (i = 0; i < W * H; i++) {
-			double d = fabs(img[i] - ref[i]);
-			if (d != d) nan++;
-			else { if (d > maxd) maxd = d; sumd += d; over += d > DIFF_MAX / 2; }
-			rgb[i] = pal_index(d / DIFF_MAX);
-		}
-		for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to DIFF_MAX at the right */
-			rgb[i] = pal_index((double)(i % W) / (W - 1));
-		for (k = 0; k < 256; k++) /* the colour scale as a 256-entry palette */
-			colour(k / 255.0, plte + 3 * k);
-		if (write_png(diff, rgb, W, H, 1, plte) != 0) {
-			fprintf(stderr, "aorender: cannot write '%s'\n", diff);
-			return 1;
-		}
-		printf("%-24s %-6s mean |diff| %.4f  max %.3f  pixels > %.3f: %5d  NaN pixels %d\n", name, fl ? "float" : "double",
-		       sumd / (W * H - nan), maxd, DIFF_MAX / 2, over, nan);
-	}
+	if (diff && write_diff(diff, name, m, fl, spp, obj ? &sc : NULL, img, rgb) != 0)
+		return 1;
 	if (obj) {
 		mscene_free(&sc); mesh_geom_free(&mg); mesh_free(&mn);
 	}

@@ -4,12 +4,7 @@
 # fields numeric; exactly one row per expected combination.  Then
 # `onbstudy table` joins it with a small summary.csv.  Bad options exit 2
 # with one line.  No assertion on any time.
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 # (nothing is compiled here, so $ONB_SANFLAGS needs no handling)
 
 cols="method,precision,mode,threads,size_class,size,bytes,reps,passes,mbases_per_s,mbases_per_s_best,ns_per_call,ns_per_call_best,cycles_per_call,cycles_per_call_best,chain_ns,frac_roofline,vs_yardstick,isa,vectorized,checksum,flag"
@@ -94,5 +89,4 @@ done
 ./onbstudy table --bench "$tmp/none.csv" --summary "$tmp/summary.csv" >/dev/null 2>"$tmp/err"
 [ $? -eq 2 ] && [ "$(wc -l < "$tmp/err")" -eq 1 ] && ok || bad "table with a missing file: $(cat "$tmp/err")"
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -8,14 +8,9 @@
 # Cases listed in KNOWN are bugs reported to the owner of the code (see the
 # comment there): they are run and reported as "KNOWN", not counted as
 # failures; a KNOWN case that passes is counted as passed, with a note.
-set -u
-cd "$(dirname "$0")/.."
-root=$(pwd)
+. "$(dirname "$0")/lib.sh"
 bin=$root/onbstudy
-pass=0; fail=0; known=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+known=0
 mkdir -p "$tmp/cwd"
 out="$tmp/out"
 : > "$tmp/afile"

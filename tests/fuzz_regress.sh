@@ -5,15 +5,8 @@
 # tests/fuzz/regressions/<harness>/ must run to the end (no abort, no
 # sanitizer report under `make test SANITIZE=...`).  scripts/fuzz.sh does
 # the fuzzing itself, with clang.
-set -u
-cd "$(dirname "$0")/.."
-root=$(pwd)
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 CC=${CC:-cc}
-SAN=${ONB_SANFLAGS:-}
 for h in mesh gltf cli; do
 	bin="$tmp/replay_$h"
 	# shellcheck disable=SC2086
@@ -41,5 +34,4 @@ for h in mesh gltf cli; do
 	fi
 	[ -z "$(ls -A "$tmp/cwd_$h")" ] && ok || bad "$h harness wrote files: $(ls -A "$tmp/cwd_$h")"
 done
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

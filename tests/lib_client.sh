@@ -13,13 +13,7 @@
 #     studied bits under -ffp-contract=fast; without them
 #     (ONB_INLINE_FOLLOWS_CLIENT_FP) the bits change on an FMA CPU, which
 #     shows that check 2 can fail.
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-SAN=${ONB_SANFLAGS:-}
+. "$(dirname "$0")/lib.sh"
 W="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Wfloat-equal -Werror"
 LIBFP="-O2 -ffp-contract=off -fno-math-errno -fno-trapping-math"
 
@@ -103,5 +97,4 @@ else
 	echo "skip: no FMA on this CPU, contraction cannot change a bit here"
 fi
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -6,15 +6,9 @@
 #  3. make install/uninstall with DESTDIR, and pkg-config --cflags --libs onb;
 #     two prefixes in a row, each with its own onb.pc;
 #  4. -ffast-math stops at #error (unless ONB_ALLOW_FAST_MATH: tests/lib_client.sh).
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 # Under `make test SANITIZE=...` the library carries sanitizer hooks, so
 # programs linking it need the same flags.
-SAN=${ONB_SANFLAGS:-}
 
 # 1. symbol names
 others=$(nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | grep -v '^onb_' || true)
@@ -103,5 +97,4 @@ if [ "$nmeth" -ge 18 ] && [ "$(./onbstudy list --format csv | tail -n +2 | wc -l
 ./onbstudy --help >/dev/null && ok || bad "onbstudy --help"
 ./onbstudy frobnicate 2>/dev/null; [ $? -eq 2 ] && ok || bad "unknown command must exit 2"
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -6,17 +6,11 @@
 # resumes too; a bad option, other options on one rank, and a checkpoint
 # of other options are refused with one message and no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
-set -u
-cd "$(dirname "$0")/.."
+. "$(dirname "$0")/lib.sh"
 if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
-	echo "SKIP: no mpirun/mpicc (Open MPI: scripts/install-deps.sh installs it)"
-	exit 0
+	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh installs it)"
 fi
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-make -s mpi > "$T/make.log" 2>&1 || { cat "$T/make.log"; echo "FAIL: make mpi"; exit 1; }
+make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
 # Open MPI as root (CI) and without a network: shared memory only
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
@@ -31,9 +25,9 @@ MPIRUN="timeout 600 mpirun --oversubscribe"
 # same DIR1 DIR2 WHAT: the data (every line but the '#' provenance) and stdout
 same() {
 	for f in summary by_nz worst grid; do
-		grep -v '^#' "$1/$f.csv" > "$T/a.data" 2> /dev/null || { bad "$3: no data in $1/$f.csv"; return; }
-		grep -v '^#' "$2/$f.csv" > "$T/b.data" 2> /dev/null || { bad "$3: no data in $2/$f.csv"; return; }
-		cmp -s "$T/a.data" "$T/b.data" || { bad "$3: $f.csv differs from the single-process run"; return; }
+		grep -v '^#' "$1/$f.csv" > "$tmp/a.data" 2> /dev/null || { bad "$3: no data in $1/$f.csv"; return; }
+		grep -v '^#' "$2/$f.csv" > "$tmp/b.data" 2> /dev/null || { bad "$3: no data in $2/$f.csv"; return; }
+		cmp -s "$tmp/a.data" "$tmp/b.data" || { bad "$3: $f.csv differs from the single-process run"; return; }
 	done
 	cmp -s "$1.out" "$2.out" || { bad "$3: stdout differs"; return; }
 	ok
@@ -42,49 +36,49 @@ same() {
 # bad starts: exit non-zero, our message once, no hang (timeout 600 -> 124)
 refuse() { # WHAT WORD ARGS...
 	what=$1; word=$2; shift 2
-	"$@" > "$T/bad.out" 2> "$T/bad.err"
+	"$@" > "$tmp/bad.out" 2> "$tmp/bad.err"
 	rc=$?
-	n=$(grep -c "^onbstudy: .*$word" "$T/bad.err")
+	n=$(grep -c "^onbstudy: .*$word" "$tmp/bad.err")
 	if [ $rc -ne 0 ] && [ $rc -ne 124 ] && [ "$n" -eq 1 ]; then ok
-	else bad "$what: exit $rc, $n messages with '$word': $(grep -v '^-\|^$' "$T/bad.err" | head -3)"; fi
+	else bad "$what: exit $rc, $n messages with '$word': $(grep -v '^-\|^$' "$tmp/bad.err" | head -3)"; fi
 }
 
 A="--samples 1024 --exhaustive-count 512 --grid 4x8 --methods duff,frisvad,naive,frisvad_rotate --quiet"
-./onbstudy sweep $A --threads 2 --out "$T/ref" > "$T/ref.out" 2> "$T/ref.err" || bad "the single-process sweep failed: $(cat "$T/ref.err")"
+./onbstudy sweep $A --threads 2 --out "$tmp/ref" > "$tmp/ref.out" 2> "$tmp/ref.err" || bad "the single-process sweep failed: $(cat "$tmp/ref.err")"
 for n in 1 2 3; do
 	for t in 1 2; do
-		d="$T/n$n-t$t"
+		d="$tmp/n$n-t$t"
 		$MPIRUN -n $n ./onbstudy-mpi sweep $A --threads $t --out "$d" > "$d.out" 2> "$d.err"
 		rc=$?
 		[ $rc -eq 0 ] && ok || bad "mpirun -n $n, $t threads: exit $rc: $(head -3 "$d.err")"
-		same "$T/ref" "$d" "mpirun -n $n, $t threads"
+		same "$tmp/ref" "$d" "mpirun -n $n, $t threads"
 		grep -q "^# mpi: $n ranks x $t threads" "$d/summary.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
 	done
 done
 # the fast reference path (issue 14) through the same engine: the same data,
 # and the same evaluation and fallback counts in reference.csv (the count of
 # MPFR calls for worst rows depends on the chunking, so only the log has it)
-./onbstudy sweep $A --ref fast --threads 2 --out "$T/fref" > "$T/fref.out" 2> /dev/null || bad "sweep --ref fast failed"
-$MPIRUN -n 2 ./onbstudy-mpi sweep $A --ref fast --threads 1 --out "$T/fmpi" > "$T/fmpi.out" 2> "$T/fmpi.err" || bad "mpirun --ref fast: $(head -3 "$T/fmpi.err")"
-same "$T/fref" "$T/fmpi" "--ref fast on 2 ranks"
-if [ -f "$T/fref/reference.csv" ]; then
-	grep -v '^#' "$T/fref/reference.csv" > "$T/a.ref"
-	grep -v '^#' "$T/fmpi/reference.csv" > "$T/b.ref" 2> /dev/null
-	cmp -s "$T/a.ref" "$T/b.ref" && ok || bad "--ref fast on 2 ranks: reference.csv counts differ"
+./onbstudy sweep $A --ref fast --threads 2 --out "$tmp/fref" > "$tmp/fref.out" 2> /dev/null || bad "sweep --ref fast failed"
+$MPIRUN -n 2 ./onbstudy-mpi sweep $A --ref fast --threads 1 --out "$tmp/fmpi" > "$tmp/fmpi.out" 2> "$tmp/fmpi.err" || bad "mpirun --ref fast: $(head -3 "$tmp/fmpi.err")"
+same "$tmp/fref" "$tmp/fmpi" "--ref fast on 2 ranks"
+if [ -f "$tmp/fref/reference.csv" ]; then
+	grep -v '^#' "$tmp/fref/reference.csv" > "$tmp/a.ref"
+	grep -v '^#' "$tmp/fmpi/reference.csv" > "$tmp/b.ref" 2> /dev/null
+	cmp -s "$tmp/a.ref" "$tmp/b.ref" && ok || bad "--ref fast on 2 ranks: reference.csv counts differ"
 fi
-grep -q "PARTIAL\|checkpoint" "$T/n3-t1/summary.csv" && bad "a finished run mentions a checkpoint" || ok
-[ ! -e "$T/n3-t1/sweep-checkpoint.bin" ] && ok || bad "the checkpoint is left after a finished run"
+grep -q "PARTIAL\|checkpoint" "$tmp/n3-t1/summary.csv" && bad "a finished run mentions a checkpoint" || ok
+[ ! -e "$tmp/n3-t1/sweep-checkpoint.bin" ] && ok || bad "the checkpoint is left after a finished run"
 
 # SIGKILL one rank mid-run, then --resume: the same files, at most the
 # in-flight batches (one per rank) redone
 # big enough that a loaded machine cannot finish it between two polls
 K="--samples 65536 --exhaustive-count 4096 --grid 8x16 --methods duff,frisvad,naive,stark --quiet --threads 1"
 BATCH=8
-./onbstudy sweep $K --out "$T/kref" > "$T/kref.out" 2> /dev/null || bad "the reference of the kill test failed"
-$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$T/kill" > /dev/null 2> "$T/kill.err" &
+./onbstudy sweep $K --out "$tmp/kref" > "$tmp/kref.out" 2> /dev/null || bad "the reference of the kill test failed"
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$tmp/kill" > /dev/null 2> "$tmp/kill.err" &
 mp=$!
 i=0
-while [ ! -f "$T/kill/sweep-checkpoint.bin" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
+while [ ! -f "$tmp/kill/sweep-checkpoint.bin" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
 sleep 0.5
 victim=""
 i=0
@@ -99,40 +93,39 @@ done
 if [ -n "$victim" ]; then kill -KILL "$victim"; ok; else bad "no rank 1 to kill (the run ended too soon?)"; fi
 wait $mp; rc=$?
 [ $rc -ne 0 ] && ok || bad "mpirun exited 0 after a rank was killed"
-[ -f "$T/kill/sweep-checkpoint.bin" ] && ok || bad "no checkpoint after the kill"
-[ ! -f "$T/kill/summary.csv" ] && ok || bad "the killed run wrote summary.csv"
-refuse "a checkpoint of other options" "other options" $MPIRUN -n 2 ./onbstudy-mpi sweep $K --seed 7 --resume "$T/kill"
-$MPIRUN -n 3 ./onbstudy-mpi sweep $K --resume "$T/kill" > "$T/kill.out" 2> "$T/resume.err"
+[ -f "$tmp/kill/sweep-checkpoint.bin" ] && ok || bad "no checkpoint after the kill"
+[ ! -f "$tmp/kill/summary.csv" ] && ok || bad "the killed run wrote summary.csv"
+refuse "a checkpoint of other options" "other options" $MPIRUN -n 2 ./onbstudy-mpi sweep $K --seed 7 --resume "$tmp/kill"
+$MPIRUN -n 3 ./onbstudy-mpi sweep $K --resume "$tmp/kill" > "$tmp/kill.out" 2> "$tmp/resume.err"
 rc=$?
-[ $rc -eq 0 ] && ok || bad "--resume: exit $rc: $(head -3 "$T/resume.err")"
-same "$T/kref" "$T/kill" "kill rank 1 + --resume"
+[ $rc -eq 0 ] && ok || bad "--resume: exit $rc: $(head -3 "$tmp/resume.err")"
+same "$tmp/kref" "$tmp/kill" "kill rank 1 + --resume"
 # Rank 0 says, when the job ends, how many evaluations its checkpoint holds:
 # all it had received (the rest, one batch per rank at most, was in flight)
-held=$(sed -n 's/.*every batch finished so far (\([0-9]*\) of.*/\1/p' "$T/kill.err")
-from=$(sed -n 's/.*(\([0-9]*\) from the checkpoint).*/\1/p' "$T/resume.err")
+held=$(sed -n 's/.*every batch finished so far (\([0-9]*\) of.*/\1/p' "$tmp/kill.err")
+from=$(sed -n 's/.*(\([0-9]*\) from the checkpoint).*/\1/p' "$tmp/resume.err")
 if [ -n "$from" ] && [ "$from" -gt 0 ] && [ "$from" = "${held:-$from}" ]; then ok
 else bad "--resume started from ${from:-?} evaluations; rank 0 held ${held:-?} when the job ended"; fi
-[ -n "$held" ] || echo "note: rank 0 was killed before it could report what the checkpoint holds: $(grep -v "^-" "$T/kill.err" | head -5)"
-grep -q '^# mpi: 3 ranks.*resumed from a checkpoint' "$T/kill/summary.csv" && ok || bad "no 'resumed' provenance"
+[ -n "$held" ] || echo "note: rank 0 was killed before it could report what the checkpoint holds: $(grep -v "^-" "$tmp/kill.err" | head -5)"
+grep -q '^# mpi: 3 ranks.*resumed from a checkpoint' "$tmp/kill/summary.csv" && ok || bad "no 'resumed' provenance"
 
 # cancel (SIGTERM to mpirun, as a scheduler does), then resume
-$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$T/cancel" > /dev/null 2> "$T/cancel.err" &
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch $BATCH --out "$tmp/cancel" > /dev/null 2> "$tmp/cancel.err" &
 mp=$!
 i=0
-while [ ! -f "$T/cancel/sweep-checkpoint.bin" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
+while [ ! -f "$tmp/cancel/sweep-checkpoint.bin" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
 kill -TERM $mp
 wait $mp
-$MPIRUN -n 2 ./onbstudy-mpi sweep $K --resume "$T/cancel" > "$T/cancel.out" 2> "$T/cancel2.err"
+$MPIRUN -n 2 ./onbstudy-mpi sweep $K --resume "$tmp/cancel" > "$tmp/cancel.out" 2> "$tmp/cancel2.err"
 rc=$?
-[ $rc -eq 0 ] && ok || bad "--resume after SIGTERM: exit $rc: $(head -3 "$T/cancel2.err")"
-same "$T/kref" "$T/cancel" "SIGTERM + --resume"
+[ $rc -eq 0 ] && ok || bad "--resume after SIGTERM: exit $rc: $(head -3 "$tmp/cancel2.err")"
+same "$tmp/kref" "$tmp/cancel" "SIGTERM + --resume"
 
 refuse "bad option on 3 ranks" "unknown option" $MPIRUN -n 3 ./onbstudy-mpi sweep --bogus
 refuse "bad value on 2 ranks" "--samples" $MPIRUN -n 2 ./onbstudy-mpi sweep --samples 0
-refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$T/x"
-cp onbstudy-mpi "$T/other-mpi" && printf 'x' >> "$T/other-mpi"   # another build: other bytes, same code
-refuse "another binary on one rank" "different binary" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$T/x" : -n 1 "$T/other-mpi" sweep $A --out "$T/x"
-refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$T/none"
+refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$tmp/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$tmp/x"
+cp onbstudy-mpi "$tmp/other-mpi" && printf 'x' >> "$tmp/other-mpi"   # another build: other bytes, same code
+refuse "another binary on one rank" "different binary" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$tmp/x" : -n 1 "$tmp/other-mpi" sweep $A --out "$tmp/x"
+refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$tmp/none"
 refuse "not sweep" "sweep" $MPIRUN -n 2 ./onbstudy-mpi eval 0 0 1
-echo "mpi: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish mpi

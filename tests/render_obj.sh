@@ -9,12 +9,7 @@
 # not orthonormal) must not, on the octahedron.
 # Bad input (missing file, malformed OBJ, no faces, bad --up) must give
 # exit 2 and one line on stderr, and write no image.
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 
 if ! make -s build/aorender > "$tmp/make" 2>&1; then
 	echo "FAIL: make build/aorender: $(tail -5 "$tmp/make")"
@@ -154,5 +149,4 @@ printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty floa
 expect2 "PLY without faces" --mesh "$tmp/points.ply" --method duff
 grep -q "no geometry" "$tmp/err" && ok || bad "PLY without faces: $(cat "$tmp/err")"
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -3,18 +3,12 @@
 # every OBJ and PLY there that stores normals, meshes whose normals are
 # computed from the faces, and the broken ones, which must be refused with
 # exit 2 and one line.  Skips (passing) when the package is absent.
-set -u
-cd "$(dirname "$0")/.."
+. "$(dirname "$0")/lib.sh"
 M=/usr/share/assimp/models
 if [ ! -d "$M/OBJ" ] || [ ! -d "$M/PLY" ]; then
 	echo "SKIP: assimp-testmodels is not installed ($M missing; scripts/install-deps.sh installs it)"
-	echo "0 passed, 0 failed"
-	exit 0
+	finish
 fi
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 export XDG_CACHE_HOME="$tmp/cache"  # speeds: the committed reference run
 methods=$(./onbstudy list --format csv | tail -n +2 | cut -d, -f1)
 
@@ -54,5 +48,4 @@ refuse OBJ/box_UTF16BE.obj "UTF-16"
 refuse invalid/malformed.obj "line 23"
 refuse invalid/empty.ply "empty"
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -2,12 +2,7 @@
 # onbstudy scene on files written here: the report, scene.csv, the -z
 # failure of the methods that have one, the --up permutation, and bad input
 # (exit 2, one line on stderr, no result file).
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 # no per-machine speed cache: the committed reference run's speeds
 export XDG_CACHE_HOME="$tmp/cache"
 
@@ -74,5 +69,4 @@ bad_input "bad precision" "precision" "$tmp/floor.obj" --precision half
 bad_input "bad up" "up" "$tmp/floor.obj" --up w
 bad_input "no file" "FILE" 
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -8,12 +8,7 @@
 # non-finite positions must be reported.  Then the small files of
 # tests/data/gltf (always present).  The assimp part skips (passing) when
 # the package is absent.
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
 export XDG_CACHE_HOME="$tmp/cache"  # speeds: the committed reference run
 methods=$(./onbstudy list --format csv | tail -n +2 | cut -d, -f1)
 M=/usr/share/assimp/models
@@ -101,5 +96,4 @@ run "$tmp/s.obj" ""
 [ $rc -eq 2 ] && grep -q "STL (ascii), which is not read here; supported: OBJ, PLY, glTF 2.0" "$tmp/e" && ok || bad "STL: $(cat "$tmp/e")"
 run ./onbstudy ""
 [ $rc -eq 2 ] && grep -q "ELF" "$tmp/e" && ok || bad "ELF: $(cat "$tmp/e")"
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -8,12 +8,7 @@
 # then only read).  Files: box.obj, cube_usemtl.obj, Wuson.ply from
 # assimp-testmodels and bunny.obj from glmark2-data when present, and a
 # sphere written here (always).
-set -u
-cd "$(dirname "$0")/.."
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-tmp=$(mktemp -d)
+. "$(dirname "$0")/lib.sh"
 hog=""
 cleanup() { [ -n "$hog" ] && kill "$hog" 2>/dev/null; rm -rf "$tmp"; }
 trap cleanup EXIT INT TERM
@@ -55,5 +50,4 @@ ls "$tmp/cache/onbstudy/"speed-*.csv > /dev/null 2>&1 && ok || bad "no cache fil
 tenruns cache
 grep -q "^speed (float): this machine's cache $tmp/cache/onbstudy/speed-" "$tmp/o" && ok || bad "the cache is not named: $(grep '^speed' "$tmp/o")"
 grep -q "margin [-+][0-9.]*% in median speed" "$tmp/o" && ok || bad "no margin to the runner-up"
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -162,7 +162,8 @@ static size_t putf(unsigned char *p, float v) { return put(p, &v, 4); }
 static size_t putd(unsigned char *p, double v) { return put(p, &v, 8); }
 static size_t puti(unsigned char *p, int v) { return put(p, &v, 4); }
 
-static void test_ply(void)
+/* ascii with three normals (one of them zero) and a face */
+static void test_ply_ascii(void)
 {
 	mesh_normals m;
 	mesh_stats st;
@@ -192,93 +193,105 @@ static void test_ply(void)
 		CHECK(m.count == 3 && m.where[2] == (uint64_t)(strstr(asc, "0 1 0 0 0 0") - asc), "a.ply offset %llu", (unsigned long long)m.where[2]);
 	}
 	mesh_free(&m);
+}
 
-	/* ascii, no normals: tetrahedron from faces, vertex_index spelling */
+/* ascii, no normals: tetrahedron from faces, vertex_index spelling */
+static void test_ply_tet(void)
+{
+	mesh_normals m;
+	char err[512];
+	const char *tet =
+		"ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+		"element face 4\nproperty list uint8 int32 vertex_index\nend_header\n"
+		"0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+	CHECK(rds("tet.ply", tet, &m, err) == 0, "tet.ply: %s", err);
+	CHECK(m.count == 4 && m.origin == MESH_COMPUTED, "tet.ply count %zu", m.count);
+	CHECK(near3(&m, find_vertex(&m, 0), -r3, -r3, -r3) && near3(&m, find_vertex(&m, 3), 0, 0, 1), "tet.ply normals");
+	mesh_free(&m);
+}
+
+/* binary little endian, double normals plus a face list */
+static void test_ply_binary(void)
+{
+	mesh_normals m;
+	char err[512];
+	unsigned char b[1024];
+	const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+	                  "property double nx\nproperty double ny\nproperty double nz\nproperty uchar flag\n"
+	                  "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+	size_t h = strlen(hdr), n = h, rec = 12 + 24 + 1, cut;
+	unsigned char u8 = 3;
+	unsigned int u32;
+	memcpy(b, hdr, h);
+	n += putf(b + n, 0); n += putf(b + n, 0); n += putf(b + n, 0);
+	n += putd(b + n, 0.0); n += putd(b + n, -0.6); n += putd(b + n, -0.8); b[n++] = 7;
+	n += putf(b + n, 1); n += putf(b + n, 0); n += putf(b + n, 0);
+	n += putd(b + n, 0.1); n += putd(b + n, 0.2); n += putd(b + n, 0.3); b[n++] = 7;
+	n += put(b + n, &u8, 1);
+	u32 = 0; n += put(b + n, &u32, 4); u32 = 1; n += put(b + n, &u32, 4); u32 = 0; n += put(b + n, &u32, 4);
+	CHECK(rd("b.ply", b, n, &m, err) == 0, "b.ply: %s", err);
+	CHECK(m.count == 2 && m.stored_type == MESH_T_DOUBLE && m.ply_binary == 1, "b.ply count %zu", m.count);
+	CHECK(m.count == 2 && m.y[0] == -0.6 && m.z[1] == 0.3, "b.ply values");
+	CHECK(m.count == 2 && m.where[1] == h + rec, "b.ply offset %llu, expected %zu", (unsigned long long)m.where[1], h + rec);
+	mesh_free(&m);
+	/* every proper prefix of the body is refused, never read in part */
 	{
-		const char *tet =
-			"ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
-			"element face 4\nproperty list uint8 int32 vertex_index\nend_header\n"
-			"0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-		CHECK(rds("tet.ply", tet, &m, err) == 0, "tet.ply: %s", err);
-		CHECK(m.count == 4 && m.origin == MESH_COMPUTED, "tet.ply count %zu", m.count);
-		CHECK(near3(&m, find_vertex(&m, 0), -r3, -r3, -r3) && near3(&m, find_vertex(&m, 3), 0, 0, 1), "tet.ply normals");
-		mesh_free(&m);
-	}
-
-	/* binary little endian, double normals plus a face list */
-	{
-		unsigned char b[1024];
-		const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
-		                  "property double nx\nproperty double ny\nproperty double nz\nproperty uchar flag\n"
-		                  "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
-		size_t h = strlen(hdr), n = h, rec = 12 + 24 + 1, cut;
-		unsigned char u8 = 3;
-		unsigned int u32;
-		memcpy(b, hdr, h);
-		n += putf(b + n, 0); n += putf(b + n, 0); n += putf(b + n, 0);
-		n += putd(b + n, 0.0); n += putd(b + n, -0.6); n += putd(b + n, -0.8); b[n++] = 7;
-		n += putf(b + n, 1); n += putf(b + n, 0); n += putf(b + n, 0);
-		n += putd(b + n, 0.1); n += putd(b + n, 0.2); n += putd(b + n, 0.3); b[n++] = 7;
-		n += put(b + n, &u8, 1);
-		u32 = 0; n += put(b + n, &u32, 4); u32 = 1; n += put(b + n, &u32, 4); u32 = 0; n += put(b + n, &u32, 4);
-		CHECK(rd("b.ply", b, n, &m, err) == 0, "b.ply: %s", err);
-		CHECK(m.count == 2 && m.stored_type == MESH_T_DOUBLE && m.ply_binary == 1, "b.ply count %zu", m.count);
-		CHECK(m.count == 2 && m.y[0] == -0.6 && m.z[1] == 0.3, "b.ply values");
-		CHECK(m.count == 2 && m.where[1] == h + rec, "b.ply offset %llu, expected %zu", (unsigned long long)m.where[1], h + rec);
-		mesh_free(&m);
-		/* every proper prefix of the body is refused, never read in part */
-		{
-			int ok = 1;
-			for (cut = h; cut < n; cut++) {
-				if (rd("b.ply", b, cut, &m, err) == 0) { ok = 0; mesh_free(&m); }
-				else if (!strstr(err, "byte")) ok = 0;
-			}
-			CHECK(ok, "a truncated binary PLY was accepted or the error named no byte offset");
+		int ok = 1;
+		for (cut = h; cut < n; cut++) {
+			if (rd("b.ply", b, cut, &m, err) == 0) { ok = 0; mesh_free(&m); }
+			else if (!strstr(err, "byte")) ok = 0;
 		}
-		expect_error("trunc.ply", b, n - 3, "byte", "truncated");
-		/* trailing bytes: a warning (assimp reads such files), not an error */
-		b[n] = 0;
-		CHECK(rd("extra.ply", b, n + 1, &m, err) == 0 && m.count > 0 && strstr(m.warning, "after the last element")
-		      && strstr(m.warning, "1 bytes"), "extra.ply: %s / warning '%s'", err, m.warning);
-		mesh_free(&m);
-		/* out-of-range face index */
-		u32 = 2; memcpy(b + n - 4, &u32, 4);
-		expect_error("badidx.ply", b, n, "out of range", "byte");
-		/* a list count larger than the file */
-		b[n - 13] = 255;
-		expect_error("biglist.ply", b, n, "count 255", "byte");
+		CHECK(ok, "a truncated binary PLY was accepted or the error named no byte offset");
 	}
+	expect_error("trunc.ply", b, n - 3, "byte", "truncated");
+	/* trailing bytes: a warning (assimp reads such files), not an error */
+	b[n] = 0;
+	CHECK(rd("extra.ply", b, n + 1, &m, err) == 0 && m.count > 0 && strstr(m.warning, "after the last element")
+	      && strstr(m.warning, "1 bytes"), "extra.ply: %s / warning '%s'", err, m.warning);
+	mesh_free(&m);
+	/* out-of-range face index */
+	u32 = 2; memcpy(b + n - 4, &u32, 4);
+	expect_error("badidx.ply", b, n, "out of range", "byte");
+	/* a list count larger than the file */
+	b[n - 13] = 255;
+	expect_error("biglist.ply", b, n, "count 255", "byte");
+}
 
-	/* binary cube from faces (the layout of assimp's cube_binary.ply) */
-	{
-		unsigned char b[1024];
-		const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
-		                  "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
-		static const int q[6][4] = { {0,3,2,1}, {4,5,6,7}, {0,1,5,4}, {2,3,7,6}, {1,2,6,5}, {0,4,7,3} };
-		size_t n = strlen(hdr);
-		int i, k, ok = 1;
-		memcpy(b, hdr, n);
-		for (i = 0; i < 8; i++) {
-			n += putf(b + n, (i == 1 || i == 2 || i == 5 || i == 6) ? 1.0f : -1.0f);
-			n += putf(b + n, (i == 2 || i == 3 || i == 6 || i == 7) ? 1.0f : -1.0f);
-			n += putf(b + n, i >= 4 ? 1.0f : -1.0f);
-		}
-		for (i = 0; i < 6; i++) {
-			b[n++] = 4;
-			for (k = 0; k < 4; k++)
-				n += puti(b + n, q[i][k]);
-		}
-		CHECK(rd("cube.ply", b, n, &m, err) == 0, "cube.ply: %s", err);
-		for (i = 0; i < 8 && m.count == 8; i++)
-			ok &= near3(&m, find_vertex(&m, (size_t)i), (i == 1 || i == 2 || i == 5 || i == 6) ? r3 : -r3,
-			            (i == 2 || i == 3 || i == 6 || i == 7) ? r3 : -r3, i >= 4 ? r3 : -r3);
-		CHECK(m.count == 8 && ok, "cube.ply normals (count %zu)", m.count);
-		mesh_free(&m);
-		/* big endian reading of the same bytes is wrong-sized floats: still
-		   read in full or refused, never a crash (values are garbage) */
+/* binary cube from faces (the layout of assimp's cube_binary.ply) */
+static void test_ply_cube(void)
+{
+	mesh_normals m;
+	char err[512];
+	unsigned char b[1024];
+	const char *hdr = "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+	                  "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+	static const int q[6][4] = { {0,3,2,1}, {4,5,6,7}, {0,1,5,4}, {2,3,7,6}, {1,2,6,5}, {0,4,7,3} };
+	size_t n = strlen(hdr);
+	int i, k, ok = 1;
+	memcpy(b, hdr, n);
+	for (i = 0; i < 8; i++) {
+		n += putf(b + n, (i == 1 || i == 2 || i == 5 || i == 6) ? 1.0f : -1.0f);
+		n += putf(b + n, (i == 2 || i == 3 || i == 6 || i == 7) ? 1.0f : -1.0f);
+		n += putf(b + n, i >= 4 ? 1.0f : -1.0f);
 	}
+	for (i = 0; i < 6; i++) {
+		b[n++] = 4;
+		for (k = 0; k < 4; k++)
+			n += puti(b + n, q[i][k]);
+	}
+	CHECK(rd("cube.ply", b, n, &m, err) == 0, "cube.ply: %s", err);
+	for (i = 0; i < 8 && m.count == 8; i++)
+		ok &= near3(&m, find_vertex(&m, (size_t)i), (i == 1 || i == 2 || i == 5 || i == 6) ? r3 : -r3,
+		            (i == 2 || i == 3 || i == 6 || i == 7) ? r3 : -r3, i >= 4 ? r3 : -r3);
+	CHECK(m.count == 8 && ok, "cube.ply normals (count %zu)", m.count);
+	mesh_free(&m);
+	/* big endian reading of the same bytes is wrong-sized floats: still
+	   read in full or refused, never a crash (values are garbage) */
+}
 
-	/* malformed ascii */
+/* malformed ascii */
+static void test_ply_malformed(void)
+{
 	expect_errors("nohdr.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float nx\nproperty float ny\nproperty float nz\n0 0 1\n",
 	              "end_header", NULL);
 	expect_errors("badnum.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n"
@@ -302,6 +315,15 @@ static void test_ply(void)
 	              "no normals", NULL);
 	expect_errors("u8.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nproperty float nx\nproperty float ny\nproperty float nz\n"
 	              "end_header\n300 0 1 2 0 0 1\n", "bad integer '300'", NULL);
+}
+
+static void test_ply(void)
+{
+	test_ply_ascii();
+	test_ply_tet();
+	test_ply_binary();
+	test_ply_cube();
+	test_ply_malformed();
 }
 
 /* deterministic xorshift */

@@ -101,21 +101,12 @@ static const tradeoff_row *get(const tradeoff_row *r, int n, const char *m, int 
 	return NULL;
 }
 
-int main(void)
+/* the join: rows, speed and accuracy columns, the front */
+static void test_load(const char *b, const char *s)
 {
-	char b[256], s[256], t[256], line[1024];
 	tradeoff_row *rows;
 	const tradeoff_row *r;
 	int n;
-	if (!mkdtemp(dir)) {
-		printf("mkdtemp failed\n");
-		return 1;
-	}
-	write_file("bench.csv", bench_csv);
-	write_file("summary.csv", summary_csv);
-	snprintf(b, sizeof b, "%s/bench.csv", dir);
-	snprintf(s, sizeof s, "%s/summary.csv", dir);
-	snprintf(t, sizeof t, "%s/tradeoff.csv", dir);
 
 	n = tradeoff_load(b, s, 0.05, &rows);
 	CHECK(n == 8, "rows: %d, want 8 (6 float, 2 double; copy's roofline row is not a method row)", n);
@@ -145,9 +136,17 @@ int main(void)
 		CHECK(get(rows, n, "unknown_method", 1) == NULL, "summary-only methods are not rows");
 	}
 	free(rows);
+}
 
-	/* the accuracy floor (issue 16): optional columns, found by name;
-	   x_floor = max_defect on uniform / max_floor there */
+/* the accuracy floor (issue 16): optional columns, found by name;
+   x_floor = max_defect on uniform / max_floor there */
+static void test_floor(const char *b)
+{
+	char s[256];
+	tradeoff_row *rows;
+	const tradeoff_row *r;
+	int n;
+
 	write_file("summary2.csv",
 	           "method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite,"
 	           "max_floor,rms_floor,max_floor_dir,max_floor_ratio,rms_floor_ratio,at_floor\n"
@@ -162,97 +161,123 @@ int main(void)
 	CHECK(r && isnan(r->x_floor), "no floor row: x_floor is nan");
 	if (n > 0)
 		free(rows);
-	snprintf(s, sizeof s, "%s/summary.csv", dir);
+}
 
-	/* front by hand: a faster method with a NaN error counts as infinite */
-	{
-		tradeoff_row x[2];
-		memset(x, 0, sizeof x);
-		strcpy(x[0].method, "a");
-		strcpy(x[1].method, "b");
-		x[0].has_speed = x[0].has_accuracy = x[1].has_speed = x[1].has_accuracy = 1;
-		x[0].batch1 = 10; x[0].max_worst = NAN;
-		x[1].batch1 = 5; x[1].max_worst = 1.0;
-		tradeoff_pareto(x, 2, 0.05);
-		CHECK(x[0].pareto == 1 && x[1].pareto == 1, "NaN error: both on the front");
-		x[1].batch1 = 10;
-		tradeoff_pareto(x, 2, 0.05);
-		CHECK(x[0].pareto == 0 && x[1].pareto == 1, "as fast and finite beats NaN");
+/* front by hand: a faster method with a NaN error counts as infinite */
+static void test_front_nan(void)
+{
+	tradeoff_row x[2];
+	memset(x, 0, sizeof x);
+	strcpy(x[0].method, "a");
+	strcpy(x[1].method, "b");
+	x[0].has_speed = x[0].has_accuracy = x[1].has_speed = x[1].has_accuracy = 1;
+	x[0].batch1 = 10; x[0].max_worst = NAN;
+	x[1].batch1 = 5; x[1].max_worst = 1.0;
+	tradeoff_pareto(x, 2, 0.05);
+	CHECK(x[0].pareto == 1 && x[1].pareto == 1, "NaN error: both on the front");
+	x[1].batch1 = 10;
+	tradeoff_pareto(x, 2, 0.05);
+	CHECK(x[0].pareto == 0 && x[1].pareto == 1, "as fast and finite beats NaN");
+}
+
+/* the speed tolerance: speeds within 5% are equal, beyond it faster */
+static void test_tolerance(void)
+{
+	tradeoff_row x[3];
+	int i;
+	memset(x, 0, sizeof x);
+	for (i = 0; i < 3; i++) {
+		snprintf(x[i].method, sizeof x[i].method, "m%d", i);
+		x[i].has_speed = x[i].has_accuracy = 1;
 	}
+	x[0].batch1 = 2000; x[0].max_worst = 1e-6;
+	x[1].batch1 = 1950; x[1].max_worst = 1e-7;
+	x[2].batch1 = 100;  x[2].max_worst = 1e-6;
+	tradeoff_pareto(x, 3, 0.05);
+	CHECK(x[0].pareto == 0 && x[1].pareto == 1 && x[2].pareto == 0, "2.5%% slower but more accurate wins at tol 5%%");
+	tradeoff_pareto(x, 3, 0.0);
+	CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 0, "tol 0: the faster one stays on the front");
+	x[1].max_worst = 1e-6;
+	x[2].batch1 = 2040;
+	tradeoff_pareto(x, 3, 0.05);
+	CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 1, "equal errors, speeds within 5%%: all ties");
+	x[2].batch1 = 2101;
+	tradeoff_pareto(x, 3, 0.05);
+	CHECK(x[0].pareto == 0 && x[1].pareto == 0 && x[2].pareto == 1, "equal errors, more than 5%% faster wins");
+}
 
-	/* the speed tolerance: speeds within 5% are equal, beyond it faster */
-	{
-		tradeoff_row x[3];
-		int i;
-		memset(x, 0, sizeof x);
-		for (i = 0; i < 3; i++) {
-			snprintf(x[i].method, sizeof x[i].method, "m%d", i);
-			x[i].has_speed = x[i].has_accuracy = 1;
-		}
-		x[0].batch1 = 2000; x[0].max_worst = 1e-6;
-		x[1].batch1 = 1950; x[1].max_worst = 1e-7;
-		x[2].batch1 = 100;  x[2].max_worst = 1e-6;
-		tradeoff_pareto(x, 3, 0.05);
-		CHECK(x[0].pareto == 0 && x[1].pareto == 1 && x[2].pareto == 0, "2.5%% slower but more accurate wins at tol 5%%");
-		tradeoff_pareto(x, 3, 0.0);
-		CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 0, "tol 0: the faster one stays on the front");
-		x[1].max_worst = 1e-6;
-		x[2].batch1 = 2040;
-		tradeoff_pareto(x, 3, 0.05);
-		CHECK(x[0].pareto == 1 && x[1].pareto == 1 && x[2].pareto == 1, "equal errors, speeds within 5%%: all ties");
-		x[2].batch1 = 2101;
-		tradeoff_pareto(x, 3, 0.05);
-		CHECK(x[0].pareto == 0 && x[1].pareto == 0 && x[2].pareto == 1, "equal errors, more than 5%% faster wins");
-	}
-
-	/* the command: tradeoff.csv written, one line per row, the pareto column */
-	{
-		char *argv[] = { "--bench", b, "--summary", s, "--out", dir, "--format", "csv", NULL };
-		FILE *f;
-		int rows_seen = 0, front = 0, na = 0, hdr = 0, rc;
-		rc = cmd_table(8, argv); /* prints the CSV too */
-		CHECK(rc == 0, "cmd_table returned %d", rc);
-		f = fopen(t, "r");
-		CHECK(f != NULL, "tradeoff.csv written");
-		if (f) {
-			while (fgets(line, sizeof line, f)) {
-				size_t l = strlen(line);
-				if (line[0] == '#')
-					continue;
-				if (!hdr) {
-					hdr = strncmp(line, "method,precision,", 17) == 0;
-					continue;
-				}
-				rows_seen++;
-				{ /* pareto is the 12th column (the floor's columns follow it) */
-					const char *q = line;
-					int k;
-					for (k = 1; k < 12 && q; k++) {
-						q = strchr(q, ',');
-						if (q)
-							q++;
-					}
-					front += q && strncmp(q, "1,", 2) == 0;
-					na += q && strncmp(q, "na,", 3) == 0;
-				}
-				(void)l;
+/* the command: tradeoff.csv written, one line per row, the pareto column */
+static void test_command(char *b, char *s, const char *t)
+{
+	char line[1024];
+	char *argv[] = { "--bench", b, "--summary", s, "--out", dir, "--format", "csv", NULL };
+	FILE *f;
+	int rows_seen = 0, front = 0, na = 0, hdr = 0, rc;
+	rc = cmd_table(8, argv); /* prints the CSV too */
+	CHECK(rc == 0, "cmd_table returned %d", rc);
+	f = fopen(t, "r");
+	CHECK(f != NULL, "tradeoff.csv written");
+	if (f) {
+		while (fgets(line, sizeof line, f)) {
+			size_t l = strlen(line);
+			if (line[0] == '#')
+				continue;
+			if (!hdr) {
+				hdr = strncmp(line, "method,precision,", 17) == 0;
+				continue;
 			}
-			fclose(f);
+			rows_seen++;
+			{ /* pareto is the 12th column (the floor's columns follow it) */
+				const char *q = line;
+				int k;
+				for (k = 1; k < 12 && q; k++) {
+					q = strchr(q, ',');
+					if (q)
+						q++;
+				}
+				front += q && strncmp(q, "1,", 2) == 0;
+				na += q && strncmp(q, "na,", 3) == 0;
+			}
+			(void)l;
 		}
-		CHECK(hdr && rows_seen == 8 && front == 5 && na == 1, "tradeoff.csv: header %d, %d rows, %d on the front, %d na",
-		      hdr, rows_seen, front, na);
+		fclose(f);
 	}
-	/* bad input: missing file, bad option, a bench.csv without the columns */
-	{
-		char missing[300];
-		char *a1[] = { "--bench", missing, "--summary", s, NULL };
-		char *a2[] = { "--frobnicate", NULL };
-		char *a3[] = { "--bench", s, "--summary", s, "--out", dir, NULL };
-		snprintf(missing, sizeof missing, "%s/nope.csv", dir);
-		CHECK(cmd_table(4, a1) == ONB_EXIT_USAGE, "missing bench.csv: exit 2");
-		CHECK(cmd_table(1, a2) == ONB_EXIT_USAGE, "unknown option: exit 2");
-		CHECK(cmd_table(6, a3) == ONB_EXIT_USAGE, "summary passed as bench: exit 2");
+	CHECK(hdr && rows_seen == 8 && front == 5 && na == 1, "tradeoff.csv: header %d, %d rows, %d on the front, %d na",
+	      hdr, rows_seen, front, na);
+}
+
+/* bad input: missing file, bad option, a bench.csv without the columns */
+static void test_bad_input(char *s)
+{
+	char missing[300];
+	char *a1[] = { "--bench", missing, "--summary", s, NULL };
+	char *a2[] = { "--frobnicate", NULL };
+	char *a3[] = { "--bench", s, "--summary", s, "--out", dir, NULL };
+	snprintf(missing, sizeof missing, "%s/nope.csv", dir);
+	CHECK(cmd_table(4, a1) == ONB_EXIT_USAGE, "missing bench.csv: exit 2");
+	CHECK(cmd_table(1, a2) == ONB_EXIT_USAGE, "unknown option: exit 2");
+	CHECK(cmd_table(6, a3) == ONB_EXIT_USAGE, "summary passed as bench: exit 2");
+}
+
+int main(void)
+{
+	char b[256], s[256], t[256];
+	if (!mkdtemp(dir)) {
+		printf("mkdtemp failed\n");
+		return 1;
 	}
+	write_file("bench.csv", bench_csv);
+	write_file("summary.csv", summary_csv);
+	snprintf(b, sizeof b, "%s/bench.csv", dir);
+	snprintf(s, sizeof s, "%s/summary.csv", dir);
+	snprintf(t, sizeof t, "%s/tradeoff.csv", dir);
+
+	test_load(b, s);
+	test_floor(b);
+	test_front_nan();
+	test_tolerance();
+	test_command(b, s, t);
+	test_bad_input(s);
 	unlink(b);
 	unlink(s);
 	unlink(t);

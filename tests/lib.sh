@@ -1,0 +1,30 @@
+# tests/lib.sh - the harness every shell test sources first:
+#	. "$(dirname "$0")/lib.sh"
+# It stops on unset variables, moves to the top of the checkout (so paths
+# read ./onbstudy, tests/..., build/...), and gives:
+#   root           the checkout's absolute path
+#   tmp            a fresh temporary directory, removed on exit (a test that
+#                  needs more cleanup sets its own EXIT trap, removing $tmp too)
+#   ok             count one passed check
+#   bad MESSAGE    count one failed check and print "FAIL: MESSAGE"
+#   finish [NAME]  print "[NAME: ]P passed, F failed" and exit 0 when no check
+#                  failed, 1 otherwise (scripts/robustness.sh counts the
+#                  lines without a NAME in the sanitized run's log)
+#   skip MESSAGE   print "SKIP: MESSAGE" and exit 0 (a tool is not installed)
+# Under `make test SANITIZE=...` the Makefile passes the sanitizer flags in
+# $ONB_SANFLAGS; SAN holds them (empty otherwise) for tests that compile.
+set -u
+cd "$(dirname "$0")/.." || exit 1
+root=$(pwd)
+SAN=${ONB_SANFLAGS:-}
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+finish() {
+	echo "${1:+$1: }$pass passed, $fail failed"
+	[ "$fail" -eq 0 ]
+	exit
+}
+skip() { echo "SKIP: $*"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT

@@ -1,7 +1,8 @@
 #!/bin/sh
 # reference-run.sh - regenerate results/reference/, the committed reference
-# run that the README's Findings quote, and then the README's Findings
-# (scripts/findings.sh).  Takes about two minutes on 2 cores; run it on a
+# run that the Findings quote, and then the Findings (docs/findings.md, and
+# the README's headlines: scripts/findings.sh) and the published figures
+# reproduced (docs/findings.md: scripts/reproduce-md.sh).  Takes about two minutes on 2 cores; run it on a
 # quiet machine (the benchmark's figures are only as good as the machine is
 # idle).  Kept under 5 MB: the SVG charts are left to `make plots`.
 set -eu
@@ -17,7 +18,7 @@ echo "reference: sweep --fma (every method, uniform and south)"
 mkdir -p "$OUT/fma"
 ./onbstudy sweep --fma --dists uniform,south \
 	--quiet --out "$OUT/fma" > "$OUT/fma/sweep.txt" 2> "$OUT/fma/sweep.log"
-rm -f "$OUT/fma/by_nz.csv" "$OUT/fma/worst.csv"   # the summary is what the README quotes
+rm -f "$OUT/fma/by_nz.csv" "$OUT/fma/worst.csv"   # the summary is what the Findings quote
 echo "reference: threshold"
 ./onbstudy threshold --consecutive 1024 --logspaced 1024 --azimuths 64 --out "$OUT" > "$OUT/threshold.txt" 2> "$OUT/threshold.log"
 echo "reference: bench"
@@ -50,6 +51,7 @@ build/tests/test_sampling > "$OUT/sampling.txt"
 	echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 	echo "commands: scripts/reference-run.sh (sweep --grid 16x32; sweep --fma on every method; threshold --consecutive 1024 --logspaced 1024 --azimuths 64; bench; table; plots; make render; reproduce; scripts/mutate.sh)"
 } > "$OUT/machine.txt"
-sh scripts/findings.sh --update README.md
-sh scripts/reproduce-md.sh --update README.md
+sh scripts/findings.sh --update docs/findings.md
+sh scripts/findings.sh --headlines --update README.md
+sh scripts/reproduce-md.sh --update docs/findings.md
 echo "reference: $(du -sh "$OUT" | cut -f1) in $OUT"

@@ -1,5 +1,5 @@
 #!/bin/sh
-# reproduce-md.sh - the README's "Published figures, reproduced" section,
+# reproduce-md.sh - docs/findings.md's "Published figures, reproduced" section,
 # generated from `onbstudy reproduce`'s CSV (default the reference run's
 # results/reference/reproduce.csv), so that every number in it comes from
 # a run.

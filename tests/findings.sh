@@ -1,6 +1,11 @@
 #!/bin/sh
-# findings.sh - the README's Findings quote the committed reference run:
-# regenerate the section from results/reference/*.csv and compare.
+# findings.sh - the Findings quote the committed reference run: regenerate
+# docs/findings.md's section and the README's headline findings from
+# results/reference/*.csv (scripts/findings.sh) and compare; the README
+# has at most ten headlines.
 . "$(dirname "$0")/lib.sh"
-sh scripts/findings.sh --check README.md && ok || bad "README's findings differ from scripts/findings.sh's"
+sh scripts/findings.sh --check docs/findings.md && ok || bad "docs/findings.md differs from scripts/findings.sh's"
+sh scripts/findings.sh --headlines --check README.md && ok || bad "README's headline findings differ from scripts/findings.sh --headlines"
+n=$(sed -n '/^<!-- headlines:begin/,/^<!-- headlines:end/p' README.md | grep -c '^[0-9][0-9]*\. ')
+[ "$n" -ge 1 ] && [ "$n" -le 10 ] && ok || bad "README: $n headline findings, want 1 to 10"
 finish findings

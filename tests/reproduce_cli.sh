@@ -1,6 +1,6 @@
 #!/bin/sh
 # reproduce_cli.sh - `onbstudy reproduce`: the published figures it must
-# reproduce (issue 11's targets), its bad input, and the README section
+# reproduce (issue 11's targets), its bad input, and docs/findings.md's section
 # generated from the reference run's reproduce.csv.
 . "$(dirname "$0")/lib.sh"
 
@@ -15,7 +15,7 @@ ratios() { awk 'function s(line, f,  n, i, c, q, cur) { n = 0; q = 0; cur = ""; 
 ratios > "$tmp/ratios"
 [ "$(wc -l < "$tmp/ratios")" -ge 20 ] && ok || bad "fewer than 20 figures"
 # 2. the targets: Table 1 within 1.5x (all rows but frisvad's, whose heavy tail
-#    the README discusses), Duff's RMS within 5%, one flipped frame, Duff's
+#    docs/findings.md discusses), Duff's RMS within 5%, one flipped frame, Duff's
 #    own methods under pbrt-v4's bound, Max's combined t as published
 n1=$(awk -F'|' '$1 == "frisvad2012" && $2 !~ /^frisvad/ && ($3 + 0 >= 1 / 1.5 && $3 + 0 <= 1.5)' "$tmp/ratios" | wc -l)
 [ "$n1" -eq 10 ] && ok || bad "Table 1: $n1 of 10 rows within 1.5x: $(grep frisvad2012 "$tmp/ratios")"
@@ -40,9 +40,9 @@ grep -v '^#' "$tmp/r/reproduce.csv" | cmp -s - "$tmp/csv" && ok || bad "--format
 ./onbstudy reproduce extra > /dev/null 2> "$tmp/e4"; rc=$?
 [ $rc -eq 2 ] && ok || bad "an operand: exit $rc"
 
-# 5. the README section is the reference run's CSV
+# 5. docs/findings.md's section is the reference run's CSV
 if [ -f results/reference/reproduce.csv ]; then
-	sh scripts/reproduce-md.sh --check README.md && ok || bad "README's reproduce section is stale"
+	sh scripts/reproduce-md.sh --check docs/findings.md && ok || bad "docs/findings.md's reproduce section is stale"
 else
 	bad "results/reference/reproduce.csv missing"
 fi

@@ -12,8 +12,7 @@
 #include "bench/bench_calls.h"
 #include "bench/yardstick.h"
 
-static int pass, fail;
-#define CHECK(c, ...) do { if (c) pass++; else { fail++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)
+#include "check.h"
 
 typedef struct {
 	size_t n;
@@ -259,6 +258,5 @@ int main(void)
 	test_yardstick();
 	test_probe();
 	test_tsc();
-	printf("%d passed, %d failed\n", pass, fail);
-	return fail != 0;
+	return check_finish(NULL);
 }

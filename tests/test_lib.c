@@ -38,21 +38,8 @@
 #include <string.h>
 #include "onb.h"
 
-static int passed, failed;
-
-#define CHECK(cond, ...)                                                       \
-	do {                                                                       \
-		if (cond) {                                                            \
-			passed++;                                                          \
-		} else {                                                               \
-			failed++;                                                          \
-			if (failed <= 60) {                                                \
-				printf("FAIL %s:%d: ", __FILE__, __LINE__);                   \
-				printf(__VA_ARGS__);                                           \
-				printf("\n");                                                  \
-			}                                                                  \
-		}                                                                      \
-	} while (0)
+#define CHECK_MAX_REPORTS 60
+#include "check.h"
 
 /* The inline functions of the header, compiled here with the test's flags
    (the same FP flags as the library), indexed like the registry. */
@@ -576,6 +563,5 @@ int main(void)
 	test_special();
 	test_checked();
 	test_floor_methods();
-	printf("%d passed, %d failed\n", passed, failed);
-	return failed != 0;
+	return check_finish(NULL);
 }

@@ -14,8 +14,7 @@
 #include <unistd.h>
 #include "mesh/meshio.h"
 
-static int pass, failed;
-#define CHECK(c, ...) do { if (c) pass++; else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)
+#include "check.h"
 
 static int rd(const char *name, const void *buf, size_t len, mesh_normals *m, char *err)
 {
@@ -656,6 +655,5 @@ int main(void)
 	test_gltf_errors();
 	test_geom_formats();
 	test_detect();
-	printf("%d passed, %d failed\n", pass, failed);
-	return failed != 0;
+	return check_finish(NULL);
 }

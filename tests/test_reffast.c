@@ -22,12 +22,7 @@
 #include "inputs/inputs.h"
 #include "methods/kernels.h"
 
-static int passed, failed;
-
-#define CHECK(cond, ...) do { \
-	if (cond) passed++; \
-	else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } \
-} while (0)
+#include "check.h"
 
 static study_kernel ks[64];
 static int nk;
@@ -183,6 +178,5 @@ int main(int argc, char **argv)
 	ref_free(rc);
 	reffast_free(fc);
 	reffast_free(fc2);
-	printf("test_reffast: %d passed, %d failed\n", passed, failed);
-	return failed != 0;
+	return check_finish("test_reffast");
 }

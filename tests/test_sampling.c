@@ -115,19 +115,7 @@
 #define SPOT 64          /* every SPOT-th sample is also done in MPFR */
 #define MPFR_BITS 256
 
-static int passed, failed;
-
-#define CHECK(cond, ...)                                                       \
-	do {                                                                       \
-		if (cond) {                                                            \
-			passed++;                                                          \
-		} else {                                                               \
-			failed++;                                                          \
-			printf("FAIL %s:%d: ", __FILE__, __LINE__);                       \
-			printf(__VA_ARGS__);                                               \
-			printf("\n");                                                      \
-		}                                                                      \
-	} while (0)
+#include "check.h"
 
 /* ---- regularized upper incomplete gamma Q(a, x) ---- */
 static double gamma_q(double a, double x)
@@ -554,6 +542,5 @@ int main(int argc, char **argv)
 	for (k = 0; k < 3; k++) { mpfr_clear(mw[k]); mpfr_clear(mn[k]); mpfr_clear(mp[k]); }
 	mpfr_clears(md, mww, mnn, mt, (mpfr_ptr)0);
 	mpfr_free_cache();
-	printf("%d passed, %d failed\n", passed, failed);
-	return failed != 0;
+	return check_finish(NULL);
 }

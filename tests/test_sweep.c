@@ -12,12 +12,7 @@
 #include "sweep/fx.h"
 #include "sweep/state.h"
 
-static int passed, failed;
-
-#define CHECK(cond, ...) do { \
-	if (cond) passed++; \
-	else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } \
-} while (0)
+#include "check.h"
 
 static study_kernel kernel(const char *name)
 {
@@ -353,6 +348,5 @@ int main(void)
 	test_distributions();
 	ref_free(c);
 	ref_free(c2);
-	printf("test_sweep: %d passed, %d failed\n", passed, failed);
-	return failed ? 1 : 0;
+	return check_finish("test_sweep");
 }

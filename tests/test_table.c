@@ -13,8 +13,7 @@
 #include "bench/table.h"
 #include "bench/table.h"
 
-static int pass, fail;
-#define CHECK(c, ...) do { if (c) pass++; else { fail++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)
+#include "check.h"
 
 static char dir[] = "/tmp/onb_test_table_XXXXXX";
 
@@ -284,6 +283,5 @@ int main(void)
 	snprintf(s, sizeof s, "%s/summary2.csv", dir);
 	unlink(s);
 	rmdir(dir);
-	printf("%d passed, %d failed\n", pass, fail);
-	return fail != 0;
+	return check_finish(NULL);
 }

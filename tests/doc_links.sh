@@ -6,7 +6,7 @@
 # that other branches of issue 23 write: a link to one of them is reported
 # as pending while the page does not exist, checked once it does.
 . "$(dirname "$0")/lib.sh"
-PENDING="docs/library.md docs/charts.md docs/certify.md docs/adding-a-method.md"
+PENDING="docs/library.md docs/charts.md docs/certify.md"
 slugs() { # FILE: the anchors of its headings, one a line
 	awk '/^```/ { code = !code; next } !code && /^#+ / { sub(/^#+ +/, ""); print }' "$1" |
 		tr 'A-Z' 'a-z' | sed -e 's/[^a-z0-9 _-]//g' -e 's/ /-/g'

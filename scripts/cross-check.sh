@@ -64,11 +64,11 @@ build() {
 	for p in test_lib test_indep; do
 		$cc $LIBF $W -Iinclude -Itests -o "$d/$p" tests/$p.c "$d/libonb.a" -lm || return 1
 	done
-	$cc $LIBF $W -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc/study -o "$d/test_meshio" tests/test_meshio.c \
-		src/study/meshio.c src/study/mesh_gltf.c $cj -lm || return 1
+	$cc $LIBF $W -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -o "$d/test_meshio" tests/test_meshio.c \
+		src/mesh/*.c $cj -lm || return 1
 	$cc $LIBF $W -Iinclude -Itests/cross -o "$d/onbhash" tests/cross/onbhash.c "$d/libonb.a" -lm || return 1
-	$cc $LIBF $W -D_POSIX_C_SOURCE=200809L -Isrc/study -Itests/cross -o "$d/meshhash" tests/cross/meshhash.c \
-		src/study/meshio.c src/study/mesh_gltf.c $cj -lm || return 1
+	$cc $LIBF $W -D_POSIX_C_SOURCE=200809L -Isrc -Itests/cross -o "$d/meshhash" tests/cross/meshhash.c \
+		src/mesh/*.c $cj -lm || return 1
 }
 
 # hashes ARCH RUNNER...: the two hash programs

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "meshio.h"
+#include "mesh/meshio.h"
 #include "hash.h"
 
 #define NV 1000

@@ -1,5 +1,7 @@
 # onbstudy - a plain, non-recursive Makefile.
 #   make            libonb.a and the study CLI ./onbstudy
+#   make lib        libonb.a alone (a C compiler and make; no packages)
+#   make cross-check  arm64 and s390x under qemu (scripts/cross-check.sh)
 #   make test       every test (installs missing packages via scripts/install-deps.sh)
 #   make bench      the default benchmark run
 #   make plots      charts of the newest run
@@ -23,12 +25,11 @@ AR      ?= ar
 #  -fno-trapping-math  we never read the FP exception flags; this lets GCC
 #                      if-convert the branchy kernels (duff, frisvad) into blends.
 #                      It changes no value, only which flags could be raised.
-#  no -ffast-math      onb.h stops at #error under it (unless the client
-#                      defines ONB_ALLOW_FAST_MATH): reassociation and
-#                      reciprocal approximations would change every result.
-# None of these reach a client: onb.pc carries only -I, -L and -l, and onb.h
-# turns contraction off for its own functions by pragma (README "Using
-# libonb in your renderer" says what each compiler does with that).
+#  no -ffast-math      reassociation and reciprocal approximations would
+#                      change every result.
+# None of these reach a client: onb.pc carries only -I, -L and -l.  onb.h
+# inlines its kernels only where the client's flags cannot change their
+# bits, and calls these out-of-line copies otherwise (docs/library.md).
 FPFLAGS = -ffp-contract=off -fno-math-errno -fno-trapping-math
 OPT     ?= -O3
 WARN    = -Wall -Wextra -Wpedantic -Wshadow
@@ -47,8 +48,31 @@ STUDY_LIBS = -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 OMP     = -fopenmp
 
 B       = build
+# --- libonb (issue 25): `make lib` needs only a C compiler and make -------
+# array.c, outline.c and batch.c are compiled once per method and precision
+# (src/lib/split.h), so a static link pulls only the entry points a client
+# calls; once more with -DONB_COMMON for their shared part.  The method
+# names come from onb.h's two X-macro lists.
 LIB_SRC = $(wildcard src/lib/*.c)
-LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o)
+LIB_METHODS  := $(shell sed -n '/define ONB_METHOD_LIST/,/^$$/p' include/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
+LIB_FMETHODS := $(shell grep 'define ONB_FLOAT_METHOD_LIST' include/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
+LIB_SPLIT    = array outline batch
+LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o) \
+          $(foreach f,$(LIB_SPLIT),$(LIB_METHODS:%=$(B)/lib/split/$(f)-d-%.o) \
+                                   $(LIB_METHODS:%=$(B)/lib/split/$(f)-f-%.o) \
+                                   $(LIB_FMETHODS:%=$(B)/lib/split/$(f)-f-%.o))
+# The study's build installs its packages first (scripts/install-deps.sh);
+# the library alone (make lib, make install, make uninstall) does not.
+ifeq ($(filter-out lib install uninstall clean,$(MAKECMDGOALS)),)
+ifneq ($(MAKECMDGOALS),)
+LIB_DEPS =
+else
+LIB_DEPS = $(B)/deps.stamp
+endif
+else
+LIB_DEPS = $(B)/deps.stamp
+endif
+# --- end libonb ------------------------------------------------------------
 # The study: every src/<folder>/*.c but src/lib/ (libonb) and src/mpi/ (the
 # MPI driver, built by `make mpi` only).  A new folder src/<name>/ is picked
 # up by these wildcards with no edit here; its objects go to build/<name>/.
@@ -76,13 +100,29 @@ $(B)/deps.stamp: scripts/install-deps.sh
 	@touch $@
 deps: $(B)/deps.stamp
 
-$(B)/lib/%.o: src/lib/%.c include/onb.h Makefile
+# --- libonb rules (issue 25) ---
+.PHONY: lib
+lib: libonb.a
+$(B)/lib/%.o: src/lib/%.c include/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(LIBWARN) -c $< -o $@
+	$(CC) $(BASE) $(LIBWARN) -DONB_COMMON -c $< -o $@
+define ONB_SPLIT_RULE
+$(B)/lib/split/$(1)-$(2)-%.o: src/lib/$(1).c include/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
+	@mkdir -p $$(@D)
+	$$(CC) $$(BASE) $$(LIBWARN) -DONB_ONE=$$* -DONB_ONE_$(3) -c $$< -o $$@
+endef
+$(foreach f,$(LIB_SPLIT),$(eval $(call ONB_SPLIT_RULE,$(f),d,D))$(eval $(call ONB_SPLIT_RULE,$(f),f,F)))
 
 libonb.a: $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $(LIB_OBJ)
+# make cross-check: the library, its tests and the mesh readers' tests on
+# arm64 and s390x under qemu-user, bit identity to x86-64; the record of
+# the last run goes to results/cross-check/ (scripts/cross-check.sh).
+.PHONY: cross-check
+cross-check:
+	sh scripts/cross-check.sh results/cross-check
+# --- end libonb rules ---
 
 $(filter-out $(B)/bench/yardstick.o,$(STUDY_OBJ)): $(B)/%.o: src/%.c include/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)

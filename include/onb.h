@@ -34,8 +34,8 @@
  *   - Precondition of every method: n is a unit vector as received in the
  *     format (so |n| = 1 within a few ulps).  Methods never normalize n except
  *     `rtow`, whose source does.  Non-unit, zero and non-finite input is
- *     defined (no UB, no hang) but garbage in, garbage out: see the README
- *     section "Library contract", or use onb_basis_checked.
+ *     defined (no UB, no hang) but garbage in, garbage out: see
+ *     docs/library.md, "Library contract", or use onb_basis_checked.
  *   - Handedness is det(b1, b2, n): +1 means b1 x b2 = n.
  *   - Each method is written out by hand for double and float, exactly as
  *     published, flaws included.  A fix of a published method is a new,
@@ -44,22 +44,17 @@
  *     defect max(|b1|-1, |b2|-1, b1.n, b2.n, b1.b2) measured by
  *     `onbstudy sweep` against MPFR; tests/test_lib.c checks the bounds.
  *
- * Floating-point flags (README "Using libonb in your renderer"):
- *   - Contraction: the inline functions are wrapped in per-function
- *     pragmas that keep a*b+c from fusing into an FMA, whatever the
- *     client's -ffp-contract.  GCC honours `#pragma GCC optimize
- *     ("fp-contract=off")`, but then will not inline them into a caller
- *     built with other FP-contract settings (they become calls, with the
- *     studied bits).  Clang honours `#pragma clang fp contract(off)` under
- *     its default -ffp-contract=on, and ignores it under
- *     -ffp-contract=fast (clang 14).  Define ONB_INLINE_FOLLOWS_CLIENT_FP
- *     to drop the pragmas: the inline functions then follow your flags.
- *   - -ffast-math stops at #error unless ONB_ALLOW_FAST_MATH is defined.
- *     WARNING: with it, the inline functions follow -ffast-math
- *     (reassociation, reciprocal approximations, no NaN/inf): none of the
- *     study's error figures hold for them.  The out-of-line calls in
- *     libonb.a (onb_NAME_outline[f], onb_NAME_array[f], method->basis)
- *     were compiled with the library's own flags and keep the studied bits.
+ * Floating-point flags (docs/library.md, "Compiler flags"):
+ *   - The method names are inline kernels where the caller's flags cannot
+ *     change their bits, and calls to libonb.a's out-of-line copies (the
+ *     studied bits) where they could: under -ffast-math, and under GCC
+ *     with an FMA target outside ISO C mode.  The block after the
+ *     includes below gives the exact rule and the defines that override
+ *     it (ONB_FP_CONTRACT_OFF, ONB_INLINE_FOLLOWS_CLIENT_FP,
+ *     ONB_FORCE_OUTLINE).  onb.h compiles under every flag, -ffast-math
+ *     included, with no define.
+ *   - onb_NAME_outline[f], onb_NAME_array[f] and method->basis[f] are
+ *     always the out-of-line copies, compiled with the library's flags.
  */
 #ifndef ONB_H
 #define ONB_H
@@ -69,27 +64,79 @@
 #include <stdint.h>
 #include <string.h>
 
-#if defined(__FAST_MATH__) && !defined(ONB_ALLOW_FAST_MATH)
-#error "onb.h: -ffast-math breaks the published error behaviour of every inline method; build without it, or define ONB_ALLOW_FAST_MATH and call the out-of-line onb_NAME_outline/onb_NAME_array functions for the studied bits"
+/* Which code the method names (onb_duff_branchless, ...) run in the
+   including file (docs/library.md, "Compiler flags"):
+     ONB__INLINE 1  the kernels below, inlined into the caller;
+     ONB__INLINE 0  calls to libonb.a's out-of-line copies, compiled with
+                    the library's flags: the studied bits, whatever the
+                    caller's flags.
+   Inline whenever the caller's flags cannot change the bits:
+     - GCC: no FMA target (__FP_FAST_FMA[F] undefined), or ISO C mode
+       (-std=c99/c11/c17: GCC's default there is -ffp-contract=off), or the
+       client defines ONB_FP_CONTRACT_OFF to promise -ffp-contract=off
+       (GCC gives no macro for it);
+     - clang, without -ffast-math: `#pragma clang fp contract(off)` below
+       keeps a*b+c unfused and does not stop inlining;
+   out of line under -ffast-math (__FAST_MATH__), and under GCC with an FMA
+   target in GNU C or C++ mode (default -ffp-contract=fast), unless
+     - ONB_INLINE_FOLLOWS_CLIENT_FP: inline, and no pragma: the kernels
+       follow the caller's flags (contraction, -ffast-math), which changes
+       their bits and voids the study's error figures for them;
+     - ONB_FORCE_OUTLINE: out of line, whatever the compiler and flags.
+   libonb's own sources define ONB_BUILDING_LIB (inline, built with
+   -ffp-contract=off by the Makefile). */
+#if defined(ONB_BUILDING_LIB) || defined(ONB_INLINE_FOLLOWS_CLIENT_FP)
+#define ONB__INLINE 1
+#elif defined(ONB_FORCE_OUTLINE) || defined(__FAST_MATH__)
+#define ONB__INLINE 0
+#elif defined(__clang__)
+#define ONB__INLINE 1
+#elif defined(__GNUC__)
+#if (!defined(__FP_FAST_FMA) && !defined(__FP_FAST_FMAF)) || \
+    (defined(__STRICT_ANSI__) && !defined(__cplusplus)) || defined(ONB_FP_CONTRACT_OFF)
+#define ONB__INLINE 1
+#else
+#define ONB__INLINE 0
+#endif
+#else
+#define ONB__INLINE 1
 #endif
 
-/* No contraction into FMA inside the header's functions (see above).
-   Popped by ONB__FP_END at the end of the header. */
-#if !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__clang__)
+/* No contraction into FMA inside the kernels, where a pragma does it
+   without stopping inlining.  Popped at the end of the header. */
+#if ONB__INLINE && !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__clang__)
 #pragma float_control(push)
 #pragma clang fp contract(off)
 #define ONB__FP_PRAGMAS 1
-#elif !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__GNUC__)
-#pragma GCC push_options
-#pragma GCC optimize("fp-contract=off")
-#define ONB__FP_PRAGMAS 2
 #else
 #define ONB__FP_PRAGMAS 0
 #endif
 
+/* Kernel names: the method names themselves when inline; otherwise the
+   kernels are renamed (and never instantiated) and the method names are
+   wrappers around the out-of-line copies, defined at the end. */
+#if ONB__INLINE
+#define ONB__K(m) onb_##m
+#else
+#define ONB__K(m) onb__k_##m
+#endif
+
+/* Casts that C++ -Wold-style-cast accepts. */
+#ifdef __cplusplus
+#define ONB__CAST(t, x) static_cast<t>(x)
+#else
+#define ONB__CAST(t, x) ((t)(x))
+#endif
+
+/* The hardware rsqrt (the _rsqrt variants): on x86-64 GCC and clang reach
+   rsqrtss through their builtin, without <xmmintrin.h>; other compilers
+   include it.  Elsewhere (arm64, s390x, ...) the variants run 1/sqrt and
+   the registry says so (ONB_FELL_BACK). */
 #if (defined(__SSE__) || defined(_M_X64) || defined(__x86_64__)) && !defined(ONB_NO_HW_RSQRT)
-#include <xmmintrin.h>
 #define ONB_HAVE_HW_RSQRT 1
+#if !defined(__GNUC__)
+#include <xmmintrin.h>
+#endif
 #else
 #define ONB_HAVE_HW_RSQRT 0
 #endif
@@ -110,7 +157,7 @@ typedef struct { float  x, y, z; } onb_vec3f;
 /* Listing 3 `rsqrt`: static_cast<float>(1.0/sqrt(x)), i.e. computed in
    double and rounded once to float: correctly rounded for float. */
 static inline double onb__rsqrt_libm (double x) { return 1.0 / sqrt(x); }
-static inline float  onb__rsqrt_libmf(float x)  { return (float)(1.0 / sqrt((double)x)); }
+static inline float  onb__rsqrt_libmf(float x)  { return ONB__CAST(float, 1.0 / sqrt(ONB__CAST(double, x))); }
 
 /* Listing 3 `InvSqrt`: the bit trick and one Newton step.  Unsigned
    arithmetic reads the listing's int shift without implementation-defined
@@ -144,13 +191,18 @@ static inline double onb__invsqrt(double x)
    (ONB_FELL_BACK). */
 static inline float onb__hw_rsqrtf(float x)
 {
-#if ONB_HAVE_HW_RSQRT
+#if ONB_HAVE_HW_RSQRT && defined(__GNUC__)
+	typedef float onb__v4sf __attribute__((__vector_size__(16)));
+	onb__v4sf v = { x, 0.0f, 0.0f, 0.0f };
+	v = __builtin_ia32_rsqrtss(v);
+	return v[0];
+#elif ONB_HAVE_HW_RSQRT
 	return _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x)));
 #else
 	return 1.0f / sqrtf(x);
 #endif
 }
-static inline double onb__hw_rsqrt(double x) { return (double)onb__hw_rsqrtf((float)x); }
+static inline double onb__hw_rsqrt(double x) { return ONB__CAST(double, onb__hw_rsqrtf(ONB__CAST(float, x))); }
 
 /* Listing 3 `SSE_rsqrt_1N`: one Newton step on the hardware estimate y. */
 static inline float  onb__newtonf(float x, float y)   { return y * (1.5f - 0.5f * x * y * y); }
@@ -260,16 +312,16 @@ static inline void onb__naivef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int no
 	onb__naive_postf(n, u, onb__rsqf(l2, norm), b1, b2);
 }
 
-static inline void onb_naive            (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_LIBM); }
-static inline void onb_naivef           (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_LIBM); }
-static inline void onb_naive_invsqrt    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_INVSQRT); }
-static inline void onb_naive_invsqrtf   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_INVSQRT); }
-static inline void onb_naive_rsqrt      (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT); }
-static inline void onb_naive_rsqrtf     (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT); }
-static inline void onb_naive_rsqrt_nr   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT_NR); }
-static inline void onb_naive_rsqrt_nrf  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT_NR); }
-static inline void onb_naive_nonorm     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_NONE); }
-static inline void onb_naive_nonormf    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_NONE); }
+static inline void ONB__K(naive)            (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_LIBM); }
+static inline void ONB__K(naivef)           (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_LIBM); }
+static inline void ONB__K(naive_invsqrt)    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void ONB__K(naive_invsqrtf)   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void ONB__K(naive_rsqrt)      (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT); }
+static inline void ONB__K(naive_rsqrtf)     (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT); }
+static inline void ONB__K(naive_rsqrt_nr)   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void ONB__K(naive_rsqrt_nrf)  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void ONB__K(naive_nonorm)     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__naive (n, b1, b2, ONB__NORM_NONE); }
+static inline void ONB__K(naive_nonormf)    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__naivef(n, b1, b2, ONB__NORM_NONE); }
 
 /* ------------------------------------------------------------------ */
 /* hughes_moeller (Hughes & Moller 1999, as in Frisvad 2012 Listing 1) */
@@ -327,16 +379,16 @@ static inline void onb__hughes_moellerf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 	onb__hughes_moeller_postf(n, v, onb__rsqf(l2, norm), b1, b2);
 }
 
-static inline void onb_hughes_moeller           (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_LIBM); }
-static inline void onb_hughes_moellerf          (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_LIBM); }
-static inline void onb_hughes_moeller_invsqrt   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_INVSQRT); }
-static inline void onb_hughes_moeller_invsqrtf  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_INVSQRT); }
-static inline void onb_hughes_moeller_rsqrt     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT); }
-static inline void onb_hughes_moeller_rsqrtf    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT); }
-static inline void onb_hughes_moeller_rsqrt_nr  (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT_NR); }
-static inline void onb_hughes_moeller_rsqrt_nrf (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT_NR); }
-static inline void onb_hughes_moeller_nonorm    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_NONE); }
-static inline void onb_hughes_moeller_nonormf   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_NONE); }
+static inline void ONB__K(hughes_moeller)           (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_LIBM); }
+static inline void ONB__K(hughes_moellerf)          (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_LIBM); }
+static inline void ONB__K(hughes_moeller_invsqrt)   (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void ONB__K(hughes_moeller_invsqrtf)  (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_INVSQRT); }
+static inline void ONB__K(hughes_moeller_rsqrt)     (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT); }
+static inline void ONB__K(hughes_moeller_rsqrtf)    (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT); }
+static inline void ONB__K(hughes_moeller_rsqrt_nr)  (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void ONB__K(hughes_moeller_rsqrt_nrf) (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_RSQRT_NR); }
+static inline void ONB__K(hughes_moeller_nonorm)    (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__hughes_moeller (n, b1, b2, ONB__NORM_NONE); }
+static inline void ONB__K(hughes_moeller_nonormf)   (onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__hughes_moellerf(n, b1, b2, ONB__NORM_NONE); }
 
 /* ------------------------------------------------------------------ */
 /* frisvad (Frisvad 2012, Listing 2 / Equations 4-6)                   */
@@ -354,7 +406,7 @@ static inline void onb_hughes_moeller_nonormf   (onb_vec3f n, onb_vec3f *b1, onb
    Bound (tests/test_lib.c): D <= 12u (1 + 2/(1 + n.z)) above t (from
    |b1|^2 - 1 = nx^2 delta/(1 + n.z)^2 with |n|^2 = 1 + delta), and
    sqrt(1 - n.z^2) + 12u for the fallback below t. */
-static inline void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(frisvad_threshold)(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2)
 {
 	double a, b;
 	if (n.z < t) {
@@ -367,7 +419,7 @@ static inline void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb
 	b1->x = 1.0 - n.x * n.x * a; b1->y = b; b1->z = -n.x;
 	b2->x = b; b2->y = 1.0 - n.y * n.y * a; b2->z = -n.y;
 }
-static inline void onb_frisvad_thresholdf(onb_vec3f n, float t, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(frisvad_thresholdf)(onb_vec3f n, float t, onb_vec3f *b1, onb_vec3f *b2)
 {
 	float a, b;
 	if (n.z < t) {
@@ -386,8 +438,8 @@ static inline void onb_frisvad_thresholdf(onb_vec3f n, float t, onb_vec3f *b1, o
 #define ONB_FRISVAD_MAX_T  (-0.99998796)   /* Max 2017, minimax for float */
 #define ONB_FRISVAD_MAX_TF (-0.99998796f)
 
-static inline void onb_frisvad (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb_frisvad_threshold (n, ONB_FRISVAD_T,  b1, b2); }
-static inline void onb_frisvadf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_frisvad_thresholdf(n, ONB_FRISVAD_TF, b1, b2); }
+static inline void ONB__K(frisvad) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { ONB__K(frisvad_threshold)(n, ONB_FRISVAD_T,  b1, b2); }
+static inline void ONB__K(frisvadf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { ONB__K(frisvad_thresholdf)(n, ONB_FRISVAD_TF, b1, b2); }
 
 /* frisvad_max (Nelson Max 2017, JCGT 6(1), "Improved accuracy when
    building an orthonormal basis"): Listing 2 with t = -0.99998796, where the
@@ -395,8 +447,8 @@ static inline void onb_frisvadf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb
    float (both ~5e-3 at t).  Handedness +1.  The double variant keeps the
    same published t, although the double minimax lies much nearer -1
    (`onbstudy threshold --precision double` finds it). */
-static inline void onb_frisvad_max (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb_frisvad_threshold (n, ONB_FRISVAD_MAX_T,  b1, b2); }
-static inline void onb_frisvad_maxf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_frisvad_thresholdf(n, ONB_FRISVAD_MAX_TF, b1, b2); }
+static inline void ONB__K(frisvad_max) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { ONB__K(frisvad_threshold)(n, ONB_FRISVAD_MAX_T,  b1, b2); }
+static inline void ONB__K(frisvad_maxf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { ONB__K(frisvad_thresholdf)(n, ONB_FRISVAD_MAX_TF, b1, b2); }
 
 /* Frisvad 2012, Equation 3: the direction (x, y, z) given around the
    z-axis, rotated to the same direction around n, without the basis:
@@ -404,7 +456,7 @@ static inline void onb_frisvad_maxf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) {
    with a = 1/(1 + n.z).  Singular case as published: when 1 + n.z == 0
    (n = -z), w = (-y, -x, -z).  No threshold: just above -1 the float
    result has the formula's full O(eps/(1 + n.z)) error. */
-static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double z)
+static inline onb_vec3 ONB__K(frisvad_rotate)(onb_vec3 n, double x, double y, double z)
 {
 	onb_vec3 w;
 	double s = 1.0 + n.z, a, b;
@@ -416,7 +468,7 @@ static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double
 	w.z = x * -n.x + y * -n.y + z * n.z;
 	return w;
 }
-static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float z)
+static inline onb_vec3f ONB__K(frisvad_rotatef)(onb_vec3f n, float x, float y, float z)
 {
 	onb_vec3f w;
 	float s = 1.0f + n.z, a, b;
@@ -440,7 +492,7 @@ static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float
    frame is discontinuous across n.z = 0 (b2 flips sign in y).
    Bound (tests/test_lib.c): D <= 12u on unit-to-rounding n, n = +-z
    included. */
-static inline void onb_duff(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(duff)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	if (n.z < 0.0) {
 		const double a = 1.0 / (1.0 - n.z);
@@ -454,7 +506,7 @@ static inline void onb_duff(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 		b2->x = b; b2->y = 1.0 - n.y * n.y * a; b2->z = -n.y;
 	}
 }
-static inline void onb_dufff(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(dufff)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	if (n.z < 0.0f) {
 		const float a = 1.0f / (1.0f - n.z);
@@ -476,7 +528,7 @@ static inline void onb_dufff(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    Handedness +1.  Threshold: the sign bit of n.z, so n.z = -0 takes the
    lower branch (unlike `duff`).  No singular unit direction.
    Bound (tests/test_lib.c): D <= 12u, as duff. */
-static inline void onb_duff_branchless(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(duff_branchless)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	const double sign = copysign(1.0, n.z);
 	const double a = -1.0 / (sign + n.z);
@@ -484,7 +536,7 @@ static inline void onb_duff_branchless(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	b1->x = 1.0 + sign * n.x * n.x * a; b1->y = sign * b; b1->z = -sign * n.x;
 	b2->x = b; b2->y = sign + n.y * n.y * a; b2->z = -n.y;
 }
-static inline void onb_duff_branchlessf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(duff_branchlessf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	const float sign = copysignf(1.0f, n.z);
 	const float a = -1.0f / (sign + n.z);
@@ -533,13 +585,13 @@ static inline float onb__stark_pref(onb_vec3f n, onb_vec3f *p, int fixed)
 	p->z = n.x * ey - n.y * ex;
 	return p->x * p->x + p->y * p->y + p->z * p->z;
 }
-static inline void onb_stark(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(stark)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 p;
 	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 0));
 	onb__naive_post(n, p, s, b1, b2);
 }
-static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(starkf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3f p;
 	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 0));
@@ -550,13 +602,13 @@ static inline void onb_starkf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    Hill 2011 (blog.selfshadow.com/2011/10/17/perp-vectors, after Listing 3),
    so that e_k is the axis of n's smallest |component| as Stark's text
    says.  Otherwise as `stark`.  |p|^2 >= 2/3 - O(eps).  Bound: D <= 12u. */
-static inline void onb_stark_fixed(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(stark_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 p;
 	const double s = 1.0 / sqrt(onb__stark_pre(n, &p, 1));
 	onb__naive_post(n, p, s, b1, b2);
 }
-static inline void onb_stark_fixedf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(stark_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3f p;
 	const float s = 1.0f / sqrtf(onb__stark_pref(n, &p, 1));
@@ -577,7 +629,7 @@ static inline void onb_stark_fixedf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    Threshold: |x| = |y|.
    No singular unit direction (squared length >= 1/2 - O(eps)).
    Bound (tests/test_lib.c): D <= 12u. */
-static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(pbrt_v3)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 u;
 	double inv;
@@ -590,7 +642,7 @@ static inline void onb_pbrt_v3(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	}
 	onb__naive_post(n, u, 1.0, b1, b2);
 }
-static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(pbrt_v3f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3f u;
 	float inv;
@@ -604,10 +656,10 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	*b1 = u;
 	{	/* pbrt-v3 Cross: operands widened to double (products exact), the
 		   difference rounded to double, then converted to float */
-		const double vx = (double)n.x, vy = (double)n.y, vz = (double)n.z, wx = (double)u.x, wy = (double)u.y, wz = (double)u.z;
-		b2->x = (float)(vy * wz - vz * wy);
-		b2->y = (float)(vz * wx - vx * wz);
-		b2->z = (float)(vx * wy - vy * wx);
+		const double vx = ONB__CAST(double, n.x), vy = ONB__CAST(double, n.y), vz = ONB__CAST(double, n.z), wx = ONB__CAST(double, u.x), wy = ONB__CAST(double, u.y), wz = ONB__CAST(double, u.z);
+		b2->x = ONB__CAST(float, vy * wz - vz * wy);
+		b2->y = ONB__CAST(float, vz * wx - vx * wz);
+		b2->z = ONB__CAST(float, vx * wy - vy * wx);
 	}
 }
 
@@ -621,7 +673,7 @@ static inline void onb_pbrt_v3f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    u x v = -w.  The only method here that normalizes its input.
    Threshold: |w.x| = 0.9.  Singular: w = 0 only.
    Bound (tests/test_lib.c): D <= 12u, measured against unit(w). */
-static inline void onb_rtow(onb_vec3 w, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(rtow)(onb_vec3 w, onb_vec3 *b1, onb_vec3 *b2)
 {
 	double inv = 1.0 / sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
 	onb_vec3 uw, a, c, v;
@@ -639,7 +691,7 @@ static inline void onb_rtow(onb_vec3 w, onb_vec3 *b1, onb_vec3 *b2)
 	b1->z = uw.x * v.y - uw.y * v.x;
 	*b2 = v;
 }
-static inline void onb_rtowf(onb_vec3f w, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(rtowf)(onb_vec3f w, onb_vec3f *b1, onb_vec3f *b2)
 {
 	float inv = 1.0f / sqrtf(w.x * w.x + w.y * w.y + w.z * w.z);
 	onb_vec3f uw, a, c, v;
@@ -671,7 +723,7 @@ static inline void onb_rtowf(onb_vec3f w, onb_vec3f *b1, onb_vec3f *b2)
    in float any n with n.x^2 + n.y^2 below the smallest subnormal, where
    the squared length underflows.
    Bound (tests/test_lib.c): D <= 12u away from +-z. */
-static inline void onb_tangent_cross_z(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+static inline void ONB__K(tangent_cross_z)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	const double tx = n.x, ty = n.y, tz = n.z + 1.0;
 	double cx = n.y * tz - n.z * ty;
@@ -684,7 +736,7 @@ static inline void onb_tangent_cross_z(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	b1->y = n.z * cx - n.x * cz;
 	b1->z = n.x * cy - n.y * cx;
 }
-static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(tangent_cross_zf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	const float tx = n.x, ty = n.y, tz = n.z + 1.0f;
 	float cx = n.y * tz - n.z * ty;
@@ -722,14 +774,14 @@ static inline void onb_tangent_cross_zf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
    a float rounding boundary.
    Bound (tests/test_lib.c): D <= 12u (u = 2^-24); measured (onbstudy sweep):
    largest defect within 1.05x of the floor's largest on every distribution. */
-static inline void onb_duff_widef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(duff_widef)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
-	const double x = (double)n.x, y = (double)n.y, z = (double)n.z;
+	const double x = ONB__CAST(double, n.x), y = ONB__CAST(double, n.y), z = ONB__CAST(double, n.z);
 	const double sign = copysign(1.0, z);
 	const double a = -1.0 / (sign + z);
 	const double b = x * y * a;
-	b1->x = (float)(1.0 + sign * x * x * a); b1->y = (float)(sign * b); b1->z = (float)(-sign * x);
-	b2->x = (float)b; b2->y = (float)(sign + y * y * a); b2->z = (float)(-y);
+	b1->x = ONB__CAST(float, 1.0 + sign * x * x * a); b1->y = ONB__CAST(float, sign * b); b1->z = ONB__CAST(float, -sign * x);
+	b2->x = ONB__CAST(float, b); b2->y = ONB__CAST(float, sign + y * y * a); b2->z = ONB__CAST(float, -y);
 }
 
 /* duff_comp: the same formula in float arithmetic, with each rounding
@@ -745,7 +797,7 @@ static inline void onb_duff_widef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    CPU has FMA.  fma is correctly rounded everywhere, so the bits do not
    depend on which.
    Bound (tests/test_lib.c): D <= 12u. */
-static inline void onb_duff_compf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+static inline void ONB__K(duff_compf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	const float x = n.x, y = n.y, z = n.z;
 	const float s = copysignf(1.0f, z);
@@ -869,25 +921,59 @@ ONB_METHOD_LIST(ONB__DECLARE)
 ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
 #undef ONB__DECLARE_F
 
-/* Array entry points, for renderers with their own vector types: n[3] in,
-   b1[3] and b2[3] out (they may alias nothing).  Out of line in libonb.a,
-   so they keep the studied bits whatever the caller's flags:
-   onb_NAME_array[f](n, b1, b2) per method, or by registry entry. */
+/* Array entry points, for renderers with their own vector types: n points
+   to 3 values (x, y, z) read, b1 and b2 to 3 values each written; none of
+   them may overlap.  Plain pointers, not n[3] parameters, so that `&v.x`
+   of a renderer's struct { float x, y, z; } compiles without GCC's
+   -Wstringop-overread/-overflow (docs/library.md shows that case).  Out of
+   line in libonb.a, so they keep the studied bits whatever the caller's
+   flags: onb_NAME_array[f](n, b1, b2) per method, or by registry entry. */
 #define ONB__DECLARE_ARRAY(m) \
-	void onb_##m##_array (const double n[3], double b1[3], double b2[3]); \
-	void onb_##m##_arrayf(const float  n[3], float  b1[3], float  b2[3]);
+	void onb_##m##_array (const double *n, double *b1, double *b2); \
+	void onb_##m##_arrayf(const float  *n, float  *b1, float  *b2);
 ONB_METHOD_LIST(ONB__DECLARE_ARRAY)
 #undef ONB__DECLARE_ARRAY
-/* method->basis(f) on arrays; a NULL method (or function: a float-only
-   method in double) leaves b1, b2 untouched and
+/* method->basis(f) on arrays (3 values each, as above); a NULL method (or
+   function: a float-only method in double) leaves b1, b2 untouched and
    returns ONB_BAD_METHOD, else ONB_OK (no check of n: see
    onb_basis_checked). */
-onb_status onb_basis_array (const onb_method *method, const double n[3], double b1[3], double b2[3]);
-onb_status onb_basis_arrayf(const onb_method *method, const float  n[3], float  b1[3], float  b2[3]);
+onb_status onb_basis_array (const onb_method *method, const double *n, double *b1, double *b2);
+onb_status onb_basis_arrayf(const onb_method *method, const float  *n, float  *b1, float  *b2);
 #define ONB__DECLARE_ARRAY_F(m) \
-	void onb_##m##_arrayf(const float n[3], float b1[3], float b2[3]);
+	void onb_##m##_arrayf(const float *n, float *b1, float *b2);
 ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)
 #undef ONB__DECLARE_ARRAY_F
+
+/* The tools out of line, for callers whose flags could change their bits. */
+void onb_frisvad_threshold_outline (onb_vec3  n, double t, onb_vec3  *b1, onb_vec3  *b2);
+void onb_frisvad_threshold_outlinef(onb_vec3f n, float  t, onb_vec3f *b1, onb_vec3f *b2);
+onb_vec3  onb_frisvad_rotate_outline (onb_vec3  n, double x, double y, double z);
+onb_vec3f onb_frisvad_rotate_outlinef(onb_vec3f n, float  x, float  y, float  z);
+
+/* Out of line (ONB__INLINE 0, see the top): the method names call
+   libonb.a's copies, so the caller gets the studied bits. */
+#if !ONB__INLINE
+#define ONB__WRAP(m) \
+	static inline void onb_##m(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) \
+	{ onb_##m##_outline(n, b1, b2); } \
+	static inline void onb_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) \
+	{ onb_##m##_outlinef(n, b1, b2); }
+ONB_METHOD_LIST(ONB__WRAP)
+#undef ONB__WRAP
+#define ONB__WRAP_F(m) \
+	static inline void onb_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) \
+	{ onb_##m##_outlinef(n, b1, b2); }
+ONB_FLOAT_METHOD_LIST(ONB__WRAP_F)
+#undef ONB__WRAP_F
+static inline void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2)
+{ onb_frisvad_threshold_outline(n, t, b1, b2); }
+static inline void onb_frisvad_thresholdf(onb_vec3f n, float t, onb_vec3f *b1, onb_vec3f *b2)
+{ onb_frisvad_threshold_outlinef(n, t, b1, b2); }
+static inline onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double z)
+{ return onb_frisvad_rotate_outline(n, x, y, z); }
+static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float z)
+{ return onb_frisvad_rotate_outlinef(n, x, y, z); }
+#endif
 
 #ifdef __cplusplus
 }
@@ -895,8 +981,6 @@ ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)
 
 #if ONB__FP_PRAGMAS == 1
 #pragma float_control(pop)
-#elif ONB__FP_PRAGMAS == 2
-#pragma GCC pop_options
 #endif
 
 #endif /* ONB_H */

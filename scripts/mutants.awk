@@ -115,7 +115,8 @@ function crosses(s,    rest, off, re, m, a, b, c, d, parts, k) {
 	if (!on) next
 	if (s ~ /^#/ && s !~ /^#define/) next
 	if (s ~ /^static inline/) {
-		if (match(s, /onb_[A-Za-z0-9_]+ *\(/)) where = substr(s, RSTART, RLENGTH - 1)
+		if (match(s, /ONB__K\([A-Za-z0-9_]+\)/)) where = "onb_" substr(s, RSTART + 7, RLENGTH - 8)
+		else if (match(s, /onb_[A-Za-z0-9_]+ *\(/)) where = substr(s, RSTART, RLENGTH - 1)
 		sub(/ +$/, "", where)
 		# only the body of a one-line function: blank its signature
 		body = index(s, "{")

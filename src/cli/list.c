@@ -1,26 +1,81 @@
 /*
- * list.c - `onbstudy list`: the registry, as a table or CSV.
+ * list.c - `onbstudy list`: the registry, as a table or CSV; with --axes,
+ * each method's frame at +-x, +-y and +-z (docs/library.md, "Migrating").
  */
+#include <math.h>
 #include <string.h>
 #include "cli/list.h"
 #include "cli/cli.h"
 
+/* x as %g, every NaN as "nan" (its sign bit differs between CPUs). */
+static const char *num(char *buf, size_t len, double x)
+{
+	if (isnan(x))
+		snprintf(buf, len, "nan");
+	else
+		snprintf(buf, len, "%g", x);
+	return buf;
+}
+
+/* v as "(x, y, z)" (csv 0) or "x,y,z" (csv 1) into buf. */
+static const char *vec(char *buf, size_t len, onb_vec3 v, int csv)
+{
+	char a[32], b[32], c[32];
+	snprintf(buf, len, csv ? "%s,%s,%s" : "(%s, %s, %s)", num(a, sizeof a, v.x), num(b, sizeof b, v.y),
+	         num(c, sizeof c, v.z));
+	return buf;
+}
+
+/* b1, b2 and det(b1, b2, n) of every method at the six axes: in double
+   through method->basis, in float (widened) for the float-only methods. */
+static void list_axes(const onb_method *m, size_t n, int csv)
+{
+	static const char *const an[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
+	size_t i, a;
+	if (csv)
+		printf("name,axis,b1x,b1y,b1z,b2x,b2y,b2z,det\n");
+	else
+		printf("# b1 and b2 at the six axes (double; float for float-only methods); det = det(b1, b2, n)\n"
+		       "%-24s %-4s %-22s %-22s %s\n", "name", "n", "b1", "b2", "det");
+	for (i = 0; i < n; i++)
+		for (a = 0; a < 6; a++) {
+			onb_vec3 v = { 0.0, 0.0, 0.0 }, b1, b2;
+			char v1[128], v2[128], dd[32];
+			double d;
+			*(&v.x + a / 2) = (a % 2) ? -1.0 : 1.0;
+			if (m[i].basis) {
+				m[i].basis(v, &b1, &b2);
+			} else {
+				onb_vec3f vf = { (float)v.x, (float)v.y, (float)v.z }, f1, f2;
+				m[i].basisf(vf, &f1, &f2);
+				b1.x = f1.x; b1.y = f1.y; b1.z = f1.z; b2.x = f2.x; b2.y = f2.y; b2.z = f2.z;
+			}
+			d = v.x * (b1.y * b2.z - b1.z * b2.y) + v.y * (b1.z * b2.x - b1.x * b2.z) + v.z * (b1.x * b2.y - b1.y * b2.x);
+			printf(csv ? "%s,%s,%s,%s,%s\n" : "%-24s %-4s %-22s %-22s %s\n", csv || a == 0 ? m[i].name : "", an[a],
+			       vec(v1, sizeof v1, b1, csv), vec(v2, sizeof v2, b2, csv), num(dd, sizeof dd, d));
+		}
+}
+
 int cmd_list(int argc, char **argv)
 {
 	static const struct option lo[] = {
-		{ "format", required_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+		{ "format", required_argument, NULL, 'f' }, { "axes", no_argument, NULL, 'a' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t n, i;
 	const onb_method *m = onb_methods(&n);
-	int csv = 0, v, rc = 0;
+	int csv = 0, axes = 0, v, rc = 0;
 	cli_args c;
 	if (cli_begin(&c, "list", argc, argv))
 		return 1;
 	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
 		if (v == CLI_HELP) {
-			printf("usage: onbstudy list [--format table|csv]\n"
-			       "  The methods in the registry: name, handedness, singular directions, source.\n");
+			printf("usage: onbstudy list [--axes] [--format table|csv]\n"
+			       "  The methods in the registry: name, handedness, singular directions, source.\n"
+			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there.\n");
 			rc = -1;
+		} else if (v == 'a') {
+			axes = 1;
 		} else if (v != 'f' || (csv = cli_format("--format", c.arg, 0)) < 0) {
 			rc = ONB_EXIT_USAGE;
 		}
@@ -30,6 +85,10 @@ int cmd_list(int argc, char **argv)
 	cli_end(&c);
 	if (rc)
 		return rc < 0 ? 0 : rc;
+	if (axes) {
+		list_axes(m, n, csv);
+		return 0;
+	}
 	if (csv) {
 		printf("name,family,handedness,flags,threshold,source,singular,thresholds\n");
 		for (i = 0; i < n; i++)

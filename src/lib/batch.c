@@ -18,8 +18,14 @@
  * (VEX-encoded under AVX) and never the AVX-512 rsqrt14.
  * Two float kernels (naive, hughes_moeller) dispatch by hand instead, to
  * run 256-bit code on AVX-512 CPUs: see ONB__BATCH_F_256 below.
+ *
+ * One object per batch function (split.h): the table at the end names the
+ * macro that defines each; onb_batch_isa is in the common object.
  */
-#include "onb.h"
+#include "split.h"
+#if ONB_HAVE_HW_RSQRT
+#include <xmmintrin.h>
+#endif
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(ONB_NO_CLONES)
 #define ONB__CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
@@ -33,6 +39,7 @@
    the stack and L1, large enough to amortize the loop overhead. */
 #define ONB__BLOCK 256
 
+#if ONB__COMMON
 const char *onb_batch_isa(void)
 {
 #if ONB__HAVE_CLONES
@@ -48,11 +55,12 @@ const char *onb_batch_isa(void)
 	return "generic";
 #endif
 }
+#endif
 
 /* Hardware rsqrt over a block, four lanes at a time, with the same
    instruction as the scalar onb__hw_rsqrtf (rsqrtss and rsqrtps share one
    table), so a batch gives the scalar bits. */
-static void onb__rsqrt_blockf(size_t m, const float *x, float *y)
+static inline void onb__rsqrt_blockf(size_t m, const float *x, float *y)
 {
 	size_t j = 0;
 #if ONB_HAVE_HW_RSQRT
@@ -135,24 +143,6 @@ static void onb__rsqrt_blockf(size_t m, const float *x, float *y)
 #define ONB__BATCH_F_256(m) ONB__BATCH_SIMPLE_F(m)
 #endif
 
-ONB__BATCH_SIMPLE_D(naive)
-ONB__BATCH_F_256(naive)
-ONB__BATCH_SIMPLE(naive_invsqrt)
-ONB__BATCH_SIMPLE(naive_nonorm)
-ONB__BATCH_SIMPLE_D(hughes_moeller)
-ONB__BATCH_F_256(hughes_moeller)
-ONB__BATCH_SIMPLE(hughes_moeller_invsqrt)
-ONB__BATCH_SIMPLE(hughes_moeller_nonorm)
-ONB__BATCH_SIMPLE(frisvad)
-ONB__BATCH_SIMPLE(frisvad_max)
-ONB__BATCH_SIMPLE(duff)
-ONB__BATCH_SIMPLE(duff_branchless)
-ONB__BATCH_SIMPLE(stark)
-ONB__BATCH_SIMPLE(stark_fixed)
-ONB__BATCH_SIMPLE(pbrt_v3)
-ONB__BATCH_SIMPLE(rtow)
-ONB__BATCH_SIMPLE(tangent_cross_z)
-
 /* The float-only methods of issue 16.  duff_wide converts to double and
    back: an ordinary clone loop.  duff_comp calls fmaf(), a libm call
    unless the code is compiled for an FMA target, so it dispatches by hand
@@ -160,26 +150,26 @@ ONB__BATCH_SIMPLE(tangent_cross_z)
    it, and to the baseline loop (libm fmaf) otherwise.  -ffp-contract=off
    still holds in the FMA clones: only the explicit fmaf() calls fuse, and
    fma is correctly rounded, so every clone gives the scalar bits. */
-ONB__BATCH_SIMPLE_F(duff_wide)
 #if ONB__HAVE_CLONES
-__attribute__((target("avx512f,fma"), noinline))
-static void onb__duff_comp_batchf_avx512f(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
-__attribute__((target("avx2,fma"), noinline))
-static void onb__duff_comp_batchf_avx2(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
-__attribute__((noinline))
-static void onb__duff_comp_batchf_default(ONB__ARGS_F) ONB__LOOP_F(duff_comp)
-void onb_duff_comp_batchf(ONB__ARGS_F)
-{
-	__builtin_cpu_init();
-	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))
-		onb__duff_comp_batchf_avx512f(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
-	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-		onb__duff_comp_batchf_avx2(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
-	else
-		onb__duff_comp_batchf_default(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z);
+#define ONB__BATCH_DUFF_COMP_F \
+__attribute__((target("avx512f,fma"), noinline))                               \
+static void onb__duff_comp_batchf_avx512f(ONB__ARGS_F) ONB__LOOP_F(duff_comp)  \
+__attribute__((target("avx2,fma"), noinline))                                  \
+static void onb__duff_comp_batchf_avx2(ONB__ARGS_F) ONB__LOOP_F(duff_comp)     \
+__attribute__((noinline))                                                      \
+static void onb__duff_comp_batchf_default(ONB__ARGS_F) ONB__LOOP_F(duff_comp)  \
+void onb_duff_comp_batchf(ONB__ARGS_F)                                         \
+{                                                                              \
+	__builtin_cpu_init();                                                         \
+	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))       \
+		onb__duff_comp_batchf_avx512f(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
+	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))     \
+		onb__duff_comp_batchf_avx2(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
+	else                                                                          \
+		onb__duff_comp_batchf_default(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
 }
 #else
-ONB__BATCH_SIMPLE_F(duff_comp)
+#define ONB__BATCH_DUFF_COMP_F ONB__BATCH_SIMPLE_F(duff_comp)
 #endif
 
 /* Methods with the hardware rsqrt: three passes per block, because GCC
@@ -187,7 +177,7 @@ ONB__BATCH_SIMPLE_F(duff_comp)
    builds the unnormalized vector and its squared length, pass 2 runs
    rsqrtps, pass 3 applies the optional Newton step, scales and crosses.
    Each pass calls the same inline pieces as the scalar kernel. */
-#define ONB__BATCH_RSQRT(fam, var, newton)                                     \
+#define ONB__BATCH_RSQRT_D(fam, var, newton)                                   \
 	ONB__CLONES void onb_##fam##var##_batch(size_t count,                      \
 		const double *restrict nx, const double *restrict ny,                  \
 		const double *restrict nz, double *restrict b1x,                       \
@@ -218,7 +208,8 @@ ONB__BATCH_SIMPLE_F(duff_comp)
 				b2x[i0 + j] = b2.x; b2y[i0 + j] = b2.y; b2z[i0 + j] = b2.z;    \
 			}                                                                  \
 		}                                                                      \
-	}                                                                          \
+	}
+#define ONB__BATCH_RSQRT_F(fam, var, newton)                                   \
 	ONB__CLONES void onb_##fam##var##_batchf(size_t count,                     \
 		const float *restrict nx, const float *restrict ny,                    \
 		const float *restrict nz, float *restrict b1x, float *restrict b1y,    \
@@ -250,20 +241,47 @@ ONB__BATCH_SIMPLE_F(duff_comp)
 		}                                                                      \
 	}
 
-ONB__BATCH_RSQRT(naive, _rsqrt, 0)
-ONB__BATCH_RSQRT(naive, _rsqrt_nr, 1)
-ONB__BATCH_RSQRT(hughes_moeller, _rsqrt, 0)
-ONB__BATCH_RSQRT(hughes_moeller, _rsqrt_nr, 1)
-
-/* Out-of-line copies of the inline kernels, for the registry and for
-   callers through a function pointer. */
-#define ONB__OUTLINE(m)                                                        \
-	void onb_##m##_outline(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)             \
-	{ onb_##m(n, b1, b2); }                                                    \
-	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
-	{ onb_##m##f(n, b1, b2); }
-ONB_METHOD_LIST(ONB__OUTLINE)
-#define ONB__OUTLINE_F(m)                                                      \
-	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
-	{ onb_##m##f(n, b1, b2); }
-ONB_FLOAT_METHOD_LIST(ONB__OUTLINE_F)
+/* Which macro defines each batch function. */
+#define ONB__BD_naive                   ONB__BATCH_SIMPLE_D(naive)
+#define ONB__BF_naive                   ONB__BATCH_F_256(naive)
+#define ONB__BD_naive_invsqrt           ONB__BATCH_SIMPLE_D(naive_invsqrt)
+#define ONB__BF_naive_invsqrt           ONB__BATCH_SIMPLE_F(naive_invsqrt)
+#define ONB__BD_naive_rsqrt             ONB__BATCH_RSQRT_D(naive, _rsqrt, 0)
+#define ONB__BF_naive_rsqrt             ONB__BATCH_RSQRT_F(naive, _rsqrt, 0)
+#define ONB__BD_naive_rsqrt_nr          ONB__BATCH_RSQRT_D(naive, _rsqrt_nr, 1)
+#define ONB__BF_naive_rsqrt_nr          ONB__BATCH_RSQRT_F(naive, _rsqrt_nr, 1)
+#define ONB__BD_naive_nonorm            ONB__BATCH_SIMPLE_D(naive_nonorm)
+#define ONB__BF_naive_nonorm            ONB__BATCH_SIMPLE_F(naive_nonorm)
+#define ONB__BD_hughes_moeller          ONB__BATCH_SIMPLE_D(hughes_moeller)
+#define ONB__BF_hughes_moeller          ONB__BATCH_F_256(hughes_moeller)
+#define ONB__BD_hughes_moeller_invsqrt  ONB__BATCH_SIMPLE_D(hughes_moeller_invsqrt)
+#define ONB__BF_hughes_moeller_invsqrt  ONB__BATCH_SIMPLE_F(hughes_moeller_invsqrt)
+#define ONB__BD_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt, 0)
+#define ONB__BF_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt, 0)
+#define ONB__BD_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt_nr, 1)
+#define ONB__BF_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt_nr, 1)
+#define ONB__BD_hughes_moeller_nonorm   ONB__BATCH_SIMPLE_D(hughes_moeller_nonorm)
+#define ONB__BF_hughes_moeller_nonorm   ONB__BATCH_SIMPLE_F(hughes_moeller_nonorm)
+#define ONB__BD_frisvad                 ONB__BATCH_SIMPLE_D(frisvad)
+#define ONB__BF_frisvad                 ONB__BATCH_SIMPLE_F(frisvad)
+#define ONB__BD_frisvad_max             ONB__BATCH_SIMPLE_D(frisvad_max)
+#define ONB__BF_frisvad_max             ONB__BATCH_SIMPLE_F(frisvad_max)
+#define ONB__BD_duff                    ONB__BATCH_SIMPLE_D(duff)
+#define ONB__BF_duff                    ONB__BATCH_SIMPLE_F(duff)
+#define ONB__BD_duff_branchless         ONB__BATCH_SIMPLE_D(duff_branchless)
+#define ONB__BF_duff_branchless         ONB__BATCH_SIMPLE_F(duff_branchless)
+#define ONB__BD_stark                   ONB__BATCH_SIMPLE_D(stark)
+#define ONB__BF_stark                   ONB__BATCH_SIMPLE_F(stark)
+#define ONB__BD_stark_fixed             ONB__BATCH_SIMPLE_D(stark_fixed)
+#define ONB__BF_stark_fixed             ONB__BATCH_SIMPLE_F(stark_fixed)
+#define ONB__BD_pbrt_v3                 ONB__BATCH_SIMPLE_D(pbrt_v3)
+#define ONB__BF_pbrt_v3                 ONB__BATCH_SIMPLE_F(pbrt_v3)
+#define ONB__BD_rtow                    ONB__BATCH_SIMPLE_D(rtow)
+#define ONB__BF_rtow                    ONB__BATCH_SIMPLE_F(rtow)
+#define ONB__BD_tangent_cross_z         ONB__BATCH_SIMPLE_D(tangent_cross_z)
+#define ONB__BF_tangent_cross_z         ONB__BATCH_SIMPLE_F(tangent_cross_z)
+#define ONB__BF_duff_wide               ONB__BATCH_SIMPLE_F(duff_wide)
+#define ONB__BF_duff_comp               ONB__BATCH_DUFF_COMP_F
+#define ONB__BD(m) ONB__BD_##m
+#define ONB__BF(m) ONB__BF_##m
+ONB__SPLIT(ONB__BD, ONB__BF)

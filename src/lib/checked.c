@@ -3,6 +3,7 @@
  * cannot promise unit, finite normals (interpolated shading normals,
  * normal maps, user meshes).
  */
+#define ONB_BUILDING_LIB 1
 #include "onb.h"
 
 static void onb__safe_frame(onb_vec3 *b1, onb_vec3 *b2)

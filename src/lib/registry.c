@@ -3,6 +3,7 @@
  * table, scene, the tests) loops over it; adding a method means adding a
  * row here and its kernel in include/onb.h.
  */
+#define ONB_BUILDING_LIB 1
 #include "onb.h"
 
 #if ONB_HAVE_HW_RSQRT

@@ -72,6 +72,15 @@ static int pt_lookup(const unsigned char *t, size_t tl)
 static unsigned long long off(const ply_rd *r) { return (unsigned long long)(r->p - r->buf); }
 
 /* One value of type `type`; is_int tells whether *iv is meaningful. */
+/* 1 on a little-endian host (x86-64, arm64), 0 on a big-endian one (s390x). */
+static int host_le(void)
+{
+	const uint16_t one = 1;
+	unsigned char c;
+	memcpy(&c, &one, 1);
+	return c;
+}
+
 static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long ei, const char *pname,
                      double *dv, long long *iv)
 {
@@ -122,8 +131,8 @@ static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long 
 		if ((size_t)(r->end - r->p) < n)
 			return fail(c, "byte %llu: truncated binary data: element '%s' %llu of %llu, property '%s' needs %zu bytes, %zu remain",
 			            off(r), e->name, ei, e->count, pname, n, (size_t)(r->end - r->p));
-		for (i = 0; i < n; i++)
-			b[i] = r->p[r->fmt == 1 ? i : n - 1 - i];
+		for (i = 0; i < n; i++) /* into the host's byte order (issue 25: s390x) */
+			b[i] = r->p[(r->fmt == 1) == host_le() ? i : n - 1 - i];
 		r->p += n;
 		switch (type) {
 		case PT_I8:  { int8_t v;   memcpy(&v, b, 1); *iv = v; break; }

@@ -397,8 +397,11 @@ static void print_table(const sweep_state *s)
 			const int basis = s->kernels[k].m != NULL;
 			if (!on(s, p, k))
 				continue;
-			printf("%-28s %-6s %10.3g", s->kernels[k].name, prec_name(p),
-			       basis && s->cfg.dist_on[DIST_UNIFORM] ? st_rmse(u, DIST_UNIFORM) : NAN);
+			printf("%-28s %-6s", s->kernels[k].name, prec_name(p));
+			if (basis && s->cfg.dist_on[DIST_UNIFORM])
+				printf(" %10.3g", st_rmse(u, DIST_UNIFORM));
+			else
+				printf(" %10s", "n/a"); /* no basis (frisvad_rotate), or no uniform run */
 			for (d = 0; d < NDIST; d++) {
 				const cell_t *c = sweep_cell_at(s, p, d, k);
 				if (!s->cfg.dist_on[d])

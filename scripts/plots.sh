@@ -223,7 +223,7 @@ for P in float double; do
 			# shellcheck disable=SC2086
 			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (polecap_float shows them)'"
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

@@ -12,11 +12,11 @@ function free(x0, y0, w,   k) {
 	if (x0 < 0 || x0 + w > 0.99 || y0 < 0.02 || y0 > 0.98) return 0
 	for (k = 1; k <= nl; k++)
 		if (x0 < lx[k] + lw[k] && lx[k] < x0 + w && y0 - H < ly[k] + H && ly[k] - H < y0 + H) return 0
-	for (k = 1; k <= n; k++) # keep off the markers too
-		if (px[k] > x0 - 0.008 && px[k] < x0 + w && py[k] > y0 - H && py[k] < y0 + H) return 0
+	for (k = 1; k <= n; k++) # keep off the markers too (up to the front's circles, 9 px)
+		if (px[k] > x0 - MX && px[k] < x0 + w + MX && py[k] > y0 - H - MY && py[k] < y0 + H + MY) return 0
 	return 1
 }
-BEGIN { CW = 7.4 / gw; H = 8.5 / gh } # width of a character, half a label's height (fractions)
+BEGIN { CW = 7.4 / gw; H = 8.5 / gh; MX = 9 / gw; MY = 5 / gh } # width of a character, half a label's height (fractions)
 { n++; px[n] = fx($1); py[n] = fy($col); name[n] = $4; X[n] = $1; Y[n] = $col }
 END {
 	# coincident points: one label
@@ -37,7 +37,7 @@ END {
 		for (k = 0; k <= 24 && !placed; k++) {
 			dy = (k % 2 ? 1 : -1) * int((k + 1) / 2) * 2.2 * H
 			for (side = 0; side < 2 && !placed; side++) {
-				x0 = side ? px[i] - 0.012 - w : px[i] + 0.012
+				x0 = side ? px[i] - MX - 0.004 - w : px[i] + MX + 0.004
 				y0 = py[i] + dy
 				if (free(x0, y0, w)) placed = 1
 			}

@@ -255,7 +255,7 @@ for P in float double; do
 				}
 			} }' > "$W/marks_$P.gp"
 		[ "$P" = float ] && mkdir -p "$FIGS" && gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$FIGS/threshold_minimax_$P'; ttl='$P: the threshold t of Frisvad Listing 2 (Max 2017): error against 1 + t'"
-		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") values of n.z near -1, $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths each'"
+		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") n.z near -1 x $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths'"
 	elif [ -f "$RUN/threshold.csv" ]; then skip "threshold_$P" "threshold.csv has no $P section"
 	else skip "threshold_$P" "no threshold.csv (run ./onbstudy threshold)"
 	fi

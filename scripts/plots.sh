@@ -175,9 +175,9 @@ for P in float double; do
 	if [ -n "$n" ]; then
 		titles "$files1" 2 "$C1" > "$W/t1.txt"; titles "$files1" 3 "$C1" > "$W/t1r.txt"
 		set -- $(range "$files1" 2 0)
-		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_DEFECT'; ttl='$P: largest orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
 		set -- $(range "$files1" 3 0)
-		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_DEFECT_RMS'; ttl='$P: RMS orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
 	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
@@ -223,7 +223,7 @@ for P in float double; do
 			# shellcheck disable=SC2086
 			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

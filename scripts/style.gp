@@ -29,6 +29,7 @@ EPS_DOUBLE = 2.0**-52
 YL_DEFECT = "largest defect per bin (unitless)"
 YL_DEFECT_RMS = "RMS defect per bin (unitless)"
 YL_ERROR = "largest error per bin (unitless)"
+YL_ERROR_RMS = "RMS error per bin (unitless)"
 # the sequential colour map of every map (viridis, sampled at 9 points)
 set palette defined (0 "#440154", 1 "#472d7b", 2 "#3b528b", 3 "#2c728e", 4 "#21918c", \
     5 "#28ae80", 6 "#5ec962", 7 "#addc30", 8 "#fde725")

@@ -23,6 +23,7 @@ if (log10(EPS_FLOAT) > cbmin) set cbtics add ("float eps" log10(EPS_FLOAT))
 if (log10(EPS_DOUBLE) > cbmin) set cbtics add ("double eps" log10(EPS_DOUBLE))
 set tics scale 0.5
 unset grid
+set object 20 rect from graph 0, graph 0 to graph 1, graph 1 behind fc rgb "#e8e8e8" fs solid 1.0 noborder
 unset key
 n = words(files)
 W = W_MULTI
@@ -36,9 +37,10 @@ do for [term_i = 1:NTERM] {
         set title word(names, i) font F_PANEL offset 0,-0.5 noenhanced
         if (i == n) {
             set colorbox user origin screen 0.9, screen 0.12 size screen 0.018, screen 1 - 250.0/H
-            set cblabel "log10 of the orthonormality defect (the same scale in every panel)" font F_AXIS offset 1.5,0
+            set cblabel "log10 of the orthonormality defect (one scale for all; light grey: non-finite)" font F_AXIS offset 1.5,0
         } else { unset colorbox }
-        plot word(files, i) using 1:2:3 with image
+        # a non-finite cell leaves the light grey background
+        plot word(files, i) using 1:2:(strcol(3) eq "nan" ? NaN : $3) with image
         unset label 901
     }
     unset multiplot

@@ -210,7 +210,7 @@ for P in float double; do
 			awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 				function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
 				!/^#/ && $1 == m && $2 == p { if ($3 != last && NR > 1 && started) print ""; last = $3; started = 1
-					print $6 * 57.29577951308232, $5, log(v($7)) / log(10) }' "$RUN/grid.csv" > "$f"
+					print $6 * 57.29577951308232, $5, (($7 == "inf" || $7 == "nan" || $7 == "-nan") ? "nan" : log(v($7)) / log(10)) }' "$RUN/grid.csv" > "$f"
 			[ -s "$f" ] || continue
 			mfiles="$mfiles $f"; mnames="$mnames $m"; k=$((k + 1))
 		done
@@ -221,7 +221,7 @@ for P in float double; do
 			# the colour scale: from the smallest value in the data (at
 			# most the floor) to 0, in whole decades
 			# shellcheck disable=SC2086
-			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
+			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && $3 != "nan" && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
 			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
 		fi

@@ -26,6 +26,21 @@ stats file using ($3 > 0 && $3 < 1e300 ? $3 : 1/0) nooutput
 if (STATS_min < y0) { y0 = STATS_min }
 if (STATS_max > y1) { y1 = STATS_max }
 set yrange [y0 / 3 : y1 * 3]
+# the eps levels, on the right axis, where in range
+set logscale y2
+set y2range [y0 / 3 : y1 * 3]
+set ytics nomirror
+set y2tics font F_TICK
+set format y2 ""
+if (EPS_FLOAT > y0 / 3 && EPS_FLOAT < y1 * 3) {
+    set y2tics add ("float eps" EPS_FLOAT)
+    set arrow 91 from graph 0, first EPS_FLOAT to graph 1, first EPS_FLOAT nohead dt 3 lc rgb "#555555" back
+}
+if (EPS_DOUBLE > y0 / 3 && EPS_DOUBLE < y1 * 3) {
+    set y2tics add ("double eps" EPS_DOUBLE)
+    set arrow 92 from graph 0, first EPS_DOUBLE to graph 1, first EPS_DOUBLE nohead dt 3 lc rgb "#555555" back
+}
+set rmargin 11
 if (!exists("single")) single = 0
 W = W_SINGLE; H = H_SINGLE
 do for [term_i = 1:NTERM] {

@@ -40,8 +40,11 @@
  *
  * --diff renders the reference (duff_branchless in double, the same
  * random numbers) and writes |image - reference| on a colour scale from
- * black (0) through blue and red to yellow (DIFF_MAX = 0.05 or more; NaN
- * is yellow too), with the scale as a bar along the bottom.
+ * black (0) through blue and red to yellow (DIFF_MAX = 0.05 or more),
+ * NaN in a colour of its own (cyan), with the scale as a bar under the
+ * image, numbered 0, 0.025 and >=0.05, and a cyan swatch named NaN.
+ * Both images are written UP (3) times their size, nearest-neighbour,
+ * so that each rendered pixel stays one visible square.
  */
 #include <math.h>
 #include <stdio.h>
@@ -53,6 +56,8 @@
 
 #define W 160
 #define H 120
+#define UP 3       /* the written images: UP x UP pixels per rendered pixel */
+#define STRIP 34   /* the written diff image's legend strip, in its pixels */
 
 /* ---- PNG: zlib stored blocks, crc32, adler32 ---- */
 static unsigned long crc_table[256];
@@ -628,11 +633,15 @@ static void render_mesh(const mscene *s, const onb_method *m, int fl, int exact,
 		}
 }
 
+/* The diff palette: entries 0..SCALE_N-1 the colour scale, then the
+   legend's text (white) and NaN (cyan, which the scale never reaches). */
+#define SCALE_N 254
+#define PAL_TEXT 254
+#define PAL_NAN 255
 static void colour(double v, unsigned char *c)
 {
 	/* 0 black, 1/3 blue, 2/3 red, 1 yellow */
 	double r, g, b;
-	if (!(v >= 0)) v = 1; /* NaN: top of the scale */
 	if (v > 1) v = 1;
 	if (v < 1.0 / 3) { r = 0; g = 0; b = 3 * v; }
 	else if (v < 2.0 / 3) { r = 3 * v - 1; g = 0; b = 2 - 3 * v; }
@@ -640,41 +649,94 @@ static void colour(double v, unsigned char *c)
 	c[0] = (unsigned char)(255 * r + 0.5); c[1] = (unsigned char)(255 * g + 0.5); c[2] = (unsigned char)(255 * b + 0.5);
 }
 
-/* the palette entry of a value of the colour scale (NaN: the top) */
+/* the palette entry of a value of the colour scale (NaN: its own) */
 static unsigned char pal_index(double v)
 {
-	if (!(v >= 0)) v = 1;
+	if (!(v >= 0)) return PAL_NAN;
 	if (v > 1) v = 1;
-	return (unsigned char)(255 * v + 0.5);
+	return (unsigned char)((SCALE_N - 1) * v + 0.5);
 }
 
-/* --diff: the image against the method's own frame made exact (sc, or the
-   sphere scene when sc is NULL), written as a palette PNG with its colour
-   scale, and one summary line on stdout.  0, or 1 when DIFF can't be written. */
-static int write_diff(const char *diff, const char *name, const onb_method *m, int fl, int spp,
-                      const mscene *sc, const double *img, unsigned char *rgb)
+/* A 3x5 pixel font for the legend: the glyphs of "0123456789.>=Na",
+   each 5 rows of 3 bits (most significant: left). */
+static const char *const FONT_CHARS = "0123456789.>=Na";
+static const unsigned char FONT[15][5] = {
+	{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
+	{7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
+	{0, 0, 0, 0, 2}, {4, 2, 1, 2, 4}, {0, 7, 0, 7, 0}, {5, 7, 7, 7, 5}, {0, 6, 1, 7, 7}};
+
+/* text at (x, y) of an image w wide, each font pixel s x s, in entry c */
+static void draw_text(unsigned char *img, int w, int x, int y, int s, const char *t, unsigned char c)
 {
-	static unsigned char plte[768];
-	static double ref[W * H];
-	int i, k;
+	for (; *t; t++, x += 4 * s) {
+		const char *g = strchr(FONT_CHARS, *t);
+		int r, b, i, j;
+		if (!g || *t == '\0') continue;
+		for (r = 0; r < 5; r++)
+			for (b = 0; b < 3; b++)
+				if (FONT[g - FONT_CHARS][r] >> (2 - b) & 1)
+					for (i = 0; i < s; i++)
+						for (j = 0; j < s; j++)
+							img[(size_t)(y + r * s + i) * (size_t)w + (size_t)(x + b * s + j)] = c;
+	}
+}
+
+/* pix (W x H, one byte each) written UP times larger, nearest-neighbour,
+   with `extra` more rows of `below` (NULL: none) under it. */
+static int write_up(const char *path, const unsigned char *pix, const unsigned char *below, int extra, const unsigned char *plte)
+{
+	const int w = W * UP, h = H * UP + extra;
+	unsigned char *big = malloc((size_t)w * (size_t)h);
+	int x, y, rc;
+	if (!big) return -1;
+	for (y = 0; y < H * UP; y++)
+		for (x = 0; x < w; x++)
+			big[(size_t)y * (size_t)w + (size_t)x] = pix[(y / UP) * W + x / UP];
+	if (extra > 0) memcpy(big + (size_t)H * UP * (size_t)w, below, (size_t)extra * (size_t)w);
+	rc = write_png(path, big, w, h, 1, plte);
+	free(big);
+	return rc;
+}
+
+/* The diff image's legend: the scale as a bar (0 to DIFF_MAX over the
+   left 3/4), its numbers, and a NaN swatch; STRIP rows of W * UP. */
+static void diff_legend(unsigned char *strip)
+{
+	const int w = W * UP, bar = w * 3 / 4 - 24, s = 2;
+	int x, y;
+	memset(strip, 0, (size_t)STRIP * (size_t)w);
+	for (y = 4; y < 16; y++) {
+		for (x = 12; x < 12 + bar; x++)
+			strip[y * w + x] = pal_index((double)(x - 12) / (bar - 1));
+		for (x = w - 60; x < w - 36; x++)
+			strip[y * w + x] = PAL_NAN;
+	}
+	draw_text(strip, w, 12, 20, s, "0", PAL_TEXT);
+	draw_text(strip, w, 12 + bar / 2 - 5 * 4 * s / 2, 20, s, "0.025", PAL_TEXT);
+	draw_text(strip, w, 12 + bar - 6 * 4 * s, 20, s, ">=0.05", PAL_TEXT);
+	draw_text(strip, w, w - 60, 20, s, "NaN", PAL_TEXT);
+}
+
+/* --diff: |img - ref| on the colour scale, written to path; prints the
+   summary line make render collects (renders/summary.txt). */
+static int write_diff(const char *path, const char *name, int fl, const double *img, const double *ref)
+{
+	static unsigned char pix[W * H], plte[768], strip[STRIP * W * UP];
 	double maxd = 0, sumd = 0;
-	int nan = 0, over = 0;
-	if (sc)
-		render_mesh(sc, m, fl, 1, spp, ref);
-	else
-		render(onb_find("duff_branchless"), 0, spp, ref);
+	int nan = 0, over = 0, i, k;
 	for (i = 0; i < W * H; i++) {
 		double d = fabs(img[i] - ref[i]);
 		if (d != d) nan++;
 		else { if (d > maxd) maxd = d; sumd += d; over += d > DIFF_MAX / 2; }
-		rgb[i] = pal_index(d / DIFF_MAX);
+		pix[i] = pal_index(d / DIFF_MAX);
 	}
-	for (i = (H - 6) * W; i < W * H; i++) /* the scale, 0 at the left to DIFF_MAX at the right */
-		rgb[i] = pal_index((double)(i % W) / (W - 1));
-	for (k = 0; k < 256; k++) /* the colour scale as a 256-entry palette */
-		colour(k / 255.0, plte + 3 * k);
-	if (write_png(diff, rgb, W, H, 1, plte) != 0) {
-		fprintf(stderr, "aorender: cannot write '%s'\n", diff);
+	for (k = 0; k < SCALE_N; k++) /* the colour scale, then text and NaN */
+		colour(k / (SCALE_N - 1.0), plte + 3 * k);
+	memset(plte + 3 * PAL_TEXT, 255, 3);
+	plte[3 * PAL_NAN] = 0; plte[3 * PAL_NAN + 1] = 255; plte[3 * PAL_NAN + 2] = 255;
+	diff_legend(strip);
+	if (write_up(path, pix, strip, STRIP, plte) != 0) {
+		fprintf(stderr, "aorender: cannot write '%s'\n", path);
 		return 1;
 	}
 	printf("%-24s %-6s mean |diff| %.4f  max %.3f  pixels > %.3f: %5d  NaN pixels %d\n", name, fl ? "float" : "double",
@@ -691,8 +753,8 @@ int main(int argc, char **argv)
 	mesh_normals mn;
 	mesh_geom mg;
 	mscene sc;
-	static double img[W * H];
-	static unsigned char rgb[W * H * 3];
+	static double img[W * H], ref[W * H];
+	static unsigned char rgb[W * H];
 	crc_init();
 	for (k = 1; k < argc; k++) {
 		if (!strcmp(argv[k], "--list")) {
@@ -755,12 +817,18 @@ int main(int argc, char **argv)
 		unsigned char g = (unsigned char)(v >= 0 ? 255 * (v > 1 ? 1 : v) + 0.5 : 0);
 		rgb[i] = g;
 	}
-	if (write_png(out, rgb, W, H, 1, NULL) != 0) {
+	if (write_up(out, rgb, NULL, 0, NULL) != 0) {
 		fprintf(stderr, "aorender: cannot write '%s'\n", out);
 		return 1;
 	}
-	if (diff && write_diff(diff, name, m, fl, spp, obj ? &sc : NULL, img, rgb) != 0)
-		return 1;
+	if (diff) {
+		if (obj)
+			render_mesh(&sc, m, fl, 1, spp, ref);
+		else
+			render(onb_find("duff_branchless"), 0, spp, ref);
+		if (write_diff(diff, name, fl, img, ref) != 0)
+			return 1;
+	}
 	if (obj) {
 		mscene_free(&sc); mesh_geom_free(&mg); mesh_free(&mn);
 	}

@@ -1,21 +1,28 @@
 # bars.gp - one bar per method: the largest jump of b1 between
 # neighbouring grid cells (a continuous frame field jumps by about the
 # cell size; a seam jumps by up to 2).
-# Called by plots.sh with: out, ttl, file (lines "name value rgb-as-integer"), yl, cell
+# Called by plots.sh with: out, ttl, file (lines "name value rgb-as-integer"), yl, cell, here
+load here."/style.gp"
 set datafile separator whitespace
 set style data histograms
-set style fill solid 0.8 border -1
+set style fill solid 0.85 border -1
 set boxwidth 0.8
 set yrange [0:2.45]
 set ytics 0, 0.5, 2
-set xtics rotate by -45 font ",8" nomirror noenhanced
-set ylabel yl
-set title ttl
-set grid ytics lc rgb "#dddddd"
-set key top right font ",9" opaque  # in the band above 2, which no bar reaches
-do for [term_i = 1:2] {
-    if (term_i == 1) { set terminal pngcairo size 1100,560 font ",10"; set output out.".png" }
-    if (term_i == 2) { set terminal svg size 1100,560 font "sans,10"; set output out.".svg" }
+stats file using 2 nooutput
+nb = STATS_records
+set xrange [-0.7 : nb - 0.3]
+set xtics rotate by -45 nomirror noenhanced
+set ylabel yl font F_AXIS
+set xlabel "method" font F_AXIS
+set title ttl font F_TITLE noenhanced
+set key top right opaque noenhanced  # in the band above 2, which no bar reaches
+# room below for the rotated names, and at the right for the last one
+set bmargin 12
+set rmargin 6
+do for [term_i = 1:NTERM] {
+    eval term(term_i, W_MULTI * 3 / 4, H_SINGLE)
+    set output out.ext(term_i)
     plot file using 0:2:(0.8):3:xtic(1) with boxes lc rgb variable notitle, \
-         cell with lines dt 2 lc rgb "#555555" title "the cell size: what a continuous frame field jumps"
+         cell with lines dt 2 lw 1.5 lc rgb "#555555" title "the cell size: what a continuous frame field jumps"
 }

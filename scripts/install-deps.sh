@@ -14,6 +14,7 @@ PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-te
 PKGS="$PKGS help2man man-db"  # man pages: man/onbstudy.1 from --help (scripts/man.sh), `man` in tests/man_pages.sh (issue 23)
 PKGS="$PKGS procps g++"  # pgrep in tests/mpi.sh; g++ for the C++17 check of tests/lib_client.sh (issue 25)
 PKGS="$PKGS gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user"  # make cross-check (issue 25)
+PKGS="$PKGS pngquant"  # quantizes committed charts to palette PNGs, keeping results/reference/ under 5 MB (issue 24)
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -1,33 +1,46 @@
 # map.gp - error maps over the sphere: one panel per method, in the
 # equal-area (Lambert cylindrical) projection of the grid distribution:
 # x = azimuth, y = n.z, so equal areas on the sphere are equal areas here.
-# One colour bar for all panels (the same scale everywhere), at the right.
-# Called by plots.sh with: out, ttl, files, names, cbmin, cbmax, ncols, nrows
+# One sequential colour bar (viridis, style.gp) for all panels, at the
+# right, with the float and double eps marked on it.
+# Called by plots.sh with: out, ttl, files, names, cbmin, cbmax, ncols,
+# nrows, here, note (what the grid's resolution can and cannot show)
+load here."/style.gp"
 set datafile separator whitespace
 set xrange [0:360]
 set yrange [-1:1]
 set cbrange [cbmin:cbmax]
-set palette defined (0 "#000033", 1 "#2c7fb8", 2 "#7fcdbb", 3 "#ffffbf", 4 "#fdae61", 5 "#d7191c", 6 "#67000d")
-set xtics 90 font ",9"
-set ytics 0.5 font ",9"
-set cbtics 1 font ",10"
+set xtics 90
+set ytics 0.5
+# whole decades, at most 8 labels on the bar, and the two eps levels
+# (whole decades, none within 0.45 of an eps mark, so no two collide)
+cbstep = ceil((cbmax - cbmin) / 8.0)
+set cbtics ()
+do for [k = int(cbmin):int(cbmax)] {
+    if (k % cbstep == 0 && abs(k - log10(EPS_FLOAT)) > 0.45 && abs(k - log10(EPS_DOUBLE)) > 0.45) { set cbtics add (sprintf("%d", k) k) }
+}
+if (log10(EPS_FLOAT) > cbmin) set cbtics add ("float eps" log10(EPS_FLOAT))
+if (log10(EPS_DOUBLE) > cbmin) set cbtics add ("double eps" log10(EPS_DOUBLE))
 set tics scale 0.5
+unset grid
+set object 20 rect from graph 0, graph 0 to graph 1, graph 1 behind fc rgb "#e8e8e8" fs solid 1.0 noborder
 unset key
 n = words(files)
-W = 1500
-H = 110 + 230 * nrows
-do for [term_i = 1:2] {
-    if (term_i == 1) { set terminal pngcairo size W,H font ",10"; set output out.".png" }
-    if (term_i == 2) { set terminal svg size W,H font "sans,10"; set output out.".svg" }
-    set multiplot layout nrows,ncols title ttl font ",13" margins 0.05, 0.89, 60.0/H, 1 - 70.0/H spacing 0.035, 75.0/H
-    set label 901 "x: azimuth (degrees); y: n.z" at screen 0.05, screen 18.0/H left font ",10"
+W = W_MULTI
+H = 150 + 250 * nrows
+do for [term_i = 1:NTERM] {
+    eval term(term_i, W, H)
+    set output out.ext(term_i)
+    set multiplot layout nrows,ncols title ttl."\n{/*0.8 ".note."}" font F_TITLE margins 0.06, 0.86, 70.0/H, 1 - 100.0/H spacing 0.04, 80.0/H
+    set label 901 "x: azimuth (degrees); y: n.z of the input" at screen 0.06, screen 20.0/H left font F_AXIS
     do for [i = 1:n] {
-        set title word(names, i) font ",11" offset 0,-0.5 noenhanced
+        set title word(names, i) font F_PANEL offset 0,-0.5 noenhanced
         if (i == n) {
-            set colorbox user origin screen 0.915, screen 0.15 size screen 0.018, screen 0.7
-            set cblabel "log10 of the defect (the same scale in every panel)" font ",11"
+            set colorbox user origin screen 0.9, screen 0.12 size screen 0.018, screen 1 - 250.0/H
+            set cblabel "log10 of the orthonormality defect (one scale for all; light grey: non-finite)" font F_AXIS offset 1.5,0
         } else { unset colorbox }
-        plot word(files, i) using 1:2:3 with image
+        # a non-finite cell leaves the light grey background
+        plot word(files, i) using 1:2:(strcol(3) eq "nan" ? NaN : $3) with image
         unset label 901
     }
     unset multiplot

@@ -20,6 +20,11 @@ if [ ! -f "$RUN/summary.csv" ] || [ ! -f "$RUN/by_nz.csv" ]; then
 	echo "plots: $RUN/summary.csv or by_nz.csv not found (run ./onbstudy sweep first)" >&2
 	exit 2
 fi
+# the README's single-panel figures go to FIGS, the pole-cap map's data
+# and full chart live in PCDIR (results/reference: FIGS=results/figures
+# PCDIR=results/polecap, so that the committed run stays under 5 MB)
+FIGS=${FIGS:-$RUN/figures}
+PCDIR=${PCDIR:-$RUN}
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
 LOG="$W/gnuplot.log"
@@ -31,8 +36,14 @@ skip() { skipped="$skipped
 
 gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	script=$1; shift
-	gnuplot -e "$*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
+	gnuplot -e "here='$HERE'; nosvg=${NOSVG:-0}; $*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
 	made=$((made + 1))
+	# a palette PNG (pngquant, when installed): a third of the size, and the
+	# same to the eye at these few colours
+	o=$(echo "$*" | sed -n "s/.*out='\([^']*\)'.*/\1/p")
+	if [ -n "$o" ] && command -v pngquant >/dev/null 2>&1; then
+		pngquant --force --skip-if-larger --speed 1 --output "$o.png" 64 "$o.png" 2>>"$LOG" || true
+	fi
 }
 
 # Methods in drawing order, with their panel, hue, dash, point type and
@@ -67,36 +78,82 @@ floor_band() {
 		END { for (k in hi) print (sc == "log" ? 10 ^ c[k] : c[k]), lo[k], hi[k] }' "$RUN/by_nz.csv" | sort -g
 }
 
+# series METHOD "DISTS" AXIS lin|log CEIL: x, max, RMS, non-finite per bin
+series() {
+	awk -F, -v m="$1" -v p="$P" -v ds="$2" -v ax="$3" -v sc="$4" -v fl="$FLOOR" -v ce="$5" -v zx="$ZX" \
+		-f "$HERE/series.awk" "$RUN/by_nz.csv" "$RUN/by_nz.csv" | sort -g
+}
+# titles "FILES" COL CEIL: the key titles (scripts/series-titles.awk)
+titles() { awk -v files="$1" -v names="$names" -v panels="$panels" -v col="$2" -v ce="$3" -f "$HERE/series-titles.awk"; }
+# nonfinite "FILES" CEIL: 1 when any bin holds a non-finite output
+nonfinite() {
+	# shellcheck disable=SC2086
+	cat $1 | awk -v ce="$2" '$4 > 0 || $2 + 0 >= ce + 0 { f = 1 } END { print f + 0 }'
+}
+# ceil_of "DISTS" AXIS: where a chart draws non-finite output: 10, or two
+# decades above its largest finite error when that reaches 1 (non-unit
+# input: frisvad's defect of 2157 is finite and must not read as non-finite)
+ceil_of() {
+	awk -F, -v p="$P" -v ds="$1" -v ax="$2" 'BEGIN { n = split(ds, a, " "); for (i = 1; i <= n; i++) w[a[i]] = 1 }
+		!/^#/ && $2 == p && ($3 in w) && $4 == ax && $9 != "nan" && $9 != "inf" && $9 + 0 > mx { mx = $9 + 0 }
+		END { c = 10; if (mx >= 1) c = 10 ^ (int(log(mx) / log(10)) + 2); printf "%g\n", c }' "$RUN/by_nz.csv"
+}
+
+# polecap: the pole-cap map (scripts/polecap.sh's polecap.csv in PCDIR),
+# every method of it (PCDIR/polecap_float) and, for the README, frisvad
+# beside duff (FIGS/polecap_frisvad_duff)
+polecap() {
+	pc="$PCDIR/polecap.csv"
+	mkdir -p "$FIGS"
+	pcm=$(awk -F, '$1 == "one_plus_nz" { for (i = 3; i <= NF; i++) printf "%s ", $i; exit }' "$pc")
+	pcf=""; c=3
+	for m in $pcm; do
+		awk -F, -v c=$c '!/^#/ && $1 != "one_plus_nz" { d = log($1) / log(10); if (!(d in sd)) { sd[d] = 1; nd++ } if (!($2 in sa)) { sa[$2] = 1; na++ }
+			if (!n++ || d < lo) lo = d; if (n == 1 || d > hi) hi = d
+			r[n] = $2 " " d " " ($c == "nan" || $c == "-nan" || $c == "inf" ? "nan" : ($c + 0 > 0 ? log($c) / log(10) : -12)) }
+			END { hw = 180 / na * 1.03; hh = (hi - lo) / (nd - 1) / 2 * 1.03; for (i = 1; i <= n; i++) { split(r[i], a, " "); print a[1], a[2], hw, hh, a[3] } }' \
+			"$pc" > "$W/pc_$m.dat"
+		pcf="$pcf $W/pc_$m.dat"; c=$((c + 1))
+	done
+	# shellcheck disable=SC2086
+	set -- $(cat $pcf | awk '{ if (!n++ || $2 < lo) lo = $2; if (n == 1 || $2 > hi) hi = $2; if ($5 != "nan" && (!m++ || $5 < cl)) cl = $5 }
+		END { printf "%g %g %d\n", lo - 0.04, hi + 0.04, (cl < -8 ? -9 : int(cl) - 1) }')
+	tf=$(sed -n 's/^# published Frisvad 2012: .*one_plus_t \([-0-9.e+]*\),.*/\1/p' "$RUN/threshold.csv" 2>/dev/null | head -1)
+	tm=$(sed -n 's/^# published Max 2017: .*one_plus_t \([-0-9.e+]*\),.*/\1/p' "$RUN/threshold.csv" 2>/dev/null | head -1)
+	prov=$(sed -n 's/^# grid: \([0-9]*\) values.* x \([0-9]*\) azimuths.*/\1 values of 1 + n.z x \2 azimuths/p' "$pc")
+	pcv="cbmin=$3; cbmax=0; ymin=$1; ymax=$2; tfris=${tf:-0}; tmax=${tm:-0}"
+	gp polecap.gp "$pcv; files='$pcf'; names='$pcm'; out='$PCDIR/polecap_float'; ttl='float: the southern cap, $prov (unit inputs rounded to float; polecap.csv)'"
+	two=$(for m in frisvad duff; do [ -s "$W/pc_$m.dat" ] && printf '%s ' "$m"; done)
+	[ -n "$two" ] && gp polecap.gp "$pcv; single=1; files='$(for m in $two; do printf '%s ' "$W/pc_$m.dat"; done)'; names='$two'; out='$FIGS/polecap_frisvad_duff'; ttl='float near -z: frisvad fails in a band above its threshold, duff nowhere'"
+}
+
 for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
 	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=1.5e-8; else FLOOR=1e-20; EPS=2.22e-16; ZX=1e-18; fi
 	CEIL=10
 	awk -F, -v p="$P" '/^#/ || $1 == "method" || $2 == p' "$RUN/summary.csv" > "$W/summary_$P.csv"
-	sh "$HERE/styles.sh" "$W/summary_$P.csv" > "$W/styles"
+	# styles from both precisions, so that the panels group the same
+	# families in float and double; then this precision's methods
+	sh "$HERE/styles.sh" "$RUN/summary.csv" > "$W/styles_all"
+	awk -F, 'NR == FNR { if ($1 !~ /^#/ && $1 != "method") have[$1] = 1; next } $1 in have' \
+		"$W/summary_$P.csv" FS=' ' "$W/styles_all" > "$W/styles"
 	pmethods=$(awk '{ print $1 }' "$W/styles")
 	awk '{ print $1, $3 }' "$W/styles" > "$W/colors.txt"   # for bars and tradeoff
 	ptitles=$(awk '{ if (!(($2, $7) in s)) { s[$2, $7] = 1; t[$2] = t[$2] (t[$2] == "" ? "" : ",") $7 } if ($2 > np) np = $2 }
-		END { for (p = 1; p <= np; p++) printf "%s%s", (p > 1 ? " " : ""), t[p] }' "$W/styles")
+		END { for (p = 1; p <= np; p++) printf "%s%s", (p > 1 ? " " : ""), (p in t ? t[p] : "-") }' "$W/styles_all")
 	first=$(echo "$pmethods" | head -1)
 
 	# 1. error against n.z (uniform), max and RMS
 	# 2. near the south pole, max over south, exhaustive and uniform
 	# 6. against | |n| - 1 | (nonunit)
+	# (x, max, RMS, non-finite count per bin: scripts/series.awk)
 	files1=""; files2=""; files6=""; names=""; colors=""; dashes=""; points=""; widths=""; panels=""
+	C1=$(ceil_of uniform nz); C2=$(ceil_of "south exhaustive uniform" log10_1pnz); C6=$(ceil_of nonunit log10_absnorm)
 	for m in $pmethods; do
 		f1="$W/nz_${P}_$m.dat"; f2="$W/sp_${P}_$m.dat"; f6="$W/nu_${P}_$m.dat"
-		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
-			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
-			!/^#/ && $1 == m && $2 == p && $3 == "uniform" && $4 == "nz" { print ($5 + $6) / 2, v($9), v($8) }' "$RUN/by_nz.csv" > "$f1"
-		# the lowest bin (from -17) holds n.z = -1 exactly: drawn at ZX, apart
-		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" -v zx="$ZX" '
-			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
-			!/^#/ && $1 == m && $2 == p && ($3 == "south" || $3 == "exhaustive" || $3 == "uniform") && $4 == "log10_1pnz" {
-				k = $5; x = v($9); if (!(k in mx) || x > mx[k]) mx[k] = x; c[k] = ($5 + 0 <= -17) ? log(zx) / log(10) : ($5 + $6) / 2 }
-			END { for (k in mx) print 10 ^ c[k], mx[k] }' "$RUN/by_nz.csv" | sort -g > "$f2"
-		awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
-			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
-			!/^#/ && $1 == m && $2 == p && $3 == "nonunit" && $4 == "log10_absnorm" { print 10 ^ (($5 + $6) / 2), v($9), v($8) }' "$RUN/by_nz.csv" > "$f6"
+		series "$m" uniform nz lin "$C1" > "$f1"
+		series "$m" "south exhaustive uniform" log10_1pnz log "$C2" > "$f2"
+		series "$m" nonunit log10_absnorm log "$C6" > "$f6"
 		files1="$files1 $f1"; files2="$files2 $f2"; files6="$files6 $f6"
 		names="$names $m"; colors="$colors $(sty "$m" 3)"; dashes="$dashes $(sty "$m" 4)"
 		points="$points $(sty "$m" 5)"; widths="$widths $(sty "$m" 6)"; panels="$panels $(sty "$m" 2)"
@@ -108,27 +165,40 @@ for P in float double; do
 	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
 	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
 	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
-	bt="accuracy floor (RMS-max)"
+	bt="accuracy floor (RMS to max)"
 	b1=""; b2=""; b6=""
-	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt'; ref_band=1;"
-	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt'; ref_band=1;"
-	[ -s "$W/fb6_$P.dat" ] && b6="ref_file='$W/fb6_$P.dat'; ref_title='$bt'; ref_band=1;"
-	common="names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
+	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt';"
+	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt';"
+	[ -s "$W/fb6_$P.dat" ] && b6="ref_file='$W/fb6_$P.dat'; ref_title='$bt';"
+	common="here='$HERE'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
+		titles "$files1" 2 "$C1" > "$W/t1.txt"; titles "$files1" 3 "$C1" > "$W/t1r.txt"
 		set -- $(range "$files1" 2 0)
-		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='largest defect in the bin'; ttl='$P: max orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
 		set -- $(range "$files1" 3 0)
-		gp lines.gp "$b1 $common; files='$files1'; out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z'; yl='RMS defect in the bin'; ttl='$P: RMS orthonormality defect against n.z, uniform inputs, $n per method'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
 	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
+	titles "$files2" 2 "$C2" > "$W/t2.txt"
 	set -- $(range "$files2" 2 1)
-	gp lines.gp "$b2 $common; files='$files2'; out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z (distance from the south pole; leftmost point: n.z = -1 exactly)'; yl='largest defect'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs'"
+	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (distance from the south pole; -z: n.z = -1 exactly)'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs (frisvad\\_rotate: its direction error)'"
+	# the README's figure (float): frisvad, frisvad_max and duff alone, one panel
+	sel=$(for m in frisvad frisvad_max duff; do echo "$pmethods" | grep -qx "$m" && printf '%s ' "$m"; done)
+	if [ "$P" = float ] && [ -n "$sel" ]; then
+		mkdir -p "$FIGS"
+		sf=""; sc=""; sd=""; sp=""; sw=""
+		for m in $sel; do sf="$sf $W/sp_${P}_$m.dat"; sc="$sc $(sty "$m" 3)"; sd="$sd $(sty "$m" 4)"; sp="$sp $(sty "$m" 5)"; sw="$sw $(sty "$m" 6)"; done
+		awk -v files="$sf" -v names="$sel" -v panels="$(echo $sel | sed 's/[^ ]*/1/g')" -v col=2 -v ce="$C2" -f "$HERE/series-titles.awk" > "$W/t2s.txt"
+		set -- $(range "$sf" 2 1)
+		gp lines.gp "$b2 here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$P near n.z = -1: frisvad fails, duff stays at the floor'"
+	fi
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
+		titles "$files6" 2 "$C6" > "$W/t6.txt"
 		set -- $(range "$files6" 2 1)
-		gp lines.gp "$b6 $common; files='$files6'; out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input'; yl='largest defect against n/|n|'; ttl='$P: non-unit input, $n inputs per method'"
+		gp lines.gp "$b6 $common; files='$files6'; titles='$W/t6.txt'; ceil=$C6; nf=$(nonfinite "$files6" "$C6"); out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input (unitless)'; yl='largest error per bin, against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method (frisvad\\_rotate: its direction error)'"
 	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
 	fi
 
@@ -140,7 +210,7 @@ for P in float double; do
 			awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
 				function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
 				!/^#/ && $1 == m && $2 == p { if ($3 != last && NR > 1 && started) print ""; last = $3; started = 1
-					print $6 * 57.29577951308232, $5, log(v($7)) / log(10) }' "$RUN/grid.csv" > "$f"
+					print $6 * 57.29577951308232, $5, (($7 == "inf" || $7 == "nan" || $7 == "-nan") ? "nan" : log(v($7)) / log(10)) }' "$RUN/grid.csv" > "$f"
 			[ -s "$f" ] || continue
 			mfiles="$mfiles $f"; mnames="$mnames $m"; k=$((k + 1))
 		done
@@ -151,8 +221,9 @@ for P in float double; do
 			# the colour scale: from the smallest value in the data (at
 			# most the floor) to 0, in whole decades
 			# shellcheck disable=SC2086
-			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: log10 of the orthonormality defect over the sphere (equal-area: x azimuth, y n.z); zero drawn at $FLOOR'"
+			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && $3 != "nan" && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
+			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }
@@ -178,19 +249,28 @@ for P in float double; do
 					# one_plus_t, not 1 + the rounded decimal t (which reads -1 in double)
 					match(l, /one_plus_t [-0-9.e+]+/); x = substr(l, RSTART + 11, RLENGTH - 11) + 0
 					lab = (l ~ /minimax/) ? "minimax (both)" : (l ~ /Frisvad/ ? "Frisvad 2012" : "Max 2017")
-					n++; printf "set arrow %d from %g, graph 0 to %g, graph 1 nohead dt %d lc rgb \"%s\"\n", n, x, x, (l ~ /minimax/) ? 1 : 3, (l ~ /minimax/) ? "#2ca02c" : "#555555"
-					printf "set label %d \"%s\" at %g, graph %g rotate by 90 right font \",8\" offset %s,0\n", n, lab, x, (l ~ /minimax/) ? 0.97 : (l ~ /Frisvad/ ? 0.97 : 0.55), (l ~ /minimax/) ? "-0.6" : "1.2"
+					n++; printf "set arrow %d from %g, graph 0 to %g, graph 1 nohead dt %d lw 1.5 lc rgb \"%s\"\n", n, x, x, (l ~ /minimax/) ? 1 : 3, (l ~ /minimax/) ? "#009E73" : "#555555"
+					# boxed (opaque): a curve never draws over the label
+					printf "set label %d \"%s\" at %g, graph %g rotate by 90 right font \",10\" offset %s,0 boxed front\n", n, lab, x, (l ~ /minimax/) ? 0.97 : (l ~ /Frisvad/ ? 0.97 : 0.55), (l ~ /minimax/) ? "-0.8" : "1.4"
 				}
 			} }' > "$W/marks_$P.gp"
-		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") values of n.z near -1, $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths each'"
+		[ "$P" = float ] && mkdir -p "$FIGS" && gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$FIGS/threshold_minimax_$P'; ttl='$P: the threshold t of Frisvad Listing 2 (Max 2017): error against 1 + t'"
+		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") n.z near -1 x $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths'"
 	elif [ -f "$RUN/threshold.csv" ]; then skip "threshold_$P" "threshold.csv has no $P section"
 	else skip "threshold_$P" "no threshold.csv (run ./onbstudy threshold)"
+	fi
+
+	# 7. the southern cap (scripts/polecap.sh's polecap.csv, float only)
+	if [ -f "$PCDIR/polecap.csv" ] && [ "$P" = float ]; then
+		polecap
+	elif [ "$P" = float ]; then skip "polecap_float" "no $PCDIR/polecap.csv (run sh scripts/polecap.sh $PCDIR)"
 	fi
 
 	# 4. speed against accuracy
 	if [ -f "$RUN/tradeoff.csv" ] && [ -f "$HERE/tradeoff.gp" ]; then
 		sh "$HERE/tradeoff-data.sh" "$RUN/tradeoff.csv" "$P" "$W" "$W/colors.txt" && \
-		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR; here='$HERE'"
+		gp tradeoff.gp "dir='$W'; prec='$P'; out='$RUN/tradeoff_$P'; floor=$FLOOR; ceil=$CEIL" && \
+		if [ "$P" = float ]; then mkdir -p "$FIGS"; gp tradeoff.gp "dir='$W'; prec='$P'; single=1; out='$FIGS/tradeoff_front_$P'; floor=$FLOOR; ceil=$CEIL"; fi
 	elif [ -f "$RUN/bench.csv" ]; then skip "tradeoff_$P" "no tradeoff.csv (run ./onbstudy table)"
 	else skip "tradeoff_$P" "no bench.csv or tradeoff.csv (run ./onbstudy bench --quick && ./onbstudy table)"
 	fi
@@ -201,5 +281,5 @@ if grep -qi "warning" "$LOG"; then
 	echo "plots: gnuplot warned (above)" >&2
 	exit 1
 fi
-echo "plots: $made charts (PNG and SVG) in $RUN"
+echo "plots: $made charts ($([ "${NOSVG:-0}" = 1 ] && echo "PNG only: NOSVG=1" || echo "PNG and SVG")) in $RUN"
 [ -z "$skipped" ] || echo "plots: skipped, for want of data:$skipped"

@@ -35,23 +35,29 @@ range() { # FILES COL: "xmin xmax ymin ymax"
 		END { x0 /= 1.4; x1 *= 1.4; if (!m) { y0 = 1e-20; y1 = 10 } printf "%g %g %g %g\n", x0, x1, y0 / 4, y1 * 4 }'
 }
 for s in south north; do
-	if [ $s = south ]; then axis=log10_1pnz; zl=-z; xl='1 + n.z (leftmost point: n.z = -1 exactly)'; else axis=log10_1mnz; zl=+z; xl='1 - n.z (leftmost point: n.z = 1 exactly)'; fi
+	if [ $s = south ]; then axis=log10_1pnz; zl=-z; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; else axis=log10_1mnz; zl=+z; xl='1 - n.z of the input (+z: n.z = 1 exactly)'; fi
 	files=""; names=""; colors=""; dashes=""; points=""; widths=""; panels=""
 	for m in $methods; do
 		f="$W/${s}_$m.dat"
-		# the lowest bin (from -17) holds the pole exactly: drawn at ZX, apart
-		awk -F, -v m="$m" -v p="$P" -v a="$axis" -v fl="$FLOOR" -v ce="$CEIL" -v zx="$ZX" '
-			function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
-			!/^#/ && $1 == m && $2 == p && $3 == "exhaustive" && $4 == a {
-				x = ($5 + 0 <= -17) ? zx : 10 ^ (($5 + $6) / 2); print x, v($9), v($8) }' "$DIR/$s/by_nz.csv" | sort -g > "$f"
+		# x, max, RMS, non-finite per bin (the pole bin, from -17, at ZX)
+		awk -F, -v m="$m" -v p="$P" -v ds=exhaustive -v ax="$axis" -v sc=log -v fl="$FLOOR" -v ce="$CEIL" -v zx="$ZX" \
+			-f "$HERE/series.awk" "$DIR/$s/by_nz.csv" "$DIR/$s/by_nz.csv" | sort -g > "$f"
 		files="$files $f"; names="$names $m"; colors="$colors $(sty "$m" 3)"; dashes="$dashes $(sty "$m" 4)"
 		points="$points $(sty "$m" 5)"; widths="$widths $(sty "$m" 6)"; panels="$panels $(sty "$m" 2)"
 	done
+	awk -v files="$files" -v names="$names" -v panels="$panels" -v col=2 -v ce="$CEIL" -f "$HERE/series-titles.awk" > "$W/titles_$s"
+	# shellcheck disable=SC2086
+	nf=$(cat $files | awk -v ce="$CEIL" '$4 > 0 || $2 + 0 >= ce + 0 { f = 1 } END { print f + 0 }')
+	# the accuracy floor band: duff_branchless's floor, its RMS to its max
+	awk -F, -v a="$axis" -v zx="$ZX" '!/^#/ && $1 == "duff_branchless" && $3 == "exhaustive" && $4 == a && $11 != "nan" {
+		print (($5 + 0 <= -17) ? zx : 10 ^ (($5 + $6) / 2)), $10, $11 }' "$DIR/$s/by_nz.csv" | sort -g > "$W/floor_$s"
+	band=""; [ -s "$W/floor_$s" ] && band="ref_file='$W/floor_$s'; ref_title='accuracy floor (RMS to max)';"
 	inputs=$(awk -F, '!/^#/ && $3 == "exhaustive" { print $4; exit }' "$DIR/$s/summary.csv")
 	az=$(sed -n 's/^# exhaustive: .* \([0-9]*\) azimuths.*/\1/p' "$DIR/$s/summary.csv" | head -1)
-	common="names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
+	common="here='$HERE'; nosvg=${NOSVG:-0}; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
 	set -- $(range "$files" 2)
-	gnuplot -e "$common; files='$files'; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; zero_label='$zl'; xl='$xl'; yl='largest per-input error in the bin'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method): per-input error (defect; for the rotation method, its direction error)'" "$HERE/lines.gp"
+	gnuplot -e "$band $common; files='$files'; titles='$W/titles_$s'; nf=$nf; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; zero_label='$zl'; xl='$xl'; yl_key='YL_ERROR'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method; frisvad\\_rotate: its direction error)'" "$HERE/lines.gp"
+	command -v pngquant >/dev/null 2>&1 && { pngquant --force --skip-if-larger --speed 1 --output "$DIR/${s}_pole_float.png" 64 "$DIR/${s}_pole_float.png" || true; }
 done
 
 # The worst input per method at each pole, next to the sampled sweep's worst
@@ -75,4 +81,4 @@ done
 	done
 } > "$DIR/worst.csv.tmp"
 mv "$DIR/worst.csv.tmp" "$DIR/worst.csv"
-echo "poles: wrote $DIR/south_pole_float.png, north_pole_float.png (and .svg), worst.csv"
+echo "poles: wrote $DIR/south_pole_float.png, north_pole_float.png ($([ "${NOSVG:-0}" = 1 ] && echo 'no SVG: NOSVG=1' || echo 'and .svg')), worst.csv"

@@ -25,8 +25,9 @@ echo "reference: bench"
 ./onbstudy bench --out "$OUT" > "$OUT/bench.txt" 2> "$OUT/bench.log"
 ./onbstudy table --bench "$OUT/bench.csv" --summary "$OUT/summary.csv" --out "$OUT" > "$OUT/table.txt" 2> "$OUT/table.log"
 echo "reference: plots"
-sh scripts/plots.sh "$OUT"
-rm -f "$OUT"/*.svg
+# the README's figures and the pole-cap map (its data: sh scripts/polecap.sh)
+# beside the run, PNG only (docs/charts.md)
+FIGS=results/figures PCDIR=results/polecap NOSVG=1 sh scripts/plots.sh "$OUT"
 echo "reference: renders"
 make render > /dev/null
 echo "reference: reproduce"

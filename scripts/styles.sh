@@ -5,8 +5,9 @@
 #   method panel hue dash point width family
 # Families come from the registry (`onbstudy list`; a method outside it,
 # such as frisvad_rotate, joins the family whose name is its longest
-# prefix; NAME+fma rows join NAME's).  One hue per family, one dash type
-# and point type per variant within it; the headline methods (frisvad,
+# prefix; NAME+fma rows join NAME's).  One hue per family (Okabe-Ito,
+# colour-blind safe; issue 24), and within a family one shade (the hue,
+# darker, lighter, ...), dash type and point type per variant; the headline methods (frisvad,
 # frisvad_max, duff) are drawn wide and first, so that each thin variant drawn over them
 # stays visible where the two coincide.  Families
 # are packed, in registry order and never split, into panels of at most
@@ -22,12 +23,28 @@ ONBSTUDY=${ONBSTUDY:-$HERE/../onbstudy}
 awk -F, -v L="$list" -v MAX="${PANEL_MAX:-5}" -v HEAD="${HEADLINE:-frisvad frisvad_max duff}" '
 BEGIN {
 	while ((getline l < L) > 0) { split(l, a, " "); fam[a[1]] = a[2]; if (!(a[2] in forder)) forder[a[2]] = ++nf0 }
-	nh = split("#1f77b4 #2ca02c #d62728 #7b3294 #e66100 #8c564b #c51b7d #4d4d4d #808000 #0e8a96 #b8860b #1a1a80", hue, " ")
+	# Okabe-Ito (2008) without its yellow, which vanishes on white, then
+	# darker stand-ins for more families (registry order: naive orange,
+	# hughes_moeller green, frisvad vermillion, duff blue, ...)
+	nh = split("#E69F00 #009E73 #D55E00 #0072B2 #CC79A7 #56B4E9 #000000 #8C6D00 #5C3A92 #7A7A7A", hue, " ")
 	split("7 5 9 11 13 15", pts, " ")
+	for (i = 0; i < 16; i++) hx[substr("0123456789abcdef", i + 1, 1)] = i
 	split(HEAD, h, " "); for (i in h) head[h[i]] = 1
 }
 # the registry family; else the shortest family (or, without a registry,
 # other method) whose name is a prefix of this one, followed by "_"
+# shade(h, k): variant k of hue h: 1 the hue, then darker and lighter by
+# turns (k = 2 darker, 3 lighter, 4 darker still, ...)
+function shade(h, k,   r, g, b, t, w) {
+	h = tolower(h)
+	r = hx[substr(h, 2, 1)] * 16 + hx[substr(h, 3, 1)]
+	g = hx[substr(h, 4, 1)] * 16 + hx[substr(h, 5, 1)]
+	b = hx[substr(h, 6, 1)] * 16 + hx[substr(h, 7, 1)]
+	if (k <= 1) return h
+	t = int(k / 2) * 0.3; w = (k % 2) ? 255 : 0
+	if (t > (w ? 0.4 : 0.6)) t = w ? 0.4 : 0.6
+	return sprintf("#%02x%02x%02x", r + (w - r) * t, g + (w - g) * t, b + (w - b) * t)
+}
 function family(m,   b, f, best) {
 	b = m; sub(/\+fma$/, "", b)
 	if (b in fam) return fam[b]
@@ -65,7 +82,7 @@ END {
 				# the hue follows the place of the family in the registry, so it is
 				# the same in every chart and precision
 				hi = (forder[f] < 1000) ? forder[f] : i
-				print m, p, hue[(hi - 1) % nh + 1], d, pt, (b in head) ? 3 : 1.5, f
+				print m, p, shade(hue[(hi - 1) % nh + 1], (m ~ /\+fma$/) ? (kk > 0 ? kk : k) : k), d, pt, (b in head) ? 3 : 1.5, f
 			}
 	}
 }' "$summary"

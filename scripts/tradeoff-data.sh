@@ -2,7 +2,8 @@
 # tradeoff-data.sh TRADEOFF_CSV PREC DIR COLORS - the data of tradeoff.gp,
 # from `onbstudy table`'s tradeoff.csv, for one precision:
 #   DIR/tradeoff_PREC.dat  speed, error, colour (integer), method, on the front (0/1), RMSE on uniform
-#   DIR/front_PREC.dat     the Pareto front, by speed (the staircase)
+#   DIR/front_PREC.dat     the Pareto front, by speed
+#   DIR/stairs_PREC.dat    its staircase, from the left edge to the top edge
 # speed = batch_mbases_1t; error = max_defect_worst, drawn at 10 when a
 # method gave non-finite output on those inputs (the table counts that as
 # infinite), and at the chart's floor when it is zero.  Methods without
@@ -22,3 +23,4 @@ awk -F, -v p="$P" -v C="$colors" -v fl="$floor" '
 [ -s "$W/tradeoff_$P.dat" ] || exit 1
 awk '$5 == 1' "$W/tradeoff_$P.dat" | sort -g > "$W/front_$P.dat"
 [ -s "$W/front_$P.dat" ] || exit 1
+awk 'NR == 1 { print $1 / 100, $2 } { print $1, $2; x = $1 } END { print x, 1e6 }' "$W/front_$P.dat" > "$W/stairs_$P.dat"

@@ -2,7 +2,8 @@
 # points that coincide on the chart share one label ("a = b"); each label
 # goes right of its point, or, when that spot is taken, up or down to the
 # nearest free spot, joined to its point by a grey leader line.
-# awk -v col=2|6 -v xmin= -v xmax= -v ymin= -v ymax= -f tradeoff-labels.awk tradeoff_P.dat
+# awk -v col=2|6 -v xmin= -v xmax= -v ymin= -v ymax= -v gw= -v gh= -f tradeoff-labels.awk tradeoff_P.dat
+# (gw, gh: the graph's width and height in pixels; labels are 10-point)
 # prints gnuplot commands (set label / set arrow).  Coordinates are
 # fractions of the graph, from the log axes.
 function fx(x) { return (log(x) - log(xmin)) / (log(xmax) - log(xmin)) }
@@ -11,11 +12,11 @@ function free(x0, y0, w,   k) {
 	if (x0 < 0 || x0 + w > 0.99 || y0 < 0.02 || y0 > 0.98) return 0
 	for (k = 1; k <= nl; k++)
 		if (x0 < lx[k] + lw[k] && lx[k] < x0 + w && y0 - H < ly[k] + H && ly[k] - H < y0 + H) return 0
-	for (k = 1; k <= n; k++) # keep off the markers too
-		if (px[k] > x0 - 0.008 && px[k] < x0 + w && py[k] > y0 - H && py[k] < y0 + H) return 0
+	for (k = 1; k <= n; k++) # keep off the markers too (up to the front's circles, 9 px)
+		if (px[k] > x0 - MX && px[k] < x0 + w + MX && py[k] > y0 - H - MY && py[k] < y0 + H + MY) return 0
 	return 1
 }
-BEGIN { CW = 0.0095; H = 0.018 } # width of a character, half a label's height (fractions)
+BEGIN { CW = 7.4 / gw; H = 8.5 / gh; MX = 9 / gw; MY = 5 / gh } # width of a character, half a label's height (fractions)
 { n++; px[n] = fx($1); py[n] = fy($col); name[n] = $4; X[n] = $1; Y[n] = $col }
 END {
 	# coincident points: one label
@@ -36,15 +37,15 @@ END {
 		for (k = 0; k <= 24 && !placed; k++) {
 			dy = (k % 2 ? 1 : -1) * int((k + 1) / 2) * 2.2 * H
 			for (side = 0; side < 2 && !placed; side++) {
-				x0 = side ? px[i] - 0.012 - w : px[i] + 0.012
+				x0 = side ? px[i] - MX - 0.004 - w : px[i] + MX + 0.004
 				y0 = py[i] + dy
 				if (free(x0, y0, w)) placed = 1
 			}
 		}
 		if (!placed) { x0 = px[i] + 0.012; y0 = py[i] } # give up: right of the point
 		nl++; lx[nl] = x0; ly[nl] = y0; lw[nl] = w
-		printf "set label %d \"%s\" at graph %.4f, graph %.4f left font \",7\" noenhanced front\n", nl, text[i], x0, y0
+		printf "set label %d \"%s\" at graph %.4f, graph %.4f left font \",10\" noenhanced front\n", nl, text[i], x0, y0
 		if (k > 1 || (k == 1 && dy != 0) || x0 < px[i])
-			printf "set arrow %d from first %g, first %g to graph %.4f, graph %.4f nohead lc rgb \"#888888\" lw 0.6 back\n", nl, X[i], Y[i], (x0 < px[i] ? x0 + w - 0.004 : x0 - 0.002), y0
+			printf "set arrow %d from first %g, first %g to graph %.4f, graph %.4f nohead lc rgb \"#777777\" lw 0.8 back\n", nl, X[i], Y[i], (x0 < px[i] ? x0 + w - 0.004 : x0 - 0.002), y0
 	}
 }

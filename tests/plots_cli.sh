@@ -1,29 +1,79 @@
 #!/bin/sh
-# plots_cli.sh - `make plots` on a small run: every chart, PNG and SVG,
-# non-empty, and gnuplot without a warning (plots.sh fails on one).
+# plots_cli.sh - every chart script on a small fixture run (issue 24):
+# `make plots` (with a tiny pole-cap run) and scripts/poles.sh, every chart
+# as PNG and SVG, gnuplot without a warning (plots.sh fails on one), and
+# scripts/chart-check.awk on every SVG, gnuplot's own output:
+#   - no text (title, axis label, tick label, key entry, label) leaves the
+#     canvas or overlaps another;
+#   - every graph has an x and a y label (the small-multiple maps: their
+#     one shared axis note);
+#   - no series with a key title draws nothing unless its title says
+#     "no finite point".
+# Not checked mechanically, and why:
+#   - a text over a curve or a marker (a key over data): the SVG gives the
+#     curves as paths, and which crossings hide something is a judgement;
+#     the charts keep keys above the panels (lines.gp) or direct labels
+#     placed off the markers (tradeoff-labels.awk) so that none arise;
+#   - text widths are estimated from the font size (0.56 em a character):
+#     SVG has no metrics, so a near miss of a pixel or two can pass;
+#   - diagonal texts (the bar chart's method names) are checked against the
+#     canvas only: their bounding boxes overlap by construction;
+#   - colours (colour-blind safety, contrast) are a property of the palette
+#     in styles.sh and style.gp, not of one run;
+#   - the difference renders (examples/aorender.c) are checked for size in
+#     tests/render_obj.sh; their legend is drawn in pixels, not text.
+# A hand-made defective chart checks that the checker catches each defect.
 . "$(dirname "$0")/lib.sh"
+T=$tmp
 if ! command -v gnuplot >/dev/null 2>&1; then
 	echo "plots_cli: gnuplot missing: scripts/install-deps.sh must install it"; exit 1
 fi
-./onbstudy sweep --samples 2000 --exhaustive-count 1024 --azimuths 2 --grid 8x16 --quiet --out "$tmp/run" >/dev/null 2>&1 || bad "small sweep failed"
-./onbstudy threshold --logspaced 300 --consecutive 256 --azimuths 4 --out "$tmp/run" >/dev/null 2>&1 || bad "threshold failed"
+./onbstudy sweep --samples 2000 --exhaustive-count 1024 --azimuths 2 --grid 8x16 --quiet --out "$T/run" >/dev/null 2>&1 || bad "small sweep failed"
+./onbstudy threshold --logspaced 300 --consecutive 256 --azimuths 4 --out "$T/run" >/dev/null 2>&1 || bad "threshold failed"
 if [ -x ./onbstudy ] && ./onbstudy bench --help >/dev/null 2>&1; then
-	./onbstudy bench --quick --out "$tmp/run" >/dev/null 2>&1 && ./onbstudy table --bench "$tmp/run/bench.csv" --summary "$tmp/run/summary.csv" --out "$tmp/run" >/dev/null 2>&1 || bad "bench/table failed"
+	./onbstudy bench --quick --out "$T/run" >/dev/null 2>&1 && ./onbstudy table --bench "$T/run/bench.csv" --summary "$T/run/summary.csv" --out "$T/run" >/dev/null 2>&1 || bad "bench/table failed"
 fi
-make plots RUN="$tmp/run" > "$tmp/log" 2>&1 || bad "make plots failed: $(cat "$tmp/log")"
-grep -qi warning "$tmp/log" && bad "gnuplot warned: $(grep -i warning "$tmp/log")" || ok
+NZ=6 AZ=4 sh scripts/polecap.sh "$T/pc" >/dev/null 2>&1 || bad "polecap.sh failed"
+PCDIR="$T/pc" FIGS="$T/fig" make plots RUN="$T/run" > "$T/log" 2>&1 || bad "make plots failed: $(cat "$T/log")"
+grep -qi warning "$T/log" && bad "gnuplot warned: $(grep -i warning "$T/log")" || ok
 for P in float double; do
 	for c in error_vs_nz error_vs_nz_rms south_pole maps continuity nonunit threshold; do
 		for ext in png svg; do
-			[ -s "$tmp/run/${c}_$P.$ext" ] && ok || bad "missing or empty ${c}_$P.$ext"
+			[ -s "$T/run/${c}_$P.$ext" ] && ok || bad "missing or empty ${c}_$P.$ext"
 		done
 	done
-	if [ -f "$tmp/run/tradeoff.csv" ]; then
-		[ -s "$tmp/run/tradeoff_$P.png" ] && ok || bad "missing tradeoff_$P.png"
+	if [ -f "$T/run/tradeoff.csv" ]; then
+		[ -s "$T/run/tradeoff_$P.png" ] && ok || bad "missing tradeoff_$P.png"
 	fi
 done
-# a PNG is a PNG
-head -c 8 "$tmp/run/maps_float.png" | od -An -tx1 | grep -q "89 50 4e 47" && ok || bad "maps_float.png is not a PNG"
+for f in "$T/pc/polecap_float.svg" "$T/fig/polecap_frisvad_duff.svg" "$T/fig/south_pole_frisvad_duff_float.svg" "$T/fig/threshold_minimax_float.svg"; do
+	[ -s "$f" ] && ok || bad "missing $f"
+done
+# the poles charts, on two tiny exhaustive runs
+./onbstudy sweep --dists exhaustive --precision float --exhaustive-count 512 --azimuths 2 --quiet --out "$T/poles/south" >/dev/null 2>&1 &&
+./onbstudy sweep --dists exhaustive --precision float --exhaustive-range 0.99999:1 --azimuths 2 --quiet --out "$T/poles/north" >/dev/null 2>&1 &&
+SAMPLED="$T/none" sh scripts/poles.sh "$T/poles" >/dev/null 2>&1 && ok || bad "poles.sh failed"
+# the chart check, on every SVG
+n=0
+for f in "$T"/run/*.svg "$T"/fig/*.svg "$T"/pc/*.svg "$T"/poles/*.svg; do
+	[ -f "$f" ] || continue
+	n=$((n + 1))
+	case $(basename "$f") in maps_*) nl=1;; *) nl=0;; esac
+	out=$(awk -v nolabels=$nl -f scripts/chart-check.awk "$f" 2>&1) && ok || bad "chart check: $out"
+done
+[ $n -ge 22 ] && ok || bad "chart check saw $n SVGs, expected at least 22"
+# the checker catches each defect of a hand-made chart
+printf '1 1\n2 2\n' > "$T/d.dat"
+gnuplot -e "set terminal svg size 400,300; set output '$T/bad.svg'; set xlabel 'x label here'; \
+	set label 1 'off the canvas on the right' at screen 0.9, screen 0.5; \
+	set label 2 'overlapping one' at screen 0.2, screen 0.7; set label 3 'overlapping two' at screen 0.22, screen 0.7; \
+	plot '$T/d.dat' using 1:2 with lines title 'drawn', '$T/d.dat' using 1:(1/0) with lines title 'empty'" 2>/dev/null
+out=$(awk -f scripts/chart-check.awk "$T/bad.svg")
+for want in "leaves the" "overlap" "no y label" "\"empty\" draws nothing"; do
+	echo "$out" | grep -q "$want" && ok || bad "chart check missed: $want (it said: $out)"
+done
+echo "$out" | grep -q "no x label" && bad "chart check: a false x-label defect: $out" || ok
 # bad input
-sh scripts/plots.sh "$tmp/nothing" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "plots.sh on a missing run must exit 2"
+sh scripts/plots.sh "$T/nothing" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "plots.sh on a missing run must exit 2"
+NZ=x sh scripts/polecap.sh "$T/pc2" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "polecap.sh with NZ=x must exit 2"
 finish plots_cli

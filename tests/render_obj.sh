@@ -2,7 +2,8 @@
 # examples/aorender --obj on meshes written here: a cube with one `vn` per
 # face (its bottom face has n = -z exactly) and an octahedron without `vn`
 # (normals computed by the scene reader).  Each is rendered with two
-# methods; the PNG must be valid (signature, IHDR 160x120).  The cube seen
+# methods; the PNG must be valid (signature, IHDR 480x360: 160x120 pixels
+# drawn 3x; the diff 34 rows taller for its numbered colour bar).  The cube seen
 # from below must show the NaN of tangent_cross_z at n = -z (and duff none).
 # --diff compares with the method's own frame made exact (the same
 # orientation): duff_branchless must match it, naive_nonorm (a frame that is
@@ -59,11 +60,12 @@ f 4 2 6
 f 1 4 6
 OBJ
 
-# png FILE: the signature and an IHDR of 160 x 120
+# png FILE [ROWS]: the signature and an IHDR of 480 x ROWS (default 360;
+# the rendered 160 x 120 pixels, 3x)
 png() {
 	sig=$(od -An -tx1 -N8 "$1" | tr -d ' \n')
 	ihdr=$(od -An -tx1 -j12 -N12 "$1" | tr -d ' \n')
-	[ "$sig" = "89504e470d0a1a0a" ] && [ "$ihdr" = "49484452000000a000000078" ]
+	[ "$sig" = "89504e470d0a1a0a" ] && [ "$ihdr" = "$(printf '49484452%08x%08x' 480 "${2:-360}")" ]
 }
 
 for mesh in cube octa; do
@@ -72,8 +74,8 @@ for mesh in cube octa; do
 		$R --obj "$tmp/$mesh.obj" --method $m --spp 16 --out "$out" --diff "$tmp/$mesh-$m-diff.png" > "$tmp/sum" 2> "$tmp/err"
 		rc=$?
 		if [ $rc -eq 0 ] && [ ! -s "$tmp/err" ]; then ok; else bad "$mesh $m: exit $rc: $(cat "$tmp/err")"; fi
-		png "$out" && ok || bad "$mesh $m: not a 160x120 PNG"
-		png "$tmp/$mesh-$m-diff.png" && ok || bad "$mesh $m: diff is not a 160x120 PNG"
+		png "$out" && ok || bad "$mesh $m: not a 480x360 PNG"
+		png "$tmp/$mesh-$m-diff.png" 394 && ok || bad "$mesh $m: diff is not a 480x394 PNG"
 		nan=$(sed -n 's/.*NaN pixels \([0-9]*\)$/\1/p' "$tmp/sum")
 		mean=$(sed -n 's/.*mean |diff| \([0-9.]*\) .*/\1/p' "$tmp/sum")
 		over=$(sed -n 's/.*pixels > [0-9.]*: *\([0-9]*\) .*/\1/p' "$tmp/sum")

@@ -43,7 +43,7 @@ BASE    = -std=c99 $(OPT) $(FPFLAGS) $(CFLAGS) $(SANFLAGS) -Iinclude
 # MPFR and GMP are linked statically: MPFR keeps its flags in thread-local
 # storage, and the shared library reaches them through __tls_get_addr on
 # every operation (11% of a sweep); the static archive uses direct TLS.
-STUDY_LIBS = -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
+STUDY_LIBS = -Wl,-Bstatic -lmpfi -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 OMP     = -fopenmp
 
 B       = build
@@ -51,6 +51,10 @@ LIB_SRC = $(wildcard src/lib/*.c)
 LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o)
 STUDY_SRC = $(wildcard src/study/*.c)
 STUDY_OBJ = $(STUDY_SRC:src/study/%.c=$(B)/study/%.o)
+# The proofs (issue 22): src/certify/, built into the study library; MPFI
+# encloses the rounding models' intervals.
+CERT_SRC  = $(wildcard src/certify/*.c)
+CERT_OBJ  = $(CERT_SRC:src/certify/%.c=$(B)/certify/%.o)
 # Everything of the study but main(), so tests can link the study's modules.
 STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
@@ -115,7 +119,11 @@ $(B)/study/yardstick.o: src/study/yardstick.c src/study/bench.h include/onb.h Ma
 	@mkdir -p $(@D)
 	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -c $< -o $@
 
-$(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ))
+$(B)/certify/%.o: src/certify/%.c include/onb.h $(wildcard src/certify/*.h src/study/*.h) Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -c $< -o $@
+
+$(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ)) $(CERT_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
@@ -124,7 +132,7 @@ onbstudy: $(B)/study/main.o $(STUDY_LIB) libonb.a
 
 $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
 test: $(B)/deps.stamp all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \

@@ -34,7 +34,7 @@ void bound_free(bound_ctx *b)
 
 /* One run of the model along `path`; q[] the quantities. Returns 0 when the
    path is infeasible for the box, -1 when it failed, 1 otherwise. */
-static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, int zero_e, cv q[NCQ])
+static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, int mode, cv q[NCQ])
 {
 	cv n[3], out[6];
 	c->path = path;
@@ -42,7 +42,7 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	c->infeasible = 0;
 	c->nonzero = 0;
 	c->failed = 0;
-	mvf_begin(c->m, x, zero_e, n);
+	mvf_begin(c->m, x, mode, n);
 	cm_run(c, m, x->prec, n, out);
 	if (c->infeasible)
 		return 0;
@@ -52,21 +52,38 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	return mvf_failed(c->m) ? -1 : 1;
 }
 
+/* Where a gradient cannot be enclosed: the largest |Q| over the box from
+   the values alone (+inf when even they fail). */
+static double values_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
+{
+	cv q[NCQ];
+	double best = 0.0, d, unused;
+	int k;
+	if (run_path(c, m, x, path, MVF_VALUES, q) <= 0)
+		return INFINITY;
+	for (k = 0; k < NCQ; k++) {
+		mvf_bounds(c->m, q[k], &d, &unused);
+		if (!(d <= best))
+			best = d;
+	}
+	return isnan(best) ? INFINITY : best;
+}
+
 /* The bound along one feasible path (or -1 when infeasible). */
 static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
 {
 	cv q[NCQ];
 	double direct[NCQ], lin[NCQ], best = 0.0;
 	unsigned nonzero;
-	int k, r = run_path(c, m, x, path, 0, q);
+	int k, r = run_path(c, m, x, path, MVF_FULL, q);
 	if (r == 0)
 		return -1.0;
 	if (r < 0)
-		return INFINITY;
+		return values_bound(c, m, x, path);
 	for (k = 0; k < NCQ; k++)
 		mvf_bounds(c->m, q[k], &direct[k], &lin[k]);
 	nonzero = c->nonzero;
-	if (nonzero && run_path(c, m, x, path, 1, q) > 0) {
+	if (nonzero && run_path(c, m, x, path, MVF_AT_ZERO, q) > 0) {
 		for (k = 0; k < NCQ; k++)
 			if (nonzero & (1u << k)) {
 				double centre, unused;
@@ -91,14 +108,13 @@ double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x)
 {
 	unsigned path, npath = 1u << m->nbranch;
 	double best = 0.0;
-	int feasible = 0;
 	for (path = 0; path < npath; path++) {
 		double v = path_bound(b->c, m, x, path);
-		if (v < 0.0)
-			continue;
-		feasible = 1;
-		if (v > best)
-			best = v;
+		if (!(v <= best))
+			best = v;   /* an infeasible path gives -1 */
 	}
-	return feasible ? best : INFINITY;
+	/* No feasible path: no input of the region lies in the box (every
+	   comparison has a possible side on a nonempty interval, so only an
+	   empty band makes every path infeasible). */
+	return best;
 }

@@ -62,6 +62,11 @@ cv cm_neg(cm *c, cv a);                  /* exact                           */
    |e| <= the bound seeds.c proves, in float (rsqrtss and Listing 3's
    bit trick) or double (Lomont's constant). */
 cv cm_seed(cm *c, seed_kind k, cv a);
+/* Listing 3's Newton step on a seed y of 1/sqrt(x): y (1.5 - 0.5 x y y),
+   i.e. h = 0.5 x, then h y, (h y) y, 1.5 - that, y times that, each
+   rounded in f.  CM_MVF bounds the result's relative error as a whole
+   (mvf.c), where x cancels. */
+cv cm_newton(cm *c, int f, cv x, cv y);
 
 /* Branch point number `id` of the model: a OP b on the values as computed,
    and |a| OP |b| for cm_branch_abs.  Returns the side taken (0 or 1). */

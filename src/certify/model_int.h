@@ -43,9 +43,11 @@ enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG }
 mvf *mvf_new(void);
 void mvf_free(mvf *m);
 int  mvf_failed(const mvf *m);
+int  mvf_zero_e(const mvf *m);
 cv   mvf_cst(mvf *m, double v);
 cv   mvf_op(mvf *m, int op, int f, cv a, cv b, cv d);
 cv   mvf_seed(mvf *m, seed_kind k, cv a);
+cv   mvf_newton(mvf *m, int f, cv x, cv y);
 void mvf_compare(mvf *m, int op, int absolute, cv a, cv b, int *can_true, int *can_false);
 void mvf_sign_possible(mvf *m, cv a, int *can_set, int *can_clear);
 

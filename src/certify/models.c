@@ -34,8 +34,7 @@ static cv dot3(cm *c, int P, const cv p[3], const cv q[3])
    xhalf = 0.5*x computed first: the same products in the same order). */
 static cv newton(cm *c, int P, cv x, cv y)
 {
-	cv h = MUL(K(0.5), x);
-	return MUL(y, SUB(K(1.5), MUL(MUL(h, y), y)));
+	return cm_newton(c, P, x, y);
 }
 
 /* onb__rsq / onb__rsqf: the normalization variants. */

@@ -8,7 +8,9 @@
  * differentiation).  A rounding of an exact result v to format f is
  *     fl(v) = v (1 + e) + eta,   |e| <= u,   |eta| <= eta_f,
  * with eta only where |v| can fall below the smallest normal number
- * (u = 2^-24, eta_f = 2^-150 in float; 2^-53 and 2^-1074 in double).
+ * (u = 2^-24, eta_f = 2^-150 in float; 2^-53 and 2^-1074 in double);
+ * round_to uses the tighter form fl(v) = v + d, |d| <= half an ulp of
+ * the largest binade v can reach, which implies both.
  * An operation the box proves exact adds no term: a product by 0 or 1, by
  * a power of two that cannot underflow, of two floats in double, a
  * conversion that widens, and x - y with y/2 <= x <= 2y (Sterbenz).
@@ -37,6 +39,15 @@ typedef struct {
 	int fmt;         /* CM_F32 or CM_F64: the format the value lies in  */
 	int is_cst;      /* an exact constant cval                          */
 	double cval;
+	/* A seed y of 1/sqrt(x): y = r/sqrt(x) with r in [rel_lo, rel_hi], x the
+	   value rsqrt_of (-1: not a seed).  A rounded conversion a = x (1 + d):
+	   cvt_of = x, d in [-cvt_u, cvt_u] (-1: not one). */
+	int rsqrt_of, cvt_of;
+	double rel_lo, rel_hi, cvt_u;
+	/* For branch decisions only: an input's values that the region allows
+	   (n.z within the band); has_br says it is set. */
+	int has_br;
+	mpfi_t br;
 } mval;
 
 struct mvf {
@@ -46,6 +57,7 @@ struct mvf {
 	int nvar;
 	int failed;
 	int zero_e;            /* every e is 0: values only, no gradients */
+	int nograd;            /* values over the whole box, no gradients */
 	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
 	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
 	mpfi_t one, mone;
@@ -61,6 +73,7 @@ mvf *mvf_new(void)
 	for (i = 0; i < CM_MAXV; i++) {
 		mval *x = &m->val[i];
 		mpfi_init2(x->v, MV_PREC);
+		mpfi_init2(x->br, MV_PREC);
 		x->g = malloc(MV_MAXVAR * sizeof *x->g);
 		x->nz = calloc(MV_MAXVAR, 1);
 		if (!x->g || !x->nz)
@@ -93,6 +106,7 @@ void mvf_free(mvf *m)
 		free(m->val[i].g);
 		free(m->val[i].nz);
 		mpfi_clear(m->val[i].v);
+		mpfi_clear(m->val[i].br);
 	}
 	mpfi_clear(m->t1);
 	mpfi_clear(m->t2);
@@ -127,11 +141,15 @@ static cv fresh(mvf *m, int fmt)
 	x->ng = 0;
 	x->fmt = fmt;
 	x->is_cst = 0;
+	x->rsqrt_of = x->cvt_of = -1;
+	x->has_br = 0;
 	return m->n++;
 }
 
 static int new_var(mvf *m, double range)
 {
+	if (m->nograd)
+		return -1;
 	if (m->nvar >= MV_MAXVAR) {
 		m->failed = 1;
 		return MV_MAXVAR - 1;
@@ -142,6 +160,8 @@ static int new_var(mvf *m, double range)
 
 static void set_grad(mval *x, int k, mpfi_srcptr g)
 {
+	if (k < 0)
+		return;
 	mpfi_set(x->g[k], g);
 	x->nz[k] = 1;
 	if (x->ng <= k)
@@ -152,7 +172,7 @@ static void set_grad(mval *x, int k, mpfi_srcptr g)
 static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval *b, mpfi_srcptr sb)
 {
 	int k, ng = a->ng;
-	if (m->zero_e)
+	if (m->zero_e || m->nograd)
 		return;
 	if (b && b->ng > ng)
 		ng = b->ng;
@@ -181,12 +201,17 @@ cv mvf_cst(mvf *m, double v)
 	return i;
 }
 
-/* Round slot r (an exact result) to format f, unless it is exact there. */
+/* Round slot r (an exact result v) to format f: fl(v) = v + d with
+   |d| <= half an ulp of the binade of max|V| (2^(E - p) for 2^E <= max|V|,
+   E at least the smallest normal exponent, so subnormal results are
+   covered too).  That is u |v| or less, and half of it just below a power
+   of two, where u |v| would count the error twice. */
 static void round_to(mvf *m, cv r, int f)
 {
 	mval *x = &m->val[r];
-	double u = unit_round(f);
-	int k;
+	const int p = f == CM_F32 ? 24 : 53, emin = f == CM_F32 ? -126 : -1022;
+	long e;
+	double h;
 	x->fmt = f;
 	if (mpfi_nan_p(x->v) || !mpfi_bounded_p(x->v)) {
 		m->failed = 1;
@@ -194,19 +219,26 @@ static void round_to(mvf *m, cv r, int f)
 	}
 	if (m->zero_e)
 		return;
-	mpfi_interv_d(m->t1, 1.0 - u, 1.0 + u);
-	for (k = 0; k < x->ng; k++)
-		if (x->nz[k])
-			mpfi_mul(x->g[k], x->g[k], m->t1);
-	set_grad(x, new_var(m, u), x->v);
-	mpfi_mig(m->f1, x->v);
-	mpfi_mul(x->v, x->v, m->t1);
-	if (mpfr_cmp_d(m->f1, normal_min(f)) < 0) {
-		double eta = eta_of(f);
-		mpfi_set_d(m->t1, 1.0);
-		set_grad(x, new_var(m, eta), m->t1);
-		mpfi_interv_d(m->t1, -eta, eta);
+	mpfi_mag(m->f1, x->v);
+	if (mpfr_zero_p(m->f1))
+		return;                                   /* v = 0: exact */
+	e = (long)mpfr_get_exp(m->f1) - 1;            /* 2^e <= max|V| < 2^(e+1) */
+	if (mpfr_cmp_ui_2exp(m->f1, 1, e) == 0)
+		e--;   /* max|V| = 2^e: below it the ulp halves, and 2^e itself is exact */
+	if (e < emin)
+		e = emin;
+	h = ldexp(1.0, (int)(e - p));
+	if (h == 0.0)
+		h = 0x1p-1074;                            /* 2^-1075 is not a double */
+	set_grad(x, new_var(m, h), m->one);
+	{	/* rounding keeps the sign: a value >= 0 stays >= 0 */
+		const int nonneg = mpfi_is_nonneg(x->v), nonpos = mpfi_is_nonpos(x->v);
+		mpfi_interv_d(m->t1, -h, h);
 		mpfi_add(x->v, x->v, m->t1);
+		if (nonneg || nonpos) {
+			mpfi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
+			mpfi_intersect(x->v, x->v, m->t1);
+		}
 	}
 }
 
@@ -285,7 +317,7 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 static void copy_grad(mvf *m, mval *r, const mval *a)
 {
 	int k;
-	if (m->zero_e)
+	if (m->zero_e || m->nograd)
 		return;
 	for (k = 0; k < a->ng; k++)
 		if (a->nz[k])
@@ -296,7 +328,7 @@ static void copy_grad(mvf *m, mval *r, const mval *a)
 static void grad_add(mvf *m, mval *r, const mval *d)
 {
 	int k;
-	if (m->zero_e)
+	if (m->zero_e || m->nograd)
 		return;
 	for (k = 0; k < d->ng; k++) {
 		if (!d->nz[k])
@@ -324,7 +356,10 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 		return 1;
 	case MVF_MUL:
 	case MVF_FMA:
-		mpfi_mul(r->v, a->v, b->v);
+		if (a == b)
+			mpfi_sqr(r->v, a->v);   /* x*x >= 0: not the product of two intervals */
+		else
+			mpfi_mul(r->v, a->v, b->v);
 		grad_lin(m, r, a, b->v, b, a->v);
 		if (op == MVF_FMA) {
 			mpfi_add(r->v, r->v, d->v);
@@ -344,7 +379,7 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 		if (!mpfi_is_nonneg(a->v))
 			return 0;
 		mpfi_sqrt(r->v, a->v);
-		if (m->zero_e)
+		if (m->zero_e || m->nograd)
 			return 1;
 		if (!mpfi_is_strictly_pos(a->v))
 			return 0;
@@ -374,10 +409,22 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		m->failed = 1;
 		return ir;
 	}
-	if (op == MVF_NEG)
+	if (op == MVF_NEG) {
 		r->fmt = a->fmt;
-	else if (!exact_op(m, op, f, a, b, r))
+	} else if (!exact_op(m, op, f, a, b, r)) {
 		round_to(m, ir, f);
+	} else if (op == MVF_CVT) {
+		r->rsqrt_of = a->rsqrt_of;  /* a widening keeps a seed a seed */
+		r->rel_lo = a->rel_lo;
+		r->rel_hi = a->rel_hi;
+	}
+	if (op == MVF_CVT && f == CM_F32 && a->fmt == CM_F64) {
+		mpfi_mig(m->f1, a->v);
+		if (mpfr_cmp_d(m->f1, normal_min(CM_F32)) >= 0) {
+			r->cvt_of = ia;
+			r->cvt_u = unit_round(CM_F32);
+		}
+	}
 	return ir;
 }
 
@@ -409,12 +456,22 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 	mpfi_neg(m->s2, m->s2);
 	grad_lin(m, r, a, m->s2, NULL, NULL);
 	set_grad(r, new_var(m, sb.bound), m->s1);        /* d/de = 1/sqrt(a)        */
+	r->rsqrt_of = ia;
+	r->rel_lo = 1.0 - sb.bound;
+	r->rel_hi = 1.0 + sb.bound;
 	return ir;
 }
 
+static int empty_br(const mval *x) { return x->has_br && mpfi_is_empty(x->br); }
+
 void mvf_compare(mvf *m, int op, int absolute, cv ia, cv ib, int *can_true, int *can_false)
 {
-	mpfi_srcptr a = m->val[ia].v, b = m->val[ib].v;
+	mpfi_srcptr a = m->val[ia].has_br ? m->val[ia].br : m->val[ia].v;
+	mpfi_srcptr b = m->val[ib].has_br ? m->val[ib].br : m->val[ib].v;
+	if (empty_br(&m->val[ia]) || empty_br(&m->val[ib])) {
+		*can_true = *can_false = 0;
+		return;
+	}
 	if (absolute) {
 		mpfi_abs(m->s1, a);
 		mpfi_abs(m->s2, b);
@@ -437,22 +494,30 @@ void mvf_compare(mvf *m, int op, int absolute, cv ia, cv ib, int *can_true, int 
 
 void mvf_sign_possible(mvf *m, cv ia, int *can_set, int *can_clear)
 {
-	mpfi_get_left(m->f1, m->val[ia].v);
-	mpfi_get_right(m->f2, m->val[ia].v);
+	mpfi_srcptr a = m->val[ia].has_br ? m->val[ia].br : m->val[ia].v;
+	if (empty_br(&m->val[ia])) {
+		*can_set = *can_clear = 0;
+		return;
+	}
+	mpfi_get_left(m->f1, a);
+	mpfi_get_right(m->f2, a);
 	*can_set = mpfr_sgn(m->f1) <= 0;   /* -0 possible wherever 0 is */
 	*can_clear = mpfr_sgn(m->f2) >= 0;
 }
 
 /* Start a run over box b: the inputs n_i = u_i (1 + d_i) + eta_i, or
    u_i (1 + t) with |t| <= tolerance when tolerance >= 0. */
-void mvf_begin(mvf *m, const mvf_box *b, int zero_e, cv in[3])
+static void band_constraint(mvf *m, const mvf_box *b, cv iz);
+static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
+
+void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 {
-	double u = unit_round(b->prec);
-	int i, t_var = -1;
+	int i;
 	m->n = 0;
 	m->nvar = 0;
 	m->failed = 0;
-	m->zero_e = zero_e;
+	m->zero_e = mode == MVF_AT_ZERO;
+	m->nograd = mode == MVF_VALUES;
 	for (i = 0; i < 3; i++)
 		in[i] = fresh(m, b->prec);
 	mpfi_interv_d(m->t1, b->z_lo, b->z_hi);                 /* z             */
@@ -468,14 +533,35 @@ void mvf_begin(mvf *m, const mvf_box *b, int zero_e, cv in[3])
 	mpfi_mul(m->val[in[0]].v, m->s1, m->s2);
 	mpfi_sin(m->s2, m->t2);
 	mpfi_mul(m->val[in[1]].v, m->s1, m->s2);
-	if (zero_e)
-		return;
+	if (m->zero_e)
+		return;   /* Q(U, 0) along a given path: no decision is made */
+	input_errors(m, b, in);
+	band_constraint(m, b, in[2]);
+}
+
+/* n.z lies in the region's band: branch decisions on it may know that. */
+static void band_constraint(mvf *m, const mvf_box *b, cv iz)
+{
+	mval *z = &m->val[iz];
+	mpfi_interv_d(m->t1, b->nz_lo, b->nz_hi);
+	mpfi_intersect(z->br, z->v, m->t1);
+	z->has_br = 1;  /* empty: no input of the box is in the band, no path */
+}
+
+int mvf_zero_e(const mvf *m) { return m->zero_e; }
+
+
+/* The inputs' error terms: n_i = u_i (1 + d_i) + eta_i, or u_i (1 + t). */
+static void input_errors(mvf *m, const mvf_box *b, cv in[3])
+{
+	double u = unit_round(b->prec);
+	int i, t_var = -1;
 	if (b->tolerance >= 0)
 		t_var = new_var(m, b->tolerance);
 	for (i = 0; i < 3; i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_set(m->s2, x->v);                              /* u_i           */
-		if (t_var >= 0) {
+		if (b->tolerance >= 0) {
 			set_grad(x, t_var, m->s2);
 			mpfi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
 			mpfi_mul(x->v, x->v, m->t1);
@@ -542,4 +628,96 @@ void mvf_bounds(mvf *m, cv iq, double *direct, double *lin)
 		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDU);
 	}
 	*lin = mpfr_get_d(m->f2, MPFR_RNDU);
+}
+
+/* f(r) = r (1.5 - 0.5 r^2 p) at the point (r, p), enclosed in m->t1. */
+static void newton_poly(mvf *m, double r, mpfi_srcptr p, mpfi_ptr out)
+{
+	mpfi_set_d(m->t2, r);
+	mpfi_sqr(m->t3, m->t2);
+	mpfi_mul(m->t3, m->t3, p);
+	mpfi_div_2ui(m->t3, m->t3, 1);
+	mpfi_d_sub(m->t3, 1.5, m->t3);
+	mpfi_mul(out, m->t3, m->t2);
+}
+
+/* The relative error of Listing 3's Newton step y1 = y (1.5 - 0.5 x y y)
+   on a seed y = r/sqrt(x): with h = 0.5 x exact and the roundings
+   (1 + d1..d4) of h y, (h y) y, 1.5 - t and y t,
+       y1 sqrt(x) = f(r) (1 + d3)(1 + d4),  f(r) = r (1.5 - 0.5 r^2 p),
+   p = (1 + d1)(1 + d2): x cancels, which intervals in x cannot see.  f is
+   concave in r > 0 and decreasing in p, so its range over the box is at
+   the corners and at its peak r = 1/sqrt(p), f = 1/sqrt(p).  Returns the
+   bound of |y1 sqrt(x) - 1|, or -1 when y is no seed of x. */
+static double newton_rel(mvf *m, int f, cv ix, cv iy)
+{
+	const mval *y = &m->val[iy];
+	double u = unit_round(f), rlo = y->rel_lo, rhi = y->rel_hi, lo, hi;
+	if (y->rsqrt_of < 0)
+		return -1.0;
+	if (y->rsqrt_of != ix) { /* seed of (float)x: r (1 + d)^(-1/2) */
+		const mval *a = &m->val[y->rsqrt_of];
+		if (a->cvt_of != ix)
+			return -1.0;
+		rlo = rlo / sqrt(1.0 + a->cvt_u) * (1.0 - 0x1p-50);
+		rhi = rhi / sqrt(1.0 - a->cvt_u) * (1.0 + 0x1p-50);
+	}
+	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	mpfi_sqr(m->s1, m->s1);                         /* p              */
+	mpfi_get_left(m->f1, m->s1);
+	mpfi_set_fr(m->s2, m->f1);                      /* p_lo: the max  */
+	newton_poly(m, rlo, m->s2, m->t1);
+	mpfi_get_right(m->f2, m->t1);
+	newton_poly(m, rhi, m->s2, m->t1);
+	mpfi_get_right(m->f1, m->t1);
+	mpfr_max(m->f2, m->f2, m->f1, MPFR_RNDU);
+	mpfi_sqrt(m->t1, m->s2);
+	mpfi_inv(m->t1, m->t1);                         /* peak 1/sqrt(p_lo) */
+	mpfi_get_right(m->f1, m->t1);
+	mpfr_max(m->f2, m->f2, m->f1, MPFR_RNDU);
+	hi = mpfr_get_d(m->f2, MPFR_RNDU);
+	mpfi_get_right(m->f1, m->s1);
+	mpfi_set_fr(m->s2, m->f1);                      /* p_hi: the min  */
+	newton_poly(m, rlo, m->s2, m->t1);
+	mpfi_get_left(m->f2, m->t1);
+	newton_poly(m, rhi, m->s2, m->t1);
+	mpfi_get_left(m->f1, m->t1);
+	mpfr_min(m->f2, m->f2, m->f1, MPFR_RNDD);
+	lo = mpfr_get_d(m->f2, MPFR_RNDD);
+	mpfi_interv_d(m->t1, lo, hi);                   /* times (1 + d3)(1 + d4) */
+	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	mpfi_mul(m->t1, m->t1, m->s1);
+	mpfi_mul(m->t1, m->t1, m->s1);
+	mpfi_sub_d(m->t1, m->t1, 1.0);
+	mpfi_mag(m->f1, m->t1);
+	return mpfr_get_d(m->f1, MPFR_RNDU);
+}
+
+/* Listing 3's Newton step, as y1 = (1 + e)/sqrt(x) with |e| <= newton_rel.
+   Needs h, h y and (h y) y normal: x >= 2^-100 (float) or 2^-1000. */
+cv mvf_newton(mvf *m, int f, cv ix, cv iy)
+{
+	cv ir = fresh(m, f);
+	mval *r = &m->val[ir];
+	const mval *x = &m->val[ix];
+	double e = newton_rel(m, f, ix, iy);
+	mpfi_get_left(m->f1, x->v);
+	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == CM_F32 ? 0x1p-100 : 0x1p-1000) < 0) {
+		m->failed = 1;
+		return ir;
+	}
+	mpfi_sqrt(m->s1, x->v);
+	mpfi_inv(m->s1, m->s1);                          /* 1/sqrt(x)      */
+	if (m->zero_e) {
+		mpfi_set(r->v, m->s1);
+		return ir;
+	}
+	mpfi_interv_d(m->t1, 1.0 - e, 1.0 + e);
+	mpfi_mul(r->v, m->s1, m->t1);
+	mpfi_div(m->s2, r->v, x->v);                     /* d/dx = -(1 + e)/(2 x^1.5) */
+	mpfi_div_2ui(m->s2, m->s2, 1);
+	mpfi_neg(m->s2, m->s2);
+	grad_lin(m, r, x, m->s2, NULL, NULL);
+	set_grad(r, new_var(m, e), m->s1);
+	return ir;
 }

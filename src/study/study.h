@@ -34,6 +34,7 @@ int cmd_scene(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_table(int argc, char **argv);
 int cmd_reproduce(int argc, char **argv);
+int cmd_certify(int argc, char **argv);   /* src/certify/certify.c */
 
 /* cli.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */

@@ -59,6 +59,8 @@ CERT_OBJ  = $(CERT_SRC:src/certify/%.c=$(B)/certify/%.o)
 STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
 TEST_BIN  = $(TEST_SRC:tests/%.c=$(B)/tests/%)
+# Helpers that shell tests call (not run on their own).
+TEST_AUX  = $(B)/tests/certify_check
 GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo -dirty)
 PROV     = -DONB_GIT_REV='"$(GIT_REV)"' -DONB_CC='"$(shell $(CC) --version | head -1)"' \
            -DONB_CFLAGS='"$(BASE)"'
@@ -81,9 +83,9 @@ libonb.a: $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $(LIB_OBJ)
 
-$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h src/study/*.inc) Makefile $(B)/deps.stamp
+$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h src/study/*.inc src/certify/*.h) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -c $< -o $@
 
 # Provenance: output.o and main.o carry the git revision and the flags.
 # rev.stamp changes whenever they do (checked on every make), so a result
@@ -134,7 +136,7 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
-test: $(B)/deps.stamp all $(TEST_BIN)
+test: $(B)/deps.stamp all $(TEST_BIN) $(TEST_AUX)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
 	for t in tests/*.sh; do [ -f "$$t" ] || continue; echo "== $$t"; ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1; done; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"

@@ -104,8 +104,10 @@ static int check_one(const char *method, int prec, const double n[3], double err
 		if (c->prec != prec || strcmp(c->method, method) != 0 || !cert_in_region(&c->r, n))
 			continue;
 		seen = 1;
-		if (!c->singular && !(c->bound >= err)) {
-			printf("VIOLATION %s %s n = (%a, %a, %a): measured %.6g > bound %.6g (region n.z [%g, %g], phi [%g, %g])\n",
+		/* the worst-case files print the error to 6 significant digits:
+		   it may read up to 5e-6 relative above the value measured */
+		if (!c->singular && !(c->bound >= err * (1.0 - 5e-6))) {
+			printf("VIOLATION %s %s n = (%a, %a, %a): measured %.17g > bound %.17g (region n.z [%g, %g], phi [%g, %g])\n",
 			       method, prec ? "double" : "float", n[0], n[1], n[2], err, c->bound,
 			       c->r.nz_lo, c->r.nz_hi, c->r.phi_lo, c->r.phi_hi);
 			return -1;
@@ -117,7 +119,7 @@ static int check_one(const char *method, int prec, const double n[3], double err
 static int check_file(const char *path, long *checked, long *bad)
 {
 	char line[8192], *h[MAXCOL], *f[MAXCOL], head[8192];
-	int nh = 0, cm, cp, cd, ce, cx, cy, cz;
+	int nh = 0, cmeth = -1, cp = -1, cd = -1, ce = -1, cx = -1, cy = -1, cz = -1;
 	FILE *in = fopen(path, "r");
 	if (!in) {
 		fprintf(stderr, "certify_check: %s: cannot open\n", path);
@@ -131,9 +133,9 @@ static int check_file(const char *path, long *checked, long *bad)
 		if (!nh) {
 			memcpy(head, line, sizeof head);
 			nh = split_csv(head, h);
-			cm = col(h, nh, "method"); cp = col(h, nh, "precision"); cd = col(h, nh, "distribution");
+			cmeth = col(h, nh, "method"); cp = col(h, nh, "precision"); cd = col(h, nh, "distribution");
 			ce = col(h, nh, "error"); cx = col(h, nh, "nx"); cy = col(h, nh, "ny"); cz = col(h, nh, "nz");
-			if (cm < 0 || cd < 0 || ce < 0 || cx < 0 || cy < 0 || cz < 0) {
+			if (cmeth < 0 || cd < 0 || ce < 0 || cx < 0 || cy < 0 || cz < 0) {
 				fprintf(stderr, "certify_check: %s: no method/distribution/error/nx/ny/nz columns\n", path);
 				fclose(in);
 				return -1;
@@ -143,7 +145,7 @@ static int check_file(const char *path, long *checked, long *bad)
 		if (split_csv(line, f) < nh || !unit_domain(f[cd]))
 			continue;
 		n[0] = strtod(f[cx], NULL); n[1] = strtod(f[cy], NULL); n[2] = strtod(f[cz], NULL);
-		r = check_one(f[cm], cp >= 0 && strcmp(f[cp], "double") == 0 ? PREC_DOUBLE : PREC_FLOAT, n, strtod(f[ce], NULL));
+		r = check_one(f[cmeth], cp >= 0 && strcmp(f[cp], "double") == 0 ? PREC_DOUBLE : PREC_FLOAT, n, strtod(f[ce], NULL));
 		*checked += r > 0;
 		*bad += r < 0;
 	}

@@ -52,8 +52,8 @@ static void usage(FILE *f)
 	"yet within 1.25x).  Writes DIR/certify.csv (default: the current run).\n\n"
 	"  --methods LIST    comma-separated registry names, or all (default)\n"
 	"  --precision P     float, double or both (default both)\n"
-	"  --budget N        boxes bounded per region at most (default 600)\n"
-	"  --samples N       inputs sampled per region before the boxes (default 1500)\n"
+	"  --budget N        boxes bounded per region at most (default 1500)\n"
+	"  --samples N       inputs sampled per region before the boxes (default 1000)\n"
 	"  --sectors N       azimuth sectors (default 8)\n"
 	"  --tolerance T     the non-unit domain | |n| - 1 | <= T (T in [0, 0.01])\n"
 	"  --quick           budget 60, samples 150, 4 sectors: a run of about a minute\n");
@@ -76,7 +76,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 	memset(c, 0, sizeof *c);
 	c->methods = "all";
 	c->prec_on[0] = c->prec_on[1] = 1;
-	c->o.budget = 600; c->o.samples = 1500; c->o.target = 1.25; c->o.tolerance = -1.0; c->o.seed = 1;
+	c->o.budget = 1500; c->o.samples = 1000; c->o.target = 1.25; c->o.tolerance = -1.0; c->o.seed = 1;
 	c->sectors = 8;
 	if (cli_begin(&a, "certify", argc, argv))
 		return ONB_EXIT_USAGE;
@@ -160,9 +160,9 @@ static void csv_row(FILE *f, const char *name, int p, const cert_region *r, cons
 	if (isinf(x->bound))
 		fprintf(f, "inf,");
 	else
-		fprintf(f, "%.6e,", x->bound);
+		fprintf(f, "%.17g,", x->bound);   /* exact: the bound was rounded up once, never again */
 	if (x->found > 0.0)
-		fprintf(f, "%.6e,%a,%a,%a,%s\n", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
+		fprintf(f, "%.17g,%a,%a,%a,%s\n", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
 	else
 		fprintf(f, "0,,,,%s\n", status_name(x->status));
 }

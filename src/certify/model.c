@@ -175,7 +175,9 @@ int cm_branch(cm *c, int id, int op, cv a, cv b)
 	if (c->backend == CM_EXEC)
 		return op == CM_LT ? c->x[a] < c->x[b] : c->x[a] > c->x[b];
 	mvf_compare(c->m, op, 0, a, b, &t, &f);
-	return take(c, id, 0, f, t);
+	t = take(c, id, 0, f, t);
+	mvf_constrain(c->m, op, 0, a, b, t);
+	return t;
 }
 
 int cm_branch_abs(cm *c, int id, int op, cv a, cv b)
@@ -193,7 +195,9 @@ int cm_branch_sign(cm *c, int id, cv a)
 	if (c->backend == CM_EXEC)
 		return signbit(c->x[a]) != 0;
 	mvf_sign_possible(c->m, a, &t, &f);
-	return take(c, id, 0, f, t);
+	t = take(c, id, 0, f, t);
+	mvf_constrain_sign(c->m, a, t);
+	return t;
 }
 
 void cm_formula_nonzero(cm *c, unsigned mask)

@@ -50,5 +50,7 @@ cv   mvf_seed(mvf *m, seed_kind k, cv a);
 cv   mvf_newton(mvf *m, int f, cv x, cv y);
 void mvf_compare(mvf *m, int op, int absolute, cv a, cv b, int *can_true, int *can_false);
 void mvf_sign_possible(mvf *m, cv a, int *can_set, int *can_clear);
+void mvf_constrain(mvf *m, int op, int absolute, cv a, cv b, int side);
+void mvf_constrain_sign(mvf *m, cv a, int set);
 
 #endif

@@ -44,9 +44,10 @@ typedef struct {
 	   cvt_of = x, d in [-cvt_u, cvt_u] (-1: not one). */
 	int rsqrt_of, cvt_of;
 	double rel_lo, rel_hi, cvt_u;
-	/* For branch decisions only: an input's values that the region allows
-	   (n.z within the band); has_br says it is set. */
-	int has_br;
+	/* Inputs only: br, the values the input can take given the region (n.z
+	   within the band) and the branches taken so far (has_br: it is set);
+	   input, which input (0..2, or -1). */
+	int has_br, input;
 	mpfi_t br;
 } mval;
 
@@ -61,6 +62,7 @@ struct mvf {
 	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
 	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
 	mpfi_t one, mone;
+	mpfi_t u[3];           /* the inputs' exact values u_i over the box */
 	mpfr_t f1, f2;
 };
 
@@ -90,6 +92,8 @@ mvf *mvf_new(void)
 	mpfi_init2(m->mone, MV_PREC);
 	mpfi_set_d(m->one, 1.0);
 	mpfi_set_d(m->mone, -1.0);
+	for (i = 0; i < 3; i++)
+		mpfi_init2(m->u[i], MV_PREC);
 	mpfr_init2(m->f1, MV_PREC);
 	mpfr_init2(m->f2, MV_PREC);
 	return m;
@@ -115,6 +119,8 @@ void mvf_free(mvf *m)
 	mpfi_clear(m->s2);
 	mpfi_clear(m->one);
 	mpfi_clear(m->mone);
+	for (i = 0; i < 3; i++)
+		mpfi_clear(m->u[i]);
 	mpfr_clear(m->f1);
 	mpfr_clear(m->f2);
 	free(m);
@@ -123,9 +129,6 @@ void mvf_free(mvf *m)
 int mvf_failed(const mvf *m) { return m->failed; }
 
 static double unit_round(int f) { return f == CM_F32 ? 0x1p-24 : 0x1p-53; }
-/* Half the smallest subnormal; in double 2^-1075 is not a double, so
-   its double neighbour 2^-1074 (a sound, looser term). */
-static double eta_of(int f) { return f == CM_F32 ? 0x1p-150 : 0x1p-1074; }
 static double normal_min(int f) { return f == CM_F32 ? 0x1p-126 : 0x1p-1022; }
 
 /* A fresh value slot with an empty gradient. */
@@ -143,6 +146,7 @@ static cv fresh(mvf *m, int fmt)
 	x->is_cst = 0;
 	x->rsqrt_of = x->cvt_of = -1;
 	x->has_br = 0;
+	x->input = -1;
 	return m->n++;
 }
 
@@ -206,40 +210,50 @@ cv mvf_cst(mvf *m, double v)
    E at least the smallest normal exponent, so subnormal results are
    covered too).  That is u |v| or less, and half of it just below a power
    of two, where u |v| would count the error twice. */
-static void round_to(mvf *m, cv r, int f)
+/* Half an ulp of format f in the binade of max|V| (the largest error of
+   rounding any value of V to nearest); 0 when V = {0}. */
+static double half_ulp_of(mvf *m, mpfi_srcptr v, int f)
 {
-	mval *x = &m->val[r];
 	const int p = f == CM_F32 ? 24 : 53, emin = f == CM_F32 ? -126 : -1022;
 	long e;
 	double h;
-	x->fmt = f;
-	if (mpfi_nan_p(x->v) || !mpfi_bounded_p(x->v)) {
-		m->failed = 1;
-		return;
-	}
-	if (m->zero_e)
-		return;
-	mpfi_mag(m->f1, x->v);
+	mpfi_mag(m->f1, v);
 	if (mpfr_zero_p(m->f1))
-		return;                                   /* v = 0: exact */
+		return 0.0;
 	e = (long)mpfr_get_exp(m->f1) - 1;            /* 2^e <= max|V| < 2^(e+1) */
 	if (mpfr_cmp_ui_2exp(m->f1, 1, e) == 0)
 		e--;   /* max|V| = 2^e: below it the ulp halves, and 2^e itself is exact */
 	if (e < emin)
 		e = emin;
 	h = ldexp(1.0, (int)(e - p));
-	if (h == 0.0)
-		h = 0x1p-1074;                            /* 2^-1075 is not a double */
-	set_grad(x, new_var(m, h), m->one);
-	{	/* rounding keeps the sign: a value >= 0 stays >= 0 */
-		const int nonneg = mpfi_is_nonneg(x->v), nonpos = mpfi_is_nonpos(x->v);
-		mpfi_interv_d(m->t1, -h, h);
-		mpfi_add(x->v, x->v, m->t1);
-		if (nonneg || nonpos) {
-			mpfi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
-			mpfi_intersect(x->v, x->v, m->t1);
-		}
+	return h == 0.0 ? 0x1p-1074 : h;              /* 2^-1075 is not a double */
+}
+
+/* x->v += [-h, h], keeping its sign: rounding maps values >= 0 to >= 0. */
+static void add_sym(mvf *m, mval *x, double h)
+{
+	const int nonneg = mpfi_is_nonneg(x->v), nonpos = mpfi_is_nonpos(x->v);
+	mpfi_interv_d(m->t1, -h, h);
+	mpfi_add(x->v, x->v, m->t1);
+	if (nonneg || nonpos) {
+		mpfi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
+		mpfi_intersect(x->v, x->v, m->t1);
 	}
+}
+
+static void round_to(mvf *m, cv r, int f)
+{
+	mval *x = &m->val[r];
+	double h;
+	x->fmt = f;
+	if (mpfi_nan_p(x->v) || !mpfi_bounded_p(x->v)) {
+		m->failed = 1;
+		return;
+	}
+	if (m->zero_e || (h = half_ulp_of(m, x->v, f)) == 0.0)
+		return;                                   /* v = 0: exact */
+	set_grad(x, new_var(m, h), m->one);
+	add_sym(m, x, h);
 }
 
 static int is_cst(const mval *x, double v) { return x->is_cst && x->cval == v; }
@@ -508,6 +522,7 @@ void mvf_sign_possible(mvf *m, cv ia, int *can_set, int *can_clear)
 /* Start a run over box b: the inputs n_i = u_i (1 + d_i) + eta_i, or
    u_i (1 + t) with |t| <= tolerance when tolerance >= 0. */
 static void band_constraint(mvf *m, const mvf_box *b, cv iz);
+static void refine_input(mvf *m, mval *x);
 static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
 
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
@@ -527,12 +542,20 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	if (!mpfi_is_nonneg(m->s1))
 		mpfi_interv_d(m->s1, 0.0, 1.0);
 	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
-	mpfi_set(m->val[in[2]].v, m->t1);
+	if (b->has_zpoint)
+		mpfi_set_d(m->val[in[2]].v, b->zpoint);   /* exact: no error term */
+	else
+		mpfi_set(m->val[in[2]].v, m->t1);
 	mpfi_interv_d(m->t2, b->phi_lo, b->phi_hi);             /* phi, radians  */
 	mpfi_cos(m->s2, m->t2);
 	mpfi_mul(m->val[in[0]].v, m->s1, m->s2);
 	mpfi_sin(m->s2, m->t2);
 	mpfi_mul(m->val[in[1]].v, m->s1, m->s2);
+	for (i = 0; i < 3; i++) {
+		m->val[in[i]].input = i;
+		mpfi_set(m->u[i], m->val[in[i]].v);
+	}
+	m->val[in[2]].input = b->has_zpoint ? -1 : 2;
 	if (m->zero_e)
 		return;   /* Q(U, 0) along a given path: no decision is made */
 	input_errors(m, b, in);
@@ -546,6 +569,54 @@ static void band_constraint(mvf *m, const mvf_box *b, cv iz)
 	mpfi_interv_d(m->t1, b->nz_lo, b->nz_hi);
 	mpfi_intersect(z->br, z->v, m->t1);
 	z->has_br = 1;  /* empty: no input of the box is in the band, no path */
+	refine_input(m, z);
+}
+
+/* An input's value for the arithmetic after a constraint: the mean value
+   form evaluates the model at n_i(theta e) = u_i (1 + theta d_i), between
+   u_i and the actual n_i, and the actual n_i lies in br; so hull(U_i, br)
+   encloses every point the form needs. */
+static void refine_input(mvf *m, mval *x)
+{
+	if (x->input < 0 || !x->has_br || mpfi_is_empty(x->br))
+		return;
+	mpfi_union(m->t2, m->u[x->input], x->br);
+	mpfi_intersect(x->v, x->v, m->t2);
+}
+
+/* After a branch on input a against constant b took `side`: the input's
+   possible values know it.  op CM_LT: a < b (side 1) or a >= b (side 0);
+   CM_GT: a > b or a <= b.  Absolute comparisons are left alone. */
+void mvf_constrain(mvf *m, int op, int absolute, cv ia, cv ib, int side)
+{
+	mval *a = &m->val[ia];
+	const mval *b = &m->val[ib];
+	int below;
+	if (absolute || a->input < 0 || !b->is_cst || m->zero_e)
+		return;
+	below = (op == CM_LT) == (side != 0);   /* a <= b on this side */
+	mpfi_interv_d(m->t1, below ? -INFINITY : b->cval, below ? b->cval : INFINITY);
+	if (!a->has_br) {
+		mpfi_set(a->br, a->v);
+		a->has_br = 1;
+	}
+	mpfi_intersect(a->br, a->br, m->t1);
+	refine_input(m, a);
+}
+
+/* The same for the sign bit of input a (set: a <= 0, clear: a >= 0). */
+void mvf_constrain_sign(mvf *m, cv ia, int set)
+{
+	mval *a = &m->val[ia];
+	if (a->input < 0 || m->zero_e)
+		return;
+	mpfi_interv_d(m->t1, set ? -INFINITY : 0.0, set ? 0.0 : INFINITY);
+	if (!a->has_br) {
+		mpfi_set(a->br, a->v);
+		a->has_br = 1;
+	}
+	mpfi_intersect(a->br, a->br, m->t1);
+	refine_input(m, a);
 }
 
 int mvf_zero_e(const mvf *m) { return m->zero_e; }
@@ -558,7 +629,7 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 	int i, t_var = -1;
 	if (b->tolerance >= 0)
 		t_var = new_var(m, b->tolerance);
-	for (i = 0; i < 3; i++) {
+	for (i = 0; i < (b->has_zpoint ? 2 : 3); i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_set(m->s2, x->v);                              /* u_i           */
 		if (b->tolerance >= 0) {
@@ -567,15 +638,14 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 			mpfi_mul(x->v, x->v, m->t1);
 			continue;
 		}
-		set_grad(x, new_var(m, u), m->s2);
-		mpfi_interv_d(m->t1, 1.0 - u, 1.0 + u);
-		mpfi_mul(x->v, x->v, m->t1);
-		mpfi_mig(m->f1, m->s2);
-		if (mpfr_cmp_d(m->f1, normal_min(b->prec)) < 0) {
-			double eta = eta_of(b->prec);
-			set_grad(x, new_var(m, eta), m->one);
-			mpfi_interv_d(m->t1, -eta, eta);
-			mpfi_add(x->v, x->v, m->t1);
+		/* n_i = u_i + w_i, |w_i| <= half an ulp of the binade of max|u_i| */
+		{
+			double h = half_ulp_of(m, x->v, b->prec);
+			(void)u;
+			if (h > 0.0) {
+				set_grad(x, new_var(m, h), m->one);
+				add_sym(m, x, h);
+			}
 		}
 	}
 }

@@ -15,6 +15,11 @@ typedef struct {
 	                        which branch decisions on n.z may use         */
 	int prec;           /* CM_F32 or CM_F64                           */
 	double tolerance;   /* < 0: roundings of unit vectors; else | |n| - 1 | <= T */
+	/* 1: n.z is the format value zpoint itself (the default domain only):
+	   [z_lo, z_hi] then holds the u.z that round to it, and n is not unit
+	   at e = 0, so every quantity takes its centre Q(U, 0). */
+	int has_zpoint;
+	double zpoint;
 } mvf_box;
 
 /* Runs: the values and gradients over the box (MVF_FULL), the values with

@@ -69,6 +69,8 @@ void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 	b->tolerance = tolerance;
 	b->nz_lo = r->nz_lo;
 	b->nz_hi = r->nz_hi;
+	b->has_zpoint = 0;
+	b->zpoint = 0.0;
 	b->z_lo = fmax(-1.0, r->nz_lo - w * fabs(r->nz_lo) * 1.01 - eta);
 	b->z_hi = fmin(1.0, r->nz_hi + w * fabs(r->nz_hi) * 1.01 + eta);
 	zmax = fmax(fabs(b->z_lo), fabs(b->z_hi));   /* r = sqrt(1 - z^2) is least there */

@@ -15,6 +15,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include "search.h"
 #include "reference.h"
@@ -206,24 +207,77 @@ static double z_measure(const mvf_box *b, double *mid)
 	return b->z_hi - b->z_lo;
 }
 
-/* Split b in two along its wider measure; 0 when it is too small. */
-static int split(const mvf_box *b, mvf_box *c0, mvf_box *c1)
+/* The format values n.z can take over box b (the default domain): at
+   most max of them into zs, or 0 when there are more (or none). */
+static int zvalues(const mvf_box *b, double *zs, int max)
 {
-	double zm, zw = z_measure(b, &zm), zmax = fmax(fabs(b->z_lo), fabs(b->z_hi));
-	double r = b->z_lo <= 0.0 && b->z_hi >= 0.0 ? 1.0 : sqrt(fmax(0.0, 1.0 - fmin(fabs(b->z_lo), fabs(b->z_hi)) * fmin(fabs(b->z_lo), fabs(b->z_hi))));
+	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	double lo = fmax(b->nz_lo, b->z_lo - u * fabs(b->z_lo) * 1.01);
+	double hi = fmin(b->nz_hi, b->z_hi + u * fabs(b->z_hi) * 1.01), z;
+	int n = 0;
+	if (b->tolerance >= 0 || b->has_zpoint || !(lo <= hi))
+		return 0;
+	z = b->prec == CM_F32 ? (double)nextafterf((float)lo, -INFINITY) : nextafter(lo, -INFINITY);
+	for (; n <= max; z = b->prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY)) {
+		if (z < lo)
+			continue;
+		if (z > hi)
+			break;
+		if (n == max)
+			return 0;
+		zs[n++] = z;
+	}
+	return n;
+}
+
+/* The reals that round to the format value z: [z - gap below/2, z + gap above/2]. */
+static void rounding_cell(double z, int prec, double *lo, double *hi)
+{
+	double up = prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY);
+	double dn = prec == CM_F32 ? (double)nextafterf((float)z, -INFINITY) : nextafter(z, -INFINITY);
+	*lo = z - (z - dn) / 2;
+	*hi = z + (up - z) / 2;
+}
+
+/* Split b: near the poles, once n.z can take at most 8 format values, into
+   one box per value (n.z then exact, u.z the reals rounding to it); else in
+   two along its wider measure.  Returns the number of children in c, 0
+   when b is too small to split. */
+static int split(const mvf_box *b, mvf_box *c)
+{
+	double zm, zs[8], zw = z_measure(b, &zm), zmin = fmin(fabs(b->z_lo), fabs(b->z_hi));
+	double r = b->z_lo <= 0.0 && b->z_hi >= 0.0 ? 1.0 : sqrt(fmax(0.0, 1.0 - zmin * zmin));
 	double pw = (b->phi_hi - b->phi_lo) * r;
-	*c0 = *b;
-	*c1 = *b;
-	(void)zmax;
+	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	/* only within 32 u of a pole, where n.z's own rounding is a large part
+	   of 1 -+ n.z and the first-order form cannot follow it */
+	int i, k = (1.0 + b->z_hi <= 32 * u || 1.0 - b->z_lo <= 32 * u) ? zvalues(b, zs, 8) : 0;
+	for (i = 0; i < k; i++) {
+		double lo, hi;
+		rounding_cell(zs[i], b->prec == CM_F32 ? PREC_FLOAT : PREC_DOUBLE, &lo, &hi);
+		c[i] = *b;
+		c[i].has_zpoint = 1;
+		c[i].zpoint = zs[i];
+		c[i].z_lo = fmax(-1.0, lo);   /* the u.z that round to it */
+		c[i].z_hi = fmin(1.0, hi);
+	}
+	if (k > 0)
+		return k;
+	if (b->has_zpoint) {   /* in units of the rounding cell of n.z, and of 0.1 rad */
+		zw = (b->z_hi - b->z_lo) / (u * fmax(fabs(b->zpoint), 0x1p-126));
+		pw = (b->phi_hi - b->phi_lo) / 0.1;
+		zm = 0.5 * (b->z_lo + b->z_hi);
+	}
+	c[0] = c[1] = *b;
 	if (zw >= pw && !isnan(zm) && zm > b->z_lo && zm < b->z_hi) {
-		c0->z_hi = zm;
-		c1->z_lo = zm;
-		return 1;
+		c[0].z_hi = zm;
+		c[1].z_lo = zm;
+		return 2;
 	}
 	if (b->phi_hi - b->phi_lo < 1e-12)
 		return 0;
-	c0->phi_hi = c1->phi_lo = 0.5 * (b->phi_lo + b->phi_hi);
-	return c0->phi_hi > b->phi_lo && c0->phi_hi < b->phi_hi;
+	c[0].phi_hi = c[1].phi_lo = 0.5 * (b->phi_lo + b->phi_hi);
+	return c[0].phi_hi > b->phi_lo && c[0].phi_hi < b->phi_hi ? 2 : 0;
 }
 
 typedef struct {
@@ -232,13 +286,19 @@ typedef struct {
 	int stuck;   /* cannot be split further */
 } leaf;
 
-static void probe_centre(probe_env *e, const mvf_box *b)
+/* The kernel at the box's centre, and at its two ends in u.z (where the
+   input's own rounding is largest when n.z is a given value). */
+static void probe_box(probe_env *e, const mvf_box *b)
 {
-	double zm;
+	double zm, pm = 0.5 * (b->phi_lo + b->phi_hi);
 	z_measure(b, &zm);
 	if (isnan(zm))
 		zm = 0.5 * (b->z_lo + b->z_hi);
-	try_u(e, zm, 0.5 * (b->phi_lo + b->phi_hi));
+	try_u(e, zm, pm);
+	if (b->has_zpoint) {
+		try_u(e, b->z_lo, pm);
+		try_u(e, b->z_hi, pm);
+	}
 }
 
 /* The leaf with the largest bound among those that can still be split;
@@ -258,7 +318,7 @@ static int worst_leaf(const leaf *l, int nl, double *worst)
 
 static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0)
 {
-	const long cap = e->o->budget + 2;
+	const long cap = e->o->budget + 8;
 	leaf *l = malloc((size_t)cap * sizeof *l);
 	int nl = 1;
 	double worst = INFINITY;
@@ -272,23 +332,29 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	e->res->boxes = 1;
 	for (;;) {
 		int i = worst_leaf(l, nl, &worst);
-		mvf_box c0, c1;
-		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 2 > e->o->budget)
+		mvf_box c[8];
+		int k, j;
+		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 8 > e->o->budget)
 			break;
-		if (!split(&l[i].b, &c0, &c1)) {
+		if (!(k = split(&l[i].b, c))) {
 			l[i].stuck = 1;
 			continue;
 		}
-		l[i].b = c0;
-		l[i].bound = bound_box(e->x->b, m, &c0);
-		l[nl].b = c1;
-		l[nl].bound = bound_box(e->x->b, m, &c1);
-		l[nl++].stuck = 0;
-		e->res->boxes += 2;
-		probe_centre(e, &c0);
-		probe_centre(e, &c1);
+		for (j = 0; j < k; j++) {
+			const int at = j == 0 ? i : nl++;
+			l[at].b = c[j];
+			l[at].bound = bound_box(e->x->b, m, &c[j]);
+			l[at].stuck = 0;
+			probe_box(e, &c[j]);
+		}
+		e->res->boxes += k;
 	}
 	e->res->bound = worst;
+	if (getenv("ONB_CERT_DEBUG"))
+		for (nl--; nl >= 0; nl--)
+			if (l[nl].bound >= worst)
+				fprintf(stderr, "worst leaf: z [%.17g, %.17g] phi [%.9g, %.9g] zpoint %d %a: %g\n", l[nl].b.z_lo,
+				        l[nl].b.z_hi, l[nl].b.phi_lo, l[nl].b.phi_hi, l[nl].b.has_zpoint, l[nl].b.zpoint, l[nl].bound);
 	free(l);
 }
 

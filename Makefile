@@ -49,12 +49,15 @@ OMP     = -fopenmp
 B       = build
 LIB_SRC = $(wildcard src/lib/*.c)
 LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o)
-STUDY_SRC = $(wildcard src/study/*.c)
-STUDY_OBJ = $(STUDY_SRC:src/study/%.c=$(B)/study/%.o)
-# The proofs (issue 22): src/certify/, built into the study library; MPFI
-# encloses the rounding models' intervals.
-CERT_SRC  = $(wildcard src/certify/*.c)
-CERT_OBJ  = $(CERT_SRC:src/certify/%.c=$(B)/certify/%.o)
+# The study: every src/<folder>/*.c but src/lib/ (libonb) and src/mpi/ (the
+# MPI driver, built by `make mpi` only).  A new folder src/<name>/ is picked
+# up by these wildcards with no edit here; its objects go to build/<name>/.
+# Includes name their folder from -Isrc ("sweep/engine.h"); onb.h comes
+# from -Iinclude.
+STUDY_SRC = $(filter-out src/lib/% src/mpi/%,$(wildcard src/*/*.c))
+STUDY_OBJ = $(STUDY_SRC:src/%.c=$(B)/%.o)
+STUDY_HDR = $(filter-out src/lib/%,$(wildcard src/*/*.h src/*/*.inc))
+MAIN_OBJ  = $(B)/cli/main.o
 # Everything of the study but main(), so tests can link the study's modules.
 STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
@@ -83,9 +86,9 @@ libonb.a: $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $(LIB_OBJ)
 
-$(B)/study/%.o: src/study/%.c include/onb.h $(wildcard src/study/*.h src/study/*.inc src/certify/*.h) Makefile $(B)/deps.stamp
+$(filter-out $(B)/bench/yardstick.o,$(STUDY_OBJ)): $(B)/%.o: src/%.c include/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -c $< -o $@
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 
 # Provenance: output.o and main.o carry the git revision and the flags.
 # rev.stamp changes whenever they do (checked on every make), so a result
@@ -94,47 +97,44 @@ $(B)/rev.stamp: FORCE
 	@mkdir -p $(B)
 	@echo '$(GIT_REV) $(BASE)' > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
-$(B)/study/output.o $(B)/study/main.o: $(B)/rev.stamp
+$(B)/cli/output.o $(MAIN_OBJ): $(B)/rev.stamp
 .PHONY: FORCE
 FORCE:
 
 # The FMA copy of the kernels for `sweep --fma`: contraction on, on purpose.
 ifeq ($(shell uname -m),x86_64)
-$(B)/study/fma_kernels.o: XFLAGS = -mfma -ffp-contract=fast
+$(B)/methods/fma_kernels.o: XFLAGS = -mfma -ffp-contract=fast
 else
-$(B)/study/fma_kernels.o: XFLAGS = -ffp-contract=fast
+$(B)/methods/fma_kernels.o: XFLAGS = -ffp-contract=fast
 endif
 
 # The fast reference (issue 14): TwoProd through the fma instruction.  Only
 # fma() calls use it: -ffp-contract=off (BASE) still forbids contraction.
 # reffast_usable() refuses this path on a CPU without FMA.
 ifeq ($(shell uname -m),x86_64)
-$(B)/study/reffast.o $(B)/study/reffast_f.o: XFLAGS = -mfma
+$(B)/reference/reffast.o $(B)/reference/reffast_f.o: XFLAGS = -mfma
 endif
 
 # reffast_f.c is reffast.c compiled again with pairs of doubles.
-$(B)/study/reffast_f.o: src/study/reffast.c
+$(B)/reference/reffast_f.o: src/reference/reffast.c
 
 # The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
-$(B)/study/yardstick.o: src/study/yardstick.c src/study/bench.h include/onb.h Makefile $(B)/deps.stamp
+# (left out of the study's rule above, which compiles every other object)
+$(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/onb.h Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -c $< -o $@
+	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -Isrc -c $< -o $@
 
-$(B)/certify/%.o: src/certify/%.c include/onb.h $(wildcard src/certify/*.h src/study/*.h) Makefile $(B)/deps.stamp
-	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -c $< -o $@
-
-$(STUDY_LIB): $(filter-out $(B)/study/main.o,$(STUDY_OBJ)) $(CERT_OBJ)
+$(STUDY_LIB): $(filter-out $(MAIN_OBJ),$(STUDY_OBJ))
 	rm -f $@
 	$(AR) rcs $@ $^
 
-onbstudy: $(B)/study/main.o $(STUDY_LIB) libonb.a
-	$(CC) $(BASE) $(OMP) -o $@ $(B)/study/main.o $(STUDY_LIB) libonb.a $(STUDY_LIBS)
+onbstudy: $(MAIN_OBJ) $(STUDY_LIB) libonb.a
+	$(CC) $(BASE) $(OMP) -o $@ $(MAIN_OBJ) $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
 $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc/study -Isrc/certify -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
+	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
 test: $(B)/deps.stamp all $(TEST_BIN) $(TEST_AUX)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
@@ -182,18 +182,18 @@ clean:
 MPICC ?= mpicc
 .PHONY: mpi
 mpi: onbstudy-mpi
-$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(wildcard src/study/*.h) include/onb.h Makefile $(B)/rev.stamp
+$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/onb.h Makefile $(B)/rev.stamp
 	@mkdir -p $(@D)
-	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc/study -D_POSIX_C_SOURCE=200809L -c $< -o $@
+	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 	$(MPICC) $(BASE) $(OMP) -o $@ $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
 
 # The example renderer links libonb.a and libm, as a user's would, and the
 # scene reader (meshio, whose glTF part links cJSON) for --obj.
-MESHIO_SRC = src/study/meshio.c src/study/mesh_gltf.c
-$(B)/aorender: examples/aorender.c $(MESHIO_SRC) src/study/meshio.h src/study/meshio_int.h libonb.a include/onb.h
+MESHIO_SRC = $(wildcard src/mesh/*.c)
+$(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb.a include/onb.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc/study -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm
+	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm
 RENDERS = results/reference/renders
 .PHONY: render
 render: $(B)/aorender

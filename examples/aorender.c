@@ -9,7 +9,7 @@
  *            [--mesh FILE [--up z|y|x] [--no-renormalize]]
  *
  * --mesh (or --obj) renders a mesh read by the scene reader: OBJ, PLY or
- * glTF 2.0, told by content (src/study/meshio.c and mesh_gltf.c, compiled
+ * glTF 2.0, told by content (the files of src/mesh/, compiled
  * into this program; the same reader as `onbstudy scene`) instead of the
  * scene below; see "--obj" further down for the camera, the shading
  * normals, the hidden floor and the reference of --diff (there: the
@@ -49,7 +49,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "onb.h"
-#include "meshio.h"
+#include "mesh/meshio.h"
 
 #define W 160
 #define H 120
@@ -270,7 +270,7 @@ static void render(const onb_method *m, int fl, int spp, double *img)
 		}
 }
 
-/* ---- --obj: a mesh from the scene reader (src/study/meshio.c) ----
+/* ---- --obj: a mesh from the scene reader (src/mesh/) ----
    The file's positions and normals are turned so that the --up axis is z
    (the cyclic permutation of `onbstudy scene`: y: (x,y,z) -> (z,x,y),
    x: (x,y,z) -> (y,z,x)), so the normals the method sees have that axis

@@ -7,4 +7,4 @@ awk -v max="${1:-100}" '
 	/^[a-zA-Z].*\(/ && !/;[ \t]*$/ { cand = $0; line = FNR }
 	/^\{/ { start = FNR; name = cand; at = line }
 	/^\}/ && start { n = FNR - start; if (n > max) { printf "%5d lines  %s:%d  %s\n", n, FILENAME, at, name; found = 1 } start = 0 }
-	END { exit found }' src/lib/*.c src/study/*.c src/mpi/*.c
+	END { exit found }' src/*/*.c

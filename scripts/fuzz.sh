@@ -32,13 +32,13 @@ for h in $HARNESSES; do mkdir -p "$out/artifacts/$h" "$out/scratch/$h"; done
 mkdir -p "$out/obj"
 # -fsanitize=fuzzer on the harness only; fuzzer-no-link (coverage) on the rest
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-CFL="-std=c99 -O1 -g -fopenmp -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc/study -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
+CFL="-std=c99 -O1 -g -fopenmp -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
 objs=""
-for src in src/lib/*.c src/study/*.c; do
-	case "$src" in src/study/main.c) continue;; esac
+for src in src/*/*.c; do
+	case "$src" in src/cli/main.c|src/mpi/*) continue;; esac
 	o="$out/obj/$(echo "$src" | tr / _ | sed 's/\.c$/.o/')"
 	extra=""
-	case "$src" in src/study/fma_kernels.c) [ "$(uname -m)" = x86_64 ] && extra="-mfma -ffp-contract=fast";; esac
+	case "$src" in src/methods/fma_kernels.c) [ "$(uname -m)" = x86_64 ] && extra="-mfma -ffp-contract=fast";; esac
 	# shellcheck disable=SC2086
 	$CLANG $CFL $SAN -fsanitize=fuzzer-no-link $extra -c "$src" -o "$o"
 	objs="$objs $o"

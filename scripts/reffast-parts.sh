@@ -1,7 +1,7 @@
 #!/bin/sh
 # reffast-parts.sh [REPS] [float|double] - where the fast reference's time goes (issue 14):
 # each part of reffast_eval is run twice on the same data in a copy of
-# src/study/reffast.c (the second result is discarded, so the data and every
+# src/reference/reffast.c (the second result is discarded, so the data and every
 # decision stay the same), and the extra time per evaluation is that part's
 # cost.  Parts that overlap with the rest of the work show less than their
 # own cost (and a part the compiler can merge with its first run shows
@@ -19,7 +19,7 @@ case $PREC in float) P=PREC_FLOAT ;; double) P=PREC_DOUBLE ;; *) echo "reffast-p
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
 CC=${CC:-cc}
-F="-std=c99 -O3 -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc/study -mfma -D_POSIX_C_SOURCE=200809L"
+F="-std=c99 -O3 -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc -mfma -D_POSIX_C_SOURCE=200809L"
 cat > "$W/driver.c" <<'C'
 #include "bench_ref.c"
 int main(int argc, char **argv)
@@ -46,16 +46,16 @@ int main(int argc, char **argv)
 C
 # variant NAME 'ANCHOR' 'ADDED': ADDED goes after the line ANCHOR (a whole line of reffast.c)
 variant() {
-	awk -v a="$2" -v b="$3" '{ print } $0 == a { print b; n++ } END { if (n != 1) exit 1 }' src/study/reffast.c > "$W/$1.c" ||
-		{ echo "reffast-parts: anchor of $1 not found in src/study/reffast.c" >&2; exit 1; }
+	awk -v a="$2" -v b="$3" '{ print } $0 == a { print b; n++ } END { if (n != 1) exit 1 }' src/reference/reffast.c > "$W/$1.c" ||
+		{ echo "reffast-parts: anchor of $1 not found in src/reference/reffast.c" >&2; exit 1; }
 	printf '#define REFFAST_PAIR_DOUBLE 1\n#include "%s.c"\n' "$1" > "$W/$1_f.c"
 	$CC $F -I"$W" -c "$W/$1_f.c" -o "$W/$1_f.o"
 	$CC $F -I"$W" -c "$W/$1.c" -o "$W/$1_l.o"
-	$CC $F -DPREC=$P -fopenmp -o "$W/$1" -Isrc/study "$W/driver.c" "$W/$1_f.o" "$W/$1_l.o" build/libstudy.a libonb.a \
+	$CC $F -DPREC=$P -fopenmp -o "$W/$1" -Isrc "$W/driver.c" "$W/$1_f.o" "$W/$1_l.o" build/libstudy.a libonb.a \
 		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 }
 SINK='__asm__ volatile("" ::: "memory");'
-variant plain '#include "reffast.h"' ''
+variant plain '#include "reference/reffast.h"' ''
 variant formula '	xreference(k, br, loc, n, XR(e), XR(e) + 3, bad);' \
 	"	{ xv q[6]; int qb = 0; xreference(k, br, loc, n, q, q + 3, &qb); __asm__ volatile(\"\" :: \"m\"(q), \"r\"(qb)); }"
 variant forward '		const int f = forward_all(e, r1, r2, prec, s, undet);' \

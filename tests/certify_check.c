@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "kernels.h"
-#include "region.h"
-#include "search.h"
+#include "methods/kernels.h"
+#include "certify/region.h"
+#include "certify/search.h"
 
 #define MAXROW 20000
 #define MAXCOL 64

@@ -145,14 +145,14 @@ if "$bin" sweep --shard 0/2 --samples 64 --exhaustive-count 64 --grid 4x8 --meth
 	R merge "$st" --out "$out"                      # shard 1 of 2 missing
 	R merge "$st" "$st" --out "$out"                # shard 0 twice
 	# shard_k (int at the offset of sweep_cfg.shard_k) set to 100000:
-	# the offset is computed by a small C program from sweep.h
+	# the offset is computed by a small C program from sweep/state.h
 	cat > "$tmp/off.c" <<'C'
 #include <stdio.h>
 #include <stddef.h>
-#include "sweep.h"
+#include "sweep/state.h"
 int main(void) { printf("%lu\n", (unsigned long)offsetof(sweep_cfg, shard_k)); return 0; }
 C
-	if cc -std=c99 -Iinclude -Isrc/study -o "$tmp/off" "$tmp/off.c" 2>/dev/null; then
+	if cc -std=c99 -Iinclude -Isrc -o "$tmp/off" "$tmp/off.c" 2>/dev/null; then
 		off=$("$tmp/off")
 		{ head -c "$off" "$st"; printf '\240\206\001\000'; tail -c +$((off + 5)) "$st"; } > "$tmp/badk.bin"
 		[ "$(wc -c < "$tmp/badk.bin")" -eq "$size" ] && ok || bad "could not build the bad-shard state file"

@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "onb.h"
-#include "models.h"
-#include "model_int.h"
+#include "certify/models.h"
+#include "certify/model_int.h"
 
 static uint64_t mix(uint64_t x)
 {

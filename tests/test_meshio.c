@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "meshio.h"
+#include "mesh/meshio.h"
 
 static int pass, failed;
 #define CHECK(c, ...) do { if (c) pass++; else { failed++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)

@@ -17,10 +17,10 @@
 #include <string.h>
 #include <math.h>
 #include <float.h>
-#include "reference.h"
-#include "reffast.h"
-#include "inputs.h"
-#include "kernels.h"
+#include "reference/reference.h"
+#include "reference/reffast.h"
+#include "inputs/inputs.h"
+#include "methods/kernels.h"
 
 static int passed, failed;
 

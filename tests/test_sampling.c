@@ -101,7 +101,7 @@
 #include <string.h>
 #include <mpfr.h>
 #include "onb.h"
-#include "rng.h"
+#include "inputs/rng.h"
 
 #define NS (1u << 16)    /* samples per row */
 #define NB 64            /* bins of u = cos^2 theta */

@@ -7,10 +7,10 @@
 #include <string.h>
 #include <math.h>
 #include <float.h>
-#include "reference.h"
-#include "inputs.h"
-#include "fx.h"
-#include "sweep.h"
+#include "reference/reference.h"
+#include "inputs/inputs.h"
+#include "sweep/fx.h"
+#include "sweep/state.h"
 
 static int passed, failed;
 

@@ -9,8 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "study.h"
-#include "bench.h"
+#include "cli/cli.h"
+#include "bench/table.h"
+#include "bench/table.h"
 
 static int pass, fail;
 #define CHECK(c, ...) do { if (c) pass++; else { fail++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)

@@ -11,8 +11,10 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
-#include "study.h"
-#include "engine.h"
+#include "cli/cli.h"
+#include "cli/output.h"
+#include "sweep/engine.h"
+#include "certify.h"
 #include "search.h"
 
 #define MAXREG 1024

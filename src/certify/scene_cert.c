@@ -21,7 +21,7 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
-#include "meshio.h"
+#include "mesh/meshio.h"
 #include "scene_cert.h"
 
 #define DEGS (180.0 / 3.14159265358979323846)

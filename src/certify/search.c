@@ -18,8 +18,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "search.h"
-#include "reference.h"
-#include "inputs.h"
+#include "reference/reference.h"
+#include "inputs/inputs.h"
 #include "model_int.h"
 
 struct cert_ctx {

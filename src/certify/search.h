@@ -6,7 +6,7 @@
 #define ONB_CERTIFY_SEARCH_H
 
 #include <stdint.h>
-#include "kernels.h"
+#include "methods/kernels.h"
 #include "bound.h"
 #include "regions.h"
 

@@ -69,6 +69,14 @@ static const onb_method onb__table[] = {
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp) },
 };
 
+/* One row for every method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST
+   (include/onb.h): a list entry without a row stops the build here (a
+   negative array size); tests/test_parts.c checks the rows' names. */
+#define ONB__ONE(m) + 1
+typedef char onb__one_row_per_listed_method[
+	sizeof onb__table / sizeof onb__table[0] == 0 ONB_METHOD_LIST(ONB__ONE) ONB_FLOAT_METHOD_LIST(ONB__ONE) ? 1 : -1];
+#undef ONB__ONE
+
 const onb_method *onb_methods(size_t *count)
 {
 	if (count)

@@ -32,8 +32,10 @@
 #include <unistd.h>
 #include <fcntl.h>
 #include <sys/resource.h>
-#include "engine.h"
-#include "study.h"
+#include "sweep/engine.h"
+#include "cli/cli.h"
+#include "cli/output.h"
+#include "sweep/sweep.h"
 
 #define CKPT_NAME "sweep-checkpoint.bin"
 #define CKPT_MAGIC "onbckpt1"
@@ -162,38 +164,61 @@ static void mpi_usage(void)
 	       "'onbstudy-mpi sweep --help' lists the sweep's options after these.\n", PLAN_CHUNK);
 }
 
-/* Take the MPI options out of argv (the rest goes to plan_parse). */
+static int mpi_option(int v, const char *a, mpi_opts *o)
+{
+	if (v == 'r') {
+		o->resume = a;
+		return 0;
+	}
+	if (v == 'c') {
+		if (parse_double("--checkpoint-every", a, &o->ckpt_every))
+			return -1;
+		if (o->ckpt_every < 0) {
+			study_error("--checkpoint-every: must be >= 0");
+			return -1;
+		}
+		return 0;
+	}
+	return parse_int("--batch", a, 1, 1L << 30, &o->batch);
+}
+
+/* Take the MPI options (exact names: a prefix may be one of the sweep's)
+   out of argv, the rest to plan_parse, and parse them with the study's
+   getopt_long wrapper. */
 static int mpi_options(int *argc, char **argv, mpi_opts *o)
 {
-	int i, n = 0;
-	memset(o, 0, sizeof *o);
+	static const struct option lo[] = {
+		{ "resume", required_argument, NULL, 'r' }, { "checkpoint-every", required_argument, NULL, 'c' },
+		{ "batch", required_argument, NULL, 'b' }, { NULL, 0, NULL, 0 }
+	};
+	char **mine = malloc(((size_t)*argc + 1) * sizeof *mine);
+	int i, n = 0, m = 0, v, rc = 0;
+	cli_args c;
+	if (!mine) {
+		study_error("out of memory");
+		return -1;
+	}
 	for (i = 0; i < *argc; i++) {
-		const char *a = argv[i], *eq = strchr(a, '=');
-		const size_t len = eq ? (size_t)(eq - a) : strlen(a);
-		const char *v = eq ? eq + 1 : i + 1 < *argc ? argv[i + 1] : NULL;
-		int which = len == 8 && !strncmp(a, "--resume", 8) ? 1 : len == 18 && !strncmp(a, "--checkpoint-every", 18) ? 2 :
-		            len == 7 && !strncmp(a, "--batch", 7) ? 3 : 0;
-		if (!which) {
+		const int ar = cli_option_arity(lo, argv[i], 1);
+		if (ar < 0) {
 			argv[n++] = argv[i];
 			continue;
 		}
-		if (!v) {
-			study_error("%.*s needs a value", (int)len, a);
-			return -1;
-		}
-		if (!eq)
-			i++;
-		if (which == 1)
-			o->resume = v;
-		else if (which == 2 && (parse_double("--checkpoint-every", v, &o->ckpt_every) || o->ckpt_every < 0)) {
-			if (o->ckpt_every < 0)
-				study_error("--checkpoint-every: must be >= 0");
-			return -1;
-		} else if (which == 3 && parse_int("--batch", v, 1, 1L << 30, &o->batch))
-			return -1;
+		mine[m++] = argv[i];
+		if (ar == 1 && i + 1 < *argc)
+			mine[m++] = argv[++i];
 	}
 	*argc = n;
-	return 0;
+	if (cli_begin(&c, "sweep", m, mine) != 0) {
+		free(mine);
+		return -1;
+	}
+	memset(o, 0, sizeof *o);
+	while (rc == 0 && (v = cli_next(&c, lo)) != -1)
+		rc = v == CLI_ERROR || mpi_option(v, c.arg, o) != 0 ? -1 : 0;
+	cli_end(&c);
+	free(mine);
+	return rc;
 }
 
 /* Parse and build the plan on every rank; only rank 0 speaks.  0, or the
@@ -258,22 +283,14 @@ static void batch_cells(const run_t *r, uint64_t g0, uint64_t g1, uint64_t *lo, 
 				*grid = 1;
 }
 
-static size_t grid_n(const sweep_state *s) { return (size_t)s->cfg.grid_rows * (size_t)s->cfg.grid_cols; }
-
-/* Sizes of the grid arrays of a state: err, bits, b1 (doubles), done (bytes). */
-static size_t grid_bytes(const sweep_state *s)
-{
-	const size_t g = grid_n(s) * 2 * (size_t)s->cfg.nk;
-	return g * sizeof(double) * 5 + 2 * grid_n(s);
-}
-
-/* The batch's delta (state st after running only batch b) into *buf. */
+/* The batch's delta (state st after running only batch b) into *buf:
+   a header, then the state's slice (state.c packs it). */
 static size_t pack(const run_t *r, const sweep_state *st, int64_t b, unsigned char **buf, size_t *cap)
 {
 	delta_hdr h;
 	uint64_t g0, g1;
 	int grid;
-	size_t n, g = grid_n(st) * 2 * (size_t)st->cfg.nk;
+	size_t n;
 	memset(&h, 0, sizeof h);
 	h.batch = b;
 	if (b >= 0) {
@@ -282,7 +299,7 @@ static size_t pack(const run_t *r, const sweep_state *st, int64_t b, unsigned ch
 		h.grid = grid;
 		h.cfg = st->cfg;
 	}
-	n = sizeof h + (size_t)(h.hi - h.lo) * sizeof(cell_t) + (h.grid ? grid_bytes(st) : 0);
+	n = sizeof h + sweep_slice_bytes(st, (size_t)h.lo, (size_t)h.hi, h.grid != 0);
 	if (n > *cap) {
 		unsigned char *t = realloc(*buf, n);
 		if (!t)
@@ -291,14 +308,7 @@ static size_t pack(const run_t *r, const sweep_state *st, int64_t b, unsigned ch
 		*cap = n;
 	}
 	memcpy(*buf, &h, sizeof h);
-	memcpy(*buf + sizeof h, st->cells + h.lo, (size_t)(h.hi - h.lo) * sizeof(cell_t));
-	if (h.grid) {
-		unsigned char *q = *buf + sizeof h + (size_t)(h.hi - h.lo) * sizeof(cell_t);
-		memcpy(q, st->g_err, g * sizeof(double)); q += g * sizeof(double);
-		memcpy(q, st->g_bits, g * sizeof(double)); q += g * sizeof(double);
-		memcpy(q, st->g_b1, 3 * g * sizeof(double)); q += 3 * g * sizeof(double);
-		memcpy(q, st->g_done, 2 * grid_n(st));
-	}
+	sweep_slice_pack(st, (size_t)h.lo, (size_t)h.hi, h.grid != 0, *buf + sizeof h);
 	return n;
 }
 
@@ -307,38 +317,13 @@ static size_t pack(const run_t *r, const sweep_state *st, int64_t b, unsigned ch
 static int64_t unpack_add(run_t *r, const unsigned char *buf, size_t n)
 {
 	sweep_state *a = &r->acc;
-	const size_t G = grid_n(a), nk = (size_t)a->cfg.nk, ncell = 2 * NDIST * nk;
-	const double *err, *bits, *b1;
-	const unsigned char *gd;
 	delta_hdr h;
-	size_t i, k, p;
 	if (n < sizeof h)
 		return -1;
 	memcpy(&h, buf, sizeof h);
-	if (h.batch < 0 || (uint64_t)h.batch >= r->nbatches || h.lo > h.hi || h.hi > ncell ||
-	    n != sizeof h + (size_t)(h.hi - h.lo) * sizeof(cell_t) + (h.grid ? grid_bytes(a) : 0))
+	if (h.batch < 0 || (uint64_t)h.batch >= r->nbatches ||
+	    sweep_slice_merge(a, (size_t)h.lo, (size_t)h.hi, h.grid != 0, buf + sizeof h, n - sizeof h) != 0)
 		return -1;
-	for (i = 0; i < h.hi - h.lo; i++) {
-		cell_t c;
-		memcpy(&c, buf + sizeof h + i * sizeof c, sizeof c);
-		cell_merge(&a->cells[h.lo + i], &c);
-	}
-	if (h.grid) {
-		const size_t g = G * 2 * nk;
-		err = (const double *)(const void *)(buf + sizeof h + (size_t)(h.hi - h.lo) * sizeof(cell_t));
-		bits = err + g; b1 = bits + g; gd = (const unsigned char *)(b1 + 3 * g);
-		for (p = 0; p < 2; p++)
-			for (i = 0; i < G; i++)
-				if (gd[p * G + i]) {
-					a->g_done[p * G + i] = 1;
-					for (k = 0; k < nk; k++) {
-						const size_t j = (p * nk + k) * G + i;
-						a->g_err[j] = err[j];
-						a->g_bits[j] = bits[j];
-						memcpy(&a->g_b1[3 * j], &b1[3 * j], 3 * sizeof(double));
-					}
-				}
-	}
 	sweep_cfg_add_counters(&a->cfg, &h.cfg);
 	r->evals_done += h.cfg.evals;
 	r->done[h.batch] = 1;
@@ -346,21 +331,12 @@ static int64_t unpack_add(run_t *r, const unsigned char *buf, size_t n)
 	return h.batch;
 }
 
-/* Empty the cells and grid a batch touched (before the next batch). */
-static void reset_delta(sweep_state *st)
-{
-	size_t i;
-	for (i = 0; i < 2 * NDIST * (size_t)st->cfg.nk; i++)
-		cell_init(&st->cells[i]);
-	memset(st->g_done, 0, 2 * grid_n(st));
-}
-
 /* Run batch b into st (emptied first).  ENGINE_* code. */
 static int run_batch(run_t *r, sweep_state *st, int64_t b)
 {
 	uint64_t g0, g1;
 	int rc;
-	reset_delta(st);
+	sweep_clear(st);
 	st->cfg = r->pl.cfg; /* counters at zero */
 	batch_range(r, (uint64_t)b, &g0, &g1);
 	rc = engine_run(r->e, st, g0, g1, NULL);

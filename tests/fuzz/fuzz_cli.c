@@ -27,7 +27,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "study.h"
+#include "cli/cli.h"
+#include "cli/list.h"
+#include "sweep/sweep.h"
+#include "scene/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

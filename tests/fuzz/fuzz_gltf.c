@@ -1,5 +1,5 @@
 /*
- * fuzz_gltf.c - libFuzzer harness for the glTF 2.0 reader (mesh_gltf.c,
+ * fuzz_gltf.c - libFuzzer harness for the glTF 2.0 reader (src/mesh/gltf.c,
  * through meshio's content detection).
  *
  * The bytes are read as given and, so that most inputs reach the glTF
@@ -15,7 +15,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "meshio.h"
+#include "mesh/meshio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -14,7 +14,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "meshio.h"
+#include "mesh/meshio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -1,0 +1,38 @@
+/*
+ * bench/bench_calls.h - the per-call cost loops of the static inline methods
+ * (bench_calls.c, generated from ONB_METHOD_LIST).
+ */
+#ifndef ONB_BENCH_CALLS_H
+#define ONB_BENCH_CALLS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "onb.h"
+
+/* ---- the inline call loops (macro-generated in bench_calls.c) -------- */
+typedef struct { onb_vec3  b1, b2; } bench_pair;
+typedef struct { onb_vec3f b1, b2; } bench_pairf;
+typedef struct {
+	const char *name;
+	/* Throughput: out[i] = method(in[i]) for i < n, independent calls to
+	   the static inline function, as a shading loop over structs makes. */
+	void   (*tp) (size_t n, const onb_vec3  *in, bench_pair  *out);
+	void   (*tpf)(size_t n, const onb_vec3f *in, bench_pairf *out);
+	/* Latency: a chain of n calls, each input in[i] plus t, where
+	   t = (b1.x + b2.x) * 0 of the previous call: an exact zero the
+	   compiler cannot fold, so each call waits for the last.  Returns the
+	   sum of the six outputs of every call. */
+	double (*lat) (size_t n, const onb_vec3  *in);
+	double (*latf)(size_t n, const onb_vec3f *in);
+} bench_call;
+
+/* The entry of registry method `name`, or NULL.  The pseudo-method
+   "chain" returns b1 = b2 = n: its latency is the cost of the chain alone. */
+const bench_call *bench_call_find(const char *name);
+/* The instruction set the call loops were compiled for ("inline-sse2"...). */
+const char *bench_calls_isa(void);
+double bench_pair_checksum (size_t n, const bench_pair  *p);
+double bench_pair_checksumf(size_t n, const bench_pairf *p);
+
+
+#endif

@@ -1,0 +1,244 @@
+/*
+ * eval.c - `onbstudy eval x y z`: one input, every method, every metric.
+ * The microscope that worst.csv's hex floats point to.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <ctype.h>
+#include "cli/eval.h"
+#include "cli/cli.h"
+#include "methods/kernels.h"
+#include "reference/reference.h"
+#include "inputs/inputs.h"
+
+static void usage(FILE *f)
+{
+	fprintf(f, "usage: onbstudy eval [--precision float|double|both] [--methods a,b] [--fma]\n"
+	           "                     [--ref-bits B] [--local x,y,z] X Y Z\n"
+	           "Every method's outputs (hex and decimal) and every metric for one input.\n"
+	           "X Y Z may be decimal or C99 hex floats (as worst.csv prints them); each is\n"
+	           "rounded to the precision, and the rounding is reported.\n");
+}
+
+static void show3(const char *label, const double *v)
+{
+	printf("  %-6s (%-24a %-24a %-24a)\n         (%-24.17g %-24.17g %-24.17g)\n", label, v[0], v[1], v[2], v[0], v[1], v[2]);
+}
+
+typedef struct {
+	const char *methods;
+	int prec_on[2], fma, npos;
+	long bits;
+	double in[3], loc[3];
+} eval_opts;
+
+/* A negative number ("-0.5", "-0x1p-3", "-inf") is an operand, not an option. */
+static int is_negative_number(const char *a)
+{
+	return a[0] == '-' && (isdigit((unsigned char)a[1]) || a[1] == '.' || a[1] == 'i' || a[1] == 'I' ||
+	                       a[1] == 'n' || a[1] == 'N');
+}
+
+static int eval_option(int v, const char *a, eval_opts *o)
+{
+	char tail;
+	switch (v) {
+	case 'm': o->methods = a; return 0;
+	case 'b': return parse_int("--ref-bits", a, 64, 4096, &o->bits);
+	case 'f': o->fma = 1; return 0;
+	case 'p': return cli_precision("--precision", a, o->prec_on);
+	case 'l':
+		if (sscanf(a, "%lf,%lf,%lf%c", &o->loc[0], &o->loc[1], &o->loc[2], &tail) != 3 || !isfinite(o->loc[0]) ||
+		    !isfinite(o->loc[1]) || !isfinite(o->loc[2])) {
+			study_error("--local: expected x,y,z (finite numbers), not '%s'", a);
+			return -1;
+		}
+		return 0;
+	}
+	return -1;
+}
+
+static int eval_operand(const char *a, eval_opts *o)
+{
+	if (o->npos >= 3) {
+		study_error("eval: expected exactly three numbers X Y Z");
+		return -1;
+	}
+	if (parse_double("eval", a, &o->in[o->npos]))
+		return -1;
+	o->npos++;
+	return 0;
+}
+
+/* Options and the operands X Y Z.  0; 1 after --help; ONB_EXIT_USAGE. */
+static int eval_parse(int argc, char **argv, eval_opts *o)
+{
+	static const struct option lo[] = {
+		{ "precision", required_argument, NULL, 'p' }, { "methods", required_argument, NULL, 'm' },
+		{ "ref-bits", required_argument, NULL, 'b' }, { "local", required_argument, NULL, 'l' },
+		{ "fma", no_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
+	char **opts = malloc(((size_t)argc + 1) * sizeof *opts), **rest;
+	int i, n = 0, v, rc = 0, dashdash = 0;
+	cli_args c;
+	if (!opts) { study_error("out of memory"); return 1; }
+	/* Operands (negative numbers too) are taken out in order before
+	   getopt_long sees the options; an option's value stays with it. */
+	for (i = 0; i < argc && rc == 0; i++) {
+		const char *a = argv[i];
+		if (dashdash || !(a[0] == '-' && a[1]) || is_negative_number(a)) {
+			rc = eval_operand(a, o) ? ONB_EXIT_USAGE : 0;
+		} else if (!strcmp(a, "--")) {
+			dashdash = 1;
+		} else {
+			opts[n++] = argv[i];
+			if (cli_option_arity(lo, a, 0) == 1 && i + 1 < argc)
+				opts[n++] = argv[++i];
+		}
+	}
+	if (rc == 0 && cli_begin(&c, "eval", n, opts) == 0) {
+		while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
+			if (v == CLI_HELP) { usage(stdout); rc = 1; }
+			else if (v == CLI_ERROR || eval_option(v, c.arg, o) != 0) rc = ONB_EXIT_USAGE;
+		}
+		rest = cli_rest(&c, &n);
+		for (i = 0; i < n && rc == 0; i++)
+			rc = eval_operand(rest[i], o) ? ONB_EXIT_USAGE : 0;
+		cli_end(&c);
+	}
+	free(opts);
+	if (rc == 0 && o->npos != 3) {
+		study_error("eval: expected three numbers X Y Z, got %d (try 'onbstudy eval --help')", o->npos);
+		rc = ONB_EXIT_USAGE;
+	}
+	return rc;
+}
+
+/* What branch b (branch.inc's id) of kernel k means, in words. */
+static const char *branch_name(const study_kernel *k, int b, char *buf, size_t n)
+{
+	switch (k->family) {
+	case FAM_NAIVE:
+		return b ? "n.x > 0.9: b1 from the y-axis" : "n.x <= 0.9: b1 from the x-axis";
+	case FAM_HUGHES_MOELLER:
+		return b ? "|n.x| > |n.z|: b2 = (-n.y, n.x, 0)" : "|n.x| <= |n.z|: b2 = (0, -n.z, n.y)";
+	case FAM_FRISVAD:
+		snprintf(buf, n, b ? "fallback: n.z < t = %.9g" : "formula: n.z >= t = %.9g", k->m ? k->m->threshold : NAN);
+		return buf;
+	case FAM_DUFF:
+		return b ? "n.z < 0: the lower branch" : "n.z >= 0 (-0 too): the upper branch";
+	case FAM_DUFF_BRANCHLESS:
+		return b ? "signbit(n.z) set: sign = -1" : "signbit(n.z) clear: sign = +1";
+	case FAM_STARK: case FAM_STARK_FIXED:
+		return b == 0 ? "xm: p = n x (x-axis)" : b == 1 ? "ym: p = n x (y-axis)" : "zm: p = n x (z-axis)";
+	case FAM_PBRT_V3:
+		return b ? "|n.x| > |n.y|: b1 = (-n.z, 0, n.x) / len" : "|n.x| <= |n.y|: b1 = (0, n.z, -n.y) / len";
+	case FAM_RTOW:
+		return b ? "|unit(w).x| > 0.9: a = y-axis" : "|unit(w).x| <= 0.9: a = x-axis";
+	default:
+		return "no branch";
+	}
+}
+
+/* Warnings on an input the methods do not expect (they assume a unit n). */
+static void input_warnings(const char *pn, const double n[3])
+{
+	const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+	const double tol = pn[0] == 'f' ? 1e-6 : 1e-12;
+	if (!isfinite(n[0]) || !isfinite(n[1]) || !isfinite(n[2]))
+		printf("   WARNING: the input is not finite: every method's output is garbage (onb_basis_checked refuses it)\n");
+	else if (l2 == 0.0)
+		printf("   WARNING: the input is the zero vector, which has no direction: every method's output is garbage "
+		       "(onb_basis_checked refuses it)\n");
+	else if (!(fabs(l2 - 1.0) <= tol))
+		printf("   WARNING: the input is not unit (|n| = %.9g): every method but rtow assumes |n| = 1 "
+		       "(onb_basis_checked normalizes it)\n", sqrt(l2));
+}
+
+int cmd_eval(int argc, char **argv)
+{
+	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
+	const char *methods;
+	int prec_on[2], fma, i, p, k, nk;
+	long bits;
+	double in[3], loc[3];
+	study_kernel ks[64];
+	if ((i = eval_parse(argc, argv, &o)) != 0)
+		return i == 1 ? 0 : i;
+	methods = o.methods; fma = o.fma; bits = o.bits;
+	prec_on[0] = o.prec_on[0]; prec_on[1] = o.prec_on[1];
+	memcpy(in, o.in, sizeof in);
+	memcpy(loc, o.loc, sizeof loc);
+	if (fma && !fma_available()) { study_error("--fma: this CPU (or build) has no FMA"); return ONB_EXIT_USAGE; }
+	nk = kernels_select(methods, fma, ks, 64);
+	if (nk < 0)
+		return ONB_EXIT_USAGE;
+	{
+		ref_ctx *rc = ref_new(bits), *rc2 = ref_new(bits + 64);
+		if (!rc || !rc2) { study_error("out of memory"); return 1; }
+		for (p = 0; p < 2; p++) {
+			double n[3], lv[3];
+			const char *pn = p == PREC_FLOAT ? "float" : "double";
+			if (!prec_on[p])
+				continue;
+			for (i = 0; i < 3; i++) {
+				n[i] = fmt_round(in[i], p);
+				lv[i] = fmt_round(loc[i], p);
+			}
+			printf("== %s: n = (%a, %a, %a)\n", pn, n[0], n[1], n[2]);
+			for (i = 0; i < 3; i++)
+				if (n[i] != in[i] && !(isnan(n[i]) && isnan(in[i])))
+					printf("   note: component %d rounded to %s: %.17g -> %a\n", i, pn, in[i], n[i]);
+			input_warnings(pn, n);
+			printf("   local direction for the direction error: (%a, %a, %a)\n", lv[0], lv[1], lv[2]);
+			for (k = 0; k < nk; k++) {
+				sample_metrics m, m2;
+				char why[256];
+				if (!kernel_runs(&ks[k], p)) {
+					printf("\n%s (%s): float only (no double version)\n", ks[k].name, pn);
+					continue;
+				}
+				ref_eval(rc, &ks[k], p, n, lv, 0, &m);
+				ref_eval(rc2, &ks[k], p, n, lv, 0, &m2);
+				printf("\n%s (%s), branch %d (%s)\n", ks[k].name, pn, m.branch,
+				       branch_name(&ks[k], m.branch, why, sizeof why));
+				if (ks[k].m) {
+					show3("b1", m.out);
+					show3("b2", m.out + 3);
+					show3("ref b1", m.ref);
+					show3("ref b2", m.ref + 3);
+				} else {
+					show3("w", m.out);
+					show3("ref w", m.ref);
+				}
+				printf("  |n|-1 of the input: %.6g\n", m.in_norm);
+				if (m.nonfinite) {
+					printf("  NON-FINITE output: no other metric\n");
+					continue;
+				}
+				if (ks[k].m) {
+					printf("  defects: |b1|-1 %.6g  |b2|-1 %.6g  b1.n %.6g  b2.n %.6g  b1.b2 %.6g  (max %.6g)\n",
+					       m.d[0], m.d[1], m.d[2], m.d[3], m.d[4], m.defect);
+					printf("  det(b1,b2,n) %.17g: %s for handedness %+d\n", m.det,
+					       m.wrong_hand ? "WRONG" : "right", ks[k].m->handedness);
+				}
+				printf("  forward: max %.6g ulp (|exact| >= eps), max %.6g eps absolute, bits mean %.4g max %.4g\n",
+				       m.ulp_max, m.abs_eps_max, m.nbits ? m.bits_sum / m.nbits : 0.0, m.bits_max);
+				printf("  direction: w = (%a, %a, %a); | |w|-1 | %.6g, | w.n - z | %.6g\n",
+				       m.w[0], m.w[1], m.w[2], m.dir_norm, m.dir_cos);
+				printf("  floor (the exact formula rounded once): defect %.6g, | |w|-1 | %.6g, | w.n - z | %.6g\n",
+				       m.floor, m.floor_dir_norm, m.floor_dir_cos);
+				if (ks[k].m && m.floor > 0.0)
+					printf("  defect / floor: %.6g\n", m.defect / m.floor);
+				if (!ref_agree(&m, &m2, why, sizeof why))
+					printf("  WARNING: the reference at %ld bits disagrees with %ld bits: %s\n", bits, bits + 64, why);
+			}
+			printf("\n");
+		}
+		ref_free(rc);
+		ref_free(rc2);
+	}
+	return 0;
+}

@@ -1,0 +1,109 @@
+/*
+ * kernels.c - selecting the kernels a study runs (see kernels.h).
+ */
+#include <stdio.h>
+#include <string.h>
+#include "methods/kernels.h"
+#include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
+
+#define KERNELS_BRANCH_NAME kernels_branch
+#include "methods/branch.inc"
+
+static onb_vec3  plain_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
+static onb_vec3f plain_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
+
+/* The reference's family of a registry method, or -1 if it has none. */
+static int kernels_family(const onb_method *m)
+{
+	static const struct { const char *name; int id; } fam[] = {
+		{ "naive", FAM_NAIVE }, { "hughes_moeller", FAM_HUGHES_MOELLER }, { "frisvad", FAM_FRISVAD },
+		{ "duff", FAM_DUFF }, { "duff_branchless", FAM_DUFF_BRANCHLESS }, { "stark", FAM_STARK },
+		{ "stark_fixed", FAM_STARK_FIXED },
+		{ "pbrt_v3", FAM_PBRT_V3 }, { "rtow", FAM_RTOW }, { "tangent_cross_z", FAM_TANGENT_CROSS_Z },
+	};
+	size_t i;
+	if (!m)
+		return FAM_ROTATE;
+	for (i = 0; i < sizeof fam / sizeof fam[0]; i++)
+		if (strcmp(m->family, fam[i].name) == 0)
+			return fam[i].id;
+	return -1;
+}
+
+static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int *k)
+{
+	study_kernel *s;
+	const onb_method *m = onb_find(name);
+	if (!m && strcmp(name, "frisvad_rotate") != 0) {
+		char all[2048];
+		size_t i, n, len = 0;
+		const onb_method *ms = onb_methods(&n);
+		all[0] = '\0';
+		for (i = 0; i < n && len + 64 < sizeof all; i++)
+			len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", ms[i].name);
+		study_error("unknown method '%s' (valid: %sfrisvad_rotate, or all; 'onbstudy list' describes them)", name, all);
+		return -1;
+	}
+	if (*k >= cap) {
+		study_error("too many methods (at most %d)", cap);
+		return -1;
+	}
+	s = &out[(*k)++];
+	memset(s, 0, sizeof *s);
+	snprintf(s->name, sizeof s->name, "%s%s", name, fma ? "+fma" : "");
+	s->m = m;
+	s->family = kernels_family(m);
+	if (s->family < 0) {
+		study_error("method '%s': no MPFR reference for its family '%s' (src/reference/reference.c)", name, m->family);
+		return -1;
+	}
+	s->fma = fma;
+	if (fma) {
+		if (fma_lookup(name, &s->basis, &s->basisf, &s->rot, &s->rotf) != 0) {
+			study_error("no FMA copy of '%s'", name);
+			return -1;
+		}
+		s->branch = fma_branch;
+	} else {
+		if (m) {
+			s->basis = m->basis;
+			s->basisf = m->basisf;
+		} else {
+			s->rot = plain_rot;
+			s->rotf = plain_rotf;
+		}
+		s->branch = kernels_branch;
+	}
+	return 0;
+}
+
+int kernels_select(const char *names, int fma, study_kernel *out, int cap)
+{
+	int k = 0, pass;
+	for (pass = 0; pass < (fma ? 2 : 1); pass++) {
+		if (!names || !strcmp(names, "all")) {
+			size_t i, n;
+			const onb_method *ms = onb_methods(&n);
+			for (i = 0; i < n; i++)
+				if (add_kernel(ms[i].name, pass, out, cap, &k) != 0)
+					return -1;
+			if (add_kernel("frisvad_rotate", pass, out, cap, &k) != 0)
+				return -1;
+		} else {
+			char buf[2048], *tok, *save = NULL;
+			if (strlen(names) >= sizeof buf) {
+				study_error("--methods list too long");
+				return -1;
+			}
+			strcpy(buf, names);
+			for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save))
+				if (add_kernel(tok, pass, out, cap, &k) != 0)
+					return -1;
+			if (k == 0) {
+				study_error("--methods: empty list");
+				return -1;
+			}
+		}
+	}
+	return k;
+}

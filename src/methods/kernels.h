@@ -1,0 +1,75 @@
+/*
+ * kernels.h - what the study evaluates: every registry method as built
+ * with the library's flags, optionally a second copy compiled with FMA
+ * contraction (--fma), and Frisvad's Equation 3 (frisvad_rotate), which
+ * rotates a direction instead of returning a basis.
+ *
+ * src/methods/ holds the study's side of each method: this kernel table
+ * (kernels.c), the FMA copy (fma_kernels.c) and the branch rule both
+ * share (branch.inc), which the references follow.  Every command that
+ * evaluates a method (sweep, eval, threshold, bench --reference) goes
+ * through it; it imports only libonb (and cli.h for its messages).
+ */
+#ifndef ONB_KERNELS_H
+#define ONB_KERNELS_H
+
+#include "onb.h"
+
+enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
+
+/* The formula families the MPFR reference knows (onb_method.family),
+   resolved once per kernel so that the sweep loop switches on an int. */
+enum { FAM_ROTATE = 0, FAM_NAIVE, FAM_HUGHES_MOELLER, FAM_FRISVAD, FAM_DUFF, FAM_DUFF_BRANCHLESS,
+       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z, FAM_STARK_FIXED };
+
+struct study_kernel;
+
+typedef onb_vec3  (*rotate_fn) (onb_vec3  n, double x, double y, double z);
+typedef onb_vec3f (*rotatef_fn)(onb_vec3f n, float x, float y, float z);
+
+typedef struct study_kernel {
+	char name[64];          /* registry name, "+fma" appended for FMA copies */
+	const onb_method *m;    /* registry entry; NULL for frisvad_rotate       */
+	int family;             /* FAM_*, from m->family (FAM_ROTATE without m)   */
+	int fma;                /* compiled with -mfma -ffp-contract=fast        */
+	onb_basis_fn  basis;    /* NULL for frisvad_rotate                       */
+	onb_basisf_fn basisf;
+	rotate_fn  rot;         /* frisvad_rotate only                           */
+	rotatef_fn rotf;
+	/* The branch the kernel takes on n (see reference.c for the ids).  For
+	   the FMA copies it is evaluated in the FMA translation unit, since
+	   rtow's branch depends on rounded intermediates. */
+	int (*branch)(const struct study_kernel *k, int prec, const double n[3]);
+} study_kernel;
+
+/* Fill out[] (capacity cap) with the kernels named in the comma-separated
+   list `names` (NULL or "all": every registry method and frisvad_rotate),
+   plus FMA copies when fma != 0.  Returns the count, or -1 after a
+   message naming the unknown method. */
+int kernels_select(const char *names, int fma, study_kernel *out, int cap);
+
+/* 0 when the kernel has no code in that precision: the float-only
+   registry methods (ONB_FLOAT_ONLY, NULL basis) in double.  Every loop
+   over kernels and precisions skips those pairs. */
+static inline int kernel_runs(const study_kernel *k, int prec)
+{
+	return prec == PREC_FLOAT || !k->m || k->basis != NULL;
+}
+/* How many of the nk kernels run in precision prec. */
+static inline int kernels_running(const study_kernel *k, int nk, int prec)
+{
+	int i, n = 0;
+	for (i = 0; i < nk; i++)
+		n += kernel_runs(&k[i], prec);
+	return n;
+}
+
+/* Branch ids, plain arithmetic. */
+int kernels_branch(const study_kernel *k, int prec, const double n[3]);
+
+/* fma_kernels.c: 1 when the CPU can run the FMA copies. */
+int fma_available(void);
+int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rotate_fn *rot, rotatef_fn *rotf);
+int fma_branch(const study_kernel *k, int prec, const double n[3]);
+
+#endif

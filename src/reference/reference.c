@@ -1,0 +1,822 @@
+/*
+ * reference.c - the MPFR reference of every method family, and the
+ * per-input metrics (see reference.h).
+ *
+ * Each family's formula is written out below exactly as its kernel in
+ * include/onb.h computes it, with every operation exact or rounded at the
+ * context's precision (128 bits by default: 2.4 times double's 53).  The
+ * branch is not recomputed in MPFR: it is the branch the kernel took
+ * (branch.inc), so a kernel is compared with its own formula on its own
+ * side of every threshold.  The normalization variants (_invsqrt, _rsqrt,
+ * _rsqrt_nr) are compared with the exactly normalized formula, so their
+ * forward error includes the approximation; _nonorm is compared with the
+ * unnormalized formula, which it computes faithfully.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <stdio.h>
+#include <stdint.h>
+#include "reference/reference.h"
+
+#define NT 6
+
+struct ref_ctx {
+	mpfr_prec_t prec;
+	mpfr_t n[3], nn[3], b1[3], b2[3], r1[3], r2[3], w[3], u[3], t[NT];
+	mpfr_t p0, p1;   /* products for dot and cross */
+	mpfr_t q[4];     /* exact products for dot_exact */
+	mpfr_t inv_n;    /* 1/|n| of the current input */
+	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
+	double last_norm;
+	int have_last;
+	mpfr_t mid;      /* the floor's rounding check (floor_round)                */
+	ref_ctx *hi;     /* prec + 128 bits, made on the first hard rounding       */
+};
+
+
+static void vinit(mpfr_t *v, int k, mpfr_prec_t p)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		mpfr_init2(v[i], p);
+}
+
+static void vclear(mpfr_t *v, int k)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		mpfr_clear(v[i]);
+}
+
+ref_ctx *ref_new(mpfr_prec_t prec)
+{
+	ref_ctx *c = malloc(sizeof *c);
+	if (!c)
+		return NULL;
+	c->prec = prec;
+	c->have_last = 0;
+	vinit(c->n, 3, prec); vinit(c->nn, 3, prec); vinit(c->b1, 3, prec);
+	vinit(c->b2, 3, prec); vinit(c->r1, 3, prec); vinit(c->r2, 3, prec);
+	vinit(c->w, 3, prec); vinit(c->u, 3, prec); vinit(c->t, NT, prec);
+	mpfr_init2(c->p0, prec); mpfr_init2(c->p1, prec);
+	vinit(c->q, 4, prec < 106 ? 106 : prec);
+	mpfr_init2(c->inv_n, prec);
+	mpfr_init2(c->mid, prec);
+	c->hi = NULL;
+	return c;
+}
+
+void ref_free(ref_ctx *c)
+{
+	if (!c)
+		return;
+	vclear(c->n, 3); vclear(c->nn, 3); vclear(c->b1, 3); vclear(c->b2, 3);
+	vclear(c->r1, 3); vclear(c->r2, 3); vclear(c->w, 3); vclear(c->u, 3);
+	vclear(c->t, NT);
+	mpfr_clear(c->p0); mpfr_clear(c->p1);
+	vclear(c->q, 4);
+	mpfr_clear(c->inv_n);
+	mpfr_clear(c->mid);
+	ref_free(c->hi);
+	free(c);
+}
+
+mpfr_prec_t ref_prec(const ref_ctx *c) { return c->prec; }
+
+#define R MPFR_RNDN
+
+/* Products go through p0 and p1, at the context's precision: a product
+   of two doubles (every defect, every input) is exact there, and the
+   reference's own intermediate products round at 2^-prec relative, far
+   below what any metric reports (ref_agree checks it on every run). */
+
+/* out = a.b (out may be a temporary, never a component of a or b) */
+static void dot(ref_ctx *c, mpfr_t out, mpfr_t *a, mpfr_t *b)
+{
+	mpfr_mul(c->p0, a[0], b[0], R);
+	mpfr_mul(c->p1, a[1], b[1], R);
+	mpfr_add(out, c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[2], b[2], R);
+	mpfr_add(out, out, c->p0, R);
+}
+
+/* Sums of exact products, for a, b and z holding doubles (the rounded
+   outputs and the input; da, db are the same values as C doubles).  Each
+   product is exact at the context's precision (106 bits suffice).  The
+   fast path adds them at that precision, with an error below
+   2^-(prec-2) * sum|term|; when the result is smaller than 2^-60 of that
+   sum (heavy cancellation: b2.n of a near-orthogonal basis reaches
+   2^-125), mpfr_sum rounds the exact sum once instead.  Either way the
+   result has a relative error below 2^-(prec-63), 2^-64 at 127 bits.
+   The bound sum|term| is taken in double from da and db, which costs
+   nothing.  (A plain dot at 127 bits failed the two-precision check.) */
+static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
+{
+	mpfr_ptr q[4];
+	int i, e;
+	mpfr_add(out, c->q[0], c->q[1], R);
+	for (i = 2; i < k; i++)
+		mpfr_add(out, out, c->q[i], R);
+	if (bound == 0.0 || !isfinite(bound) || mpfr_nan_p(out) || mpfr_inf_p(out))
+		return; /* exact zero terms, or NaN/Inf: nothing to refine */
+	(void)frexp(bound, &e);
+	if (!mpfr_zero_p(out) && mpfr_get_exp(out) > e - 59)
+		return;
+	for (i = 0; i < k; i++)
+		q[i] = c->q[i];
+	mpfr_sum(out, q, (unsigned long)k, R);
+}
+
+/* out = a.b - z */
+static void dot_exact(ref_ctx *c, mpfr_t out, mpfr_t *a, mpfr_t *b, const double *da, const double *db, double z)
+{
+	mpfr_mul(c->q[0], a[0], b[0], R);
+	mpfr_mul(c->q[1], a[1], b[1], R);
+	mpfr_mul(c->q[2], a[2], b[2], R);
+	if (z != 0.0)
+		mpfr_set_d(c->q[3], -z, R);
+	exact_sum(c, out, z != 0.0 ? 4 : 3,
+	          fabs(da[0] * db[0]) + fabs(da[1] * db[1]) + fabs(da[2] * db[2]) + fabs(z));
+}
+
+/* |v| - 1 for v holding doubles, accurate however close |v| is to 1:
+   e = vx^2 + vy^2 + vz^2 - 1 by exact_sum (correct to 2^-64 relative),
+   then |v| - 1 = e/(sqrt(1 + e) + 1), whose denominator in [1, 2.42] for
+   |v| <= 1.2 needs no more than double: the result's relative error is
+   below 2^-50, far under the 6 digits reported.  (sqrt(s) - 1 at 127
+   bits loses everything below 2^-127 absolute: it failed the
+   two-precision check on inputs with |n| - 1 ~ 1e-30.) */
+static double norm_m1_exact(ref_ctx *c, mpfr_t *v, const double *dv)
+{
+	double e;
+	mpfr_sqr(c->q[0], v[0], R);
+	mpfr_sqr(c->q[1], v[1], R);
+	mpfr_sqr(c->q[2], v[2], R);
+	mpfr_set_si(c->q[3], -1, R);
+	exact_sum(c, c->p0, 4, dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2] + 1.0);
+	e = mpfr_get_d(c->p0, R);
+	return e / (sqrt(1.0 + e) + 1.0);
+}
+
+/* o = a x b (o distinct from a and b) */
+static void cross(ref_ctx *c, mpfr_t *o, mpfr_t *a, mpfr_t *b)
+{
+	mpfr_mul(c->p0, a[1], b[2], R); mpfr_mul(c->p1, a[2], b[1], R); mpfr_sub(o[0], c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[2], b[0], R); mpfr_mul(c->p1, a[0], b[2], R); mpfr_sub(o[1], c->p0, c->p1, R);
+	mpfr_mul(c->p0, a[0], b[1], R); mpfr_mul(c->p1, a[1], b[0], R); mpfr_sub(o[2], c->p0, c->p1, R);
+}
+
+static void set3(mpfr_t *o, double x, double y, double z)
+{
+	mpfr_set_d(o[0], x, R);
+	mpfr_set_d(o[1], y, R);
+	mpfr_set_d(o[2], z, R);
+}
+
+static void copy3(mpfr_t *o, mpfr_t *a)
+{
+	mpfr_set(o[0], a[0], R);
+	mpfr_set(o[1], a[1], R);
+	mpfr_set(o[2], a[2], R);
+}
+
+/* a *= 1/|a| (exactly rounded reciprocal square root) */
+static void normalize(ref_ctx *c, mpfr_t *a)
+{
+	dot(c, c->t[5], a, a);
+	mpfr_rec_sqrt(c->t[5], c->t[5], R);
+	mpfr_mul(a[0], a[0], c->t[5], R);
+	mpfr_mul(a[1], a[1], c->t[5], R);
+	mpfr_mul(a[2], a[2], c->t[5], R);
+}
+
+/* Frisvad's formula (Equations 4-6), shared with duff's upper branch:
+   a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
+static void frisvad_formula(ref_ctx *c, mpfr_t *n, mpfr_t *b1, mpfr_t *b2)
+{
+	mpfr_t *t = c->t;
+	mpfr_add_ui(t[0], n[2], 1, R);
+	mpfr_ui_div(t[0], 1, t[0], R);           /* a */
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_neg(t[1], t[1], R);                 /* b */
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(b1[0], 1, t[2], R);
+	mpfr_set(b1[1], t[1], R);
+	mpfr_neg(b1[2], n[0], R);
+	mpfr_set(b2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(b2[1], 1, t[2], R);
+	mpfr_neg(b2[2], n[1], R);
+}
+
+/* frisvad_rotate, Equation 3: the direction loc of the local frame of n, into r1. */
+static void ref_rotate(ref_ctx *c, const double loc[3])
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
+	int i;
+	mpfr_add_ui(t[3], n[2], 1, R);
+	if (mpfr_zero_p(t[3])) {
+		mpfr_set_d(r1[0], -loc[1], R);
+		mpfr_set_d(r1[1], -loc[0], R);
+		mpfr_set_d(r1[2], -loc[2], R);
+		return;
+	}
+	frisvad_formula(c, n, u, r2);           /* u = b1, r2 = b2 */
+	mpfr_set_d(t[3], loc[0], R);
+	mpfr_set_d(t[4], loc[1], R);
+	mpfr_set_d(t[5], loc[2], R);
+	for (i = 0; i < 3; i++) {
+		mpfr_mul(c->p0, t[3], u[i], R);
+		mpfr_mul(c->p1, t[4], r2[i], R);
+		mpfr_add(r1[i], c->p0, c->p1, R);
+		mpfr_mul(c->p0, t[5], n[i], R);
+		mpfr_add(r1[i], r1[i], c->p0, R);
+	}
+}
+
+/* naive: u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
+static void ref_naive(ref_ctx *c, const onb_method *m, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
+	mpfr_mul(r1[0], n[0], t[0], R);
+	mpfr_mul(r1[1], n[1], t[0], R);
+	mpfr_mul(r1[2], n[2], t[0], R);
+	mpfr_ui_sub(r1[br ? 1 : 0], 1, r1[br ? 1 : 0], R);
+	mpfr_neg(r1[br ? 0 : 1], r1[br ? 0 : 1], R);
+	mpfr_neg(r1[2], r1[2], R);
+	if (m->norm != ONB__NORM_NONE)
+		normalize(c, r1);
+	cross(c, r2, n, r1);
+}
+
+/* Hughes-Moeller: b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
+static void ref_hughes_moeller(ref_ctx *c, const onb_method *m, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2;
+	if (br) {
+		mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
+	} else {
+		mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
+	}
+	if (m->norm != ONB__NORM_NONE)
+		normalize(c, r2);
+	cross(c, r1, r2, n);
+}
+
+/* duff's lower branch: a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
+static void ref_duff_lower(ref_ctx *c)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	mpfr_ui_sub(t[0], 1, n[2], R);
+	mpfr_ui_div(t[0], 1, t[0], R);
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_ui_sub(r1[0], 1, t[2], R);
+	mpfr_neg(r1[1], t[1], R);
+	mpfr_set(r1[2], n[0], R);
+	mpfr_set(r2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_sub_ui(r2[1], t[2], 1, R);
+	mpfr_neg(r2[2], n[1], R);
+}
+
+/* duff_branchless: s = +-1, a = -1/(s + z), b = x y a,
+   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
+static void ref_duff_branchless(ref_ctx *c, int br)
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
+	const int s = br ? -1 : 1;
+	mpfr_add_si(t[0], n[2], s, R);
+	mpfr_si_div(t[0], -1, t[0], R);
+	mpfr_mul(t[1], n[0], n[1], R);
+	mpfr_mul(t[1], t[1], t[0], R);
+	mpfr_sqr(t[2], n[0], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_mul_si(t[2], t[2], s, R);
+	mpfr_add_ui(r1[0], t[2], 1, R);
+	mpfr_mul_si(r1[1], t[1], s, R);
+	mpfr_mul_si(r1[2], n[0], -s, R);
+	mpfr_set(r2[0], t[1], R);
+	mpfr_sqr(t[2], n[1], R);
+	mpfr_mul(t[2], t[2], t[0], R);
+	mpfr_add_si(r2[1], t[2], s, R);
+	mpfr_neg(r2[2], n[1], R);
+}
+
+/* The exact formula of kernel k on n along branch br, into r1, r2 (or the
+   rotated direction of loc into r1 for frisvad_rotate). */
+static void reference(ref_ctx *c, const study_kernel *k, int br, const double loc[3])
+{
+	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u;
+	const onb_method *m = k->m;
+	if (!m) {
+		ref_rotate(c, loc);
+		return;
+	}
+	switch (k->family) {
+	case FAM_NAIVE:
+		ref_naive(c, m, br);
+		break;
+	case FAM_HUGHES_MOELLER:
+		ref_hughes_moeller(c, m, br);
+		break;
+	case FAM_FRISVAD:
+		if (br) {
+			set3(r1, 0.0, -1.0, 0.0);
+			set3(r2, -1.0, 0.0, 0.0);
+		} else {
+			frisvad_formula(c, n, r1, r2);
+		}
+		break;
+	case FAM_DUFF:
+		if (br)
+			ref_duff_lower(c);
+		else
+			frisvad_formula(c, n, r1, r2);
+		break;
+	case FAM_DUFF_BRANCHLESS:
+		ref_duff_branchless(c, br);
+		break;
+	case FAM_STARK:
+	case FAM_STARK_FIXED:
+		/* p = n x (xm, ym, zm), b1 = p/|p|, b2 = n x b1; as published
+		   zm = 1^(xm & ym) = 1, fixed zm = 1^(xm | ym) (e_k) */
+		set3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
+		cross(c, r1, n, u);
+		normalize(c, r1);
+		cross(c, r2, n, r1);
+		break;
+	case FAM_PBRT_V3:
+		if (br) {
+			mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
+		} else {
+			mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
+		}
+		normalize(c, r1);
+		cross(c, r2, n, r1);
+		break;
+	case FAM_RTOW:
+		/* uw = w/|w|; a = e_y if br else e_x; v = unit(uw x a); b1 = uw x v; b2 = v */
+		copy3(c->w, n);
+		normalize(c, c->w);
+		set3(u, br ? 0.0 : 1.0, br ? 1.0 : 0.0, 0.0);
+		cross(c, r2, c->w, u);
+		normalize(c, r2);
+		cross(c, r1, c->w, r2);
+		break;
+	case FAM_TANGENT_CROSS_Z: /* t = (x, y, z+1); b2 = unit(n x t); b1 = n x b2 */
+		mpfr_set(u[0], n[0], R);
+		mpfr_set(u[1], n[1], R);
+		mpfr_add_ui(u[2], n[2], 1, R);
+		cross(c, r2, n, u);
+		normalize(c, r2);
+		cross(c, r1, n, r2);
+		break;
+	default: /* a family with no formula here: NaN, which tests/test_parts.c refuses */
+		set3(r1, NAN, NAN, NAN);
+		set3(r2, NAN, NAN, NAN);
+	}
+}
+
+/* Forward error of component value cv against the exact value e. */
+static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s, double *refd)
+{
+	const int p = prec == PREC_FLOAT ? 24 : 53;
+	const int emin = prec == PREC_FLOAT ? -125 : -1021; /* exponent of the smallest normal */
+	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
+	double diff, rounded, bits;
+	*refd = mpfr_get_d(e, R);
+	if (!mpfr_number_p(e))
+		return;
+	mpfr_sub_d(c->t[4], e, cv, R);
+	diff = fabs(mpfr_get_d(c->t[4], R));
+	if (diff / eps > s->abs_eps_max)
+		s->abs_eps_max = diff / eps;
+	/* Components whose exact value is below eps (zero ones above all) are
+	   measured by the absolute error only: their ulps and bits would
+	   measure the reference's own last bits, not the method.  The ulp is
+	   that of the exact value rounded to the format (the same thing but
+	   at powers of two, where an exact 1 - 1e-40 would otherwise make the
+	   unit depend on the reference's precision), floored at the smallest
+	   normal's. */
+	rounded = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : *refd;
+	if (rounded != 0.0 && fabs(rounded) >= eps) {
+		int E;
+		double ulp;
+		(void)frexp(rounded, &E);
+		ulp = ldexp(1.0, (E < emin ? emin : E) - p);
+		if (diff / ulp > s->ulp_max)
+			s->ulp_max = diff / ulp;
+		{
+			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
+			const double dist = ref_float_distance(cv, rounded, prec);
+			bits = dist < 4.0 ? small[(int)dist] : log2(dist + 1.0);
+		}
+		s->bits_sum += bits;
+		s->nbits++;
+		if (bits > s->bits_max)
+			s->bits_max = bits;
+	}
+}
+
+static int finite6(const double *v, int k)
+{
+	int i;
+	for (i = 0; i < k; i++)
+		if (!isfinite(v[i]))
+			return 0;
+	return 1;
+}
+
+/* The five defects of the basis b (doubles) for the input n held in
+   c->n: |b1|-1, |b2|-1, b1.n, b2.n (against n/|n| when normalize_n),
+   b1.b2. */
+static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int normalize_n, double d[NDEF])
+{
+	mpfr_t *t = c->t;
+	set3(c->b1, b[0], b[1], b[2]);
+	set3(c->b2, b[3], b[4], b[5]);
+	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
+	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
+	/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0);
+	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+	d[DEF_D1N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0);
+	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
+	d[DEF_D2N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+}
+
+/* | |w| - 1 | and | w.n - z | (w.(n/|n|) - z when normalize_n) of the
+   direction w (doubles) for the input n held in c->n. */
+static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const double loc[3], int prec,
+                       int normalize_n, double *dir_norm, double *dir_cos)
+{
+	mpfr_t *t = c->t;
+	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+	set3(c->w, w[0], w[1], w[2]);
+	*dir_norm = fabs(norm_m1_exact(c, c->w, w));
+	if (normalize_n) {
+		dot_exact(c, t[0], c->w, c->n, w, n, 0.0);
+		mpfr_mul(t[0], t[0], c->inv_n, R);
+		mpfr_sub_d(t[0], t[0], z, R);
+	} else {
+		dot_exact(c, t[0], c->w, c->n, w, n, z);
+	}
+	*dir_cos = fabs(mpfr_get_d(t[0], R));
+}
+
+/* ---- the accuracy floor (issue 16) ------------------------------------ */
+/* The floor of a kernel on an input: the metrics of its family's exact
+   formula, on the kernel's branch, with each output component rounded
+   ONCE (to nearest, ties to even) to the format: what a perfect
+   implementation of that formula would return.
+
+   Rounding without double rounding.  The reference holds each exact
+   component x as e, computed at P = c->prec bits, with |e - x| <= 2^(40-P)
+   max(|e|, 1): every family's intermediate quantities are O(1) for
+   unit-to-rounding input (the inputs are within |n| <= 1.01), and the
+   worst amplification of the reference's own 2^-P roundings (1/|u| of
+   naive's normalization near -x, 1/(1 + n.z) of frisvad near -z) stays
+   far below 2^40 on every input the sweep generates; the two-precision
+   check re-evaluates the floor at P + 64 bits and must agree (ref_agree).
+   RN(e) is RN(x) unless e lies within that bound of a rounding boundary
+   (the midpoint between two neighbouring format values); floor_round says
+   when, and such a component is decided from the formula re-evaluated at
+   P + 128 bits (c->hi), where an exact midpoint (a value with one bit
+   more than the format) stays exactly on it and rounds to even. */
+static int floor_round(ref_ctx *c, mpfr_t e, int prec, double *out)
+{
+	const long P = (long)mpfr_get_prec(e);
+	double f, g;
+	long ee, em;
+	int cmp;
+	if (!mpfr_number_p(e)) {
+		*out = NAN;
+		return 0;
+	}
+	f = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : mpfr_get_d(e, R);
+	*out = f;
+	cmp = mpfr_cmp_d(e, f);
+	if (cmp == 0 || isinf(f))
+		return 0;
+	g = prec == PREC_FLOAT ? (double)nextafterf((float)f, cmp > 0 ? INFINITY : -INFINITY)
+	                       : nextafter(f, cmp > 0 ? INFINITY : -INFINITY);
+	if (isinf(g))
+		return 0;
+	mpfr_set_d(c->mid, f, R);
+	mpfr_add_d(c->mid, c->mid, g, R);   /* exact: two neighbours need <= 55 bits */
+	mpfr_div_2ui(c->mid, c->mid, 1, R); /* the rounding boundary between them */
+	mpfr_sub(c->mid, e, c->mid, R);
+	if (mpfr_zero_p(c->mid))
+		return 1;
+	ee = mpfr_get_exp(e);
+	em = mpfr_get_exp(c->mid);          /* |e - mid| >= 2^(em - 1) */
+	return em - 1 < 40 - P + (ee > 1 ? ee : 1);
+}
+
+/* The exact formula of k on n (branch br) rounded once: fb[6] (or the
+   direction in fb[0..2] for frisvad_rotate).  The formula is in c->r1,
+   c->r2 already; hard components are redone at c->prec + 128 bits.
+   Returns 1 when that was needed. */
+static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
+                       const double loc[3], double fb[6])
+{
+	const int nc = k->m ? 6 : 3;
+	int i, hard = 0;
+	for (i = 0; i < nc; i++)
+		hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &fb[i]);
+	/* naive's b2 = n x (e - n (n.e)) = n x e has no e component, for any
+	   n: that component of the exact formula is identically zero, where
+	   the reference's cross product leaves a rounding residue */
+	if (k->m && k->family == FAM_NAIVE && isfinite(fb[3 + br])) {
+		fb[3 + br] = 0.0;
+		if (!hard)
+			return 0;
+		/* hard only through that residue? */
+		for (i = 0, hard = 0; i < nc; i++)
+			if (i != 3 + br) {
+				double t;
+				hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &t);
+			}
+	}
+	if (!hard)
+		return 0;
+	if (!c->hi)
+		c->hi = ref_new(c->prec + 128);
+	if (!c->hi) { /* out of memory: keep the P-bit rounding, say so */
+		fprintf(stderr, "onbstudy: out of memory for the floor's %ld-bit re-evaluation\n", (long)c->prec + 128);
+		return 1;
+	}
+	set3(c->hi->n, n[0], n[1], n[2]);
+	c->hi->have_last = 0;
+	reference(c->hi, k, br, loc);
+	for (i = 0; i < nc; i++)
+		if (!(k->m && k->family == FAM_NAIVE && i == 3 + br))
+			(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
+	return 1;
+}
+
+/* s->floor, s->floor_dir_norm, s->floor_dir_cos (NaN when the exact
+   formula is not finite there, e.g. tangent_cross_z at +-z).  For a basis
+   method the floor's direction is w = x b1 + y b2 + z n from the rounded
+   exact basis, in the format's arithmetic as the kernel's w is; for
+   frisvad_rotate it is the exact rotated direction rounded once. */
+static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double n[3], const double loc[3],
+                       int normalize_n, sample_metrics *s)
+{
+	double fb[6], w[3], d[NDEF];
+	int i;
+	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
+	(void)floor_basis(c, k, prec, s->branch, n, loc, fb);
+	if (!finite6(fb, k->m ? 6 : 3))
+		return;
+	if (k->m) {
+		if (prec == PREC_FLOAT) {
+			const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+			float b[6], v[3];
+			for (i = 0; i < 6; i++)
+				b[i] = (float)fb[i];
+			for (i = 0; i < 3; i++) {
+				v[i] = x * b[i] + y * b[3 + i] + z * (float)n[i];
+				w[i] = v[i];
+			}
+		} else {
+			for (i = 0; i < 3; i++)
+				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
+		}
+		basis_defects(c, fb, n, normalize_n, d);
+		s->floor = 0.0;
+		for (i = 0; i < NDEF; i++)
+			if (fabs(d[i]) > s->floor)
+				s->floor = fabs(d[i]);
+	} else {
+		for (i = 0; i < 3; i++)
+			w[i] = fb[i];
+	}
+	dir_errors(c, w, n, loc, prec, normalize_n, &s->floor_dir_norm, &s->floor_dir_cos);
+	/* The ratio.  Errors and floors below u^2 (3.6e-15 in float, 1.2e-32
+	   in double) count as u^2: zero for any use of the format; at
+	   n = (-1, 0, -2^-126) in float the floor is 6.9e-77 and duff's defect
+	   1.2e-38, a raw ratio of 1.7e38 (onbstudy eval). */
+	if (!s->nonfinite) {
+		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
+		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
+		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
+		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
+	}
+}
+
+/* The input the kernel receives (n_in rounded to the format) into n, and
+   s cleared for it.  The reference reads exactly the values the kernel receives. */
+static void read_input(const study_kernel *k, int prec, const double n_in[3], double n[3], sample_metrics *s)
+{
+	int i;
+	for (i = 0; i < 3; i++) {
+		if (prec == PREC_FLOAT) {
+			volatile float f = (float)n_in[i];
+			n[i] = f;
+		} else {
+			n[i] = n_in[i];
+		}
+	}
+	memset(s, 0, sizeof *s);
+	s->has_basis = k->m != NULL;
+	s->ncomp = k->m ? 6 : 3;
+	s->branch = k->branch(k, prec, n);
+	s->in_norm = NAN;
+	for (i = 0; i < NDEF; i++)
+		s->d[i] = NAN;
+	s->defect = s->sumsq = s->det = NAN;
+}
+
+/* Run the kernel, and the direction through its basis: s->out, s->w. */
+static void run_kernel(const study_kernel *k, int prec, const double n[3], const double loc[3], sample_metrics *s)
+{
+	if (prec == PREC_FLOAT) {
+		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
+		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
+		onb_vec3f b1, b2, w;
+		if (k->m) {
+			k->basisf(nf, &b1, &b2);
+			w.x = x * b1.x + y * b2.x + z * nf.x;
+			w.y = x * b1.y + y * b2.y + z * nf.y;
+			w.z = x * b1.z + y * b2.z + z * nf.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rotf(nf, x, y, z);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	} else {
+		const onb_vec3 nd = { n[0], n[1], n[2] };
+		onb_vec3 b1, b2, w;
+		if (k->m) {
+			k->basis(nd, &b1, &b2);
+			w.x = loc[0] * b1.x + loc[1] * b2.x + loc[2] * nd.x;
+			w.y = loc[0] * b1.y + loc[1] * b2.y + loc[2] * nd.y;
+			w.z = loc[0] * b1.z + loc[1] * b2.z + loc[2] * nd.z;
+			s->out[0] = b1.x; s->out[1] = b1.y; s->out[2] = b1.z;
+			s->out[3] = b2.x; s->out[4] = b2.y; s->out[5] = b2.z;
+		} else {
+			w = k->rot(nd, loc[0], loc[1], loc[2]);
+			s->out[0] = w.x; s->out[1] = w.y; s->out[2] = w.z;
+		}
+		s->w[0] = w.x; s->w[1] = w.y; s->w[2] = w.z;
+	}
+}
+
+void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const double loc[3],
+                    double n[3], sample_metrics *s)
+{
+	read_input(k, prec, n_in, n, s);
+	run_kernel(k, prec, n, loc, s);
+}
+
+/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
+   the sweep evaluates every kernel on an input in a row.  Compared by
+   bit pattern, so -0 and +0 are different inputs. */
+static void input_norm(ref_ctx *c, const double n[3])
+{
+	mpfr_t *t = c->t;
+	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
+		set3(c->n, n[0], n[1], n[2]);
+		c->last_norm = norm_m1_exact(c, c->n, n);
+		/* 1/|n| = 1/(1 + (|n| - 1)) at the context's precision */
+		dot(c, t[0], c->n, c->n);
+		mpfr_rec_sqrt(c->inv_n, t[0], R);
+		memcpy(c->last, n, sizeof c->last);
+		c->have_last = 1;
+	}
+}
+
+void ref_defect_summary(const study_kernel *k, const double n[3], sample_metrics *s)
+{
+	long double det;
+	int i;
+	s->defect = 0.0;
+	s->sumsq = 0.0;
+	for (i = 0; i < NDEF; i++) {
+		if (fabs(s->d[i]) > s->defect)
+			s->defect = fabs(s->d[i]);
+		s->sumsq += s->d[i] * s->d[i];
+	}
+	/* det(b1, b2, n) = b1 . (b2 x n), in long double: its sign is
+	   what matters, and |det| ~ 1 unless the basis has collapsed. */
+	{
+		long double b1x = s->out[0], b1y = s->out[1], b1z = s->out[2];
+		long double b2x = s->out[3], b2y = s->out[4], b2z = s->out[5];
+		det = b1x * (b2y * (long double)n[2] - b2z * (long double)n[1])
+		    + b1y * (b2z * (long double)n[0] - b2x * (long double)n[2])
+		    + b1z * (b2x * (long double)n[1] - b2y * (long double)n[0]);
+	}
+	s->det = (double)det;
+	s->wrong_hand = !(s->det * k->m->handedness > 0.0);
+}
+
+/* Orthonormality defect of the rounded outputs, and their handedness. */
+static void basis_output_defects(ref_ctx *c, const study_kernel *k, const double n[3], int normalize_n,
+                                 sample_metrics *s)
+{
+	basis_defects(c, s->out, n, normalize_n, s->d);
+	ref_defect_summary(k, n, s);
+}
+
+void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
+              const double loc[3], int normalize_n, sample_metrics *s)
+{
+	int i;
+	double n[3];
+	ref_run_kernel(k, prec, n_in, loc, n, s);
+	input_norm(c, n);
+	s->in_norm = c->last_norm;
+
+	if (!finite6(s->out, s->ncomp) || !finite6(s->w, 3)) {
+		s->nonfinite = 1;
+		s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = NAN;
+		s->dir_norm = s->dir_cos = NAN;
+		for (i = 0; i < 6; i++)
+			s->ref[i] = NAN;
+		/* the floor does not depend on the kernel's output */
+		reference(c, k, s->branch, loc);
+		floor_eval(c, k, prec, n, loc, normalize_n, s);
+		return;
+	}
+
+	if (k->m)
+		basis_output_defects(c, k, n, normalize_n, s);
+
+	/* Forward error against the kernel's own formula. */
+	reference(c, k, s->branch, loc);
+	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
+	for (i = 0; i < 3; i++)
+		forward(c, c->r1[i], s->out[i], prec, s, &s->ref[i]);
+	if (k->m)
+		for (i = 0; i < 3; i++)
+			forward(c, c->r2[i], s->out[3 + i], prec, s, &s->ref[3 + i]);
+
+	/* Direction error: | |w| - 1 | and | w.n - z |. */
+	dir_errors(c, s->w, n, loc, prec, normalize_n, &s->dir_norm, &s->dir_cos);
+
+	/* The accuracy floor: the same metrics for the exact formula (r1, r2,
+	   still in c) rounded once to the format. */
+	floor_eval(c, k, prec, n, loc, normalize_n, s);
+}
+
+/* Agreement of one metric: relative 2^-40, or absolute `abs_tol` (the
+   noise floor of a forward metric: the reference's own rounding at 127
+   bits reaches 2^-23 ulps of an exact value just above eps, so forward
+   errors are compared to 2^-16 ulps or eps; the defects are sums of
+   exact products and must agree to 2^-40 relative). */
+static int close_enough(double a, double b, double abs_tol)
+{
+	if (isnan(a) || isnan(b))
+		return isnan(a) && isnan(b);
+	if (a == b)
+		return 1;
+	return fabs(a - b) <= 0x1p-40 * fmax(fabs(a), fabs(b)) || fabs(a - b) <= abs_tol;
+}
+
+int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_t n)
+{
+	const struct { const char *name; double x, y, tol; } v[] = {
+		{ "|b1|-1", a->d[0], b->d[0], 0.0 }, { "|b2|-1", a->d[1], b->d[1], 0.0 },
+		{ "b1.n", a->d[2], b->d[2], 0.0 }, { "b2.n", a->d[3], b->d[3], 0.0 },
+		{ "b1.b2", a->d[4], b->d[4], 0.0 }, { "|n|-1", a->in_norm, b->in_norm, 0.0 },
+		{ "ulp", a->ulp_max, b->ulp_max, 0x1p-16 }, { "abs/eps", a->abs_eps_max, b->abs_eps_max, 0x1p-16 },
+		{ "bits", a->bits_sum, b->bits_sum, 0x1p-16 }, { "|w|-1", a->dir_norm, b->dir_norm, 0.0 },
+		{ "w.n-z", a->dir_cos, b->dir_cos, 0.0 },
+		{ "floor", a->floor, b->floor, 0.0 }, { "floor |w|-1", a->floor_dir_norm, b->floor_dir_norm, 0.0 },
+		{ "floor w.n-z", a->floor_dir_cos, b->floor_dir_cos, 0.0 },
+	};
+	size_t i;
+	for (i = 0; i < sizeof v / sizeof v[0]; i++)
+		if (!close_enough(v[i].x, v[i].y, v[i].tol)) {
+			snprintf(why, n, "%s: %a at one precision, %a at the other", v[i].name, v[i].x, v[i].y);
+			return 0;
+		}
+	return 1;
+}
+
+void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF])
+{
+	mpfr_t *t = c->t;
+	set3(c->n, n[0], n[1], n[2]);
+	c->have_last = 0; /* c->n no longer holds the cached input */
+	set3(c->b1, b[0], b[1], b[2]);
+	set3(c->b2, b[3], b[4], b[5]);
+	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
+	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0); d[DEF_D2N] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+}

@@ -1,6 +1,0 @@
-/*
- * reffast_f.c - the fast reference for float inputs: reffast.c compiled
- * with pairs of doubles instead of pairs of long doubles (see there).
- */
-#define REFFAST_PAIR_DOUBLE 1
-#include "reffast.c"

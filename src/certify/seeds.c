@@ -25,10 +25,12 @@
 #include <mpfr.h>
 #include <stdlib.h>
 #include <string.h>
-#include <xmmintrin.h>
+#include "onb.h"
 #include "seeds.h"
 
-float seed_rsqrtss(float x) { return _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x))); }
+/* The kernels' own function: rsqrtss where onb.h has it (ONB_HAVE_HW_RSQRT),
+   else its fallback 1/sqrtf. */
+float seed_rsqrtss(float x) { return onb__hw_rsqrtf(x); }
 
 float seed_invsqrt_f(float x)
 {

@@ -35,13 +35,16 @@ typedef struct {
 /* The bound of seed k, computed on the first call (thread-safe: once per
    process and kind), then cached.  The float kinds enumerate 2^31 - 2^23
    inputs with OpenMP (seconds on 2 cores); the double kind runs the
-   interval proof (well under a second).  Returns 0, or -1 for a bad k or
-   a failed computation (message on stderr). */
+   interval proof (well under a second).  Call it before a parallel
+   region: inside one, the scan's own OpenMP region runs on one thread.
+   Returns 0, or -1 for a bad k or a failed computation (message on
+   stderr). */
 int seed_bound_get(seed_kind k, seed_bound *out);
 
 const char *seed_name(seed_kind k);
 
-/* The seeds exactly as the kernels of include/onb.h compute them. */
+/* The seeds exactly as the kernels of include/onb.h compute them
+   (tests/test_seeds.c checks them against onb.h bit for bit). */
 float  seed_rsqrtss(float x);
 float  seed_invsqrt_f(float x);
 double seed_invsqrt_d(double x);

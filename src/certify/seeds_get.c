@@ -2,7 +2,12 @@
  * seeds_get.c - seed_bound_get's once-per-process cache, the CPU the
  * rsqrtss bound belongs to, and what the seeds do outside their domain.
  */
+#if defined(__x86_64__) || defined(__i386__)
 #include <cpuid.h>
+#define HAVE_CPUID 1
+#else
+#define HAVE_CPUID 0
+#endif
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -43,6 +48,7 @@ static char cpu_buf[200];
    AMD's CPUID guide say (extended family only when family is 0xf). */
 static void cpu_fill(void)
 {
+#if HAVE_CPUID
 	unsigned r[12] = { 0 }, a = 0, b = 0, c = 0, d = 0, fam, mod, base;
 	char vendor[13] = { 0 }, brand[49] = { 0 };
 	__get_cpuid(0, &a, &b, &c, &d);
@@ -56,6 +62,9 @@ static void cpu_fill(void)
 	memcpy(brand, r, 48);
 	snprintf(cpu_buf, sizeof cpu_buf, "%s \"%s\" family 0x%x model 0x%x stepping %u",
 		 vendor, brand, fam, mod, a & 0xf);
+#else
+	snprintf(cpu_buf, sizeof cpu_buf, "unknown (no CPUID on this architecture)");
+#endif
 }
 
 const char *seed_cpu(void)

@@ -16,6 +16,12 @@
  *
  * +0, subnormals and inf are outside [x_lo, x_hi]: the model treats them
  * as singular (what each seed does there: seed_edge_report()).
+ *
+ * src/certify/ holds the proven extremes of issue 22; these seed bounds
+ * (seeds.c: the float scans and the literature values, seeds_d.c: the
+ * double proof, seeds_get.c: the cache, the CPU, the edges) are its first
+ * part.  They import only libonb (the kernels' own rsqrt), MPFR and MPFI;
+ * the Gappa cross-check is scripts/gappa.sh.
  */
 #ifndef ONB_SEEDS_H
 #define ONB_SEEDS_H

@@ -125,6 +125,11 @@ $(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/onb.
 	@mkdir -p $(@D)
 	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -Isrc -c $< -o $@
 
+# Certify (issue 22): src/certify/ is compiled by the study's rule above; its
+# interval proofs use MPFI (linked statically, before MPFR, for the reason
+# given at STUDY_LIBS).
+STUDY_LIBS := -Wl,-Bstatic -lmpfi -Wl,-Bdynamic $(STUDY_LIBS)
+
 $(STUDY_LIB): $(filter-out $(MAIN_OBJ),$(STUDY_OBJ))
 	rm -f $@
 	$(AR) rcs $@ $^

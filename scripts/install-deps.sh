@@ -11,6 +11,8 @@ set -eu
 # libcjson-dev: the glTF 2.0 reader parses JSON with cJSON (issue 12).
 # libopenmpi-dev, openmpi-bin: `make mpi` builds onbstudy-mpi (issue 13).
 PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev gnuplot-nox pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck libomp-dev libcjson-dev libopenmpi-dev openmpi-bin"
+PKGS="$PKGS libmpfi-dev"  # certified seed bounds: interval arithmetic (issue 22)
+PKGS="$PKGS gappa"  # Gappa cross-check of duff_branchless, scripts/gappa.sh (issue 22)
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -82,7 +82,9 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 		return values_bound(c, m, x, path);
 	for (k = 0; k < NCQ; k++)
 		mvf_bounds(c->m, q[k], &direct[k], &lin[k]);
-	nonzero = x->has_zpoint ? CQ_ALL : c->nonzero;  /* n.z given: n not unit at e = 0 */
+	nonzero = c->nonzero;   /* n.z given: n is not unit at e = 0 */
+	if (x->has_zpoint)
+		nonzero |= CQ_ALL & ~m->zero_any_n;
 	if (nonzero && run_path(c, m, x, path, MVF_AT_ZERO, q) > 0) {
 		for (k = 0; k < NCQ; k++)
 			if (nonzero & (1u << k)) {

@@ -16,6 +16,7 @@
 #include "sweep/engine.h"
 #include "certify.h"
 #include "search.h"
+#include "seeds.h"
 
 #define MAXREG 1024
 #define MAXK 64
@@ -211,6 +212,31 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 	return fail ? -1 : 0;
 }
 
+/* Does any selected method use an approximate reciprocal square root? */
+static int uses_seeds(const study_kernel *ks, int nk)
+{
+	int k;
+	for (k = 0; k < nk; k++)
+		if (strstr(ks[k].name, "rsqrt") || strstr(ks[k].name, "invsqrt"))
+			return 1;
+	return 0;
+}
+
+/* The seed bounds the run used, with the CPU (rsqrtss is CPU-specific). */
+static void seeds_provenance(FILE *f, const study_kernel *ks, int nk)
+{
+	int s;
+	if (!uses_seeds(ks, nk))
+		return;
+	fprintf(f, "# seeds: cpu %s\n", seed_cpu());
+	for (s = 0; s < NSEED; s++) {
+		seed_bound b;
+		if (seed_bound_get((seed_kind)s, &b) == 0)
+			fprintf(f, "# seed %s: |s sqrt(x) - 1| <= %a (%.6g), worst x %a; %s\n", seed_name((seed_kind)s),
+			        b.bound, b.bound, b.worst_x, b.how);
+	}
+}
+
 static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region *reg, const task *t, int nt,
                      const cert_result *res, const cert_cli *c)
 {
@@ -222,8 +248,8 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 		fprintf(f, "# tolerance: %.17g\n", c->o.tolerance);
 	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
 	        c->o.budget, c->o.samples, c->o.target, c->sectors);
-	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt;"
-	           " seeds: rsqrtss bound measured on this CPU\n");
+	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt\n");
+	seeds_provenance(f, ks, nk);
 	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status\n");
 	for (k = 0; k < nk; k++)
 		for (p = 0; p < 2; p++) {
@@ -303,6 +329,16 @@ int cmd_certify(int argc, char **argv)
 		snprintf(dir, sizeof dir, "%s", c.out);
 	else
 		study_current_run_dir(dir, sizeof dir);
+	if (uses_seeds(ks, nk)) {   /* computed once, outside the parallel regions */
+		int sk;
+		for (sk = 0; sk < NSEED; sk++) {
+			seed_bound sb;
+			if (seed_bound_get((seed_kind)sk, &sb) != 0) {
+				study_error("the seed bound of %s could not be computed", seed_name((seed_kind)sk));
+				goto done;
+			}
+		}
+	}
 	if (study_mkdir_p(dir) || run_all(ks, ms, reg, nreg, t, nt, &c, res))
 		goto done;
 	if (study_out_open(&out, dir, "certify.csv"))

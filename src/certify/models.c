@@ -262,28 +262,40 @@ static void m_duff_comp(cm *c, int P, int unused, const cv n[3], cv out[6])
 	out[3] = bb; out[4] = ADD(t2, ADD(t2l, ql)); out[5] = cm_neg(c, y);
 }
 
+/* zero_any_n: b1 normalized and b2 = n x b1 (naive); b2 = v s with v.n = 0
+   and b1 = v x n (hughes_moeller); b1 = p/|p| with p = n x e and b2 = n x b1
+   (stark, pbrt_v3; tangent_cross_z with b1 and b2 swapped); rtow measures
+   against n but builds from n/|n|, so all five.  Frisvad's and Duff's
+   formulas need a unit n for every one of them. */
+#define ZN_CROSS     ((1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_NAIVE     (ZN_CROSS | (1u << CQ_N1))
+#define ZN_HM_NONORM ((1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_HM        (ZN_HM_NONORM | (1u << CQ_N2))
+#define ZN_UNIT_B1   ((1u << CQ_N1) | (1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_UNIT_B2   ((1u << CQ_N2) | (1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+
 static const cm_method methods[] = {
-	{ "naive", m_naive, ONB__NORM_LIBM, 1 },
-	{ "naive_invsqrt", m_naive, ONB__NORM_INVSQRT, 1 },
-	{ "naive_rsqrt", m_naive, ONB__NORM_RSQRT, 1 },
-	{ "naive_rsqrt_nr", m_naive, ONB__NORM_RSQRT_NR, 1 },
-	{ "naive_nonorm", m_naive, ONB__NORM_NONE, 1 },
-	{ "hughes_moeller", m_hughes_moeller, ONB__NORM_LIBM, 1 },
-	{ "hughes_moeller_invsqrt", m_hughes_moeller, ONB__NORM_INVSQRT, 1 },
-	{ "hughes_moeller_rsqrt", m_hughes_moeller, ONB__NORM_RSQRT, 1 },
-	{ "hughes_moeller_rsqrt_nr", m_hughes_moeller, ONB__NORM_RSQRT_NR, 1 },
-	{ "hughes_moeller_nonorm", m_hughes_moeller, ONB__NORM_NONE, 1 },
-	{ "frisvad", m_frisvad, 0, 1 },
-	{ "frisvad_max", m_frisvad, 1, 1 },
-	{ "duff", m_duff, 0, 1 },
-	{ "duff_branchless", m_duff_branchless, 0, 1 },
-	{ "stark", m_stark, 0, 3 },
-	{ "stark_fixed", m_stark, 1, 3 },
-	{ "pbrt_v3", m_pbrt_v3, 0, 1 },
-	{ "rtow", m_rtow, 0, 1 },
-	{ "tangent_cross_z", m_tangent_cross_z, 0, 0 },
-	{ "duff_wide", m_duff_wide, 0, 1 },
-	{ "duff_comp", m_duff_comp, 0, 1 },
+	{ "naive", m_naive, ONB__NORM_LIBM, 1, ZN_NAIVE },
+	{ "naive_invsqrt", m_naive, ONB__NORM_INVSQRT, 1, ZN_NAIVE },
+	{ "naive_rsqrt", m_naive, ONB__NORM_RSQRT, 1, ZN_NAIVE },
+	{ "naive_rsqrt_nr", m_naive, ONB__NORM_RSQRT_NR, 1, ZN_NAIVE },
+	{ "naive_nonorm", m_naive, ONB__NORM_NONE, 1, ZN_CROSS },
+	{ "hughes_moeller", m_hughes_moeller, ONB__NORM_LIBM, 1, ZN_HM },
+	{ "hughes_moeller_invsqrt", m_hughes_moeller, ONB__NORM_INVSQRT, 1, ZN_HM },
+	{ "hughes_moeller_rsqrt", m_hughes_moeller, ONB__NORM_RSQRT, 1, ZN_HM },
+	{ "hughes_moeller_rsqrt_nr", m_hughes_moeller, ONB__NORM_RSQRT_NR, 1, ZN_HM },
+	{ "hughes_moeller_nonorm", m_hughes_moeller, ONB__NORM_NONE, 1, ZN_HM_NONORM },
+	{ "frisvad", m_frisvad, 0, 1, 0 },
+	{ "frisvad_max", m_frisvad, 1, 1, 0 },
+	{ "duff", m_duff, 0, 1, 0 },
+	{ "duff_branchless", m_duff_branchless, 0, 1, 0 },
+	{ "stark", m_stark, 0, 3, ZN_UNIT_B1 },
+	{ "stark_fixed", m_stark, 1, 3, ZN_UNIT_B1 },
+	{ "pbrt_v3", m_pbrt_v3, 0, 1, ZN_UNIT_B1 },
+	{ "rtow", m_rtow, 0, 1, CQ_ALL },
+	{ "tangent_cross_z", m_tangent_cross_z, 0, 0, ZN_UNIT_B2 },
+	{ "duff_wide", m_duff_wide, 0, 1, 0 },
+	{ "duff_comp", m_duff_comp, 0, 1, 0 },
 };
 
 const cm_method *cm_find(const char *name)

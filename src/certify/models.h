@@ -15,6 +15,11 @@ typedef struct {
 	cm_model_fn fn;
 	int param;           /* the variant (normalization, threshold...) */
 	int nbranch;         /* branch points: paths are 2^nbranch        */
+	/* The defect quantities (CQ_ bits of model_int.h) that stay 0 in exact
+	   arithmetic for every n, unit or not (b2 = n x b1 is orthogonal to n
+	   and b1 whatever |n| is): where n is not unit at e = 0 (n.z given,
+	   mvf_box.has_zpoint) only the others need their centre Q(U, 0). */
+	unsigned zero_any_n;
 } cm_method;
 
 /* The model of registry method `name`, or NULL (frisvad_rotate has none

@@ -461,6 +461,9 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 	mpfi_inv(m->s1, m->s1);
 	mpfi_interv_d(m->t1, 1.0 - sb.bound, 1.0 + sb.bound);
 	mpfi_mul(r->v, m->s1, m->t1);                    /* (1 + e)/sqrt(a)         */
+	r->rsqrt_of = ia;
+	r->rel_lo = 1.0 - sb.bound;
+	r->rel_hi = 1.0 + sb.bound;
 	if (m->zero_e) {
 		mpfi_set(r->v, m->s1);
 		return ir;
@@ -470,9 +473,6 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 	mpfi_neg(m->s2, m->s2);
 	grad_lin(m, r, a, m->s2, NULL, NULL);
 	set_grad(r, new_var(m, sb.bound), m->s1);        /* d/de = 1/sqrt(a)        */
-	r->rsqrt_of = ia;
-	r->rel_lo = 1.0 - sb.bound;
-	r->rel_hi = 1.0 + sb.bound;
 	return ir;
 }
 

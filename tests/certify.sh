@@ -13,7 +13,7 @@ ok()  { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 data() { grep -v '^#' "$1"; }
 
-M=frisvad,frisvad_max,duff,duff_branchless,hughes_moeller,naive,tangent_cross_z,naive_rsqrt_nr
+M=frisvad,frisvad_max,duff,duff_branchless,hughes_moeller,naive,tangent_cross_z
 Q="--quick --quiet --methods $M"
 OMP_NUM_THREADS=2 ./onbstudy certify $Q --out "$T/a" >"$T/a.out" 2>"$T/a.err" || bad "certify --quick failed: $(cat "$T/a.err")"
 OMP_NUM_THREADS=1 ./onbstudy certify $Q --precision float --out "$T/b" >/dev/null 2>"$T/b.err" || bad "certify --threads 1 failed"

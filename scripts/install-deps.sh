@@ -15,6 +15,8 @@ PKGS="$PKGS help2man man-db"  # man pages: man/onbstudy.1 from --help (scripts/m
 PKGS="$PKGS procps g++"  # pgrep in tests/mpi.sh; g++ for the C++17 check of tests/lib_client.sh (issue 25)
 PKGS="$PKGS gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user"  # make cross-check (issue 25)
 PKGS="$PKGS pngquant"  # quantizes committed charts to palette PNGs, keeping results/reference/ under 5 MB (issue 24)
+PKGS="$PKGS libmpfi-dev"  # certified seed bounds: interval arithmetic (issue 22)
+PKGS="$PKGS gappa"  # Gappa cross-check of duff_branchless, scripts/gappa.sh (issue 22)
 missing=""
 for p in $PKGS; do
 	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

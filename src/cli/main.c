@@ -14,6 +14,7 @@
 /* up: the commands of the other folders */
 #include "sweep/sweep.h"
 #include "sweep/threshold.h"
+#include "certify/certify.h"
 #include "scene/scene.h"
 #include "bench/bench.h"
 #include "bench/table.h"
@@ -34,6 +35,7 @@ static const struct {
 	{ "scene", cmd_scene, "a scene's own normals (OBJ, PLY, glTF 2.0): every method, and the one to use" },
 	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },
 	{ "reproduce", cmd_reproduce, "each published figure (Frisvad 2012, Duff et al. 2017, Max 2017) beside a fresh measurement" },
+	{ "certify", cmd_certify, "proven extremes: per region of the sphere, the worst input found beside a bound no input exceeds" },
 	{ "table", cmd_table, "the speed-accuracy trade table (bench.csv joined with a sweep's summary.csv)" },
 };
 

@@ -54,6 +54,7 @@
 #include "mesh/meshio.h"
 #include "bench/bench_core.h"
 #include "scene/speed.h"
+#include "certify/scene_cert.h"
 
 typedef struct {
 	double max_defect, rms_defect, max_norm, max_dot;
@@ -229,7 +230,7 @@ static size_t fill(const mesh_normals *mn, int fl, char up, int renorm, scene_bu
 typedef struct {
 	const char *file, *outdir, *speed_file;
 	double tol;
-	int fl, renorm_head, world, refresh, tol_given;
+	int fl, renorm_head, world, refresh, tol_given, certify;
 	long repeats;
 	char up, other;
 } scene_opts;
@@ -253,6 +254,8 @@ static void usage(FILE *f)
 	"                     and cache it (~/.cache/onbstudy or $XDG_CACHE_HOME/onbstudy)\n"
 	"  --repeats N        repetitions of --refresh-speed (1..64, default 15)\n"
 	"  --out DIR          write DIR/scene.csv (default results/run-DATE)\n"
+	"  --certify          also prove each method's bound over every normal a renderer can\n"
+	"                     interpolate on the scene's triangles (onbstudy certify's model)\n"
 	"  Speed is never timed on the scene: it comes from --speed, else the cache, else the\n"
 	"  committed reference run (results/reference/bench.csv).  Methods whose speed\n"
 	"  intervals overlap the fastest one's are tied; the most accurate on the scene wins,\n"
@@ -266,7 +269,8 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 		{ "up", required_argument, NULL, 'u' }, { "renormalize", no_argument, NULL, 'r' },
 		{ "repeats", required_argument, NULL, 'n' }, { "out", required_argument, NULL, 'o' },
 		{ "world", no_argument, NULL, 'w' }, { "speed", required_argument, NULL, 's' },
-		{ "refresh-speed", no_argument, NULL, 'R' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+		{ "refresh-speed", no_argument, NULL, 'R' }, { "certify", no_argument, NULL, 'C' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	static const char *const precs[] = { "float", "double" }, *const ups[] = { "z", "y", "x" };
 	cli_args c;
@@ -281,6 +285,7 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 		case 'r': o->renorm_head = 1; break;
 		case 'w': o->world = 1; break;
 		case 'R': o->refresh = 1; break;
+		case 'C': o->certify = 1; break;
 		case 'o': o->outdir = c.arg; break;
 		case 's': o->speed_file = c.arg; break;
 		case 'n':
@@ -877,6 +882,12 @@ int cmd_scene(int argc, char **argv)
 	       e.best[0][v] >= 0 ? ms[e.best[0][v]].name : "none");
 	if (write_csv(&o, &mn, &st, ms, nm, sp, &t, &e, o.world ? &obj : NULL, udef) != 0)
 		goto out;
+	if (o.certify) {
+		for (i = 0; i < nm; i++)
+			udef[i] = e.r[0][v][i].max_defect;   /* the measured maxima, beside the proofs */
+		if (scene_certify(o.file, o.up, o.fl, o.tol, ms, nm, udef, e.best[0][v] >= 0 ? ms[e.best[0][v]].name : NULL) != 0)
+			goto out;
+	}
 	rc = 0;
 out:
 	eval_free(&e);

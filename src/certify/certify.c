@@ -1,0 +1,358 @@
+/*
+ * certify.c - `onbstudy certify`: for every method, precision and region
+ * of the sphere, the largest defect found on a real input beside a bound
+ * that no input of the region can exceed (issue 22).  Writes certify.csv.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "cli/cli.h"
+#include "cli/output.h"
+#include "sweep/engine.h"
+#include "certify.h"
+#include "search.h"
+#include "seeds.h"
+
+#define MAXREG 1024
+#define MAXK 64
+
+typedef struct {
+	const char *methods;
+	int prec_on[2];
+	const char *out;
+	cert_opts o;
+	int sectors;
+	int quick;
+	int quiet;
+} cert_cli;
+
+typedef struct {
+	int k, prec, reg;   /* kernel, precision, region index */
+} task;
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
+	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
+	"                        [--seed S] [--quick] [--quiet]\n\n"
+	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
+	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
+	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|):\n"
+	"  found  the largest defect of the real kernel on a real input of the region\n"
+	"         (sampled, then an ulp walk; replay it with `onbstudy eval`);\n"
+	"  bound  proven for every input of the region: the kernel's own operations,\n"
+	"         each rounded once, in a mean value form over MPFI intervals, by\n"
+	"         branch and bound until bound <= 1.25 found or the budget runs out.\n"
+	"The domain: every rounding of a real unit vector (default), or with\n"
+	"--tolerance T every n with | |n| - 1 | <= T.  status: proven, singular (the\n"
+	"method can return NaN or inf there: not bounded) or budget (bound holds, not\n"
+	"yet within 1.25x).  Writes DIR/certify.csv (default: the current run).\n\n"
+	"  --methods LIST    comma-separated registry names, or all (default)\n"
+	"  --precision P     float, double or both (default both)\n"
+	"  --budget N        boxes bounded per region at most (default 1500)\n"
+	"  --samples N       inputs sampled per region before the boxes (default 1000)\n"
+	"  --sectors N       azimuth sectors (default 8)\n"
+	"  --tolerance T     the non-unit domain | |n| - 1 | <= T (T in [0, 0.01])\n"
+	"  --quick           budget 60, samples 150, 4 sectors: a run of about a minute\n");
+}
+
+static int parse(int argc, char **argv, cert_cli *c)
+{
+	static const struct option lo[] = {
+		{ "methods", required_argument, NULL, 'm' }, { "precision", required_argument, NULL, 'p' },
+		{ "out", required_argument, NULL, 'o' }, { "budget", required_argument, NULL, 'b' },
+		{ "samples", required_argument, NULL, 'n' }, { "sectors", required_argument, NULL, 's' },
+		{ "tolerance", required_argument, NULL, 't' }, { "seed", required_argument, NULL, 'S' },
+		{ "quick", no_argument, NULL, 'q' }, { "quiet", no_argument, NULL, 'Q' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	};
+	cli_args a;
+	long l;
+	unsigned long long u;
+	int v, budget_set = 0, samples_set = 0, sectors_set = 0;
+	memset(c, 0, sizeof *c);
+	c->methods = "all";
+	c->prec_on[0] = c->prec_on[1] = 1;
+	c->o.budget = 1500; c->o.samples = 1000; c->o.target = 1.25; c->o.tolerance = -1.0; c->o.seed = 1;
+	c->sectors = 8;
+	if (cli_begin(&a, "certify", argc, argv))
+		return ONB_EXIT_USAGE;
+	while ((v = cli_next(&a, lo)) != -1) {
+		switch (v) {
+		case CLI_HELP: usage(stdout); cli_end(&a); return -1;
+		case 'm': c->methods = a.arg; break;
+		case 'p': if (cli_precision("--precision", a.arg, c->prec_on)) goto bad; break;
+		case 'o': c->out = a.arg; break;
+		case 'b': if (parse_int("--budget", a.arg, 1, 1000000, &l)) goto bad; c->o.budget = l; budget_set = 1; break;
+		case 'n': if (parse_int("--samples", a.arg, 0, 100000000, &l)) goto bad; c->o.samples = l; samples_set = 1; break;
+		case 's': if (parse_int("--sectors", a.arg, 1, 64, &l)) goto bad; c->sectors = (int)l; sectors_set = 1; break;
+		case 't':
+			if (parse_double("--tolerance", a.arg, &c->o.tolerance)) goto bad;
+			if (!(c->o.tolerance >= 0.0 && c->o.tolerance <= 0.01)) {
+				study_error("--tolerance: expected a number in [0, 0.01], not '%s'", a.arg);
+				goto bad;
+			}
+			break;
+		case 'S': if (parse_u64("--seed", a.arg, 0, ~0ull, &u)) goto bad; c->o.seed = u; break;
+		case 'q': c->quick = 1; break;
+		case 'Q': c->quiet = 1; break;
+		default: goto bad;
+		}
+	}
+	if (cli_no_rest(&a))
+		goto bad;
+	cli_end(&a);
+	if (c->quick) {
+		if (!budget_set) c->o.budget = 60;
+		if (!samples_set) c->o.samples = 150;
+		if (!sectors_set) c->sectors = 4;
+	}
+	return 0;
+bad:
+	cli_end(&a);
+	return ONB_EXIT_USAGE;
+}
+
+static const char *status_name(int s)
+{
+	return s == CERT_PROVEN ? "proven" : s == CERT_SINGULAR ? "singular" : "budget";
+}
+
+static double unit_of(int prec) { return prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53; }
+
+/* The whole-sphere row of kernel k in precision p, from its regions. */
+static void whole_sphere(const cert_result *res, const task *t, int nt, int k, int p, cert_result *w)
+{
+	int i, any = 0;
+	memset(w, 0, sizeof *w);
+	w->status = CERT_PROVEN;
+	for (i = 0; i < nt; i++) {
+		const cert_result *r = &res[i];
+		if (t[i].k != k || t[i].prec != p)
+			continue;
+		any = 1;
+		if (!(r->bound <= w->bound))
+			w->bound = r->bound;
+		if (r->found > w->found) {
+			w->found = r->found;
+			memcpy(w->found_n, r->found_n, sizeof w->found_n);
+		}
+		if (r->status == CERT_SINGULAR)
+			w->status = CERT_SINGULAR;
+		w->boxes += r->boxes;
+		w->probes += r->probes;
+	}
+	if (!any)
+		w->status = -1;
+	else if (w->status != CERT_SINGULAR)
+		w->status = w->bound <= 1.25 * w->found ? CERT_PROVEN : CERT_BUDGET;
+	if (w->status == CERT_SINGULAR)
+		w->bound = INFINITY;
+}
+
+static void csv_row(FILE *f, const char *name, int p, const cert_region *r, const cert_result *x)
+{
+	fprintf(f, "%s,%s,%.17g,%.17g,%g,%g,", name, p == PREC_FLOAT ? "float" : "double",
+	        r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
+	if (isinf(x->bound))
+		fprintf(f, "inf,");
+	else
+		fprintf(f, "%.17g,", x->bound);   /* exact: the bound was rounded up once, never again */
+	if (x->found > 0.0)
+		fprintf(f, "%.17g,%a,%a,%a,%s\n", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
+	else
+		fprintf(f, "0,,,,%s\n", status_name(x->status));
+}
+
+/* Every region of every kernel and precision, in parallel. */
+static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const size_t *nreg,
+                    const task *t, int nt, const cert_cli *c, cert_result *res)
+{
+	engine_progress pr;
+	int fail = 0;
+	memset(&pr, 0, sizeof pr);
+	pr.bar = !c->quiet && isatty(2);
+	pr.t0 = engine_now();
+	pr.total = (unsigned long long)nt;
+#pragma omp parallel
+	{
+		cert_ctx *x = cert_ctx_new();
+		int i;
+		if (!x) {
+#pragma omp atomic write
+			fail = 1;
+		}
+#pragma omp for schedule(dynamic, 1)
+		for (i = 0; i < nt; i++) {
+			if (!x)
+				continue;
+			cert_region_run(x, &ks[t[i].k], ms[t[i].k], t[i].prec, &reg[t[i].prec * MAXREG + t[i].reg], &c->o, &res[i]);
+#pragma omp atomic
+			pr.done++;
+#ifdef _OPENMP
+			if (omp_get_thread_num() == 0 && pr.bar)
+#else
+			if (pr.bar)
+#endif
+				engine_progress_line("certify", &pr);
+		}
+		cert_ctx_free(x);
+	}
+	(void)nreg;
+	if (pr.bar)
+		fprintf(stderr, "\n");
+	if (fail)
+		study_error("out of memory: some regions were not run; nothing written");
+	return fail ? -1 : 0;
+}
+
+/* Does any selected method use an approximate reciprocal square root? */
+static int uses_seeds(const study_kernel *ks, int nk)
+{
+	int k;
+	for (k = 0; k < nk; k++)
+		if (strstr(ks[k].name, "rsqrt") || strstr(ks[k].name, "invsqrt"))
+			return 1;
+	return 0;
+}
+
+/* The seed bounds the run used, with the CPU (rsqrtss is CPU-specific). */
+static void seeds_provenance(FILE *f, const study_kernel *ks, int nk)
+{
+	int s;
+	if (!uses_seeds(ks, nk))
+		return;
+	fprintf(f, "# seeds: cpu %s\n", seed_cpu());
+	for (s = 0; s < NSEED; s++) {
+		seed_bound b;
+		if (seed_bound_get((seed_kind)s, &b) == 0)
+			fprintf(f, "# seed %s: |s sqrt(x) - 1| <= %a (%.6g), worst x %a; %s\n", seed_name((seed_kind)s),
+			        b.bound, b.bound, b.worst_x, b.how);
+	}
+}
+
+static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region *reg, const task *t, int nt,
+                     const cert_result *res, const cert_cli *c)
+{
+	int k, p, i;
+	study_provenance(f, "certify", (unsigned long long)c->o.seed, 0);
+	fprintf(f, "# domain: %s\n", c->o.tolerance < 0 ? "every rounding to nearest of a real unit vector"
+	                                                : "every n with | |n| - 1 | <= tolerance");
+	if (c->o.tolerance >= 0)
+		fprintf(f, "# tolerance: %.17g\n", c->o.tolerance);
+	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
+	        c->o.budget, c->o.samples, c->o.target, c->sectors);
+	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt\n");
+	seeds_provenance(f, ks, nk);
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status\n");
+	for (k = 0; k < nk; k++)
+		for (p = 0; p < 2; p++) {
+			cert_result w;
+			static const cert_region all = { -1.0, 1.0, 0.0, 360.0 };
+			whole_sphere(res, t, nt, k, p, &w);
+			if (w.status < 0)
+				continue;
+			csv_row(f, ks[k].name, p, &all, &w);
+			for (i = 0; i < nt; i++)
+				if (t[i].k == k && t[i].prec == p)
+					csv_row(f, ks[k].name, p, &reg[p * MAXREG + t[i].reg], &res[i]);
+		}
+	return ferror(f) ? -1 : 0;
+}
+
+static void print_summary(const study_kernel *ks, int nk, const task *t, int nt, const cert_result *res)
+{
+	int k, p;
+	printf("%-24s %-6s %12s %12s %7s  %s\n", "method", "prec", "bound/u", "found/u", "ratio", "status (regions proven/singular/budget)");
+	for (k = 0; k < nk; k++)
+		for (p = 0; p < 2; p++) {
+			cert_result w;
+			int i, cnt[3] = { 0, 0, 0 };
+			whole_sphere(res, t, nt, k, p, &w);
+			if (w.status < 0)
+				continue;
+			for (i = 0; i < nt; i++)
+				if (t[i].k == k && t[i].prec == p)
+					cnt[res[i].status]++;
+			printf("%-24s %-6s %12.4g %12.4g %7.3g  %s (%d/%d/%d)\n", ks[k].name, p ? "double" : "float",
+			       w.bound / unit_of(p), w.found / unit_of(p), w.found > 0 ? w.bound / w.found : NAN,
+			       status_name(w.status), cnt[0], cnt[1], cnt[2]);
+		}
+}
+
+int cmd_certify(int argc, char **argv)
+{
+	cert_cli c;
+	study_kernel ks[MAXK];
+	const cm_method *ms[MAXK];
+	static cert_region reg[2 * MAXREG];
+	size_t nreg[2];
+	task *t;
+	cert_result *res;
+	int nk, k, p, nt = 0, rc = 1, r;
+	char dir[4096];
+	study_out out;
+	if ((r = parse(argc, argv, &c)) != 0)
+		return r < 0 ? 0 : r;
+	if ((nk = kernels_select(c.methods, 0, ks, MAXK)) < 0)
+		return ONB_EXIT_USAGE;
+	for (k = 0; k < nk; k++)
+		if (!(ms[k] = ks[k].m ? cm_find(ks[k].m->name) : NULL) && strcmp(c.methods, "all") != 0) {
+			study_error("--methods: %s has no rounding model (its direction error is not certified)", ks[k].name);
+			return ONB_EXIT_USAGE;
+		}
+	for (p = 0; p < 2; p++)
+		nreg[p] = regions_default(p == PREC_FLOAT ? CM_F32 : CM_F64, c.sectors, reg + p * MAXREG, MAXREG);
+	t = malloc((size_t)nk * (nreg[0] + nreg[1]) * sizeof *t);
+	res = calloc((size_t)nk * (nreg[0] + nreg[1]), sizeof *res);
+	if (!t || !res) {
+		study_error("out of memory");
+		goto done;
+	}
+	for (k = 0; k < nk; k++)
+		for (p = 0; p < 2; p++) {
+			size_t i;
+			if (!ms[k] || !c.prec_on[p] || !kernel_runs(&ks[k], p))
+				continue;
+			for (i = 0; i < nreg[p]; i++) {
+				t[nt].k = k; t[nt].prec = p; t[nt].reg = (int)i;
+				nt++;
+			}
+		}
+	if (c.out)
+		snprintf(dir, sizeof dir, "%s", c.out);
+	else
+		study_current_run_dir(dir, sizeof dir);
+	if (uses_seeds(ks, nk)) {   /* computed once, outside the parallel regions */
+		int sk;
+		for (sk = 0; sk < NSEED; sk++) {
+			seed_bound sb;
+			if (seed_bound_get((seed_kind)sk, &sb) != 0) {
+				study_error("the seed bound of %s could not be computed", seed_name((seed_kind)sk));
+				goto done;
+			}
+		}
+	}
+	if (study_mkdir_p(dir) || run_all(ks, ms, reg, nreg, t, nt, &c, res))
+		goto done;
+	if (study_out_open(&out, dir, "certify.csv"))
+		goto done;
+	if (write_csv(out.f, ks, nk, reg, t, nt, res, &c) || study_out_commit(&out)) {
+		study_out_abort(&out);
+		study_error("%s/certify.csv: write failed; nothing written", dir);
+		goto done;
+	}
+	print_summary(ks, nk, t, nt, res);
+	fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
+	rc = 0;
+done:
+	free(t);
+	free(res);
+	return rc;
+}

@@ -1,0 +1,81 @@
+/*
+ * model.h - the rounding model of every libonb kernel (issue 22).
+ *
+ * Each method is written once more here, as a straight sequence of
+ * operations on value handles (cv), in the order and format in which the
+ * kernel in include/onb.h performs them.  The same model function runs on
+ * two back ends:
+ *
+ *   CM_EXEC  every operation is performed in its format with IEEE rounding
+ *            to nearest: the model must then give the kernel's bits
+ *            (tests/test_certify.c checks 10^6 inputs per method and
+ *            precision).  Branches take the side the values say.
+ *   CM_MVF   every operation is the exact operation times (1 + e) plus an
+ *            absolute term where the result can underflow; the values are
+ *            intervals over a box of real unit vectors and of every e, and
+ *            each carries its gradient in the e's (mvf.c).  Branches take
+ *            the side the caller's path says; a side that no point of the
+ *            box can take marks the path infeasible.
+ *
+ * So a model that runs bit-exact in CM_EXEC is the kernel's sequence of
+ * roundings, and the bound that CM_MVF proves is a bound for the kernel:
+ * a model that drops a rounding the kernel performs, or performs one in the
+ * wrong format, gives other bits and fails that test.  CM_MVF may still
+ * prove an operation exact where it is (Sterbenz's lemma, a product by 0 or
+ * by a power of two that cannot underflow): then it adds no error term.
+ */
+#ifndef ONB_CERTIFY_MODEL_H
+#define ONB_CERTIFY_MODEL_H
+
+#include "seeds.h"
+
+/* Formats of an operation's result. */
+enum { CM_F32 = 0, CM_F64 = 1 };
+/* Back ends. */
+enum { CM_EXEC = 0, CM_MVF = 1 };
+
+typedef int cv;          /* a value handle: an index into the context */
+typedef struct cm cm;    /* a model context (one per thread)          */
+
+/* Comparisons of the branch points. */
+enum { CM_LT = 0, CM_GT };
+
+/* Context, inputs, outputs. */
+cm  *cm_new(int backend);
+void cm_free(cm *c);
+int  cm_backend(const cm *c);
+/* Failure of the current run (CM_MVF: a division by an interval holding 0,
+   an interval that is not finite, a path that no point can take). */
+int  cm_failed(const cm *c);
+
+/* Operations.  Each rounds once to format f (CM_F32 or CM_F64). */
+cv cm_cst(cm *c, double v);              /* exact constant                  */
+cv cm_add(cm *c, int f, cv a, cv b);
+cv cm_sub(cm *c, int f, cv a, cv b);
+cv cm_mul(cm *c, int f, cv a, cv b);
+cv cm_div(cm *c, int f, cv a, cv b);
+cv cm_sqrt(cm *c, int f, cv a);
+cv cm_fma(cm *c, int f, cv a, cv b, cv d); /* a*b + d, rounded once          */
+cv cm_cvt(cm *c, int f, cv a);           /* conversion to f (exact widening) */
+cv cm_neg(cm *c, cv a);                  /* exact                           */
+/* The seed of an approximate reciprocal square root: (1 + e)/sqrt(a) with
+   |e| <= the bound seeds.c proves, in float (rsqrtss and Listing 3's
+   bit trick) or double (Lomont's constant). */
+cv cm_seed(cm *c, seed_kind k, cv a);
+/* Listing 3's Newton step on a seed y of 1/sqrt(x): y (1.5 - 0.5 x y y),
+   i.e. h = 0.5 x, then h y, (h y) y, 1.5 - that, y times that, each
+   rounded in f.  CM_MVF bounds the result's relative error as a whole
+   (mvf.c), where x cancels. */
+cv cm_newton(cm *c, int f, cv x, cv y);
+
+/* Branch point number `id` of the model: a OP b on the values as computed,
+   and |a| OP |b| for cm_branch_abs.  Returns the side taken (0 or 1). */
+int cm_branch(cm *c, int id, int op, cv a, cv b);
+int cm_branch_abs(cm *c, int id, int op, cv a, cv b);
+/* The sign bit of a (copysign): 1 when it is set. */
+int cm_branch_sign(cm *c, int id, cv a);
+
+/* CM_EXEC: the value of handle v (in its format, widened to double). */
+double cm_value(const cm *c, cv v);
+
+#endif

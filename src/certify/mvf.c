@@ -1,0 +1,793 @@
+/*
+ * mvf.c - the mean-value-form back end of the models (CM_MVF).
+ *
+ * Every value is an outward-rounded MPFI interval that encloses it for all
+ * points of the box: real unit vectors u in a box of (n.z, azimuth) and
+ * every error term e_k in [-r_k, r_k].  Beside it, the value carries its
+ * gradient in the e's, also as intervals over the whole box (forward
+ * differentiation).  A rounding of an exact result v to format f is
+ *     fl(v) = v (1 + e) + eta,   |e| <= u,   |eta| <= eta_f,
+ * with eta only where |v| can fall below the smallest normal number
+ * (u = 2^-24, eta_f = 2^-150 in float; 2^-53 and 2^-1074 in double);
+ * round_to uses the tighter form fl(v) = v + d, |d| <= half an ulp of
+ * the largest binade v can reach, which implies both.
+ * An operation the box proves exact adds no term: a product by 0 or 1, by
+ * a power of two that cannot underflow, of two floats in double, a
+ * conversion that widens, and x - y with y/2 <= x <= 2y (Sterbenz).
+ *
+ * Mean value theorem: for any quantity Q of the outputs,
+ *     Q(u, e) = Q(u, 0) + sum_k e_k dQ/de_k(u, xi),  xi between 0 and e,
+ * so |Q| <= |Q(U, 0)| + sum_k r_k max|dQ/de_k(U, E)| over the box, which
+ * is what mvf_quantity bounds.  Where Q(u, 0) = 0 identically (the method
+ * is exact on the unit sphere), the first term is 0.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <mpfi.h>
+#include "model_int.h"
+#include "mvf.h"
+
+#define MV_PREC   80
+#define MV_MAXVAR 192
+
+typedef struct {
+	mpfi_t v;        /* the value over the box                         */
+	mpfi_t *g;       /* d v / d e_k, meaningful where nz[k]             */
+	unsigned char *nz;
+	int ng;          /* entries 0..ng-1 may be nonzero                  */
+	int fmt;         /* CM_F32 or CM_F64: the format the value lies in  */
+	int is_cst;      /* an exact constant cval                          */
+	double cval;
+	/* A seed y of 1/sqrt(x): y = r/sqrt(x) with r in [rel_lo, rel_hi], x the
+	   value rsqrt_of (-1: not a seed).  A rounded conversion a = x (1 + d):
+	   cvt_of = x, d in [-cvt_u, cvt_u] (-1: not one). */
+	int rsqrt_of, cvt_of;
+	double rel_lo, rel_hi, cvt_u;
+	/* Inputs only: br, the values the input can take given the region (n.z
+	   within the band) and the branches taken so far (has_br: it is set);
+	   input, which input (0..2, or -1). */
+	int has_br, input;
+	mpfi_t br;
+} mval;
+
+struct mvf {
+	mval val[CM_MAXV];
+	int n;
+	double r[MV_MAXVAR];   /* the range of each error term */
+	int nvar;
+	int failed;
+	int zero_e;            /* every e is 0: values only, no gradients */
+	int nograd;            /* values over the whole box, no gradients */
+	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
+	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
+	mpfi_t one, mone;
+	mpfi_t u[3];           /* the inputs' exact values u_i over the box */
+	mpfr_t f1, f2;
+};
+
+mvf *mvf_new(void)
+{
+	mvf *m = calloc(1, sizeof *m);
+	int i, k;
+	if (!m)
+		return NULL;
+	for (i = 0; i < CM_MAXV; i++) {
+		mval *x = &m->val[i];
+		mpfi_init2(x->v, MV_PREC);
+		mpfi_init2(x->br, MV_PREC);
+		x->g = malloc(MV_MAXVAR * sizeof *x->g);
+		x->nz = calloc(MV_MAXVAR, 1);
+		if (!x->g || !x->nz)
+			abort(); /* a few MB at start-up: nothing sensible to do */
+		for (k = 0; k < MV_MAXVAR; k++)
+			mpfi_init2(x->g[k], MV_PREC);
+	}
+	mpfi_init2(m->t1, MV_PREC);
+	mpfi_init2(m->t2, MV_PREC);
+	mpfi_init2(m->t3, MV_PREC);
+	mpfi_init2(m->s1, MV_PREC);
+	mpfi_init2(m->s2, MV_PREC);
+	mpfi_init2(m->one, MV_PREC);
+	mpfi_init2(m->mone, MV_PREC);
+	mpfi_set_d(m->one, 1.0);
+	mpfi_set_d(m->mone, -1.0);
+	for (i = 0; i < 3; i++)
+		mpfi_init2(m->u[i], MV_PREC);
+	mpfr_init2(m->f1, MV_PREC);
+	mpfr_init2(m->f2, MV_PREC);
+	return m;
+}
+
+void mvf_free(mvf *m)
+{
+	int i, k;
+	if (!m)
+		return;
+	for (i = 0; i < CM_MAXV; i++) {
+		for (k = 0; k < MV_MAXVAR; k++)
+			mpfi_clear(m->val[i].g[k]);
+		free(m->val[i].g);
+		free(m->val[i].nz);
+		mpfi_clear(m->val[i].v);
+		mpfi_clear(m->val[i].br);
+	}
+	mpfi_clear(m->t1);
+	mpfi_clear(m->t2);
+	mpfi_clear(m->t3);
+	mpfi_clear(m->s1);
+	mpfi_clear(m->s2);
+	mpfi_clear(m->one);
+	mpfi_clear(m->mone);
+	for (i = 0; i < 3; i++)
+		mpfi_clear(m->u[i]);
+	mpfr_clear(m->f1);
+	mpfr_clear(m->f2);
+	free(m);
+}
+
+int mvf_failed(const mvf *m) { return m->failed; }
+
+static double unit_round(int f) { return f == CM_F32 ? 0x1p-24 : 0x1p-53; }
+static double normal_min(int f) { return f == CM_F32 ? 0x1p-126 : 0x1p-1022; }
+
+/* A fresh value slot with an empty gradient. */
+static cv fresh(mvf *m, int fmt)
+{
+	mval *x;
+	if (m->n >= CM_MAXV) {
+		m->failed = 1;
+		return CM_MAXV - 1;
+	}
+	x = &m->val[m->n];
+	memset(x->nz, 0, (size_t)(x->ng > 0 ? x->ng : 0));
+	x->ng = 0;
+	x->fmt = fmt;
+	x->is_cst = 0;
+	x->rsqrt_of = x->cvt_of = -1;
+	x->has_br = 0;
+	x->input = -1;
+	return m->n++;
+}
+
+static int new_var(mvf *m, double range)
+{
+	if (m->nograd)
+		return -1;
+	if (m->nvar >= MV_MAXVAR) {
+		m->failed = 1;
+		return MV_MAXVAR - 1;
+	}
+	m->r[m->nvar] = range;
+	return m->nvar++;
+}
+
+static void set_grad(mval *x, int k, mpfi_srcptr g)
+{
+	if (k < 0)
+		return;
+	mpfi_set(x->g[k], g);
+	x->nz[k] = 1;
+	if (x->ng <= k)
+		x->ng = k + 1;
+}
+
+/* r->g = sa * a->g + sb * b->g (sa, sb intervals; b may be NULL). */
+static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval *b, mpfi_srcptr sb)
+{
+	int k, ng = a->ng;
+	if (m->zero_e || m->nograd)
+		return;
+	if (b && b->ng > ng)
+		ng = b->ng;
+	for (k = 0; k < ng; k++) {
+		int ia = k < a->ng && a->nz[k], ib = b && k < b->ng && b->nz[k];
+		if (!ia && !ib)
+			continue;
+		if (ia)
+			mpfi_mul(m->t3, a->g[k], sa);
+		else
+			mpfi_set_d(m->t3, 0.0);
+		if (ib) {
+			mpfi_mul(m->t2, b->g[k], sb);
+			mpfi_add(m->t3, m->t3, m->t2);
+		}
+		set_grad(r, k, m->t3);
+	}
+}
+
+cv mvf_cst(mvf *m, double v)
+{
+	cv i = fresh(m, (double)(float)v == v ? CM_F32 : CM_F64);
+	mpfi_set_d(m->val[i].v, v);
+	m->val[i].is_cst = 1;
+	m->val[i].cval = v;
+	return i;
+}
+
+/* Round slot r (an exact result v) to format f: fl(v) = v + d with
+   |d| <= half an ulp of the binade of max|V| (2^(E - p) for 2^E <= max|V|,
+   E at least the smallest normal exponent, so subnormal results are
+   covered too).  That is u |v| or less, and half of it just below a power
+   of two, where u |v| would count the error twice. */
+/* Half an ulp of format f in the binade of max|V| (the largest error of
+   rounding any value of V to nearest); 0 when V = {0}. */
+static double half_ulp_of(mvf *m, mpfi_srcptr v, int f)
+{
+	const int p = f == CM_F32 ? 24 : 53, emin = f == CM_F32 ? -126 : -1022;
+	long e;
+	double h;
+	mpfi_mag(m->f1, v);
+	if (mpfr_zero_p(m->f1))
+		return 0.0;
+	e = (long)mpfr_get_exp(m->f1) - 1;            /* 2^e <= max|V| < 2^(e+1) */
+	if (mpfr_cmp_ui_2exp(m->f1, 1, e) == 0)
+		e--;   /* max|V| = 2^e: below it the ulp halves, and 2^e itself is exact */
+	if (e < emin)
+		e = emin;
+	h = ldexp(1.0, (int)(e - p));
+	return h == 0.0 ? 0x1p-1074 : h;              /* 2^-1075 is not a double */
+}
+
+/* x->v += [-h, h], keeping its sign: rounding maps values >= 0 to >= 0. */
+static void add_sym(mvf *m, mval *x, double h)
+{
+	const int nonneg = mpfi_is_nonneg(x->v), nonpos = mpfi_is_nonpos(x->v);
+	mpfi_interv_d(m->t1, -h, h);
+	mpfi_add(x->v, x->v, m->t1);
+	if (nonneg || nonpos) {
+		mpfi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
+		mpfi_intersect(x->v, x->v, m->t1);
+	}
+}
+
+static void round_to(mvf *m, cv r, int f)
+{
+	mval *x = &m->val[r];
+	double h;
+	x->fmt = f;
+	if (mpfi_nan_p(x->v) || !mpfi_bounded_p(x->v)) {
+		m->failed = 1;
+		return;
+	}
+	if (m->zero_e || (h = half_ulp_of(m, x->v, f)) == 0.0)
+		return;                                   /* v = 0: exact */
+	set_grad(x, new_var(m, h), m->one);
+	add_sym(m, x, h);
+}
+
+static int is_cst(const mval *x, double v) { return x->is_cst && x->cval == v; }
+
+static int is_pow2(const mval *x)
+{
+	int e;
+	return x->is_cst && x->cval != 0.0 && fabs(frexp(x->cval, &e)) == 0.5;
+}
+
+/* Sterbenz: x - y is exact when y/2 <= x <= 2y (x, y of one sign and in
+   the format).  neg_b: the operation is x + b, i.e. y = -b. */
+static int sterbenz(mvf *m, const mval *a, const mval *b, int neg_b, int f)
+{
+	mpfi_srcptr y = b->v;
+	if (a->fmt > f || b->fmt > f)
+		return 0;
+	if (neg_b) {
+		mpfi_neg(m->t1, b->v);
+		y = m->t1;
+	}
+	if (mpfi_is_strictly_neg(a->v) && mpfi_is_strictly_neg(y)) {
+		mpfi_neg(m->t2, a->v);
+		mpfi_neg(m->t1, y);
+		return mvf_ratio_within_2(m, m->t2, m->t1);
+	}
+	if (mpfi_is_strictly_pos(a->v) && mpfi_is_strictly_pos(y))
+		return mvf_ratio_within_2(m, a->v, y);
+	return 0;
+}
+
+/* For positive intervals x, y: y/2 <= x <= 2y at every point. */
+int mvf_ratio_within_2(mvf *m, mpfi_srcptr x, mpfi_srcptr y)
+{
+	mpfi_get_left(m->f1, x);
+	mpfi_get_right(m->f2, y);
+	mpfr_div_2ui(m->f2, m->f2, 1, MPFR_RNDU);
+	if (mpfr_cmp(m->f1, m->f2) < 0)
+		return 0;
+	mpfi_get_right(m->f1, x);
+	mpfi_get_left(m->f2, y);
+	mpfr_mul_2ui(m->f2, m->f2, 1, MPFR_RNDD);
+	return mpfr_cmp(m->f1, m->f2) <= 0;
+}
+
+/* 1 when the box proves the operation exact in format f. */
+static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const mval *r)
+{
+	switch (op) {
+	case MVF_NEG:
+		return 1;
+	case MVF_CVT:
+		return f == CM_F64 || a->fmt == CM_F32;
+	case MVF_MUL:
+		if (is_cst(a, 0.0) || is_cst(b, 0.0) || is_cst(a, 1.0) || is_cst(b, 1.0) ||
+		    is_cst(a, -1.0) || is_cst(b, -1.0))
+			return 1;
+		if (f == CM_F64 && a->fmt == CM_F32 && b->fmt == CM_F32)
+			return 1; /* 24 + 24 bits fit in 53 */
+		if (is_pow2(a) || is_pow2(b)) {
+			mpfi_mig(m->f1, r->v);
+			return mpfr_cmp_d(m->f1, normal_min(f)) >= 0;
+		}
+		return 0;
+	case MVF_ADD:
+	case MVF_SUB:
+		if (is_cst(a, 0.0) || is_cst(b, 0.0))
+			return 1;
+		return sterbenz(m, a, b, op == MVF_ADD, f);
+	default:
+		return 0;
+	}
+}
+
+static void copy_grad(mvf *m, mval *r, const mval *a)
+{
+	int k;
+	if (m->zero_e || m->nograd)
+		return;
+	for (k = 0; k < a->ng; k++)
+		if (a->nz[k])
+			set_grad(r, k, a->g[k]);
+}
+
+/* r->g += d->g */
+static void grad_add(mvf *m, mval *r, const mval *d)
+{
+	int k;
+	if (m->zero_e || m->nograd)
+		return;
+	for (k = 0; k < d->ng; k++) {
+		if (!d->nz[k])
+			continue;
+		if (k < r->ng && r->nz[k])
+			mpfi_add(r->g[k], r->g[k], d->g[k]);
+		else
+			set_grad(r, k, d->g[k]);
+	}
+}
+
+/* The exact operation into r (value and gradient); 0 when it cannot be
+   enclosed (a division by an interval holding 0, a square root whose
+   derivative is unbounded). */
+static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, const mval *d)
+{
+	switch (op) {
+	case MVF_ADD:
+		mpfi_add(r->v, a->v, b->v);
+		grad_lin(m, r, a, m->one, b, m->one);
+		return 1;
+	case MVF_SUB:
+		mpfi_sub(r->v, a->v, b->v);
+		grad_lin(m, r, a, m->one, b, m->mone);
+		return 1;
+	case MVF_MUL:
+	case MVF_FMA:
+		if (a == b)
+			mpfi_sqr(r->v, a->v);   /* x*x >= 0: not the product of two intervals */
+		else
+			mpfi_mul(r->v, a->v, b->v);
+		grad_lin(m, r, a, b->v, b, a->v);
+		if (op == MVF_FMA) {
+			mpfi_add(r->v, r->v, d->v);
+			grad_add(m, r, d);
+		}
+		return 1;
+	case MVF_DIV:
+		if (mpfi_has_zero(b->v))
+			return 0;
+		mpfi_div(r->v, a->v, b->v);
+		mpfi_inv(m->s1, b->v);          /* d(a/b) = da/b - db a/b^2 */
+		mpfi_div(m->s2, r->v, b->v);
+		mpfi_neg(m->s2, m->s2);
+		grad_lin(m, r, a, m->s1, b, m->s2);
+		return 1;
+	case MVF_SQRT:
+		if (!mpfi_is_nonneg(a->v))
+			return 0;
+		mpfi_sqrt(r->v, a->v);
+		if (m->zero_e || m->nograd)
+			return 1;
+		if (!mpfi_is_strictly_pos(a->v))
+			return 0;
+		mpfi_mul_2ui(m->s1, r->v, 1);   /* d sqrt(a) = da / (2 sqrt(a)) */
+		mpfi_inv(m->s1, m->s1);
+		grad_lin(m, r, a, m->s1, NULL, NULL);
+		return 1;
+	case MVF_NEG:
+		mpfi_neg(r->v, a->v);
+		grad_lin(m, r, a, m->mone, NULL, NULL);
+		return 1;
+	default: /* MVF_CVT */
+		mpfi_set(r->v, a->v);
+		copy_grad(m, r, a);
+		return 1;
+	}
+}
+
+cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
+{
+	cv ir = fresh(m, f);
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia], *b = ib >= 0 ? &m->val[ib] : NULL, *d = id >= 0 ? &m->val[id] : NULL;
+	if (m->failed)
+		return ir;
+	if (!exact_eval(m, op, r, a, b, d) || mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)) {
+		m->failed = 1;
+		return ir;
+	}
+	if (op == MVF_NEG) {
+		r->fmt = a->fmt;
+	} else if (!exact_op(m, op, f, a, b, r)) {
+		round_to(m, ir, f);
+	} else if (op == MVF_CVT) {
+		r->rsqrt_of = a->rsqrt_of;  /* a widening keeps a seed a seed */
+		r->rel_lo = a->rel_lo;
+		r->rel_hi = a->rel_hi;
+	}
+	if (op == MVF_CVT && f == CM_F32 && a->fmt == CM_F64) {
+		mpfi_mig(m->f1, a->v);
+		if (mpfr_cmp_d(m->f1, normal_min(CM_F32)) >= 0) {
+			r->cvt_of = ia;
+			r->cvt_u = unit_round(CM_F32);
+		}
+	}
+	return ir;
+}
+
+cv mvf_seed(mvf *m, seed_kind k, cv ia)
+{
+	int f = k == SEED_INVSQRT_D ? CM_F64 : CM_F32;
+	cv ir = fresh(m, f);
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia];
+	seed_bound sb;
+	if (m->failed)
+		return ir;
+	mpfi_get_left(m->f1, a->v);
+	mpfi_get_right(m->f2, a->v);
+	if (seed_bound_get(k, &sb) != 0 || mpfr_cmp_d(m->f1, sb.x_lo) < 0 || mpfr_cmp_d(m->f2, sb.x_hi) > 0) {
+		m->failed = 1; /* outside the inputs whose seed error was bounded */
+		return ir;
+	}
+	mpfi_sqrt(m->s1, a->v);                          /* 1/sqrt(a)               */
+	mpfi_inv(m->s1, m->s1);
+	mpfi_interv_d(m->t1, 1.0 - sb.bound, 1.0 + sb.bound);
+	mpfi_mul(r->v, m->s1, m->t1);                    /* (1 + e)/sqrt(a)         */
+	r->rsqrt_of = ia;
+	r->rel_lo = 1.0 - sb.bound;
+	r->rel_hi = 1.0 + sb.bound;
+	if (m->zero_e) {
+		mpfi_set(r->v, m->s1);
+		return ir;
+	}
+	mpfi_div(m->s2, r->v, a->v);                     /* d/da = -(1 + e)/(2 a^1.5) */
+	mpfi_div_2ui(m->s2, m->s2, 1);
+	mpfi_neg(m->s2, m->s2);
+	grad_lin(m, r, a, m->s2, NULL, NULL);
+	set_grad(r, new_var(m, sb.bound), m->s1);        /* d/de = 1/sqrt(a)        */
+	return ir;
+}
+
+static int empty_br(const mval *x) { return x->has_br && mpfi_is_empty(x->br); }
+
+void mvf_compare(mvf *m, int op, int absolute, cv ia, cv ib, int *can_true, int *can_false)
+{
+	mpfi_srcptr a = m->val[ia].has_br ? m->val[ia].br : m->val[ia].v;
+	mpfi_srcptr b = m->val[ib].has_br ? m->val[ib].br : m->val[ib].v;
+	if (empty_br(&m->val[ia]) || empty_br(&m->val[ib])) {
+		*can_true = *can_false = 0;
+		return;
+	}
+	if (absolute) {
+		mpfi_abs(m->s1, a);
+		mpfi_abs(m->s2, b);
+		a = m->s1;
+		b = m->s2;
+	}
+	if (op == CM_GT) { /* a > b */
+		mpfi_srcptr t = a;
+		a = b;
+		b = t;
+	}
+	/* a < b possible when min a < max b; false possible when max a >= min b */
+	mpfi_get_left(m->f1, a);
+	mpfi_get_right(m->f2, b);
+	*can_true = mpfr_cmp(m->f1, m->f2) < 0;
+	mpfi_get_right(m->f1, a);
+	mpfi_get_left(m->f2, b);
+	*can_false = mpfr_cmp(m->f1, m->f2) >= 0;
+}
+
+void mvf_sign_possible(mvf *m, cv ia, int *can_set, int *can_clear)
+{
+	mpfi_srcptr a = m->val[ia].has_br ? m->val[ia].br : m->val[ia].v;
+	if (empty_br(&m->val[ia])) {
+		*can_set = *can_clear = 0;
+		return;
+	}
+	mpfi_get_left(m->f1, a);
+	mpfi_get_right(m->f2, a);
+	*can_set = mpfr_sgn(m->f1) <= 0;   /* -0 possible wherever 0 is */
+	*can_clear = mpfr_sgn(m->f2) >= 0;
+}
+
+/* Start a run over box b: the inputs n_i = u_i (1 + d_i) + eta_i, or
+   u_i (1 + t) with |t| <= tolerance when tolerance >= 0. */
+static void band_constraint(mvf *m, const mvf_box *b, cv iz);
+static void refine_input(mvf *m, mval *x);
+static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
+
+void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
+{
+	int i;
+	m->n = 0;
+	m->nvar = 0;
+	m->failed = 0;
+	m->zero_e = mode == MVF_AT_ZERO;
+	m->nograd = mode == MVF_VALUES;
+	for (i = 0; i < 3; i++)
+		in[i] = fresh(m, b->prec);
+	mpfi_interv_d(m->t1, b->z_lo, b->z_hi);                 /* z             */
+	mpfi_d_sub(m->s1, 1.0, m->t1);
+	mpfi_add_d(m->s2, m->t1, 1.0);
+	mpfi_mul(m->s1, m->s1, m->s2);
+	if (!mpfi_is_nonneg(m->s1))
+		mpfi_interv_d(m->s1, 0.0, 1.0);
+	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
+	if (b->has_zpoint)
+		mpfi_set_d(m->val[in[2]].v, b->zpoint);   /* exact: no error term */
+	else
+		mpfi_set(m->val[in[2]].v, m->t1);
+	mpfi_interv_d(m->t2, b->phi_lo, b->phi_hi);             /* phi, radians  */
+	mpfi_cos(m->s2, m->t2);
+	mpfi_mul(m->val[in[0]].v, m->s1, m->s2);
+	mpfi_sin(m->s2, m->t2);
+	mpfi_mul(m->val[in[1]].v, m->s1, m->s2);
+	for (i = 0; i < 3; i++) {
+		m->val[in[i]].input = i;
+		mpfi_set(m->u[i], m->val[in[i]].v);
+	}
+	m->val[in[2]].input = b->has_zpoint ? -1 : 2;
+	if (m->zero_e)
+		return;   /* Q(U, 0) along a given path: no decision is made */
+	input_errors(m, b, in);
+	band_constraint(m, b, in[2]);
+}
+
+/* n.z lies in the region's band: branch decisions on it may know that. */
+static void band_constraint(mvf *m, const mvf_box *b, cv iz)
+{
+	mval *z = &m->val[iz];
+	mpfi_interv_d(m->t1, b->nz_lo, b->nz_hi);
+	mpfi_intersect(z->br, z->v, m->t1);
+	z->has_br = 1;  /* empty: no input of the box is in the band, no path */
+	refine_input(m, z);
+}
+
+/* An input's value for the arithmetic after a constraint: the mean value
+   form evaluates the model at n_i(theta e) = u_i (1 + theta d_i), between
+   u_i and the actual n_i, and the actual n_i lies in br; so hull(U_i, br)
+   encloses every point the form needs. */
+static void refine_input(mvf *m, mval *x)
+{
+	if (x->input < 0 || !x->has_br || mpfi_is_empty(x->br))
+		return;
+	mpfi_union(m->t2, m->u[x->input], x->br);
+	mpfi_intersect(x->v, x->v, m->t2);
+}
+
+/* After a branch on input a against constant b took `side`: the input's
+   possible values know it.  op CM_LT: a < b (side 1) or a >= b (side 0);
+   CM_GT: a > b or a <= b.  Absolute comparisons are left alone. */
+void mvf_constrain(mvf *m, int op, int absolute, cv ia, cv ib, int side)
+{
+	mval *a = &m->val[ia];
+	const mval *b = &m->val[ib];
+	int below;
+	if (absolute || a->input < 0 || !b->is_cst || m->zero_e)
+		return;
+	below = (op == CM_LT) == (side != 0);   /* a <= b on this side */
+	mpfi_interv_d(m->t1, below ? -INFINITY : b->cval, below ? b->cval : INFINITY);
+	if (!a->has_br) {
+		mpfi_set(a->br, a->v);
+		a->has_br = 1;
+	}
+	mpfi_intersect(a->br, a->br, m->t1);
+	refine_input(m, a);
+}
+
+/* The same for the sign bit of input a (set: a <= 0, clear: a >= 0). */
+void mvf_constrain_sign(mvf *m, cv ia, int set)
+{
+	mval *a = &m->val[ia];
+	if (a->input < 0 || m->zero_e)
+		return;
+	mpfi_interv_d(m->t1, set ? -INFINITY : 0.0, set ? 0.0 : INFINITY);
+	if (!a->has_br) {
+		mpfi_set(a->br, a->v);
+		a->has_br = 1;
+	}
+	mpfi_intersect(a->br, a->br, m->t1);
+	refine_input(m, a);
+}
+
+int mvf_zero_e(const mvf *m) { return m->zero_e; }
+
+
+/* The inputs' error terms: n_i = u_i (1 + d_i) + eta_i, or u_i (1 + t). */
+static void input_errors(mvf *m, const mvf_box *b, cv in[3])
+{
+	double u = unit_round(b->prec);
+	int i, t_var = -1;
+	if (b->tolerance >= 0)
+		t_var = new_var(m, b->tolerance);
+	for (i = 0; i < (b->has_zpoint ? 2 : 3); i++) {
+		mval *x = &m->val[in[i]];
+		mpfi_set(m->s2, x->v);                              /* u_i           */
+		if (b->tolerance >= 0) {
+			set_grad(x, t_var, m->s2);
+			mpfi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
+			mpfi_mul(x->v, x->v, m->t1);
+			continue;
+		}
+		/* n_i = u_i + w_i, |w_i| <= half an ulp of the binade of max|u_i| */
+		{
+			double h = half_ulp_of(m, x->v, b->prec);
+			(void)u;
+			if (h > 0.0) {
+				set_grad(x, new_var(m, h), m->one);
+				add_sym(m, x, h);
+			}
+		}
+	}
+}
+
+/* Exact operations on model values, for the defect quantities. */
+static cv ex(mvf *m, int op, cv a, cv b)
+{
+	cv ir = fresh(m, CM_F64);
+	mval *r = &m->val[ir];
+	if (!m->failed && (!exact_eval(m, op, r, &m->val[a], b >= 0 ? &m->val[b] : NULL, NULL) ||
+	                   mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)))
+		m->failed = 1;
+	return ir;
+}
+
+static cv ex_dot(mvf *m, const cv *p, const cv *q)
+{
+	cv s = ex(m, MVF_MUL, p[0], q[0]);
+	s = ex(m, MVF_ADD, s, ex(m, MVF_MUL, p[1], q[1]));
+	return ex(m, MVF_ADD, s, ex(m, MVF_MUL, p[2], q[2]));
+}
+
+void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
+{
+	cv one = mvf_cst(m, 1.0);
+	q[CQ_N1] = ex(m, MVF_SUB, ex(m, MVF_SQRT, ex_dot(m, out, out), -1), one);
+	q[CQ_N2] = ex(m, MVF_SUB, ex(m, MVF_SQRT, ex_dot(m, out + 3, out + 3), -1), one);
+	q[CQ_D1N] = ex_dot(m, out, n);
+	q[CQ_D2N] = ex_dot(m, out + 3, n);
+	q[CQ_D12] = ex_dot(m, out, out + 3);
+}
+
+/* |Q| over the box directly, and sum_k r_k max|dQ/de_k|, rounded up. */
+void mvf_bounds(mvf *m, cv iq, double *direct, double *lin)
+{
+	const mval *q = &m->val[iq];
+	int k;
+	if (m->failed) {
+		*direct = *lin = INFINITY;
+		return;
+	}
+	mpfi_mag(m->f1, q->v);
+	*direct = mpfr_get_d(m->f1, MPFR_RNDU);
+	mpfr_set_zero(m->f2, 1);
+	for (k = 0; k < q->ng; k++) {
+		if (!q->nz[k])
+			continue;
+		mpfi_mag(m->f1, q->g[k]);
+		mpfr_mul_d(m->f1, m->f1, m->r[k], MPFR_RNDU);
+		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDU);
+	}
+	*lin = mpfr_get_d(m->f2, MPFR_RNDU);
+}
+
+/* f(r) = r (1.5 - 0.5 r^2 p) at the point (r, p), enclosed in m->t1. */
+static void newton_poly(mvf *m, double r, mpfi_srcptr p, mpfi_ptr out)
+{
+	mpfi_set_d(m->t2, r);
+	mpfi_sqr(m->t3, m->t2);
+	mpfi_mul(m->t3, m->t3, p);
+	mpfi_div_2ui(m->t3, m->t3, 1);
+	mpfi_d_sub(m->t3, 1.5, m->t3);
+	mpfi_mul(out, m->t3, m->t2);
+}
+
+/* The relative error of Listing 3's Newton step y1 = y (1.5 - 0.5 x y y)
+   on a seed y = r/sqrt(x): with h = 0.5 x exact and the roundings
+   (1 + d1..d4) of h y, (h y) y, 1.5 - t and y t,
+       y1 sqrt(x) = f(r) (1 + d3)(1 + d4),  f(r) = r (1.5 - 0.5 r^2 p),
+   p = (1 + d1)(1 + d2): x cancels, which intervals in x cannot see.  f is
+   concave in r > 0 and decreasing in p, so its range over the box is at
+   the corners and at its peak r = 1/sqrt(p), f = 1/sqrt(p).  Returns the
+   bound of |y1 sqrt(x) - 1|, or -1 when y is no seed of x. */
+static double newton_rel(mvf *m, int f, cv ix, cv iy)
+{
+	const mval *y = &m->val[iy];
+	double u = unit_round(f), rlo = y->rel_lo, rhi = y->rel_hi, lo, hi;
+	if (y->rsqrt_of < 0)
+		return -1.0;
+	if (y->rsqrt_of != ix) { /* seed of (float)x: r (1 + d)^(-1/2) */
+		const mval *a = &m->val[y->rsqrt_of];
+		if (a->cvt_of != ix)
+			return -1.0;
+		rlo = rlo / sqrt(1.0 + a->cvt_u) * (1.0 - 0x1p-50);
+		rhi = rhi / sqrt(1.0 - a->cvt_u) * (1.0 + 0x1p-50);
+	}
+	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	mpfi_sqr(m->s1, m->s1);                         /* p              */
+	mpfi_get_left(m->f1, m->s1);
+	mpfi_set_fr(m->s2, m->f1);                      /* p_lo: the max  */
+	newton_poly(m, rlo, m->s2, m->t1);
+	mpfi_get_right(m->f2, m->t1);
+	newton_poly(m, rhi, m->s2, m->t1);
+	mpfi_get_right(m->f1, m->t1);
+	mpfr_max(m->f2, m->f2, m->f1, MPFR_RNDU);
+	mpfi_sqrt(m->t1, m->s2);
+	mpfi_inv(m->t1, m->t1);                         /* peak 1/sqrt(p_lo) */
+	mpfi_get_right(m->f1, m->t1);
+	mpfr_max(m->f2, m->f2, m->f1, MPFR_RNDU);
+	hi = mpfr_get_d(m->f2, MPFR_RNDU);
+	mpfi_get_right(m->f1, m->s1);
+	mpfi_set_fr(m->s2, m->f1);                      /* p_hi: the min  */
+	newton_poly(m, rlo, m->s2, m->t1);
+	mpfi_get_left(m->f2, m->t1);
+	newton_poly(m, rhi, m->s2, m->t1);
+	mpfi_get_left(m->f1, m->t1);
+	mpfr_min(m->f2, m->f2, m->f1, MPFR_RNDD);
+	lo = mpfr_get_d(m->f2, MPFR_RNDD);
+	mpfi_interv_d(m->t1, lo, hi);                   /* times (1 + d3)(1 + d4) */
+	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	mpfi_mul(m->t1, m->t1, m->s1);
+	mpfi_mul(m->t1, m->t1, m->s1);
+	mpfi_sub_d(m->t1, m->t1, 1.0);
+	mpfi_mag(m->f1, m->t1);
+	return mpfr_get_d(m->f1, MPFR_RNDU);
+}
+
+/* Listing 3's Newton step, as y1 = (1 + e)/sqrt(x) with |e| <= newton_rel.
+   Needs h, h y and (h y) y normal: x >= 2^-100 (float) or 2^-1000. */
+cv mvf_newton(mvf *m, int f, cv ix, cv iy)
+{
+	cv ir = fresh(m, f);
+	mval *r = &m->val[ir];
+	const mval *x = &m->val[ix];
+	double e = newton_rel(m, f, ix, iy);
+	mpfi_get_left(m->f1, x->v);
+	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == CM_F32 ? 0x1p-100 : 0x1p-1000) < 0) {
+		m->failed = 1;
+		return ir;
+	}
+	mpfi_sqrt(m->s1, x->v);
+	mpfi_inv(m->s1, m->s1);                          /* 1/sqrt(x)      */
+	if (m->zero_e) {
+		mpfi_set(r->v, m->s1);
+		return ir;
+	}
+	mpfi_interv_d(m->t1, 1.0 - e, 1.0 + e);
+	mpfi_mul(r->v, m->s1, m->t1);
+	mpfi_div(m->s2, r->v, x->v);                     /* d/dx = -(1 + e)/(2 x^1.5) */
+	mpfi_div_2ui(m->s2, m->s2, 1);
+	mpfi_neg(m->s2, m->s2);
+	grad_lin(m, r, x, m->s2, NULL, NULL);
+	set_grad(r, new_var(m, e), m->s1);
+	return ir;
+}

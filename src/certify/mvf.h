@@ -1,0 +1,35 @@
+/*
+ * mvf.h - the mean-value-form back end, as the branch and bound uses it.
+ */
+#ifndef ONB_CERTIFY_MVF_H
+#define ONB_CERTIFY_MVF_H
+
+#include <mpfi.h>
+#include "model_int.h"
+
+/* A box of real unit vectors: z = u.z in [z_lo, z_hi], azimuth in
+   [phi_lo, phi_hi] radians; the input format and its domain. */
+typedef struct {
+	double z_lo, z_hi, phi_lo, phi_hi;
+	double nz_lo, nz_hi; /* the region's band: every input n has n.z in it,
+	                        which branch decisions on n.z may use         */
+	int prec;           /* CM_F32 or CM_F64                           */
+	double tolerance;   /* < 0: roundings of unit vectors; else | |n| - 1 | <= T */
+	/* 1: n.z is the format value zpoint itself (the default domain only):
+	   [z_lo, z_hi] then holds the u.z that round to it, and n is not unit
+	   at e = 0, so every quantity takes its centre Q(U, 0). */
+	int has_zpoint;
+	double zpoint;
+} mvf_box;
+
+/* Runs: the values and gradients over the box (MVF_FULL), the values with
+   every error term 0 (MVF_AT_ZERO: the centre Q(U, 0)), the values over the
+   box without gradients (MVF_VALUES: the direct interval where a gradient
+   cannot be enclosed). */
+enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES };
+void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3]);
+void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5]);
+void mvf_bounds(mvf *m, cv q, double *direct, double *lin);
+int  mvf_ratio_within_2(mvf *m, mpfi_srcptr x, mpfi_srcptr y);
+
+#endif

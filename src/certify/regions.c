@@ -1,0 +1,169 @@
+/*
+ * regions.c - bands and sectors of the sphere, and their boxes.
+ */
+#include <math.h>
+#include <string.h>
+#include <mpfr.h>
+#include "regions.h"
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+double cert_phi_deg(double x, double y)
+{
+	double p;
+	if (x == 0.0 && y == 0.0)
+		return 0.0;
+	p = atan2(y, x) / DEG;
+	if (p < 0.0)
+		p += 360.0;
+	return p >= 360.0 ? 0.0 : p;
+}
+
+int cert_in_region(const cert_region *r, const double n[3])
+{
+	double p = cert_phi_deg(n[0], n[1]);
+	return n[2] >= r->nz_lo && n[2] <= r->nz_hi && p >= r->phi_lo && (p < r->phi_hi || r->phi_hi >= 360.0);
+}
+
+/* The band edges: 1 + n.z = 10^-k/2 near -1 down to 10^-lo_dec, the same
+   in 1 - n.z near +1 (whole decades), linear steps of 0.3 in between. */
+static size_t band_edges(int prec, double *e, size_t cap)
+{
+	const int lo_dec = prec == CM_F32 ? 7 : 16;
+	size_t n = 0;
+	int k;
+	e[n++] = -1.0;
+	for (k = 2 * lo_dec; k >= 2 && n < cap; k--)
+		e[n++] = -1.0 + pow(10.0, -0.5 * k);
+	for (k = -2; k <= 3 && n < cap; k++)
+		e[n++] = 0.3 * k;
+	for (k = 2; k <= lo_dec && n < cap; k++)
+		e[n++] = 1.0 - pow(10.0, -(double)k);
+	if (n < cap)
+		e[n++] = 1.0;
+	return n;
+}
+
+size_t regions_default(int prec, int nsec, cert_region *out, size_t cap)
+{
+	double e[128];
+	size_t ne = band_edges(prec, e, 128), i, n = 0;
+	int s;
+	for (i = 0; i + 1 < ne; i++)
+		for (s = 0; s < nsec && n < cap; s++) {
+			out[n].nz_lo = e[i];
+			out[n].nz_hi = e[i + 1];
+			out[n].phi_lo = 360.0 * s / nsec;
+			out[n].phi_hi = 360.0 * (s + 1) / nsec;
+			n++;
+		}
+	return n;
+}
+
+void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
+{
+	const double u = prec == CM_F32 ? 0x1p-24 : 0x1p-53, eta = prec == CM_F32 ? 0x1p-149 : 0x1p-1074;
+	const double w = tolerance >= 0 ? tolerance : u;   /* relative widening */
+	double zmax, rmin, dphi;
+	b->prec = prec;
+	b->tolerance = tolerance;
+	b->nz_lo = r->nz_lo;
+	b->nz_hi = r->nz_hi;
+	b->has_zpoint = 0;
+	b->zpoint = 0.0;
+	b->z_lo = fmax(-1.0, r->nz_lo - w * fabs(r->nz_lo) * 1.01 - eta);
+	b->z_hi = fmin(1.0, r->nz_hi + w * fabs(r->nz_hi) * 1.01 + eta);
+	zmax = fmax(fabs(b->z_lo), fabs(b->z_hi));   /* r = sqrt(1 - z^2) is least there */
+	rmin = sqrt(fmax(0.0, (1.0 - zmax) * (1.0 + zmax)));
+	/* the azimuth of n differs from u's by at most 2u + 2 eta / r radians */
+	dphi = rmin > 0.0 ? 2.01 * (u + 2.0 * eta / rmin) : INFINITY;
+	if (tolerance >= 0)
+		dphi = 0.0;   /* n = (1 + t) u: the same azimuth */
+	if (!(dphi < 1e-3)) {
+		b->phi_lo = 0.0;
+		b->phi_hi = 360.0 * DEG;
+	} else {
+		b->phi_lo = r->phi_lo * DEG - dphi;
+		b->phi_hi = r->phi_hi * DEG + dphi;
+	}
+}
+
+const char *region_singular_set(const char *method)
+{
+	if (strncmp(method, "naive", 5) == 0 && strcmp(method, "naive_nonorm") != 0)
+		return "n = -x (and near it, n.y, n.z subnormal: |b1|^2 underflows)";
+	if (strcmp(method, "tangent_cross_z") == 0)
+		return "n = +-z (and, in float, n.x^2 + n.y^2 below the smallest subnormal)";
+	return "none";
+}
+
+int region_meets_singular(const char *method, const cert_region *r)
+{
+	if (strncmp(method, "naive", 5) == 0 && strcmp(method, "naive_nonorm") != 0)
+		return r->nz_lo <= 0.0 && r->nz_hi >= 0.0 && r->phi_lo <= 180.0 && r->phi_hi >= 180.0;
+	if (strcmp(method, "tangent_cross_z") == 0)
+		return r->nz_lo <= -1.0 || r->nz_hi >= 1.0;
+	return 0;
+}
+
+/* The reals that round (to nearest) to the format value v have |u| in
+   [a - down/2, a + up/2], a = |v|, down and up its gaps to the next values
+   towards 0 and away from 0 (for a = 0: [0, up/2]).  Set exactly in t. */
+static void rounding_end(double v, int prec, int upper, mpfr_t t)
+{
+	double a = fabs(v), up, down;
+	if (prec == CM_F32) {
+		float f = (float)a;
+		up = (double)nextafterf(f, INFINITY) - a;
+		down = a > 0.0 ? a - (double)nextafterf(f, 0.0f) : 0.0;
+	} else {
+		up = nextafter(a, INFINITY) - a;
+		down = a > 0.0 ? a - nextafter(a, 0.0) : 0.0;
+	}
+	mpfr_set_d(t, a, MPFR_RNDN);
+	if (upper)
+		mpfr_add_d(t, t, up / 2, MPFR_RNDN);   /* exact at 4400 bits */
+	else
+		mpfr_sub_d(t, t, down / 2, MPFR_RNDN);
+}
+
+int cert_in_domain(const double n[3], int prec, double tolerance)
+{
+	mpfr_t s_lo, s_hi, t;
+	int i, in = 1;
+	mpfr_inits2(4400, s_lo, s_hi, t, (mpfr_ptr)0);
+	mpfr_set_zero(s_lo, 1);
+	mpfr_set_zero(s_hi, 1);
+	for (i = 0; i < 3 && in; i++) {
+		if (!isfinite(n[i]) || (prec == CM_F32 && (double)(float)n[i] != n[i])) {
+			in = 0;
+			break;
+		}
+		if (tolerance >= 0)
+			mpfr_set_d(t, fabs(n[i]), MPFR_RNDN);
+		else
+			rounding_end(n[i], prec, 0, t);
+		mpfr_sqr(t, t, MPFR_RNDN);
+		mpfr_add(s_lo, s_lo, t, MPFR_RNDN);
+		if (tolerance < 0)
+			rounding_end(n[i], prec, 1, t);
+		else
+			mpfr_set_d(t, fabs(n[i]), MPFR_RNDN);
+		mpfr_sqr(t, t, MPFR_RNDN);
+		mpfr_add(s_hi, s_hi, t, MPFR_RNDN);
+	}
+	if (in && tolerance >= 0) {   /* (1 - T)^2 <= |n|^2 <= (1 + T)^2 */
+		mpfr_set_d(t, 1.0, MPFR_RNDN);
+		mpfr_sub_d(t, t, tolerance, MPFR_RNDN);
+		mpfr_sqr(t, t, MPFR_RNDN);
+		in = mpfr_cmp(t, s_lo) <= 0;
+		mpfr_set_d(t, 1.0, MPFR_RNDN);
+		mpfr_add_d(t, t, tolerance, MPFR_RNDN);
+		mpfr_sqr(t, t, MPFR_RNDN);
+		in = in && mpfr_cmp(s_hi, t) <= 0;
+	} else if (in) {              /* min |u|^2 < 1 < max |u|^2 over the open box */
+		in = mpfr_cmp_ui(s_lo, 1) < 0 && mpfr_cmp_ui(s_hi, 1) > 0;
+	}
+	mpfr_clears(s_lo, s_hi, t, (mpfr_ptr)0);
+	return in;
+}

@@ -1,0 +1,27 @@
+/*
+ * regions.h - the regions `onbstudy certify` bounds, and each one's box of
+ * real unit vectors (regions.c).
+ */
+#ifndef ONB_CERTIFY_REGIONS_H
+#define ONB_CERTIFY_REGIONS_H
+
+#include <stddef.h>
+#include "region.h"
+#include "mvf.h"
+
+/* The default regions for precision prec (CM_F32 or CM_F64): bands of n.z
+   log-spaced in 1 + n.z near -1 (two per decade, down to the pole) and in
+   1 - n.z near +1 (one per decade), linear in between, times nsec equal
+   azimuth sectors.  Returns the count written to out (capacity cap). */
+size_t regions_default(int prec, int nsec, cert_region *out, size_t cap);
+
+/* The box of real unit vectors u whose rounding (or, with a tolerance,
+   whose scaling) can land in r: r widened by the input's own rounding. */
+void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b);
+
+/* The singular set of a method, as text ("none" when it has none), and
+   whether the closure of region r meets it. */
+const char *region_singular_set(const char *method);
+int region_meets_singular(const char *method, const cert_region *r);
+
+#endif

@@ -1,0 +1,20 @@
+/*
+ * scene_cert.h - proven bounds for a scene's interpolated shading normals
+ * (`onbstudy scene --certify`, scene_cert.c).
+ */
+#ifndef ONB_CERTIFY_SCENE_CERT_H
+#define ONB_CERTIFY_SCENE_CERT_H
+
+#include <stddef.h>
+#include "onb.h"
+#include "search.h"
+
+/* Prints, for each of the nm methods, the proven bound over the patches of
+   the scene in `path` (up: 'z', 'y' or 'x' as scene --up) beside its
+   measured maximum (measured[i]), and whether `recommended` (may be NULL)
+   is proven within E.  fl: float (1) or double (0).  0, or -1 after a
+   message. */
+int scene_certify(const char *path, char up, int fl, double E, const onb_method *ms, size_t nm,
+                  const double *measured, const char *recommended);
+
+#endif

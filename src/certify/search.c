@@ -1,0 +1,383 @@
+/*
+ * search.c - branch and bound over one region, with a search for the
+ * largest defect beside it.
+ *
+ * The found side: inputs sampled in the region (log-spaced in 1 -+ n.z
+ * near the poles, the sector's edges and diagonals), each rounded to the
+ * format and kept only if it is in the region and in the domain, then the
+ * centre of every box the bound side splits, and a walk of ulp steps from
+ * the best input.  The bound side: the region's box of real unit vectors,
+ * bounded by bound_box; the box with the largest bound is split in two
+ * (in log(1 -+ z) near the poles, else in z or in the azimuth, whichever
+ * is wider) until the largest bound is within target x found, or the
+ * budget of boxes runs out.  The region's bound is the largest over the
+ * leaves: every real unit vector of the box lies in some leaf.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+#include "search.h"
+#include "reference/reference.h"
+#include "inputs/inputs.h"
+#include "model_int.h"
+
+struct cert_ctx {
+	bound_ctx *b;
+	ref_ctx *rc;
+};
+
+cert_ctx *cert_ctx_new(void)
+{
+	cert_ctx *x = calloc(1, sizeof *x);
+	if (!x)
+		return NULL;
+	x->b = bound_new();
+	x->rc = ref_new(127);
+	if (!x->b || !x->rc) {
+		cert_ctx_free(x);
+		return NULL;
+	}
+	return x;
+}
+
+void cert_ctx_free(cert_ctx *x)
+{
+	if (!x)
+		return;
+	bound_free(x->b);
+	if (x->rc)
+		ref_free(x->rc);
+	free(x);
+}
+
+double cert_probe(cert_ctx *x, const study_kernel *k, int prec, const double n[3], int *nonfinite)
+{
+	static const double loc[3] = { 0.0, 0.0, 1.0 };
+	sample_metrics m;
+	ref_eval(x->rc, k, prec, n, loc, 0, &m);
+	*nonfinite = m.nonfinite;
+	return m.nonfinite ? INFINITY : m.defect;
+}
+
+static uint64_t mix(uint64_t v)
+{
+	v += 0x9e3779b97f4a7c15u;
+	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
+	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
+	return v ^ (v >> 31);
+}
+
+typedef struct {
+	cert_ctx *x;
+	const study_kernel *k;
+	int prec;
+	const cert_region *r;
+	const cert_opts *o;
+	cert_result *res;
+} probe_env;
+
+/* Try the rounding of the unit vector at (z, phi radians). */
+static void try_u(probe_env *e, double z, double phi)
+{
+	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z))), n[3];
+	int i, nf = 0;
+	double d;
+	n[0] = rr * cos(phi);
+	n[1] = rr * sin(phi);
+	n[2] = z;
+	if (e->o->tolerance > 0) {   /* scale within the tolerance: both ends */
+		double s = 1.0 + ((mix(e->res->probes) & 1) ? 1 : -1) * e->o->tolerance * 0.999;
+		for (i = 0; i < 3; i++)
+			n[i] *= s;
+	}
+	for (i = 0; i < 3; i++)
+		n[i] = fmt_round(n[i], e->prec);   /* not (double)(float): GCC 12.2 -O2 drops it (inputs.c) */
+	if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec == PREC_FLOAT ? CM_F32 : CM_F64, e->o->tolerance))
+		return;
+	e->res->probes++;
+	d = cert_probe(e->x, e->k, e->prec, n, &nf);
+	if (nf)
+		e->res->nonfinite = 1;
+	if (!nf && d > e->res->found) {
+		e->res->found = d;
+		memcpy(e->res->found_n, n, sizeof n);
+	}
+}
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+/* z at t in [0, 1] across the band: log-spaced in 1 + z (1 - z) near the
+   poles, down to 1e-3 of the band's far end when the band holds the pole. */
+static double sample_z(const cert_region *r, double t)
+{
+	double lo = r->nz_lo, hi = r->nz_hi, a, b;
+	if (hi <= -0.9) {
+		b = 1.0 + hi;
+		a = 1.0 + lo > 0.0 ? 1.0 + lo : b * 1e-3;
+		return -1.0 + a * pow(b / a, t);
+	}
+	if (lo >= 0.9) {
+		b = 1.0 - lo;
+		a = 1.0 - hi > 0.0 ? 1.0 - hi : b * 1e-3;
+		return 1.0 - a * pow(b / a, t);
+	}
+	return lo + (hi - lo) * t;
+}
+
+static double unit01(uint64_t seed, uint64_t i) { return (double)(mix(seed ^ mix(i)) >> 11) * 0x1p-53; }
+
+/* The sampled part of the found side. */
+static void sample_region(probe_env *e)
+{
+	const cert_region *r = e->r;
+	const double plo = r->phi_lo * DEG, phi_w = (r->phi_hi - r->phi_lo) * DEG;
+	long i;
+	int j;
+	double d;
+	for (d = ceil(r->phi_lo / 45.0) * 45.0; d < r->phi_hi; d += 45.0)   /* diagonals and axes */
+		for (j = 0; j <= 16; j++)
+			try_u(e, sample_z(r, j / 16.0), d * DEG);
+	try_u(e, r->nz_lo, plo + phi_w / 2);
+	try_u(e, r->nz_hi, plo + phi_w / 2);
+	for (i = 0; i < e->o->samples; i++)
+		try_u(e, sample_z(r, unit01(e->o->seed, (uint64_t)i * 2)),
+		      plo + phi_w * unit01(e->o->seed, (uint64_t)i * 2 + 1));
+}
+
+/* One step of k ulps on component i of n (in the format). */
+static double step_ulps(double v, int prec, int k)
+{
+	for (; k > 0; k--)
+		v = prec == PREC_FLOAT ? (double)nextafterf((float)v, INFINITY) : nextafter(v, INFINITY);
+	for (; k < 0; k++)
+		v = prec == PREC_FLOAT ? (double)nextafterf((float)v, -INFINITY) : nextafter(v, -INFINITY);
+	return v;
+}
+
+/* A walk of ulp steps from the best input: each accepted step raises the
+   defect; stops after `tries` steps. */
+static void walk(probe_env *e, long tries)
+{
+	long t;
+	if (!(e->res->found > 0.0))
+		return;
+	for (t = 0; t < tries; t++) {
+		double n[3], d;
+		int i, nf = 0;
+		uint64_t h = mix(e->o->seed ^ 0x5a5a5a5au ^ (uint64_t)t);
+		memcpy(n, e->res->found_n, sizeof n);
+		for (i = 0; i < 3; i++)
+			n[i] = step_ulps(n[i], e->prec, (int)((h >> (8 * i)) % 9) - 4);
+		if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec == PREC_FLOAT ? CM_F32 : CM_F64, e->o->tolerance))
+			continue;
+		e->res->probes++;
+		d = cert_probe(e->x, e->k, e->prec, n, &nf);
+		if (nf)
+			e->res->nonfinite = 1;
+		else if (d > e->res->found) {
+			e->res->found = d;
+			memcpy(e->res->found_n, n, sizeof n);
+		}
+	}
+}
+
+/* How wide a box is, in a measure that splits where the error varies:
+   near the poles log2 of the ratio of 1 -+ z across it (a quarter per
+   octave), elsewhere its width in z; and its arc length r dphi. */
+static double z_measure(const mvf_box *b, double *mid)
+{
+	double a, c;
+	if (b->z_hi <= -0.9 || b->z_lo >= 0.9) {
+		const int south = b->z_hi <= -0.9;
+		a = south ? 1.0 + b->z_lo : 1.0 - b->z_hi;
+		c = south ? 1.0 + b->z_hi : 1.0 - b->z_lo;
+		if (!(c > 0.0)) {
+			*mid = NAN;
+			return 0.0;
+		}
+		if (a <= 0.0) {   /* the box holds the pole: cut off all but c/16 */
+			*mid = south ? -1.0 + c / 16 : 1.0 - c / 16;
+			return 1.0;
+		}
+		*mid = south ? -1.0 + sqrt(a * c) : 1.0 - sqrt(a * c);
+		return 0.25 * log2(c / a);
+	}
+	*mid = 0.5 * (b->z_lo + b->z_hi);
+	return b->z_hi - b->z_lo;
+}
+
+/* The format values n.z can take over box b (the default domain): at
+   most max of them into zs, or 0 when there are more (or none). */
+static int zvalues(const mvf_box *b, double *zs, int max)
+{
+	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	double lo = fmax(b->nz_lo, b->z_lo - u * fabs(b->z_lo) * 1.01);
+	double hi = fmin(b->nz_hi, b->z_hi + u * fabs(b->z_hi) * 1.01), z;
+	int n = 0;
+	if (b->tolerance >= 0 || b->has_zpoint || !(lo <= hi))
+		return 0;
+	z = b->prec == CM_F32 ? (double)nextafterf((float)lo, -INFINITY) : nextafter(lo, -INFINITY);
+	for (; n <= max; z = b->prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY)) {
+		if (z < lo)
+			continue;
+		if (z > hi)
+			break;
+		if (n == max)
+			return 0;
+		zs[n++] = z;
+	}
+	return n;
+}
+
+/* The reals that round to the format value z: [z - gap below/2, z + gap above/2]. */
+static void rounding_cell(double z, int prec, double *lo, double *hi)
+{
+	double up = prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY);
+	double dn = prec == CM_F32 ? (double)nextafterf((float)z, -INFINITY) : nextafter(z, -INFINITY);
+	*lo = z - (z - dn) / 2;
+	*hi = z + (up - z) / 2;
+}
+
+/* Split b: near the poles, once n.z can take at most 8 format values, into
+   one box per value (n.z then exact, u.z the reals rounding to it); else in
+   two along its wider measure.  Returns the number of children in c, 0
+   when b is too small to split. */
+static int split(const mvf_box *b, mvf_box *c)
+{
+	double zm, zs[8], zw = z_measure(b, &zm), zmin = fmin(fabs(b->z_lo), fabs(b->z_hi));
+	double r = b->z_lo <= 0.0 && b->z_hi >= 0.0 ? 1.0 : sqrt(fmax(0.0, 1.0 - zmin * zmin));
+	double pw = (b->phi_hi - b->phi_lo) * r;
+	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	/* only within 32 u of a pole, where n.z's own rounding is a large part
+	   of 1 -+ n.z and the first-order form cannot follow it */
+	int i, k = (1.0 + b->z_hi <= 32 * u || 1.0 - b->z_lo <= 32 * u) ? zvalues(b, zs, 8) : 0;
+	for (i = 0; i < k; i++) {
+		double lo, hi;
+		rounding_cell(zs[i], b->prec == CM_F32 ? PREC_FLOAT : PREC_DOUBLE, &lo, &hi);
+		c[i] = *b;
+		c[i].has_zpoint = 1;
+		c[i].zpoint = zs[i];
+		c[i].z_lo = fmax(-1.0, lo);   /* the u.z that round to it */
+		c[i].z_hi = fmin(1.0, hi);
+	}
+	if (k > 0)
+		return k;
+	if (b->has_zpoint) {   /* in units of the rounding cell of n.z, and of 0.1 rad */
+		zw = (b->z_hi - b->z_lo) / (u * fmax(fabs(b->zpoint), 0x1p-126));
+		pw = (b->phi_hi - b->phi_lo) / 0.1;
+		zm = 0.5 * (b->z_lo + b->z_hi);
+	}
+	c[0] = c[1] = *b;
+	if (zw >= pw && !isnan(zm) && zm > b->z_lo && zm < b->z_hi) {
+		c[0].z_hi = zm;
+		c[1].z_lo = zm;
+		return 2;
+	}
+	if (b->phi_hi - b->phi_lo < 1e-12)
+		return 0;
+	c[0].phi_hi = c[1].phi_lo = 0.5 * (b->phi_lo + b->phi_hi);
+	return c[0].phi_hi > b->phi_lo && c[0].phi_hi < b->phi_hi ? 2 : 0;
+}
+
+typedef struct {
+	mvf_box b;
+	double bound;
+	int stuck;   /* cannot be split further */
+} leaf;
+
+/* The kernel at the box's centre, and at its two ends in u.z (where the
+   input's own rounding is largest when n.z is a given value). */
+static void probe_box(probe_env *e, const mvf_box *b)
+{
+	double zm, pm = 0.5 * (b->phi_lo + b->phi_hi);
+	z_measure(b, &zm);
+	if (isnan(zm))
+		zm = 0.5 * (b->z_lo + b->z_hi);
+	try_u(e, zm, pm);
+	if (b->has_zpoint) {
+		try_u(e, b->z_lo, pm);
+		try_u(e, b->z_hi, pm);
+	}
+}
+
+/* The leaf with the largest bound among those that can still be split;
+   *worst receives the largest bound of all. */
+static int worst_leaf(const leaf *l, int nl, double *worst)
+{
+	int i, imax = -1;
+	*worst = 0.0;
+	for (i = 0; i < nl; i++) {
+		if (!(l[i].bound <= *worst))
+			*worst = l[i].bound;
+		if (!l[i].stuck && (imax < 0 || !(l[i].bound <= l[imax].bound)))
+			imax = i;
+	}
+	return imax;
+}
+
+static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0)
+{
+	const long cap = e->o->budget + 8;
+	leaf *l = malloc((size_t)cap * sizeof *l);
+	int nl = 1;
+	double worst = INFINITY;
+	if (!l) {
+		e->res->bound = INFINITY;
+		return;
+	}
+	l[0].b = *b0;
+	l[0].bound = bound_box(e->x->b, m, b0);
+	l[0].stuck = 0;
+	e->res->boxes = 1;
+	for (;;) {
+		int i = worst_leaf(l, nl, &worst);
+		mvf_box c[8];
+		int k, j;
+		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 8 > e->o->budget)
+			break;
+		if (!(k = split(&l[i].b, c))) {
+			l[i].stuck = 1;
+			continue;
+		}
+		for (j = 0; j < k; j++) {
+			const int at = j == 0 ? i : nl++;
+			l[at].b = c[j];
+			l[at].bound = bound_box(e->x->b, m, &c[j]);
+			l[at].stuck = 0;
+			probe_box(e, &c[j]);
+		}
+		e->res->boxes += k;
+	}
+	e->res->bound = worst;
+	if (getenv("ONB_CERT_DEBUG"))
+		for (nl--; nl >= 0; nl--)
+			if (l[nl].bound >= worst)
+				fprintf(stderr, "worst leaf: z [%.17g, %.17g] phi [%.9g, %.9g] zpoint %d %a: %g\n", l[nl].b.z_lo,
+				        l[nl].b.z_hi, l[nl].b.phi_lo, l[nl].b.phi_hi, l[nl].b.has_zpoint, l[nl].b.zpoint, l[nl].bound);
+	free(l);
+}
+
+void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
+                     const cert_region *r, const cert_opts *o, cert_result *res)
+{
+	probe_env e;
+	mvf_box b;
+	memset(res, 0, sizeof *res);
+	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
+	sample_region(&e);
+	walk(&e, o->samples / 4 + 16);
+	if (region_meets_singular(k->name, r) || res->nonfinite) {
+		res->status = CERT_SINGULAR;
+		res->bound = INFINITY;
+		return;
+	}
+	region_box(r, prec == PREC_FLOAT ? CM_F32 : CM_F64, o->tolerance, &b);
+	branch_and_bound(&e, m, &b);
+	walk(&e, o->samples / 4 + 16);
+	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
+	if (res->nonfinite) {
+		res->status = CERT_SINGULAR;
+		res->bound = INFINITY;
+	}
+}

@@ -1,0 +1,159 @@
+/*
+ * test_certify.c - the rounding models are the kernels (issue 22, item 4).
+ *
+ * Every method's model (src/certify/models.c), executed in its format with
+ * every rounding performed, must give libonb's bits: the out-of-line
+ * kernels of the registry, compiled with the library's flags, on 10^6
+ * inputs per method and precision (argv[1] changes the count): uniform,
+ * both poles down to 1 + n.z = 1e-18, Frisvad's and Max's thresholds, the
+ * |x| = 0.9, |x| = |y|, |x| = |z| and |y| = |z| thresholds, the axes with
+ * signed zeros, the n.z = +-0 seam and the approach to -x.
+ * A model that drops, adds or moves one rounding fails here.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "onb.h"
+#include "certify/models.h"
+#include "certify/model_int.h"
+
+static uint64_t mix(uint64_t x)
+{
+	x += 0x9e3779b97f4a7c15u;
+	x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
+	x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
+	return x ^ (x >> 31);
+}
+static double unif(uint64_t i, int k) { return (double)(mix(i * 8 + (uint64_t)k) >> 11) * 0x1p-53; }
+
+/* A unit vector (in double) with z and the azimuth given. */
+static void from_z(double z, double phi, double u[3])
+{
+	double r;
+	z = z < -1.0 ? -1.0 : z > 1.0 ? 1.0 : z;
+	r = sqrt((1.0 - z) * (1.0 + z));
+	u[0] = r * cos(phi);
+	u[1] = r * sin(phi);
+	u[2] = z;
+}
+
+/* Two components of equal magnitude (up to a relative 1e-7): a, b. */
+static void tie(uint64_t i, int a, int b, double u[3])
+{
+	double s = (1.0 + (unif(i, 3) - 0.5) * 2e-7), c = unif(i, 4) * 0.9;
+	double m = sqrt((1.0 - c * c) / (1.0 + s * s));
+	int o = 3 - a - b;
+	u[a] = m * (unif(i, 5) < 0.5 ? -1 : 1);
+	u[b] = m * s * (unif(i, 6) < 0.5 ? -1 : 1);
+	u[o] = c * (unif(i, 7) < 0.5 ? -1 : 1);
+}
+
+static void input(uint64_t i, double u[3])
+{
+	const double tau = 6.283185307179586;
+	double phi = tau * unif(i, 1), r = unif(i, 2);
+	switch (i % 9) {
+	case 0: from_z(2.0 * r - 1.0, phi, u); break;
+	case 1: from_z(-1.0 + pow(10.0, -18.0 * r), phi, u); break;
+	case 2: from_z(1.0 - pow(10.0, -18.0 * r), phi, u); break;
+	case 3: from_z((i & 16 ? ONB_FRISVAD_T : ONB_FRISVAD_MAX_T) * (1.0 + (r - 0.5) * 2e-6), phi, u); break;
+	case 4: { /* |x| near 0.9 */
+		double x = (i & 16 ? -0.9 : 0.9) + (r - 0.5) * 1e-6, q = sqrt(1.0 - x * x);
+		u[0] = x; u[1] = q * cos(phi); u[2] = q * sin(phi); break;
+	}
+	case 5: tie(i, (int)(i / 9 % 3), (int)(i / 9 % 3 + 1) % 3, u); break;
+	case 6: { /* an axis, with signed zeros */
+		int k = (int)(mix(i) % 3), j;
+		for (j = 0; j < 3; j++)
+			u[j] = (mix(i + (uint64_t)j) & 1) ? -0.0 : 0.0;
+		u[k] = (mix(i) & 8) ? -1.0 : 1.0;
+		break;
+	}
+	case 7: u[0] = cos(phi); u[1] = sin(phi); u[2] = (i & 16) ? -0.0 : 0.0; break;
+	default: from_z(0.0, 0.0, u); { /* the approach to -x */
+		double e = pow(10.0, -18.0 * r), q = sqrt(e * (2.0 - e));
+		u[0] = -1.0 + e; u[1] = q * cos(phi); u[2] = q * sin(phi);
+	}
+	}
+}
+
+static int same_bits(double a, double b, int prec)
+{
+	if (prec == CM_F32) {
+		float fa = (float)a, fb = (float)b;
+		return memcmp(&fa, &fb, sizeof fa) == 0;
+	}
+	return memcmp(&a, &b, sizeof a) == 0;
+}
+
+static void kernel(const onb_method *m, int prec, const double n[3], double o[6])
+{
+	if (prec == CM_F32) {
+		onb_vec3f v = { (float)n[0], (float)n[1], (float)n[2] }, b1, b2;
+		m->basisf(v, &b1, &b2);
+		o[0] = b1.x; o[1] = b1.y; o[2] = b1.z; o[3] = b2.x; o[4] = b2.y; o[5] = b2.z;
+	} else {
+		onb_vec3 v = { n[0], n[1], n[2] }, b1, b2;
+		m->basis(v, &b1, &b2);
+		o[0] = b1.x; o[1] = b1.y; o[2] = b1.z; o[3] = b2.x; o[4] = b2.y; o[5] = b2.z;
+	}
+}
+
+/* Mismatches of method m's model in precision prec over count inputs. */
+static long check(cm *c, const onb_method *m, const cm_method *cmm, int prec, long count)
+{
+	long i, bad = 0;
+	for (i = 0; i < count; i++) {
+		double u[3], n[3], ko[6];
+		cv in[3], out[6];
+		int k, ok = 1;
+		input((uint64_t)i, u);
+		for (k = 0; k < 3; k++)
+			n[k] = prec == CM_F32 ? (double)(float)u[k] : u[k];
+		kernel(m, prec, n, ko);
+		cm_exec_begin(c, prec, n, in);
+		cm_run(c, cmm, prec, in, out);
+		for (k = 0; k < 6; k++)
+			ok &= same_bits(ko[k], cm_value(c, out[k]), prec);
+		if (!ok && bad++ < 3)
+			printf("  %s %s: n = (%a, %a, %a): kernel b1.x %a model %a\n", m->name,
+			       prec == CM_F32 ? "float" : "double", n[0], n[1], n[2], ko[0], cm_value(c, out[0]));
+	}
+	return bad;
+}
+
+int main(int argc, char **argv)
+{
+	long count = argc > 1 ? atol(argv[1]) : 1000000;
+	size_t nm, i;
+	const onb_method *ms = onb_methods(&nm);
+	cm *c = cm_new(CM_EXEC);
+	int fail = 0, checked = 0;
+	if (!c || count <= 0)
+		return 2;
+	for (i = 0; i < nm; i++) {
+		const cm_method *cmm = cm_find(ms[i].name);
+		int prec;
+		if (!cmm) {
+			printf("FAIL %s: no rounding model\n", ms[i].name);
+			fail = 1;
+			continue;
+		}
+		for (prec = CM_F32; prec <= CM_F64; prec++) {
+			long bad;
+			if (prec == CM_F64 && !ms[i].basis)
+				continue;
+			bad = check(c, &ms[i], cmm, prec, count);
+			checked++;
+			printf("%s %-24s %-6s %ld inputs, %ld not bit-identical\n", bad ? "FAIL" : "ok  ",
+			       ms[i].name, prec == CM_F32 ? "float" : "double", count, bad);
+			fail |= bad != 0;
+		}
+	}
+	cm_free(c);
+	printf("%s: %d method-precision pairs, the models %s the kernels' bits\n",
+	       fail ? "FAIL" : "ok", checked, fail ? "do not reproduce" : "reproduce");
+	return fail;
+}

@@ -21,6 +21,9 @@
 #include "cli/output.h"
 #include "inputs/rng.h"
 #include "certify/seeds.h"
+#if ONB_HAVE_HW_RSQRT
+#include <xmmintrin.h>   /* rsqrtps beside rsqrtss: onb.h itself no longer includes it */
+#endif
 
 static int pass, fail;
 #define CHECK(c, ...) do { if (c) pass++; else { fail++; printf("FAIL %s:%d: ", __FILE__, __LINE__); printf(__VA_ARGS__); printf("\n"); } } while (0)

@@ -15,7 +15,7 @@ mkdir -p "$tmp/cwd"
 out="$tmp/out"
 : > "$tmp/afile"
 
-# Known bugs in code this test does not own (src/study/sweep*.c):
+# Known bugs in code this test does not own (src/sweep/*.c):
 #   merge-noargs      'merge' with no STATE prints the 3-line usage to stderr
 #   merge-shard-index a state file whose shard index is out of range is not
 #                     rejected by sweep_load_state; cmd_merge writes seen[k]

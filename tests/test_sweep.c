@@ -40,7 +40,7 @@ static void duff_lost_ulpf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b1->x = nextafterf(b1->x, 2.0f);
 }
 
-/* The by_nz bin as first written (sweep_state.c). */
+/* The by_nz bin as first written (sweep/state.c). */
 static int clampi_log(double h, int off4, int nb)
 {
 	int b;

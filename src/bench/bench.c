@@ -657,7 +657,7 @@ static void write_header(FILE *f, const bench_opts *o, int tsc, double ghz, cons
 	if (tsc)
 		fprintf(f, "# tsc: %.4f GHz (calibrated against CLOCK_MONOTONIC)\n", ghz);
 	fprintf(f, "# isa: batch kernels %s (libonb run-time dispatch, clone '%s'); yardstick and roofline native-%s "
-	           "(src/study/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
+	           "(src/bench/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
 	           "at full vector width); call loops %s (the flags above)\n",
 	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
 	fprintf(f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "

@@ -1,6 +1,6 @@
 /*
  * onbstudy_mpi.c - `mpirun -n N onbstudy-mpi sweep [the options of sweep]`:
- * the sweep of src/study/sweep.c over MPI ranks, with OpenMP threads in
+ * the sweep of src/sweep/sweep.c over MPI ranks, with OpenMP threads in
  * each rank, checkpoints and --resume.  Built by `make mpi` (mpicc); the
  * default build does not need MPI.
  *

@@ -7,10 +7,13 @@
  * and folds them into the state when it moves on and at the end.  Where
  * things go:
  *   - a new per-input metric: computed by the reference (sample_metrics,
- *     reference.h), accumulated by cell_add (sweep_state.c, a field of
- *     cell_t in sweep.h, merged by cell_merge), written by sweep_out.c;
+ *     reference/reference.h), accumulated by cell_add (state.c, a field of
+ *     cell_t in state.h, merged by cell_merge), written by writers.c;
  *   - an alternative reference path: eval_one() below is the one place
  *     an input is evaluated against the reference.
+ * The worst-case walk (engine_walk, at the end of this file) is the
+ * engine's last stage: it runs once on the finished, merged state, before
+ * the writers, which only read it.
  */
 #include <stdio.h>
 #include <stdlib.h>

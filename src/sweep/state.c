@@ -1,5 +1,6 @@
 /*
- * sweep_state.c - the sweep's accumulators and their state file.
+ * state.c - the sweep's accumulators, the grid layout, slices, merging and
+ * the state files (sweep's and, through state_file_*, threshold's).
  *
  * Every accumulation here is exact or order-independent (integer counts,
  * fx sums, maxima, worst lists ordered by error then index), so the data

@@ -4,9 +4,10 @@
  * cmd_sweep is parse -> plan -> run -> write: plan.c builds the plan from
  * the options, engine.c runs its chunks into accumulators (threads take
  * chunks dynamically; every accumulation is order-independent, so the data
- * are the same for any thread count), and sweep_out.c writes the files.
+ * are the same for any thread count), engine_walk runs the worst-case walk, and writers.c writes
+ * the files from the const state.
  * `--shard K/N` keeps the chunks c with c % N == K and saves the
- * accumulators (sweep_state.c); `merge` adds the shards' accumulators and
+ * accumulators (state.c); `merge` adds the shards' accumulators and
  * writes what the whole run would have written.
  */
 #include <stdio.h>

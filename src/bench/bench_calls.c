@@ -10,7 +10,6 @@
  * are not static, so that `bench_vector_width` can find their symbols.
  */
 #include "bench/bench_calls.h"
-#include "bench/bench_core.h"
 
 /* Latency chain: the next input is in[i] + t with t = (b1.x + b2.x) * 0,
    an exact zero (the inputs are finite, so the outputs are, or the sum is
@@ -107,4 +106,23 @@ const char *bench_calls_isa(void)
 #else
 	return "inline-generic";
 #endif
+}
+
+/* The sum of the six outputs of every call, in index order, in double. */
+double bench_pair_checksum(size_t n, const bench_pair *p)
+{
+	double s = 0.0;
+	size_t i;
+	for (i = 0; i < n; i++)
+		s += ((p[i].b1.x + p[i].b1.y) + p[i].b1.z) + ((p[i].b2.x + p[i].b2.y) + p[i].b2.z);
+	return s;
+}
+
+double bench_pair_checksumf(size_t n, const bench_pairf *p)
+{
+	double s = 0.0;
+	size_t i;
+	for (i = 0; i < n; i++)
+		s += (((double)p[i].b1.x + p[i].b1.y) + p[i].b1.z) + (((double)p[i].b2.x + p[i].b2.y) + p[i].b2.z);
+	return s;
 }

@@ -16,7 +16,6 @@
 #define BENCH_HAVE_TSC 0
 #endif
 #include "bench/bench_core.h"
-#include "bench/bench_calls.h"
 
 double bench_now(void)
 {
@@ -264,26 +263,6 @@ void bench_fill_uniform(size_t n, uint64_t seed, double *x, double *y, double *z
 		y[i] = r * sin(ph);
 		z[i] = zz;
 	}
-}
-
-/* ---- inline call loops: checksums -------------------------------------- */
-
-double bench_pair_checksum(size_t n, const bench_pair *p)
-{
-	double s = 0.0;
-	size_t i;
-	for (i = 0; i < n; i++)
-		s += ((p[i].b1.x + p[i].b1.y) + p[i].b1.z) + ((p[i].b2.x + p[i].b2.y) + p[i].b2.z);
-	return s;
-}
-
-double bench_pair_checksumf(size_t n, const bench_pairf *p)
-{
-	double s = 0.0;
-	size_t i;
-	for (i = 0; i < n; i++)
-		s += (((double)p[i].b1.x + p[i].b1.y) + p[i].b1.z) + (((double)p[i].b2.x + p[i].b2.y) + p[i].b2.z);
-	return s;
 }
 
 /* ---- vectorization probe ------------------------------------------------ */

@@ -59,6 +59,7 @@ struct mvf {
 	int failed;
 	int zero_e;            /* every e is 0: values only, no gradients */
 	int nograd;            /* values over the whole box, no gradients */
+	int centred;           /* with zero_e: gradients in the inputs' offsets */
 	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
 	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
 	mpfi_t one, mone;
@@ -128,6 +129,9 @@ void mvf_free(mvf *m)
 
 int mvf_failed(const mvf *m) { return m->failed; }
 
+/* No gradients in this run: MVF_VALUES, MVF_AT_ZERO and MVF_AT_MID. */
+static int no_grad(const mvf *m) { return m->nograd || (m->zero_e && !m->centred); }
+
 static double unit_round(int f) { return f == CM_F32 ? 0x1p-24 : 0x1p-53; }
 static double normal_min(int f) { return f == CM_F32 ? 0x1p-126 : 0x1p-1022; }
 
@@ -176,7 +180,7 @@ static void set_grad(mval *x, int k, mpfi_srcptr g)
 static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval *b, mpfi_srcptr sb)
 {
 	int k, ng = a->ng;
-	if (m->zero_e || m->nograd)
+	if (no_grad(m))
 		return;
 	if (b && b->ng > ng)
 		ng = b->ng;
@@ -331,7 +335,7 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 static void copy_grad(mvf *m, mval *r, const mval *a)
 {
 	int k;
-	if (m->zero_e || m->nograd)
+	if (no_grad(m))
 		return;
 	for (k = 0; k < a->ng; k++)
 		if (a->nz[k])
@@ -342,7 +346,7 @@ static void copy_grad(mvf *m, mval *r, const mval *a)
 static void grad_add(mvf *m, mval *r, const mval *d)
 {
 	int k;
-	if (m->zero_e || m->nograd)
+	if (no_grad(m))
 		return;
 	for (k = 0; k < d->ng; k++) {
 		if (!d->nz[k])
@@ -393,7 +397,7 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 		if (!mpfi_is_nonneg(a->v))
 			return 0;
 		mpfi_sqrt(r->v, a->v);
-		if (m->zero_e || m->nograd)
+		if (no_grad(m))
 			return 1;
 		if (!mpfi_is_strictly_pos(a->v))
 			return 0;
@@ -442,6 +446,17 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 	return ir;
 }
 
+/* With every e 0, an approximate 1/sqrt(a) is 1/sqrt(a) (in m->s1 on
+   entry), with its gradient -1/(2 a sqrt(a)) in a centred run. */
+static void exact_rsqrt(mvf *m, mval *r, const mval *a)
+{
+	mpfi_set(r->v, m->s1);
+	mpfi_div(m->s2, m->s1, a->v);
+	mpfi_div_2ui(m->s2, m->s2, 1);
+	mpfi_neg(m->s2, m->s2);
+	grad_lin(m, r, a, m->s2, NULL, NULL);
+}
+
 cv mvf_seed(mvf *m, seed_kind k, cv ia)
 {
 	int f = k == SEED_INVSQRT_D ? CM_F64 : CM_F32;
@@ -465,7 +480,7 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 	r->rel_lo = 1.0 - sb.bound;
 	r->rel_hi = 1.0 + sb.bound;
 	if (m->zero_e) {
-		mpfi_set(r->v, m->s1);
+		exact_rsqrt(m, r, a);
 		return ir;
 	}
 	mpfi_div(m->s2, r->v, a->v);                     /* d/da = -(1 + e)/(2 a^1.5) */
@@ -524,6 +539,7 @@ void mvf_sign_possible(mvf *m, cv ia, int *can_set, int *can_clear)
 static void band_constraint(mvf *m, const mvf_box *b, cv iz);
 static void refine_input(mvf *m, mval *x);
 static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
+static void centre_inputs(mvf *m, int mode, const cv in[3]);
 
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 {
@@ -531,7 +547,8 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->n = 0;
 	m->nvar = 0;
 	m->failed = 0;
-	m->zero_e = mode == MVF_AT_ZERO;
+	m->zero_e = mode == MVF_AT_ZERO || mode == MVF_AT_MID || mode == MVF_CENTRED;
+	m->centred = mode == MVF_CENTRED;
 	m->nograd = mode == MVF_VALUES;
 	for (i = 0; i < 3; i++)
 		in[i] = fresh(m, b->prec);
@@ -556,10 +573,41 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 		mpfi_set(m->u[i], m->val[in[i]].v);
 	}
 	m->val[in[2]].input = b->has_zpoint ? -1 : 2;
+	if (mode == MVF_AT_MID || mode == MVF_CENTRED)
+		centre_inputs(m, mode, in);
 	if (m->zero_e)
 		return;   /* Q(U, 0) along a given path: no decision is made */
 	input_errors(m, b, in);
 	band_constraint(m, b, in[2]);
+}
+
+/* The inputs for the centred form of Q(U, 0) (bound.c): u = c + t with c
+   the midpoint of the box of (x, y, z) and t an offset variable per input
+   that is an interval, |t_i| <= the half-width.  MVF_AT_MID sets each
+   input to c_i; MVF_CENTRED keeps U_i and gives it the gradient 1 in t_i. */
+static void centre_inputs(mvf *m, int mode, const cv in[3])
+{
+	int i;
+	for (i = 0; i < 3; i++) {
+		mval *x = &m->val[in[i]];
+		double r;
+		mpfi_get_left(m->f1, x->v);
+		mpfi_get_right(m->f2, x->v);
+		if (mpfr_equal_p(m->f1, m->f2))   /* n.z given: exact */
+			continue;
+		mpfi_mid(m->f1, x->v);
+		if (mode == MVF_AT_MID) {
+			mpfi_set_fr(x->v, m->f1);
+			continue;
+		}
+		mpfi_get_right(m->f2, x->v);
+		mpfr_sub(m->f2, m->f2, m->f1, MPFR_RNDU);
+		r = mpfr_get_d(m->f2, MPFR_RNDU);
+		mpfi_get_left(m->f2, x->v);
+		mpfr_sub(m->f2, m->f1, m->f2, MPFR_RNDU);
+		r = fmax(r, mpfr_get_d(m->f2, MPFR_RNDU));
+		set_grad(x, new_var(m, r), m->one);
+	}
 }
 
 /* n.z lies in the region's band: branch decisions on it may know that. */
@@ -671,8 +719,10 @@ static cv ex_dot(mvf *m, const cv *p, const cv *q)
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
 {
 	cv one = mvf_cst(m, 1.0);
-	q[CQ_N1] = ex(m, MVF_SUB, ex(m, MVF_SQRT, ex_dot(m, out, out), -1), one);
-	q[CQ_N2] = ex(m, MVF_SUB, ex(m, MVF_SQRT, ex_dot(m, out + 3, out + 3), -1), one);
+	/* |b|^2 - 1, not |b| - 1: a wide box's b.b can reach 0, where the
+	   derivative of the square root is unbounded (bound.c converts) */
+	q[CQ_N1] = ex(m, MVF_SUB, ex_dot(m, out, out), one);
+	q[CQ_N2] = ex(m, MVF_SUB, ex_dot(m, out + 3, out + 3), one);
 	q[CQ_D1N] = ex_dot(m, out, n);
 	q[CQ_D2N] = ex_dot(m, out + 3, n);
 	q[CQ_D12] = ex_dot(m, out, out + 3);
@@ -779,7 +829,7 @@ cv mvf_newton(mvf *m, int f, cv ix, cv iy)
 	mpfi_sqrt(m->s1, x->v);
 	mpfi_inv(m->s1, m->s1);                          /* 1/sqrt(x)      */
 	if (m->zero_e) {
-		mpfi_set(r->v, m->s1);
+		exact_rsqrt(m, r, x);
 		return ir;
 	}
 	mpfi_interv_d(m->t1, 1.0 - e, 1.0 + e);

@@ -25,8 +25,11 @@ typedef struct {
 /* Runs: the values and gradients over the box (MVF_FULL), the values with
    every error term 0 (MVF_AT_ZERO: the centre Q(U, 0)), the values over the
    box without gradients (MVF_VALUES: the direct interval where a gradient
-   cannot be enclosed). */
-enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES };
+   cannot be enclosed); and for the centred form of Q(U, 0) = Q(c, 0) +
+   sum_i (u_i - c_i) dQ/du_i(U, 0), c the box's midpoint in (x, y, z): the
+   values at c (MVF_AT_MID) and the gradients in u over the box
+   (MVF_CENTRED), both with every error term 0. */
+enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES, MVF_AT_MID, MVF_CENTRED };
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3]);
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5]);
 void mvf_bounds(mvf *m, cv q, double *direct, double *lin);

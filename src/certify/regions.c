@@ -60,6 +60,23 @@ size_t regions_default(int prec, int nsec, cert_region *out, size_t cap)
 	return n;
 }
 
+size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, size_t cap)
+{
+	size_t n = regions_default(prec, nsec, out, cap), i, m = 0;
+	for (i = 0; i < n; i++) {
+		cert_region r = out[i];
+		if (r.nz_hi <= lo || r.nz_lo >= hi)
+			if (!(lo == hi && r.nz_lo <= lo && lo <= r.nz_hi))
+				continue;
+		r.nz_lo = fmax(r.nz_lo, lo);
+		r.nz_hi = fmin(r.nz_hi, hi);
+		out[m++] = r;
+		if (lo == hi && m == (size_t)nsec)
+			break;
+	}
+	return m;
+}
+
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 {
 	const double u = prec == CM_F32 ? 0x1p-24 : 0x1p-53, eta = prec == CM_F32 ? 0x1p-149 : 0x1p-1074;

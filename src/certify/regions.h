@@ -15,6 +15,10 @@
    azimuth sectors.  Returns the count written to out (capacity cap). */
 size_t regions_default(int prec, int nsec, cert_region *out, size_t cap);
 
+/* The default regions cut to the band lo <= n.z <= hi (-1 <= lo <= hi <= 1):
+   the bands that meet it, each clipped to it.  Returns the count. */
+size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, size_t cap);
+
 /* The box of real unit vectors u whose rounding (or, with a tolerance,
    whose scaling) can land in r: r widened by the input's own rounding. */
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b);

@@ -24,7 +24,7 @@ for p in float double; do
 	END { for (k in F) { split(k, a, SUBSEP)
 	        lo = 1 + L[k]; hi = 1 + H[k]; if (lo <= 0) lo = hi / 10
 	        f = F[k] > 0 ? F[k] : 1e-30
-	        printf "%.17g %.17g %.6e %.6e\n", lo, hi, f, B[k] > f ? B[k] : f >> (w "/" a[1] "." p) } }'
+	        printf "%.17g %.17g %.6e %.6e\n", lo, hi, f, (B[k] > f ? B[k] : f) >> (w "/" a[1] "." p) } }'
 	for f in "$W"/*."$p"; do sort -g -o "$f" "$f"; done
 	# the floor: the largest floor defect of duff_branchless per log10(1 + n.z) bin (unit inputs)
 	if [ -f "$REF" ]; then

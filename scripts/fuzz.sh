@@ -46,7 +46,7 @@ done
 for h in $HARNESSES; do
 	# shellcheck disable=SC2086
 	$CLANG $CFL $SAN -fsanitize=fuzzer -o "$out/fuzz_$h" "tests/fuzz/fuzz_$h.c" $objs \
-		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -fopenmp -lm
+		-Wl,-Bstatic -lmpfi -lmpfr -lgmp -Wl,-Bdynamic -lcjson -fopenmp -lm
 done
 echo "fuzz.sh: built $out/fuzz_mesh, $out/fuzz_gltf and $out/fuzz_cli with $($CLANG --version | head -1)"
 

@@ -52,7 +52,7 @@ variant() {
 	$CC $F -I"$W" -c "$W/$1_f.c" -o "$W/$1_f.o"
 	$CC $F -I"$W" -c "$W/$1.c" -o "$W/$1_l.o"
 	$CC $F -DPREC=$P -fopenmp -o "$W/$1" -Isrc "$W/driver.c" "$W/$1_f.o" "$W/$1_l.o" build/libstudy.a libonb.a \
-		-Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
+		-Wl,-Bstatic -lmpfi -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 }
 SINK='__asm__ volatile("" ::: "memory");'
 variant plain '#include "reference/reffast.h"' ''

@@ -4,13 +4,8 @@
 # committed runs below its region's bound (tests/certify_check.c), the same
 # file with 1 and 2 threads, found inputs that `eval` replays to the same
 # defect, and bad input (exit 2, one line, nothing written).
-set -u
-cd "$(dirname "$0")/.."
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/lib.sh"
+T=$tmp
 data() { grep -v '^#' "$1"; }
 
 M=frisvad,frisvad_max,duff,duff_branchless,hughes_moeller,naive,tangent_cross_z
@@ -46,11 +41,34 @@ data "$C" | awk -F, 'NR > 1 && $1 == "frisvad" && $2 == "float" && $3 == -1 && $
 	awk -v a="$e" -v b="$f" 'BEGIN { exit !(a + 0 > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
 } && ok || bad "frisvad's whole-sphere found input does not replay in eval"
 
-# 5. bad input: exit 2, one line, nothing written
-for args in "--budget 0" "--tolerance -1" "--tolerance 0.5" "--precision half" "--methods nosuch" "--sectors 0" "stray"; do
+# 5. scene --certify: the spherical triangles of a scene's vertex normals.
+#    A dome (n.z >= 0.2) proves frisvad within E = 1e-6; a cap around -z
+#    (n.z <= -0.99999) does not.
+cap() { # cap ZTOP ZBOT N: a z-band of a UV sphere, smooth normals, as OBJ
+	awk -v zt="$1" -v zb="$2" -v n="$3" 'BEGIN { pi = 3.14159265358979
+	  for (i = 0; i <= n; i++) for (j = 0; j < n; j++) {
+	    z = zt + (zb - zt) * i / n; r = sqrt(1 - z * z); p = 2 * pi * j / n
+	    printf "v %.12f %.12f %.12f\nvn %.12f %.12f %.12f\n", r * cos(p), r * sin(p), z, r * cos(p), r * sin(p), z }
+	  for (i = 0; i < n; i++) for (j = 0; j < n; j++) {
+	    a = i * n + j + 1; b = i * n + (j + 1) % n + 1; c = a + n; d = b + n
+	    printf "f %d//%d %d//%d %d//%d\nf %d//%d %d//%d %d//%d\n", a, a, c, c, b, b, b, b, c, c, d, d } }'; }
+cap 1 0.2 6 > "$T/dome.obj"
+cap -0.99999 -1 6 > "$T/south.obj"
+./onbstudy scene "$T/dome.obj" --certify --repeats 1 --out "$T/sd" > "$T/sd.out" 2>&1 || bad "scene --certify dome failed: $(tail -2 "$T/sd.out")"
+grep -q '^  frisvad  .*[0-9]  proven within E$' "$T/sd.out" && ok || bad "frisvad not proven on the dome: $(grep '^  frisvad ' "$T/sd.out")"
+./onbstudy scene "$T/south.obj" --certify --repeats 1 --out "$T/ss" > "$T/ss.out" 2>&1 || bad "scene --certify south cap failed: $(tail -2 "$T/ss.out")"
+grep -q '^  frisvad  .* not proven within E$' "$T/ss.out" && ok || bad "frisvad proven near -z: $(grep '^  frisvad ' "$T/ss.out")"
+grep -q '^  duff  .*[0-9]  proven within E$' "$T/ss.out" && ok || bad "duff not proven near -z: $(grep '^  duff ' "$T/ss.out")"
+
+# 6. --band: only that band, the first row is the band itself
+./onbstudy certify --quick --quiet --methods duff --precision float --band -1,-0.9999 --out "$T/band" >/dev/null 2>&1 || bad "certify --band failed"
+data "$T/band/certify.csv" | awk -F, 'NR == 2 { first = ($3 == -1 && $4 == -0.9999) } NR > 1 { n++; if ($3 < -1 || $4 > -0.9999) out++ } END { exit !(first && n > 1 && !out) }' \
+	&& ok || bad "--band rows: $(data "$T/band/certify.csv" | head -3)"
+
+# 7. bad input: exit 2, one line, nothing written
+for args in "--budget 0" "--tolerance -1" "--tolerance 0.5" "--precision half" "--methods nosuch" "--sectors 0" "--band 0.5" "--band 0.5,2" "--band 1,0" "stray"; do
 	./onbstudy certify $args --out "$T/bad" >/dev/null 2>"$T/e"; rc=$?
 	[ $rc -eq 2 ] && [ "$(wc -l <"$T/e")" -eq 1 ] && [ ! -e "$T/bad/certify.csv" ] && ok || bad "certify $args: exit $rc, $(cat "$T/e")"
 done
 
-echo "certify.sh: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish certify.sh

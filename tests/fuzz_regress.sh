@@ -12,7 +12,7 @@ for h in mesh gltf cli; do
 	# shellcheck disable=SC2086
 	if $CC -std=c99 -O1 -g $SAN -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc \
 	     -o "$bin" tests/fuzz/fuzz_$h.c tests/fuzz/replay.c build/libstudy.a libonb.a \
-	     -fopenmp -Wl,-Bstatic -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm 2> "$tmp/cc_$h"; then
+	     -fopenmp -Wl,-Bstatic -lmpfi -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm 2> "$tmp/cc_$h"; then
 		ok
 	else
 		bad "cannot build the $h replay: $(cat "$tmp/cc_$h")"; continue

@@ -115,11 +115,25 @@
        follow the caller's flags (contraction, -ffast-math), which changes
        their bits and voids the study's error figures for them;
      - ONB_FORCE_OUTLINE: out of line, whatever the compiler and flags.
+   Out of line too where float arithmetic is wider than binary32
+   (FLT_EVAL_METHOD 1 or 2: GCC on s390x, or on i386 with x87 maths, in
+   ISO C mode): the float kernels would be evaluated in double there and
+   rounded differently; the library's copies are binary32.
    libonb's own sources define ONB_BUILDING_LIB (inline, built with
    -ffp-contract=off by the Makefile). */
+#ifdef __FLT_EVAL_METHOD__
+#define ONB__EVAL_METHOD __FLT_EVAL_METHOD__
+#else
+#include <float.h>
+#define ONB__EVAL_METHOD FLT_EVAL_METHOD
+#endif
+#define ONB__WIDE_FLOAT (ONB__EVAL_METHOD == 1 || ONB__EVAL_METHOD == 2)
+#if defined(ONB_BUILDING_LIB) && ONB__WIDE_FLOAT
+#error "libonb: float arithmetic is wider than binary32 here (FLT_EVAL_METHOD 1 or 2), so the float kernels would not round as published; build the library with -fexcess-precision=fast (GCC in ISO C mode, e.g. on s390x) or -std=gnu99, or -mfpmath=sse on i386 (docs/library.md)"
+#endif
 #if defined(ONB_BUILDING_LIB) || defined(ONB_INLINE_FOLLOWS_CLIENT_FP)
 #define ONB__INLINE 1
-#elif defined(ONB_FORCE_OUTLINE) || defined(__FAST_MATH__)
+#elif defined(ONB_FORCE_OUTLINE) || defined(__FAST_MATH__) || ONB__WIDE_FLOAT
 #define ONB__INLINE 0
 #elif defined(__clang__)
 #define ONB__INLINE 1

@@ -155,11 +155,60 @@ static void test_obj(void)
 	}
 }
 
-/* little-endian writers */
-static size_t put(unsigned char *p, const void *v, size_t n) { memcpy(p, v, n); return n; }
-static size_t putf(unsigned char *p, float v) { return put(p, &v, 4); }
-static size_t putd(unsigned char *p, double v) { return put(p, &v, 8); }
-static size_t puti(unsigned char *p, int v) { return put(p, &v, 4); }
+/* little-endian writers: bytes assembled from the value's bits, low byte
+   first, so the files are the same on a big-endian host (s390x) */
+static size_t put_le(unsigned char *p, uint64_t u, size_t n)
+{
+	size_t i;
+	for (i = 0; i < n; i++)
+		p[i] = (unsigned char)(u >> (8 * i));
+	return n;
+}
+static size_t putu(unsigned char *p, uint32_t v) { return put_le(p, v, 4); }
+static size_t puti(unsigned char *p, int v) { return put_le(p, (uint32_t)v, 4); }
+static size_t putf(unsigned char *p, float v) { uint32_t u; memcpy(&u, &v, 4); return put_le(p, u, 4); }
+static size_t putd(unsigned char *p, double v) { uint64_t u; memcpy(&u, &v, 8); return put_le(p, u, 8); }
+
+/* big-endian writer: the bytes of put_le reversed */
+static size_t put_be(unsigned char *p, uint64_t u, size_t n)
+{
+	size_t i;
+	for (i = 0; i < n; i++)
+		p[n - 1 - i] = (unsigned char)(u >> (8 * i));
+	return n;
+}
+
+/* binary big endian, on any host: float normals, a signed short and a
+   signed char before them (their negative values must not shift the
+   floats), a face list of int, then a negative index in it */
+static void test_ply_big(void)
+{
+	mesh_normals m;
+	char err[512];
+	unsigned char b[512];
+	const char *hdr = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty short s\nproperty char c\n"
+	                  "property float nx\nproperty float ny\nproperty float nz\n"
+	                  "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+	static const float v[3][3] = { {0.6f, 0.8f, 0}, {0, -1, 0}, {-0.25f, 0, 0.5f} };
+	size_t n = strlen(hdr);
+	uint32_t w;
+	int i, k;
+	memcpy(b, hdr, n);
+	for (i = 0; i < 3; i++) {
+		n += put_be(b + n, (uint16_t)-300, 2);
+		b[n++] = 0x80;
+		for (k = 0; k < 3; k++) { memcpy(&w, &v[i][k], 4); n += put_be(b + n, w, 4); }
+	}
+	b[n++] = 3;
+	for (i = 0; i < 3; i++)
+		n += put_be(b + n, (uint32_t)i, 4);
+	CHECK(rd("be.ply", b, n, &m, err) == 0, "be.ply: %s", err);
+	CHECK(m.count == 3 && m.ply_binary == 2 && m.x[0] == (double)v[0][0] && m.y[0] == (double)v[0][1]
+	      && m.y[1] == -1 && m.x[2] == -0.25 && m.z[2] == 0.5, "be.ply values");
+	mesh_free(&m);
+	put_be(b + n - 4, (uint32_t)-2, 4);
+	expect_error("bebad.ply", b, n, "vertex index -2", "out of range");
+}
 
 /* ascii with three normals (one of them zero) and a face */
 static void test_ply_ascii(void)
@@ -183,7 +232,7 @@ static void test_ply_ascii(void)
 		"3 0 1 2\n";
 	CHECK(rds("a.ply", asc, &m, err) == 0, "a.ply: %s", err);
 	CHECK(m.count == 3 && m.origin == MESH_STORED && m.stored_type == MESH_T_FLOAT && m.ply_binary == 0, "a.ply counts %zu", m.count);
-	CHECK(m.count == 3 && m.x[1] == (double)0.6f && m.y[1] == (double)0.8f, "a.ply values are the float roundings");
+	CHECK(m.count == 3 && m.x[1] == (double)(float)0.6 && m.y[1] == (double)(float)0.8, "a.ply values are the float roundings");
 	CHECK(mesh_classify(&m, 1, 0, &st) == 0 && st.zero == 1 && st.nbad == 1 && st.bad[0] == 2, "a.ply zero");
 	{
 		char w[160];
@@ -220,18 +269,17 @@ static void test_ply_binary(void)
 	                  "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
 	size_t h = strlen(hdr), n = h, rec = 12 + 24 + 1, cut;
 	unsigned char u8 = 3;
-	unsigned int u32;
 	memcpy(b, hdr, h);
 	n += putf(b + n, 0); n += putf(b + n, 0); n += putf(b + n, 0);
 	n += putd(b + n, 0.0); n += putd(b + n, -0.6); n += putd(b + n, -0.8); b[n++] = 7;
 	n += putf(b + n, 1); n += putf(b + n, 0); n += putf(b + n, 0);
 	n += putd(b + n, 0.1); n += putd(b + n, 0.2); n += putd(b + n, 0.3); b[n++] = 7;
-	n += put(b + n, &u8, 1);
-	u32 = 0; n += put(b + n, &u32, 4); u32 = 1; n += put(b + n, &u32, 4); u32 = 0; n += put(b + n, &u32, 4);
+	b[n++] = u8;
+	n += putu(b + n, 0); n += putu(b + n, 1); n += putu(b + n, 0);
 	CHECK(rd("b.ply", b, n, &m, err) == 0, "b.ply: %s", err);
 	CHECK(m.count == 2 && m.stored_type == MESH_T_DOUBLE && m.ply_binary == 1, "b.ply count %zu", m.count);
 	CHECK(m.count == 2 && m.y[0] == -0.6 && m.z[1] == 0.3, "b.ply values");
-	CHECK(m.count == 2 && m.where[1] == h + rec, "b.ply offset %llu, expected %zu", (unsigned long long)m.where[1], h + rec);
+	CHECK(m.count == 2 && m.where[1] == h + rec, "b.ply offset %llu, expected %zu", m.count == 2 ? (unsigned long long)m.where[1] : 0ULL, h + rec);
 	mesh_free(&m);
 	/* every proper prefix of the body is refused, never read in part */
 	{
@@ -249,7 +297,7 @@ static void test_ply_binary(void)
 	      && strstr(m.warning, "1 bytes"), "extra.ply: %s / warning '%s'", err, m.warning);
 	mesh_free(&m);
 	/* out-of-range face index */
-	u32 = 2; memcpy(b + n - 4, &u32, 4);
+	putu(b + n - 4, 2);
 	expect_error("badidx.ply", b, n, "out of range", "byte");
 	/* a list count larger than the file */
 	b[n - 13] = 255;
@@ -321,6 +369,7 @@ static void test_ply(void)
 	test_ply_ascii();
 	test_ply_tet();
 	test_ply_binary();
+	test_ply_big();
 	test_ply_cube();
 	test_ply_malformed();
 }
@@ -480,14 +529,14 @@ static void test_gltf_files(void)
 	/* interleaved (byteStride 24) float normals; --world through a matrix
 	   node and a scaled child: world diag(2, 4, 8), inverse transpose
 	   diag(1/2, 1/4, 1/8), exact in both precisions */
-	CHECK(rdf("tests/data/gltf/strided.gltf", 0, 1, &m, err) == 0 && m.count == 4 && m.x[0] == (double)0.6f
-	      && m.y[0] == (double)0.8f && m.z[1] == 1 && m.y[2] == -1 && m.x[3] == 1 && m.stored_type == MESH_T_FLOAT, "strided.gltf: %s", err);
+	CHECK(rdf("tests/data/gltf/strided.gltf", 0, 1, &m, err) == 0 && m.count == 4 && m.x[0] == (double)(float)0.6
+	      && m.y[0] == (double)(float)0.8 && m.z[1] == 1 && m.y[2] == -1 && m.x[3] == 1 && m.stored_type == MESH_T_FLOAT, "strided.gltf: %s", err);
 	mesh_free(&m);
 	for (fl = 0; fl < 2; fl++) {
 		CHECK(rdf("tests/data/gltf/strided.gltf", 1, fl, &m, err) == 0 && m.count == 8 && m.world, "strided --world: %s", err);
 		if (m.count == 8)
-			CHECK(m.x[0] == (double)0.6f * 0.5 && m.y[0] == (double)0.8f * 0.25 && m.z[1] == 1 && m.where[0] >> 40 == 0
-			      && m.x[4] == (double)0.6f * 0.5 && m.z[5] == 0.125 && m.y[6] == -0.25 && m.x[7] == 0.5 && m.where[4] >> 40 == 1,
+			CHECK(m.x[0] == (double)(float)0.6 * 0.5 && m.y[0] == (double)(float)0.8 * 0.25 && m.z[1] == 1 && m.where[0] >> 40 == 0
+			      && m.x[4] == (double)(float)0.6 * 0.5 && m.z[5] == 0.125 && m.y[6] == -0.25 && m.x[7] == 0.5 && m.where[4] >> 40 == 1,
 			      "strided --world values (%s): %a %a %a %a", fl ? "float" : "double", m.x[0], m.y[0], m.z[5], m.y[6]);
 		mesh_free(&m);
 	}
@@ -519,7 +568,7 @@ static void test_gltf_files(void)
 	}
 	mesh_free(&m);
 	/* an external buffer, its name percent-encoded: from the file only */
-	CHECK(rdf("tests/data/gltf/external.gltf", 0, 1, &m, err) == 0 && m.count == 3 && m.x[2] == (double)0.6f, "external.gltf: %s", err);
+	CHECK(rdf("tests/data/gltf/external.gltf", 0, 1, &m, err) == 0 && m.count == 3 && m.x[2] == (double)(float)0.6, "external.gltf: %s", err);
 	mesh_free(&m);
 	{
 		FILE *f = fopen("tests/data/gltf/external.gltf", "rb");
@@ -541,11 +590,11 @@ static void test_geom_formats(void)
 	mesh_geom g;
 	char err[512];
 	int rc = mesh_read_geom_mem("quad.ply", (const unsigned char *)ply, strlen(ply), &m, &g, err, sizeof err);
-	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nnormals == 4 && g.nrm[6] == (double)0.6f && g.tri[3] == 0
+	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nnormals == 4 && g.nrm[6] == (double)(float)0.6 && g.tri[3] == 0
 	      && g.tri[4] == 2 && g.tri[5] == 3 && g.tri_n[5] == 3 && g.pos[6] == 1, "PLY geometry: %s", err);
 	if (rc == 0) { mesh_geom_free(&g); mesh_free(&m); }
 	rc = mesh_read_geom_file("tests/data/gltf/strided.gltf", &m, &g, err, sizeof err);
-	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nrm[0] == (double)0.6f && g.tri[3] == 0 && g.tri[4] == 2 && g.tri[5] == 3
+	CHECK(rc == 0 && g.nverts == 4 && g.ntris == 2 && g.nrm[0] == (double)(float)0.6 && g.tri[3] == 0 && g.tri[4] == 2 && g.tri[5] == 3
 	      && g.pos[3] == 1 && g.tri_n[4] == 2, "glTF geometry: %s", err);
 	if (rc == 0) { mesh_geom_free(&g); mesh_free(&m); }
 	rc = mesh_read_geom_file("tests/data/gltf/sparse.gltf", &m, &g, err, sizeof err);
@@ -632,7 +681,7 @@ static void test_detect(void)
 	b[3] = 0;
 	expect_error("blob.obj", b, sizeof b, "unknown format", NULL);
 	/* a PLY named .obj is read as PLY, with a warning; normal_x aliases */
-	CHECK(rds("cloud.obj", ply, &m, err) == 0 && m.format == MESH_PLY && m.count == 1 && m.y[0] == (double)0.6f
+	CHECK(rds("cloud.obj", ply, &m, err) == 0 && m.format == MESH_PLY && m.count == 1 && m.y[0] == (double)(float)0.6
 	      && strstr(m.warning, "ends in .obj"), "PLY named .obj: %s / '%s'", err, m.warning);
 	mesh_free(&m);
 	/* OBJ line continuation; places are the first physical line */

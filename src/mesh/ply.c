@@ -71,15 +71,37 @@ static int pt_lookup(const unsigned char *t, size_t tl)
 
 static unsigned long long off(const ply_rd *r) { return (unsigned long long)(r->p - r->buf); }
 
-/* One value of type `type`; is_int tells whether *iv is meaningful. */
-/* 1 on a little-endian host (x86-64, arm64), 0 on a big-endian one (s390x). */
-static int host_le(void)
+/* One binary value of type `type` (pt_size[type] bytes at r->p, in the
+   file's byte order): the bytes are assembled into an integer by shifts,
+   so the value is the same on a little- or big-endian host (issue 25:
+   s390x); floats take that integer's bits. */
+static void ply_binary_value(ply_rd *r, int type, double *dv, long long *iv)
 {
-	const uint16_t one = 1;
-	unsigned char c;
-	memcpy(&c, &one, 1);
-	return c;
+	size_t n = pt_size[type], i;
+	uint64_t u = 0;
+	for (i = 0; i < n; i++)
+		u |= (uint64_t)r->p[r->fmt == 1 ? i : n - 1 - i] << (8 * i);
+	r->p += n;
+	if (type == PT_F32) {
+		uint32_t w = (uint32_t)u;
+		float f;
+		memcpy(&f, &w, sizeof f);
+		*dv = f; *iv = 0;
+		return;
+	}
+	if (type == PT_F64) {
+		double d;
+		memcpy(&d, &u, sizeof d);
+		*dv = d; *iv = 0;
+		return;
+	}
+	*iv = (long long)u;
+	if ((type == PT_I8 || type == PT_I16 || type == PT_I32) && (u >> (8 * n - 1)) != 0)
+		*iv -= (long long)1 << (8 * n); /* two's complement, negative */
+	*dv = (double)*iv;
 }
+
+/* One value of type `type`; is_int tells whether *iv is meaningful. */
 
 static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long ei, const char *pname,
                      double *dv, long long *iv)
@@ -126,25 +148,11 @@ static int ply_value(ply_rd *r, int type, const ply_elem *e, unsigned long long 
 		}
 		return 0;
 	} else {
-		unsigned char b[8];
-		size_t n = pt_size[type], i;
+		size_t n = pt_size[type];
 		if ((size_t)(r->end - r->p) < n)
 			return fail(c, "byte %llu: truncated binary data: element '%s' %llu of %llu, property '%s' needs %zu bytes, %zu remain",
 			            off(r), e->name, ei, e->count, pname, n, (size_t)(r->end - r->p));
-		for (i = 0; i < n; i++) /* into the host's byte order (issue 25: s390x) */
-			b[i] = r->p[(r->fmt == 1) == host_le() ? i : n - 1 - i];
-		r->p += n;
-		switch (type) {
-		case PT_I8:  { int8_t v;   memcpy(&v, b, 1); *iv = v; break; }
-		case PT_U8:  { uint8_t v;  memcpy(&v, b, 1); *iv = v; break; }
-		case PT_I16: { int16_t v;  memcpy(&v, b, 2); *iv = v; break; }
-		case PT_U16: { uint16_t v; memcpy(&v, b, 2); *iv = v; break; }
-		case PT_I32: { int32_t v;  memcpy(&v, b, 4); *iv = v; break; }
-		case PT_U32: { uint32_t v; memcpy(&v, b, 4); *iv = v; break; }
-		case PT_F32: { float v;    memcpy(&v, b, 4); *dv = v; *iv = 0; return 0; }
-		default:     { double v;   memcpy(&v, b, 8); *dv = v; *iv = 0; return 0; }
-		}
-		*dv = (double)*iv;
+		ply_binary_value(r, type, dv, iv);
 		return 0;
 	}
 }
@@ -503,7 +511,7 @@ static int ply_list(ply_st *s, ply_rd *r, int i, unsigned long long ei, int k, u
 	const ply_prop *pr = &e->prop[k];
 	int isidx = i == s->face_e && k == e->ilist, isf = s->positions && i == s->face_e;
 	unsigned long long cat = off(r), remain;
-	long long cnt, j, iv;
+	long long cnt, j, iv = 0;
 	double dv;
 	face_rec fr;
 	if (ply_value(r, pr->ctype, e, ei, pr->name, &dv, &cnt) != 0)

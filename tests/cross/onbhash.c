@@ -9,7 +9,11 @@
  *                   exactly and normalized (IEEE sqrt and division are
  *                   correctly rounded, so the inputs are identical too).
  * Output, one line per method and precision:
- *   method precision scalar_hash batch_hash max_defect
+ *   method precision scalar_hash batch_hash nans max_defect
+ * The hashes take every NaN as one pattern (hash.h: a NaN's sign and
+ * payload are not specified by IEEE 754 and differ between CPUs); nans is
+ * S/B, how many of the 6N scalar and 6N batch outputs were NaN, so a NaN
+ * where another machine has a number still shows (in the hash as well).
  * max_defect (in double) is max(| |b1| - 1 |, | |b2| - 1 |, |b1.n|, |b2.n|,
  * |b1.b2|) over the LCG inputs with n.x > -0.5 (away from naive's singular
  * -x), for the methods with ONB_HW_RSQRT only (the rest print -), to say
@@ -61,6 +65,12 @@ static void inputs(size_t n)
 	}
 }
 
+/* how many of three values are NaN (in double: a float NaN stays NaN) */
+static size_t nan3(double a, double b, double c)
+{
+	return (size_t)(a != a) + (size_t)(b != b) + (size_t)(c != c);
+}
+
 static double defect(double ax, double ay, double az, double bx, double by, double bz, double x, double y, double z)
 {
 	double d = fabs(sqrt(ax * ax + ay * ay + az * az) - 1.0), t;
@@ -75,13 +85,14 @@ static void run_d(const onb_method *m, size_t n)
 {
 	uint64_t hs = FNV_INIT, hb = FNV_INIT;
 	double md = 0.0;
-	size_t i;
+	size_t i, ns = 0, nb = 0;
 	int c;
 	for (i = 0; i < n; i++) {
 		onb_vec3 v, b1, b2;
 		double d;
 		v.x = nx[i]; v.y = ny[i]; v.z = nz[i];
 		m->basis(v, &b1, &b2);
+		ns += nan3(b1.x, b1.y, b1.z) + nan3(b2.x, b2.y, b2.z);
 		hs = fnv_d(fnv_d(fnv_d(fnv_d(fnv_d(fnv_d(hs, b1.x), b1.y), b1.z), b2.x), b2.y), b2.z);
 		if ((m->flags & ONB_HW_RSQRT) && i >= 30 && v.x > -0.5 &&
 		    (d = defect(b1.x, b1.y, b1.z, b2.x, b2.y, b2.z, v.x, v.y, v.z)) > md)
@@ -89,9 +100,11 @@ static void run_d(const onb_method *m, size_t n)
 	}
 	m->batch(n, nx, ny, nz, o[0], o[1], o[2], o[3], o[4], o[5]);
 	for (i = 0; i < n; i++)
-		for (c = 0; c < 6; c++)
+		for (c = 0; c < 6; c++) {
 			hb = fnv_d(hb, o[c][i]);
-	printf("%-24s double %016llx %016llx ", m->name, (unsigned long long)hs, (unsigned long long)hb);
+			nb += o[c][i] != o[c][i];
+		}
+	printf("%-24s double %016llx %016llx %zu/%zu ", m->name, (unsigned long long)hs, (unsigned long long)hb, ns, nb);
 	if (m->flags & ONB_HW_RSQRT) printf("%.3e\n", md); else printf("-\n");
 }
 
@@ -99,13 +112,14 @@ static void run_f(const onb_method *m, size_t n)
 {
 	uint64_t hs = FNV_INIT, hb = FNV_INIT;
 	double md = 0.0;
-	size_t i;
+	size_t i, ns = 0, nb = 0;
 	int c;
 	for (i = 0; i < n; i++) {
 		onb_vec3f v, b1, b2;
 		double d;
 		v.x = fx[i]; v.y = fy[i]; v.z = fz[i];
 		m->basisf(v, &b1, &b2);
+		ns += nan3(b1.x, b1.y, b1.z) + nan3(b2.x, b2.y, b2.z);
 		hs = fnv_f(fnv_f(fnv_f(fnv_f(fnv_f(fnv_f(hs, b1.x), b1.y), b1.z), b2.x), b2.y), b2.z);
 		if ((m->flags & ONB_HW_RSQRT) && i >= 30 && v.x > -0.5 &&
 		    (d = defect(b1.x, b1.y, b1.z, b2.x, b2.y, b2.z, v.x, v.y, v.z)) > md)
@@ -113,9 +127,11 @@ static void run_f(const onb_method *m, size_t n)
 	}
 	m->batchf(n, fx, fy, fz, q[0], q[1], q[2], q[3], q[4], q[5]);
 	for (i = 0; i < n; i++)
-		for (c = 0; c < 6; c++)
+		for (c = 0; c < 6; c++) {
 			hb = fnv_f(hb, q[c][i]);
-	printf("%-24s float  %016llx %016llx ", m->name, (unsigned long long)hs, (unsigned long long)hb);
+			nb += q[c][i] != q[c][i];
+		}
+	printf("%-24s float  %016llx %016llx %zu/%zu ", m->name, (unsigned long long)hs, (unsigned long long)hb, ns, nb);
 	if (m->flags & ONB_HW_RSQRT) printf("%.3e\n", md); else printf("-\n");
 }
 

@@ -31,6 +31,13 @@ AR      ?= ar
 # inlines its kernels only where the client's flags cannot change their
 # bits, and calls these out-of-line copies otherwise (docs/library.md).
 FPFLAGS = -ffp-contract=off -fno-math-errno -fno-trapping-math
+# Where GCC in ISO C mode evaluates float in double (FLT_EVAL_METHOD 1,
+# e.g. on s390x), binary32 rounding needs -fexcess-precision=fast; onb.h
+# refuses to build the library without it (issue 25).  x86-64: 0, no flag.
+FLT_EVAL := $(shell printf '__FLT_EVAL_METHOD__\n' | $(CC) -std=c99 -E -P - 2>/dev/null | tr -d ' ')
+ifneq ($(filter 1 2,$(FLT_EVAL)),)
+  FPFLAGS += -fexcess-precision=fast
+endif
 OPT     ?= -O3
 WARN    = -Wall -Wextra -Wpedantic -Wshadow
 # The library is held to a stricter standard: -Wconversion and -Werror.

@@ -3,7 +3,8 @@
  * float input of a small box (issue 22, soundness checks).
  *
  * For each box of cert_boxes (src/certify/enumerate.c: near -z on
- * frisvad's float threshold and inside the band where it fails, near +z,
+ * frisvad's float threshold, the float below it, frisvad_max's threshold
+ * and inside the band where frisvad fails, near +z,
  * on hughes_moeller's |x| = |z|, at the n.z = 0 seam, near -x and at -x):
  *   - every float input of the default domain in the box, each confirmed
  *     by cert_in_domain (and each run's first non-member either side);
@@ -115,8 +116,9 @@ static void one_method(cert_ctx *x, const study_kernel *k, const cm_method *m, c
 		CHECK(memcmp(&again, &res.found, sizeof again) == 0, "%s %s: found %a, measured again %a", b->name,
 		      k->name, res.found, again);
 	}
-	printf("  %-22s %6lld  max %-16a %8.4g u  bound %8.4g u  ratio %8.6g  found %8.4g u%s%s\n", k->name,
-	       e.inputs, e.max, e.max / 0x1p-24, res.bound / 0x1p-24, e.max > 0 ? res.bound / e.max : NAN,
+	printf("  %-23s %5lld  max %-22a %9.4g u  bound %-22a %9.4g u  ratio %8.6g  found %8.4g u%s%s\n",
+	       k->name, e.inputs, e.max, e.max / 0x1p-24, res.bound, res.bound / 0x1p-24,
+	       e.max > 0 ? res.bound / e.max : NAN,
 	       res.found / 0x1p-24, at >= 0 ? " (in box)" : " (outside box)",
 	       res.status == CERT_SINGULAR ? " singular" : "");
 }

@@ -27,9 +27,10 @@ typedef struct {
 	double lo, hi;        /* filter on the completed axis                   */
 } cert_box;
 
-/* The built-in boxes (near -z on frisvad's float threshold and deeper in
-   the band where it fails, near +z, on hughes_moeller's |x| = |z|, at the
-   n.z = 0 seam, near -x for naive, -x itself); their count in *count. */
+/* The built-in boxes (near -z: on frisvad's float threshold, the float
+   below it, on frisvad_max's threshold, deeper in the band where frisvad
+   fails; near +z; on hughes_moeller's |x| = |z|; at the n.z = 0 seam;
+   near -x for naive; -x itself); their count in *count. */
 const cert_box *cert_boxes(int *count);
 
 /* Which side of the default float domain n lies on: 0 in it (exactly when

@@ -49,7 +49,7 @@ static double unif(uint64_t i, int k) { return (double)(mix(i * 4 + (uint64_t)k)
 
 /* The fast side test against the exact one: float roundings of unit
    vectors (uniform, and within 1e-6 of either pole), each component then
-   moved by -1, 0 or +1 float. */
+   moved by -1, 0 or +1 float; and inputs on which it falls back. */
 static void side_crosscheck(long count)
 {
 	long i, in = 0, bad = 0;
@@ -72,6 +72,22 @@ static void side_crosscheck(long count)
 		if ((s == 0) != cert_in_domain(n, CM_F32, -1.0) || s == 2)
 			bad++;
 	}
+	/* n = (1, y, 0), y within 64 floats of 2^-12, and its rotations: the
+	   sum of the squared low ends is within 2^-46 of 1 at y = 2^-12, where
+	   cert_f32_side asks cert_in_domain */
+	for (i = -64; i <= 64; i++) {
+		int a;
+		for (a = 0; a < 3; a++) {
+			double n[3] = { 0.0, 0.0, 0.0 };
+			int s;
+			n[a] = a == 1 ? -1.0 : 1.0;
+			n[(a + 1) % 3] = fmt_step(0x1p-12, i, PREC_FLOAT);
+			s = cert_f32_side(n);
+			in += s == 0;
+			bad += (s == 0) != cert_in_domain(n, CM_F32, -1.0) || s == 2;
+		}
+	}
+	count += 129 * 3;
 	CHECK(bad == 0, "cert_f32_side disagrees with cert_in_domain on %ld of %ld inputs", bad, count);
 	CHECK(in > count / 10 && in < count, "side cross-check: %ld members of %ld (want both kinds)", in, count);
 	printf("cert_f32_side = cert_in_domain on %ld inputs (%ld members)\n", count, in);

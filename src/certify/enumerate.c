@@ -30,7 +30,8 @@
 /* Two fixed ranges of 21 floats about a centre (7 for -x itself). */
 static const cert_box boxes[] = {
 	{ "south_frisvad", "n.z = -0x1.fffffcp-1 = frisvad's float threshold (-0.9999999f), taken by the general "
-	  "formula: the sweep's worst input (0.60) is here", 2, { 0x1.908aaap-12, -0x1.967164p-12, 0.0 }, 10, -1.0, 0.0 },
+	  "formula; its centre is frisvad's worst float input in results/reference/worst.csv",
+	  2, { 0x1.908aaap-12, -0x1.967164p-12, 0.0 }, 10, -1.0, 0.0 },
 	{ "south_frisvad_below", "n.z = -0x1.fffffep-1, the float below frisvad's threshold: its special branch",
 	  2, { 0x1.6a09e6p-13, -0x1.3988ep-12, 0.0 }, 10, -1.0, 0.0 },
 	{ "frisvad_max_t", "n.z = -0x1.fffe6cp-1 = frisvad_max's float threshold (-0.99998796f), general formula",

@@ -58,22 +58,22 @@
  *   naive_rsqrt              singular                       singular
  *   naive_rsqrt_nr           singular                       singular
  *   naive_nonorm             <= 1.68e+07u (found 1.68e+07u) <= 9.01e+15u (found 9.01e+15u)
- *   hughes_moeller           <= 7.22u (found 3.05u)         <= 8.74u (found 3.25u)
- *   hughes_moeller_invsqrt   <= 3.83e+04u (found 2.94e+04u) <= 2.05e+13u (found 1.58e+13u)
- *   hughes_moeller_rsqrt     <= 5.52e+03u (found 4.32e+03u) <= 2.96e+12u (found 2.3e+12u)
- *   hughes_moeller_rsqrt_nr  <= 11.7u (found 4.54u)         <= 1.15e+09u (found 8.82e+08u)
+ *   hughes_moeller           <= 6.6u (found 3.12u)          <= 8u (found 3.63u)
+ *   hughes_moeller_invsqrt   <= 3.67e+04u (found 2.94e+04u) <= 1.97e+13u (found 1.58e+13u)
+ *   hughes_moeller_rsqrt     <= 5.42e+03u (found 4.34e+03u) <= 2.87e+12u (found 2.3e+12u)
+ *   hughes_moeller_rsqrt_nr  <= 10.5u (found 4.9u)          <= 1.1e+09u (found 8.82e+08u)
  *   hughes_moeller_nonorm    <= 6.06e+06u (found 4.9e+06u)  <= 3.25e+15u (found 2.63e+15u)
  *   frisvad                  <= 2.1e+07u (found 1.04e+07u)  <= 4.03e+12u (found 4.01e+12u)
- *   frisvad_max              <= 1.52e+05u (found 8.1e+04u)  <= 5.37e+13u (found 4.35e+13u)
- *   duff                     <= 6.02u (found 3u)            <= 6.02u (found 2.85u)
- *   duff_branchless          <= 6.02u (found 3u)            <= 6.02u (found 2.85u)
- *   stark                    <= 31.8u (found 3.59u)         <= 12.9u (found 3.71u)
- *   stark_fixed              <= 14.6u (found 3.24u)         <= 8.63u (found 3.36u)
- *   pbrt_v3                  <= 6.45u (found 3.24u)         <= 9.1u (found 3.36u)
- *   rtow                     <= 22.9u (found 4.51u)         <= 22.9u (found 4.46u)
+ *   frisvad_max              <= 1.06e+05u (found 8.26e+04u) <= 5.37e+13u (found 4.42e+13u)
+ *   duff                     <= 6u (found 3u)               <= 6u (found 2.9u)
+ *   duff_branchless          <= 6u (found 3u)               <= 6u (found 2.9u)
+ *   stark                    <= 8.75u (found 4.04u)         <= 11.3u (found 3.82u)
+ *   stark_fixed              <= 7.63u (found 3.74u)         <= 8u (found 3.63u)
+ *   pbrt_v3                  <= 6.1u (found 3.24u)          <= 7.75u (found 3.57u)
+ *   rtow                     <= 14.3u (found 4.74u)         <= 14.3u (found 4.78u)
  *   tangent_cross_z          singular                       singular
- *   duff_wide                <= 2.41u (found 1.27u)         -
- *   duff_comp                <= 6.71u (found 1.31u)         -
+ *   duff_wide                <= 2.41u (found 1.35u)         -
+ *   duff_comp                <= 4.05u (found 1.35u)         -
  * (end of the proven bounds)
  *
  * Floating-point flags (docs/library.md, "Compiler flags"):

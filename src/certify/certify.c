@@ -147,6 +147,16 @@ bad:
 	return ONB_EXIT_USAGE;
 }
 
+/* The threads the regions ran on, for the provenance. */
+static int cert_threads(void)
+{
+#ifdef _OPENMP
+	return omp_get_max_threads();
+#else
+	return 1;
+#endif
+}
+
 static const char *status_name(int s)
 {
 	return s == CERT_PROVEN ? "proven" : s == CERT_SINGULAR ? "singular" : "budget";
@@ -269,7 +279,7 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
                      const cert_result *res, const cert_cli *c)
 {
 	int k, p, i;
-	study_provenance(f, "certify", (unsigned long long)c->o.seed, 0);
+	study_provenance(f, "certify", (unsigned long long)c->o.seed, cert_threads());
 	fprintf(f, "# domain: %s\n", c->o.tolerance < 0 ? "every rounding to nearest of a real unit vector"
 	                                                : "every n with | |n| - 1 | <= tolerance");
 	if (c->o.tolerance >= 0)

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
+#include <mpfr.h>
 #include "search.h"
 #include "reference/reference.h"
 #include "inputs/inputs.h"
@@ -25,6 +26,7 @@
 struct cert_ctx {
 	bound_ctx *b;
 	ref_ctx *rc;
+	mpfr_t t, s;   /* scratch of last_component */
 };
 
 cert_ctx *cert_ctx_new(void)
@@ -32,6 +34,8 @@ cert_ctx *cert_ctx_new(void)
 	cert_ctx *x = calloc(1, sizeof *x);
 	if (!x)
 		return NULL;
+	mpfr_init2(x->t, 320);
+	mpfr_init2(x->s, 320);
 	x->b = bound_new();
 	x->rc = ref_new(127);
 	if (!x->b || !x->rc) {
@@ -46,6 +50,8 @@ void cert_ctx_free(cert_ctx *x)
 	if (!x)
 		return;
 	bound_free(x->b);
+	mpfr_clear(x->t);
+	mpfr_clear(x->s);
 	if (x->rc)
 		ref_free(x->rc);
 	free(x);
@@ -77,11 +83,36 @@ typedef struct {
 	cert_result *res;
 } probe_env;
 
-/* Try the rounding of the unit vector at (z, phi radians). */
+/* |c| = sqrt(1 - a^2 - b^2) rounded to nearest in the format (a, b in it):
+   the squares and their sum are exact in 320 bits; NaN when a^2 + b^2 > 1. */
+static double last_component(cert_ctx *x, double a, double b, int prec)
+{
+	mpfr_set_d(x->t, a, MPFR_RNDN);
+	mpfr_sqr(x->t, x->t, MPFR_RNDN);
+	mpfr_set_d(x->s, b, MPFR_RNDN);
+	mpfr_sqr(x->s, x->s, MPFR_RNDN);
+	mpfr_add(x->t, x->t, x->s, MPFR_RNDN);
+	mpfr_ui_sub(x->t, 1, x->t, MPFR_RNDN);
+	if (mpfr_sgn(x->t) < 0)
+		return NAN;
+	mpfr_sqrt(x->t, x->t, MPFR_RNDN);
+	return prec == PREC_FLOAT ? (double)mpfr_get_flt(x->t, MPFR_RNDN) : mpfr_get_d(x->t, MPFR_RNDN);
+}
+
+/* Try an input near the unit vector at (z, phi radians): its two smaller
+   components rounded to the format, the largest one the rounding of the
+   exact value that makes the vector unit.  Then n is the rounding of a
+   unit vector, and the largest component carries a rounding error spread
+   over its whole half-ulp range, which sets | |n| - 1 |.  (Rounding all
+   three from a double vector would leave n.z exact in double, and | |n| - 1 |
+   near the poles far below its largest.)  In double the largest component
+   would still land within a tiny part of an ulp of the double it came
+   from, so one of the others is first moved by a random relative 2^-27 at
+   most: the last component then moves by many of its ulps. */
 static void try_u(probe_env *e, double z, double phi)
 {
-	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z))), n[3];
-	int i, nf = 0;
+	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z))), n[3], c;
+	int i, nf = 0, big = 0;
 	double d;
 	n[0] = rr * cos(phi);
 	n[1] = rr * sin(phi);
@@ -91,8 +122,20 @@ static void try_u(probe_env *e, double z, double phi)
 		for (i = 0; i < 3; i++)
 			n[i] *= s;
 	}
+	for (i = 1; i < 3; i++)
+		if (fabs(n[i]) > fabs(n[big]))
+			big = i;
+	if (e->prec == PREC_DOUBLE) {   /* see above: spread the last component's rounding */
+		double t = (double)(mix(e->res->probes ^ 0x3c3cu) >> 11) * 0x1p-53 - 0.5;
+		n[(big + 1) % 3] *= 1.0 + t * 0x1p-26;
+	}
 	for (i = 0; i < 3; i++)
 		n[i] = fmt_round(n[i], e->prec);   /* not (double)(float): GCC 12.2 -O2 drops it (inputs.c) */
+	if (e->o->tolerance < 0) {
+		c = last_component(e->x, n[(big + 1) % 3], n[(big + 2) % 3], e->prec);
+		if (!isnan(c))
+			n[big] = copysign(c, n[big]);
+	}
 	if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec == PREC_FLOAT ? CM_F32 : CM_F64, e->o->tolerance))
 		return;
 	e->res->probes++;

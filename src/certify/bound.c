@@ -2,10 +2,12 @@
  * bound.c - the certified bound of one box: every feasible branch path of
  * the model, run once over the box with its error terms (gradients) and,
  * where the formula is not exact on the unit sphere along that path, once
- * more with every error term 0 (the centre Q(U, 0)).  Each quantity takes
- * the smaller of two sound bounds: the interval of Q itself, and the mean
- * value form |Q(U, 0)| + sum_k r_k max|dQ/de_k|, its centre |Q(U, 0)| itself
- * the smaller of its interval and its own mean value form in u.
+ * more with every error term 0 (the centre Q(U, 0)).  Each quantity lies
+ * in the intersection of two sound enclosures, both signed: the interval of
+ * Q itself, and the mean value form Q(U, 0) + [-1, 1] sum_k r_k max|dQ/de_k|,
+ * its centre Q(U, 0) itself the intersection of its interval and its own
+ * mean value form in u.  The sign is kept to the end: | |b| - 1 | comes
+ * from |b|^2 - 1 through sqrt(1 + s) - 1, which is not symmetric in s.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -33,22 +35,58 @@ void bound_free(bound_ctx *b)
 	free(b);
 }
 
-/* | |b| - 1 | from a bound B on | |b|^2 - 1 |: it is | |b|^2 - 1 | / (|b| + 1)
-   and |b| >= sqrt(1 - B), so at most B / (1 + sqrt(1 - B)) (B when B >= 1),
-   each step rounded the safe way. */
-static double norm_from_square(double B)
+/* An enclosure [lo, hi] of one quantity, rounded outward. */
+typedef struct {
+	double lo, hi;
+} span;
+
+/* The intersection of two enclosures of the same quantity (both sound, so
+   never empty but for a NaN: then the first). */
+static span meet(span a, span b)
 {
-	double d;
-	if (!(B < 1.0))
-		return B;
-	d = 1.0 + nextafter(sqrt(1.0 - nextafter(B, INFINITY)), 0.0);
-	return nextafter(B / nextafter(d, 0.0), INFINITY);
+	span r;
+	r.lo = a.lo > b.lo ? a.lo : b.lo;
+	r.hi = a.hi < b.hi ? a.hi : b.hi;
+	return r.lo <= r.hi ? r : a;
 }
 
-/* The bound on quantity k from one on what mvf_quantities computes. */
-static double quantity_bound(int k, double v)
+/* c + [-r, r], rounded outward. */
+static span widen(span c, double r)
 {
-	return k == CQ_N1 || k == CQ_N2 ? norm_from_square(v) : v;
+	span w;
+	w.lo = nextafter(c.lo - r, -INFINITY);
+	w.hi = nextafter(c.hi + r, INFINITY);
+	return w;
+}
+
+/* | |b| - 1 | from an enclosure [L, H] of |b|^2 - 1: |b| - 1 = sqrt(1 + s) - 1
+   grows with s, so it lies in [sqrt(1 + L) - 1, sqrt(1 + H) - 1] (-1 at the
+   lowest: |b| >= 0), each end rounded the safe way.  The sign matters: an
+   |b|^2 - 1 of 3 is an | |b| - 1 | of 1, not 3. */
+static double norm_from_square(span s)
+{
+	double down = 0.0, up = 0.0;
+	if (s.lo < 0.0)
+		down = s.lo <= -1.0 ? 1.0 : nextafter(1.0 - nextafter(sqrt(nextafter(1.0 + s.lo, 0.0)), 0.0), INFINITY);
+	if (s.hi > 0.0)
+		up = nextafter(nextafter(sqrt(nextafter(1.0 + s.hi, INFINITY)), INFINITY) - 1.0, INFINITY);
+	if (isnan(s.lo) || isnan(s.hi))
+		return INFINITY;
+	return down > up ? down : up;
+}
+
+/* The bound on quantity k from an enclosure of what mvf_quantities
+   computes: |Q|, or | |b| - 1 | from |b|^2 - 1. */
+static double quantity_bound(int k, span s)
+{
+	double a, b;
+	if (k == CQ_N1 || k == CQ_N2)
+		return norm_from_square(s);
+	a = fabs(s.lo);
+	b = fabs(s.hi);
+	if (isnan(a) || isnan(b))
+		return INFINITY;
+	return a > b ? a : b;
 }
 
 /* One run of the model along `path`; q[] the quantities. Returns 0 when the
@@ -77,77 +115,82 @@ static double values_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned
 {
 	cv q[NCQ];
 	double best = 0.0, d, unused;
+	span v;
 	int k;
 	if (run_path(c, m, x, path, MVF_VALUES, q) <= 0)
 		return INFINITY;
 	for (k = 0; k < NCQ; k++) {
-		mvf_bounds(c->m, q[k], &d, &unused);
-		d = quantity_bound(k, d);
+		mvf_bounds(c->m, q[k], &v.lo, &v.hi, &unused);
+		d = quantity_bound(k, v);
 		if (!(d <= best))
 			best = d;
 	}
 	return isnan(best) ? INFINITY : best;
 }
 
-/* The centre |Q(U, 0)| of each quantity in `want` along `path`: the
-   smaller of the direct interval and the centred form |Q(c, 0)| +
-   sum_i r_i max|dQ/du_i| (c the box's midpoint), which the dependency of
-   the formula on u (terms of size |u| that cancel) cannot widen as much.
-   Returns 0 when the direct run fails. */
+/* The centre Q(U, 0) of each quantity in `want` along `path`: the
+   intersection of its direct interval and the centred form Q(c, 0) +
+   [-1, 1] sum_i r_i max|dQ/du_i| (c the box's midpoint), which the
+   dependency of the formula on u (terms of size |u| that cancel) cannot
+   widen as much.  Returns 0 when the direct run fails. */
 static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned path, unsigned want,
-                         double centre[NCQ])
+                         span centre[NCQ])
 {
 	cv q[NCQ];
-	double at_mid[NCQ], d, unused;
-	int k, mid_ok;
+	span at_mid[NCQ];
+	double unused, lin;
+	int k;
 	if (run_path(c, m, x, path, MVF_AT_ZERO, q) <= 0)
 		return 0;
 	for (k = 0; k < NCQ; k++)
-		mvf_bounds(c->m, q[k], &centre[k], &unused);
-	if (!(mid_ok = run_path(c, m, x, path, MVF_AT_MID, q) > 0))
+		mvf_bounds(c->m, q[k], &centre[k].lo, &centre[k].hi, &unused);
+	if (run_path(c, m, x, path, MVF_AT_MID, q) <= 0)
 		return 1;
 	for (k = 0; k < NCQ; k++)
-		mvf_bounds(c->m, q[k], &at_mid[k], &unused);
+		mvf_bounds(c->m, q[k], &at_mid[k].lo, &at_mid[k].hi, &unused);
 	if (run_path(c, m, x, path, MVF_CENTRED, q) <= 0)
 		return 1;
 	for (k = 0; k < NCQ; k++)
 		if (want & (1u << k)) {
-			double lin;
-			mvf_bounds(c->m, q[k], &unused, &lin);
-			d = nextafter(at_mid[k] + lin, INFINITY);   /* the sum rounded up */
-			if (d < centre[k])
-				centre[k] = d;
+			span u;
+			mvf_bounds(c->m, q[k], &u.lo, &u.hi, &lin);
+			centre[k] = meet(centre[k], widen(at_mid[k], lin));
 		}
 	return 1;
 }
 
-/* The bound along one feasible path (or -1 when infeasible). */
+/* The bound along one feasible path (or -1 when infeasible): each quantity
+   in the intersection of its direct interval and its mean value form
+   Q(U, 0) + [-1, 1] sum_k r_k max|dQ/de_k| (Q(U, 0) = 0 where the formula
+   is exact on the unit sphere along the path). */
 static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
 {
 	cv q[NCQ];
-	double direct[NCQ], lin[NCQ], centre[NCQ], best = 0.0;
+	span direct[NCQ], centre[NCQ];
+	double lin[NCQ], best = 0.0;
 	unsigned nonzero;
-	int k, r = run_path(c, m, x, path, MVF_FULL, q);
+	int k, known = 0, r = run_path(c, m, x, path, MVF_FULL, q);
 	if (r == 0)
 		return -1.0;
 	if (r < 0)
 		return values_bound(c, m, x, path);
 	for (k = 0; k < NCQ; k++)
-		mvf_bounds(c->m, q[k], &direct[k], &lin[k]);
+		mvf_bounds(c->m, q[k], &direct[k].lo, &direct[k].hi, &lin[k]);
 	nonzero = c->nonzero;   /* n.z given: n is not unit at e = 0 */
 	if (x->has_zpoint)
 		nonzero |= CQ_ALL & ~m->zero_any_n;
-	if (nonzero && centre_bounds(c, m, x, path, nonzero, centre)) {
-		for (k = 0; k < NCQ; k++)
-			if (nonzero & (1u << k))
-				lin[k] = nextafter(centre[k] + lin[k], INFINITY); /* the sum rounded up */
-	} else if (nonzero) {
-		for (k = 0; k < NCQ; k++)
-			if (nonzero & (1u << k))
-				lin[k] = INFINITY;
-	}
+	if (nonzero)
+		known = centre_bounds(c, m, x, path, nonzero, centre);
 	for (k = 0; k < NCQ; k++) {
-		double v = quantity_bound(k, direct[k] < lin[k] ? direct[k] : lin[k]);
+		span s = direct[k];
+		double v;
+		if (!(nonzero & (1u << k))) {
+			span zero = { 0.0, 0.0 };
+			s = meet(s, widen(zero, lin[k]));
+		} else if (known) {
+			s = meet(s, widen(centre[k], lin[k]));
+		}
+		v = quantity_bound(k, s);
 		if (!(v <= best))
 			best = v; /* NaN stays +inf below */
 	}

@@ -728,17 +728,21 @@ void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
 	q[CQ_D12] = ex_dot(m, out, out + 3);
 }
 
-/* |Q| over the box directly, and sum_k r_k max|dQ/de_k|, rounded up. */
-void mvf_bounds(mvf *m, cv iq, double *direct, double *lin)
+/* Q over the box directly, as [*lo, *hi] (rounded outward), and
+   sum_k r_k max|dQ/de_k|, rounded up. */
+void mvf_bounds(mvf *m, cv iq, double *lo, double *hi, double *lin)
 {
 	const mval *q = &m->val[iq];
 	int k;
 	if (m->failed) {
-		*direct = *lin = INFINITY;
+		*lo = -INFINITY;
+		*hi = *lin = INFINITY;
 		return;
 	}
-	mpfi_mag(m->f1, q->v);
-	*direct = mpfr_get_d(m->f1, MPFR_RNDU);
+	mpfi_get_left(m->f1, q->v);
+	*lo = mpfr_get_d(m->f1, MPFR_RNDD);
+	mpfi_get_right(m->f1, q->v);
+	*hi = mpfr_get_d(m->f1, MPFR_RNDU);
 	mpfr_set_zero(m->f2, 1);
 	for (k = 0; k < q->ng; k++) {
 		if (!q->nz[k])
@@ -748,6 +752,10 @@ void mvf_bounds(mvf *m, cv iq, double *direct, double *lin)
 		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDU);
 	}
 	*lin = mpfr_get_d(m->f2, MPFR_RNDU);
+	if (isnan(*lo) || isnan(*hi)) {
+		*lo = -INFINITY;
+		*hi = INFINITY;
+	}
 }
 
 /* f(r) = r (1.5 - 0.5 r^2 p) at the point (r, p), enclosed in m->t1. */

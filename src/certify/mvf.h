@@ -32,7 +32,7 @@ typedef struct {
 enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES, MVF_AT_MID, MVF_CENTRED };
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3]);
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5]);
-void mvf_bounds(mvf *m, cv q, double *direct, double *lin);
+void mvf_bounds(mvf *m, cv q, double *lo, double *hi, double *lin);
 int  mvf_ratio_within_2(mvf *m, mpfi_srcptr x, mpfi_srcptr y);
 
 #endif

@@ -25,7 +25,7 @@ for p in float double; do
 	        lo = 1 + L[k]; hi = 1 + H[k]; if (lo <= 0) lo = hi / 10
 	        f = F[k] > 0 ? F[k] : 1e-30
 	        printf "%.17g %.17g %.6e %.6e\n", lo, hi, f, (B[k] > f ? B[k] : f) >> (w "/" a[1] "." p) } }'
-	for f in "$W"/*."$p"; do sort -g -o "$f" "$f"; done
+	for f in "$W"/*."$p"; do [ -f "$f" ] && sort -g -o "$f" "$f"; done
 	# the floor: the largest floor defect of duff_branchless per log10(1 + n.z) bin (unit inputs)
 	if [ -f "$REF" ]; then
 		grep -v '^#' "$REF" | awk -F, -v p="$p" '$1 == "duff_branchless" && $2 == p && $4 == "log10_1pnz" &&
@@ -35,6 +35,8 @@ for p in float double; do
 	else
 		: > "$W/floor.$p"
 	fi
-	gnuplot -e "dir='$W'; prec='$p'; out='$DIR/certify_$p'" "$HERE/certify.gp"
+	have=" "
+	for f in "$W"/*."$p"; do [ -f "$f" ] && have="$have$(basename "$f" ".$p") "; done
+	gnuplot -e "dir='$W'; prec='$p'; out='$DIR/certify_$p'; have='$have'" "$HERE/certify.gp"
 done
 echo "certify-plot: wrote $DIR/certify_float.png and $DIR/certify_double.png"

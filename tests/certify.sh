@@ -65,7 +65,17 @@ grep -q '^  duff  .*[0-9]  proven within E$' "$T/ss.out" && ok || bad "duff not 
 data "$T/band/certify.csv" | awk -F, 'NR == 2 { first = ($3 == -1 && $4 == -0.9999) } NR > 1 { n++; if ($3 < -1 || $4 > -0.9999) out++ } END { exit !(first && n > 1 && !out) }' \
 	&& ok || bad "--band rows: $(data "$T/band/certify.csv" | head -3)"
 
-# 7. bad input: exit 2, one line, nothing written
+# 7. the charts of the quick run (scripts/certify-plot.sh), through the chart check
+if command -v gnuplot >/dev/null 2>&1; then
+	sh scripts/certify-plot.sh "$T/a" >/dev/null 2>"$T/plot.err" && ok || bad "certify-plot.sh failed: $(cat "$T/plot.err")"
+	for p in float double; do
+		out=$(awk -f scripts/chart-check.awk "$T/a/certify_$p.svg" 2>&1) && ok || bad "certify_$p chart check: $out"
+	done
+else
+	bad "gnuplot missing: scripts/install-deps.sh must install it"
+fi
+
+# 8. bad input: exit 2, one line, nothing written
 for args in "--budget 0" "--tolerance -1" "--tolerance 0.5" "--precision half" "--methods nosuch" "--sectors 0" "--band 0.5" "--band 0.5,2" "--band 1,0" "stray"; do
 	./onbstudy certify $args --out "$T/bad" >/dev/null 2>"$T/e"; rc=$?
 	[ $rc -eq 2 ] && [ "$(wc -l <"$T/e")" -eq 1 ] && [ ! -e "$T/bad/certify.csv" ] && ok || bad "certify $args: exit $rc, $(cat "$T/e")"

@@ -5,8 +5,9 @@
  * The found side: inputs sampled in the region (log-spaced in 1 -+ n.z
  * near the poles, the sector's edges and diagonals), each rounded to the
  * format and kept only if it is in the region and in the domain, then the
- * centre of every box the bound side splits, and a walk of ulp steps from
- * the best input.  The bound side: the region's box of real unit vectors,
+ * centre of every box the bound side splits, inputs drawn in the 32 leaves
+ * with the largest bounds when the bracket is still wide, and a walk of
+ * ulp steps from the best input.  The bound side: the region's box of real unit vectors,
  * bounded by bound_box; the box with the largest bound is split in two
  * (in log(1 -+ z) near the poles, else in z or in the azimuth, whichever
  * is wider) until the largest bound is within target x found, or the
@@ -344,6 +345,28 @@ static void probe_box(probe_env *e, const mvf_box *b)
 	}
 }
 
+/* The found side guided by the bound: when the bracket is still wide,
+   `per` inputs drawn in each of the `top` leaves with the largest bounds,
+   where the first-order error terms say the defect can be largest. */
+static void probe_worst_leaves(probe_env *e, leaf *l, int nl, int top, int per)
+{
+	int t, j;
+	for (t = 0; t < top && t < nl; t++) {
+		int i, imax = t;
+		leaf tmp;
+		for (i = t + 1; i < nl; i++)   /* selection: the next largest bound */
+			if (l[i].bound > l[imax].bound)
+				imax = i;
+		tmp = l[t]; l[t] = l[imax]; l[imax] = tmp;
+		for (j = 0; j < per; j++) {
+			const mvf_box *b = &l[t].b;
+			const uint64_t s = e->o->seed ^ 0x77u ^ ((uint64_t)t << 32);
+			double z = b->z_lo + (b->z_hi - b->z_lo) * unit01(s, (uint64_t)j * 2);
+			try_u(e, z, b->phi_lo + (b->phi_hi - b->phi_lo) * unit01(s, (uint64_t)j * 2 + 1));
+		}
+	}
+}
+
 /* The leaf with the largest bound among those that can still be split;
    *worst receives the largest bound of all. */
 static int worst_leaf(const leaf *l, int nl, double *worst)
@@ -393,6 +416,8 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 		e->res->boxes += k;
 	}
 	e->res->bound = worst;
+	if (!(worst <= e->o->target * e->res->found))
+		probe_worst_leaves(e, l, nl, 32, e->o->samples / 16 + 8);
 	if (getenv("ONB_CERT_DEBUG"))
 		for (nl--; nl >= 0; nl--)
 			if (l[nl].bound >= worst)

@@ -61,17 +61,31 @@ static span widen(span c, double r)
 
 /* | |b| - 1 | from an enclosure [L, H] of |b|^2 - 1: |b| - 1 = sqrt(1 + s) - 1
    grows with s, so it lies in [sqrt(1 + L) - 1, sqrt(1 + H) - 1] (-1 at the
-   lowest: |b| >= 0), each end rounded the safe way.  The sign matters: an
+   lowest: |b| >= 0).  Each end is evaluated as s / (1 + sqrt(1 + s)),
+   without the cancellation of sqrt(1 + s) - 1 in double, and rounded the
+   safe way (denominator down, quotient up).  The sign matters: an
    |b|^2 - 1 of 3 is an | |b| - 1 | of 1, not 3. */
+static double norm_end(double s)
+{
+	double r, d;
+	if (s <= -1.0)
+		return 1.0;
+	if (!(s < INFINITY))
+		return INFINITY;
+	r = nextafter(sqrt(nextafter(1.0 + s, 0.0)), 0.0);   /* <= sqrt(1 + s) */
+	d = nextafter(1.0 + r, 0.0);
+	return nextafter(fabs(s) / d, INFINITY);
+}
+
 static double norm_from_square(span s)
 {
 	double down = 0.0, up = 0.0;
-	if (s.lo < 0.0)
-		down = s.lo <= -1.0 ? 1.0 : nextafter(1.0 - nextafter(sqrt(nextafter(1.0 + s.lo, 0.0)), 0.0), INFINITY);
-	if (s.hi > 0.0)
-		up = nextafter(nextafter(sqrt(nextafter(1.0 + s.hi, INFINITY)), INFINITY) - 1.0, INFINITY);
 	if (isnan(s.lo) || isnan(s.hi))
 		return INFINITY;
+	if (s.lo < 0.0)
+		down = norm_end(s.lo);
+	if (s.hi > 0.0)
+		up = norm_end(s.hi);
 	return down > up ? down : up;
 }
 

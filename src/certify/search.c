@@ -382,12 +382,19 @@ static int worst_leaf(const leaf *l, int nl, double *worst)
 	return imax;
 }
 
+/* The branch and bound stops early when the largest bound has fallen by
+   less than 2% over the last STALL_BOXES boxes: the budget then goes to
+   regions where splitting still pays (a bound set by the first-order
+   worst case of single inputs, as at the n.z = 0 seam, does not move). */
+#define STALL_BOXES 1000
+
 static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0)
 {
 	const long cap = e->o->budget + 8;
 	leaf *l = malloc((size_t)cap * sizeof *l);
 	int nl = 1;
-	double worst = INFINITY;
+	double worst = INFINITY, at_check = INFINITY;
+	long next_check = STALL_BOXES;
 	if (!l) {
 		e->res->bound = INFINITY;
 		return;
@@ -399,17 +406,26 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	for (;;) {
 		int i = worst_leaf(l, nl, &worst);
 		mvf_box c[8];
+		double parent;
 		int k, j;
 		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 8 > e->o->budget)
 			break;
+		if (e->res->boxes >= next_check) {   /* stalled: 1000 more boxes took < 2% off */
+			if (!(worst < 0.98 * at_check))
+				break;
+			at_check = worst;
+			next_check += STALL_BOXES;
+		}
 		if (!(k = split(&l[i].b, c))) {
 			l[i].stuck = 1;
 			continue;
 		}
+		parent = l[i].bound;
 		for (j = 0; j < k; j++) {
 			const int at = j == 0 ? i : nl++;
+			const double v = bound_box(e->x->b, m, &c[j]);
 			l[at].b = c[j];
-			l[at].bound = bound_box(e->x->b, m, &c[j]);
+			l[at].bound = v <= parent ? v : parent;   /* the parent's bound holds on its part too */
 			l[at].stuck = 0;
 			probe_box(e, &c[j]);
 		}

@@ -58,22 +58,22 @@
  *   naive_rsqrt              singular                       singular
  *   naive_rsqrt_nr           singular                       singular
  *   naive_nonorm             <= 1.68e+07u (found 1.68e+07u) <= 9.01e+15u (found 9.01e+15u)
- *   hughes_moeller           <= 6.6u (found 3.12u)          <= 8u (found 3.63u)
+ *   hughes_moeller           <= 6.59u (found 3.49u)         <= 7.61u (found 3.75u)
  *   hughes_moeller_invsqrt   <= 3.67e+04u (found 2.94e+04u) <= 1.97e+13u (found 1.58e+13u)
  *   hughes_moeller_rsqrt     <= 5.42e+03u (found 4.34e+03u) <= 2.87e+12u (found 2.3e+12u)
- *   hughes_moeller_rsqrt_nr  <= 10.5u (found 4.9u)          <= 1.1e+09u (found 8.82e+08u)
+ *   hughes_moeller_rsqrt_nr  <= 10.3u (found 4.9u)          <= 1.1e+09u (found 8.82e+08u)
  *   hughes_moeller_nonorm    <= 6.06e+06u (found 4.9e+06u)  <= 3.25e+15u (found 2.63e+15u)
- *   frisvad                  <= 2.1e+07u (found 1.04e+07u)  <= 4.03e+12u (found 4.01e+12u)
- *   frisvad_max              <= 1.06e+05u (found 8.26e+04u) <= 5.37e+13u (found 4.42e+13u)
- *   duff                     <= 6u (found 3u)               <= 6u (found 2.9u)
- *   duff_branchless          <= 6u (found 3u)               <= 6u (found 2.9u)
- *   stark                    <= 8.75u (found 4.04u)         <= 11.3u (found 3.82u)
- *   stark_fixed              <= 7.63u (found 3.74u)         <= 8u (found 3.63u)
- *   pbrt_v3                  <= 6.1u (found 3.24u)          <= 7.75u (found 3.57u)
- *   rtow                     <= 14.3u (found 4.74u)         <= 14.3u (found 4.78u)
+ *   frisvad                  <= 1.3e+07u (found 1.05e+07u)  <= 4.03e+12u (found 4.03e+12u)
+ *   frisvad_max              <= 1.03e+05u (found 8.26e+04u) <= 5.37e+13u (found 4.42e+13u)
+ *   duff                     <= 6u (found 3.1u)             <= 6u (found 3.26u)
+ *   duff_branchless          <= 6u (found 3.1u)             <= 6u (found 3.26u)
+ *   stark                    <= 7.53u (found 4.14u)         <= 7.53u (found 4.24u)
+ *   stark_fixed              <= 7.53u (found 3.74u)         <= 7.53u (found 3.86u)
+ *   pbrt_v3                  <= 6.05u (found 3.16u)         <= 7.05u (found 3.8u)
+ *   rtow                     <= 11.1u (found 4.8u)          <= 11.1u (found 5.07u)
  *   tangent_cross_z          singular                       singular
- *   duff_wide                <= 2.41u (found 1.35u)         -
- *   duff_comp                <= 4.05u (found 1.35u)         -
+ *   duff_wide                <= 2.41u (found 1.26u)         -
+ *   duff_comp                <= 3.02u (found 1.38u)         -
  * (end of the proven bounds)
  *
  * Floating-point flags (docs/library.md, "Compiler flags"):

@@ -64,7 +64,7 @@ static void usage(FILE *f)
 	"  --tolerance T     the non-unit domain | |n| - 1 | <= T (T in [0, 0.01])\n"
 	"  --band LO,HI      only the inputs with LO <= n.z <= HI (-1 <= LO <= HI <= 1):\n"
 	"                    the default bands cut to it; the summary row is that band\n"
-	"  --quick           budget 60, samples 150, 4 sectors: a run of about a minute\n");
+	"  --quick           budget 60, samples 150, 4 sectors: a run of under a minute\n");
 }
 
 /* --band LO,HI: two numbers, -1 <= LO <= HI <= 1. */

@@ -129,7 +129,7 @@ fuzzrow cli "CLI parsers"
 echo "| Fuzz regressions | inputs kept in tests/fuzz/regressions/, replayed with the seed corpus by make test (tests/fuzz_regress.sh) | $nreg kept |"
 echo "| make test SANITIZE=address,undefined | the whole suite under ASan and UBSan (-fno-sanitize-recover=all) | $san |"
 echo "| valgrind memcheck | sweep --samples 256 --exhaustive-count 256 --grid 4x8 (all methods, 2 threads); scene on an OBJ, a big-endian PLY and a glTF (--world) | $vg |"
-echo "| cppcheck src/lib | --enable=warning,style,performance,portability | $cp |"
+echo "| cppcheck src/lib | --enable=warning,style,performance,portability --force (every #ifdef configuration) | $cp |"
 echo "| Strict warnings | src/lib with -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror |$wst |"
 echo
 echo "## Library: what each input gives"

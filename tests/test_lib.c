@@ -371,40 +371,15 @@ static void test_faithful(void)
 	CHECK(b1.y != 0.0, "naive at n.x = 0.9 takes the x-axis branch (b1.y = %a)", b1.y);
 }
 
-/* Exact values at the axes and signed zeros. */
-static void test_special(void)
+/* Every method on every signed-zero axis: finite (except the published
+   singular ones), exactly orthogonal, exactly unit (unless the
+   normalization is approximate by design), right sign of det. */
+static void test_signed_zero_axes(void)
 {
-	onb_vec3 n, b1, b2, c1, c2;
-	onb_vec3f nf, b1f, b2f;
+	onb_vec3 n, b1, b2;
 	size_t count, i;
 	const onb_method *ms = onb_methods(&count);
 
-	/* duff and duff_branchless at -z: b1 = (1,0,0), b2 = (0,-1,0). */
-	n.x = 0.0; n.y = 0.0; n.z = -1.0;
-	onb_duff(n, &b1, &b2);
-	onb_duff_branchless(n, &c1, &c2);
-	CHECK(b1.x == 1 && b1.y == 0 && b1.z == 0 && b2.x == 0 && b2.y == -1 && b2.z == 0, "duff(-z) = (1,0,0),(0,-1,0)");
-	CHECK(same3(b1, c1) && same3(b2, c2), "duff and duff_branchless agree at -z");
-
-	/* n.z = -0: duff's `n.z < 0` is false (upper branch), branchless
-	   copysign sees the sign bit (lower branch).  Both are valid frames,
-	   mirrored in y: the documented difference. */
-	n.x = 1.0; n.y = 0.0; n.z = -0.0;
-	onb_duff(n, &b1, &b2);
-	onb_duff_branchless(n, &c1, &c2);
-	CHECK(b2.y == 1.0 && c2.y == -1.0, "n.z = -0: duff b2.y = %g (upper), branchless b2.y = %g (lower)", b2.y, c2.y);
-	nf.x = 1.0f; nf.y = 0.0f; nf.z = -0.0f;
-	{
-		onb_vec3f c1f, c2f;
-		onb_dufff(nf, &b1f, &b2f);
-		onb_duff_branchlessf(nf, &c1f, &c2f);
-		CHECK(b2f.y == 1.0f && b1f.z == -1.0f && c2f.y == -1.0f && c1f.z == 1.0f,
-		      "float, n = (1,0,-0): duff b2.y = %g, branchless b2.y = %g", b2f.y, c2f.y);
-	}
-
-	/* Every method on every signed-zero axis: finite (except the published
-	   singular ones), exactly orthogonal, exactly unit (unless the
-	   normalization is approximate by design), right sign of det. */
 	for (i = 0; i < count; i++) {
 		int ax, s, zs, bad = 0;
 		for (ax = 0; ax < 3; ax++)
@@ -442,8 +417,15 @@ static void test_special(void)
 		CHECK(bad == 0, "%s: exact frames on the signed-zero axes (%d bad)", ms[i].name, bad);
 	}
 
-	/* Frisvad's Equation 3 against the basis it implies, and its singular
-	   case (-y, -x, -z). */
+}
+
+/* Frisvad's Equation 3 against the basis it implies, and its singular
+   case (-y, -x, -z); frisvad_threshold with t = -2. */
+static void test_frisvad_rotate(void)
+{
+	onb_vec3 n, b1, b2;
+	onb_vec3f nf, b1f, b2f;
+
 	n.x = 0.0; n.y = 0.0; n.z = -1.0;
 	{
 		onb_vec3 w = onb_frisvad_rotate(n, 0.25, 0.5, 0.75);
@@ -473,6 +455,38 @@ static void test_special(void)
 	nf.x = 0; nf.y = 0; nf.z = -1;
 	onb_frisvad_thresholdf(nf, -2.0f, &b1f, &b2f);
 	CHECK(!isfinite(b1f.x), "frisvad_threshold(-z, t=-2) runs the formula into 1/0 (b1.x = %g)", b1f.x);
+}
+
+/* Exact values at the axes and signed zeros. */
+static void test_special(void)
+{
+	onb_vec3 n, b1, b2, c1, c2;
+	onb_vec3f nf, b1f, b2f;
+
+	/* duff and duff_branchless at -z: b1 = (1,0,0), b2 = (0,-1,0). */
+	n.x = 0.0; n.y = 0.0; n.z = -1.0;
+	onb_duff(n, &b1, &b2);
+	onb_duff_branchless(n, &c1, &c2);
+	CHECK(b1.x == 1 && b1.y == 0 && b1.z == 0 && b2.x == 0 && b2.y == -1 && b2.z == 0, "duff(-z) = (1,0,0),(0,-1,0)");
+	CHECK(same3(b1, c1) && same3(b2, c2), "duff and duff_branchless agree at -z");
+
+	/* n.z = -0: duff's `n.z < 0` is false (upper branch), branchless
+	   copysign sees the sign bit (lower branch).  Both are valid frames,
+	   mirrored in y: the documented difference. */
+	n.x = 1.0; n.y = 0.0; n.z = -0.0;
+	onb_duff(n, &b1, &b2);
+	onb_duff_branchless(n, &c1, &c2);
+	CHECK(b2.y == 1.0 && c2.y == -1.0, "n.z = -0: duff b2.y = %g (upper), branchless b2.y = %g (lower)", b2.y, c2.y);
+	nf.x = 1.0f; nf.y = 0.0f; nf.z = -0.0f;
+	{
+		onb_vec3f c1f, c2f;
+		onb_dufff(nf, &b1f, &b2f);
+		onb_duff_branchlessf(nf, &c1f, &c2f);
+		CHECK(b2f.y == 1.0f && b1f.z == -1.0f && c2f.y == -1.0f && c1f.z == 1.0f,
+		      "float, n = (1,0,-0): duff b2.y = %g, branchless b2.y = %g", b2f.y, c2f.y);
+	}
+	test_signed_zero_axes();
+	test_frisvad_rotate();
 }
 
 /* The checked entry point. */

@@ -166,8 +166,8 @@ static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 		return 1;
 	for (k = 0; k < NCQ; k++)
 		if (want & (1u << k)) {
-			span u;
-			mvf_bounds(c->m, q[k], &u.lo, &u.hi, &lin);
+			span sink;   /* only its gradient term is wanted here */
+			mvf_bounds(c->m, q[k], &sink.lo, &sink.hi, &lin);
 			centre[k] = meet(centre[k], widen(at_mid[k], lin));
 		}
 	return 1;

@@ -7,12 +7,13 @@
  * format and kept only if it is in the region and in the domain, then the
  * centre of every box the bound side splits, inputs drawn in the 32 leaves
  * with the largest bounds when the bracket is still wide, and a walk of
- * ulp steps from the best input.  The bound side: the region's box of real unit vectors,
- * bounded by bound_box; the box with the largest bound is split in two
- * (in log(1 -+ z) near the poles, else in z or in the azimuth, whichever
- * is wider) until the largest bound is within target x found, or the
- * budget of boxes runs out.  The region's bound is the largest over the
- * leaves: every real unit vector of the box lies in some leaf.
+ * ulp steps from the best input.  The bound side: the region's box of real
+ * unit vectors, bounded by bound_box; the box with the largest bound is
+ * split in two (in log(1 -+ z) near the poles, else in z or in the
+ * azimuth, whichever is wider) until the largest bound is within target x
+ * found, the budget of boxes runs out, or splitting stalls (STALL_BOXES).
+ * The region's bound is the largest over the leaves: every real unit
+ * vector of the box lies in some leaf.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -387,6 +388,9 @@ static int worst_leaf(const leaf *l, int nl, double *worst)
    regions where splitting still pays (a bound set by the first-order
    worst case of single inputs, as at the n.z = 0 seam, does not move). */
 #define STALL_BOXES 1000
+/* Where the bracket stays wide: inputs drawn in this many of the leaves
+   with the largest bounds, samples / 16 + 8 in each. */
+#define PROBE_LEAVES 32
 
 static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0)
 {
@@ -433,7 +437,7 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	}
 	e->res->bound = worst;
 	if (!(worst <= e->o->target * e->res->found))
-		probe_worst_leaves(e, l, nl, 32, e->o->samples / 16 + 8);
+		probe_worst_leaves(e, l, nl, PROBE_LEAVES, e->o->samples / 16 + 8);
 	if (getenv("ONB_CERT_DEBUG"))
 		for (nl--; nl >= 0; nl--)
 			if (l[nl].bound >= worst)

@@ -7,7 +7,8 @@
 #   make plots      charts of the newest run
 #   make mpi        onbstudy-mpi, the MPI driver of the sweep (needs Open MPI's mpicc)
 #   make robustness the hardening checks, then results/robustness.md
-#   make install    PREFIX=/usr/local DESTDIR=  (header, libonb.a, onb.pc)
+#   make install    PREFIX=/usr/local DESTDIR=  (libonb/onb.h, libonb.a, onb.pc,
+#                   onb.3, onbstudy.1; make install-compat adds the old <onb.h>)
 #   make uninstall, make clean
 
 CC      ?= cc
@@ -61,8 +62,8 @@ B       = build
 # calls; once more with -DONB_COMMON for their shared part.  The method
 # names come from onb.h's two X-macro lists.
 LIB_SRC = $(wildcard src/lib/*.c)
-LIB_METHODS  := $(shell sed -n '/define ONB_METHOD_LIST/,/^$$/p' include/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
-LIB_FMETHODS := $(shell grep 'define ONB_FLOAT_METHOD_LIST' include/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
+LIB_METHODS  := $(shell sed -n '/define ONB_METHOD_LIST/,/^$$/p' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
+LIB_FMETHODS := $(shell grep 'define ONB_FLOAT_METHOD_LIST' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
 LIB_SPLIT    = array outline batch
 LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o) \
           $(foreach f,$(LIB_SPLIT),$(LIB_METHODS:%=$(B)/lib/split/$(f)-d-%.o) \
@@ -70,7 +71,7 @@ LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o) \
                                    $(LIB_FMETHODS:%=$(B)/lib/split/$(f)-f-%.o))
 # The study's build installs its packages first (scripts/install-deps.sh);
 # the library alone (make lib, make install, make uninstall) does not.
-ifeq ($(filter-out lib install uninstall clean,$(MAKECMDGOALS)),)
+ifeq ($(filter-out lib install install-compat uninstall clean,$(MAKECMDGOALS)),)
 ifneq ($(MAKECMDGOALS),)
 LIB_DEPS =
 else
@@ -83,8 +84,8 @@ endif
 # The study: every src/<folder>/*.c but src/lib/ (libonb) and src/mpi/ (the
 # MPI driver, built by `make mpi` only).  A new folder src/<name>/ is picked
 # up by these wildcards with no edit here; its objects go to build/<name>/.
-# Includes name their folder from -Isrc ("sweep/engine.h"); onb.h comes
-# from -Iinclude.
+# Includes name their folder from -Isrc ("sweep/engine.h"); libonb/onb.h
+# comes from -Iinclude.
 STUDY_SRC = $(filter-out src/lib/% src/mpi/%,$(wildcard src/*/*.c))
 STUDY_OBJ = $(STUDY_SRC:src/%.c=$(B)/%.o)
 STUDY_HDR = $(filter-out src/lib/%,$(wildcard src/*/*.h src/*/*.inc))
@@ -112,11 +113,11 @@ deps: $(B)/deps.stamp
 # --- libonb rules (issue 25) ---
 .PHONY: lib
 lib: libonb.a
-$(B)/lib/%.o: src/lib/%.c include/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
+$(B)/lib/%.o: src/lib/%.c include/libonb/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(LIBWARN) -DONB_COMMON -c $< -o $@
 define ONB_SPLIT_RULE
-$(B)/lib/split/$(1)-$(2)-%.o: src/lib/$(1).c include/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
+$(B)/lib/split/$(1)-$(2)-%.o: src/lib/$(1).c include/libonb/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
 	@mkdir -p $$(@D)
 	$$(CC) $$(BASE) $$(LIBWARN) -DONB_ONE=$$* -DONB_ONE_$(3) -c $$< -o $$@
 endef
@@ -133,7 +134,7 @@ cross-check:
 	sh scripts/cross-check.sh results/cross-check
 # --- end libonb rules ---
 
-$(filter-out $(B)/bench/yardstick.o,$(STUDY_OBJ)): $(B)/%.o: src/%.c include/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
+$(filter-out $(B)/bench/yardstick.o,$(STUDY_OBJ)): $(B)/%.o: src/%.c include/libonb/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) $(XFLAGS) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 
@@ -168,7 +169,7 @@ $(B)/reference/reffast_f.o: src/reference/reffast.c
 # The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
 # (left out of the study's rule above, which compiles every other object)
-$(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/onb.h Makefile $(B)/deps.stamp
+$(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/libonb/onb.h Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -Isrc -c $< -o $@
 
@@ -184,7 +185,7 @@ $(STUDY_LIB): $(filter-out $(MAIN_OBJ),$(STUDY_OBJ))
 onbstudy: $(MAIN_OBJ) $(STUDY_LIB) libonb.a
 	$(CC) $(BASE) $(OMP) -o $@ $(MAIN_OBJ) $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
-$(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
+$(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/libonb/onb.h $(wildcard tests/*.h) $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
@@ -214,16 +215,28 @@ robustness:
 # onb.pc is written for the PREFIX of this very `make install`, every time,
 # straight into the destination: no generated file in the tree to go stale.
 ONB_PC = prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: onb\nDescription: orthonormal bases from a unit vector (onbstudy)\nVersion: 0.1.0\nCflags: -I$${includedir}\nLibs: -L$${libdir} -lonb -lm\n
+# The header goes to include/libonb/onb.h: clients write <libonb/onb.h>, so a
+# renderer's own onb.h (a common name) cannot shadow it or be shadowed.
+# `make install-compat` adds include/onb.h, a two-line forward for code
+# written against the old <onb.h>; it is opt-in because it takes that name.
 install: libonb.a
-	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 include/onb.h $(DESTDIR)$(PREFIX)/include/onb.h
+	install -d $(DESTDIR)$(PREFIX)/include/libonb $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/libonb/onb.h $(DESTDIR)$(PREFIX)/include/libonb/onb.h
 	install -m 644 libonb.a $(DESTDIR)$(PREFIX)/lib/libonb.a
 	printf '$(ONB_PC)' '$(PREFIX)' > $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc.tmp
 	mv -f $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc.tmp $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc
 
+# include/onb.h is removed only when it is libonb's (the forward, or the
+# header itself as installed before it moved to libonb/).
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/include/onb.h $(DESTDIR)$(PREFIX)/lib/libonb.a \
+	rm -f $(DESTDIR)$(PREFIX)/include/libonb/onb.h $(DESTDIR)$(PREFIX)/lib/libonb.a \
 	      $(DESTDIR)$(PREFIX)/lib/pkgconfig/onb.pc
+	rmdir $(DESTDIR)$(PREFIX)/include/libonb 2>/dev/null || true
+	if grep -qs 'LIBONB_COMPAT_ONB_H\|^ \* onb.h - orthonormal bases {b1, b2, n}' $(DESTDIR)$(PREFIX)/include/onb.h; then \
+	  rm -f $(DESTDIR)$(PREFIX)/include/onb.h; fi
+.PHONY: install-compat
+install-compat: install
+	install -m 644 include/compat/onb.h $(DESTDIR)$(PREFIX)/include/onb.h
 
 clean:
 	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onb.pc   # onb.pc: left by older Makefiles
@@ -234,7 +247,7 @@ clean:
 MPICC ?= mpicc
 .PHONY: mpi
 mpi: onbstudy-mpi
-$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/onb.h Makefile $(B)/rev.stamp
+$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp
 	@mkdir -p $(@D)
 	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
@@ -243,7 +256,7 @@ onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 # The example renderer links libonb.a and libm, as a user's would, and the
 # scene reader (meshio, whose glTF part links cJSON) for --obj.
 MESHIO_SRC = $(wildcard src/mesh/*.c)
-$(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb.a include/onb.h
+$(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb.a include/libonb/onb.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm
 RENDERS = results/reference/renders
@@ -266,7 +279,7 @@ render: $(B)/aorender
 
 # Man pages (issue 23): man/onbstudy.1 is generated from the commands' own
 # --help by help2man (`make man`, scripts/man.sh; tests/man_pages.sh fails
-# when it is stale), man/onb.3 is written by hand from include/onb.h.
+# when it is stale), man/onb.3 is written by hand from include/libonb/onb.h.
 # `make install` installs both under $(MANDIR); neither needs a tool to install.
 MANDIR ?= $(PREFIX)/share/man
 .PHONY: man install-man uninstall-man

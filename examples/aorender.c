@@ -51,7 +51,7 @@
 #include <stdlib.h>
 #include <stdint.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "mesh/meshio.h"
 
 #define W 160

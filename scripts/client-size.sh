@@ -14,8 +14,11 @@ mkdir -p "$tmp/old" "$(dirname "$outf")"
 git archive "$rev" | tar -x -C "$tmp/old"
 make -s -C "$tmp/old" libonb.a >/dev/null
 make -s lib >/dev/null
-printf '#include "onb.h"\nint main(void) { float n[3] = { 0, 0, 1 }, t[3], b[3]; onb_duff_branchless_arrayf(n, t, b); return t[0] != 1.0f; }\n' > "$tmp/one.c"
+# the header's path: include/libonb/onb.h now, include/onb.h before
+one='\nint main(void) { float n[3] = { 0, 0, 1 }, t[3], b[3]; onb_duff_branchless_arrayf(n, t, b); return t[0] != 1.0f; }\n'
 line() { # label include-dir libonb.a
+	h=onb.h; [ -f "$2/libonb/onb.h" ] && h=libonb/onb.h
+	printf "#include \"$h\"$one" > "$tmp/one.c"
 	cc -std=c99 -O2 -I"$2" "$tmp/one.c" "$3" -lm -o "$tmp/one"
 	"$tmp/one"
 	set -- "$1" $(size "$tmp/one" | awk 'NR == 2 { print $1, $2, $3 }') $(nm "$tmp/one" | awk '$NF ~ /^onb_/' | wc -l)

@@ -29,7 +29,7 @@
 #   {{CW dir method precision column}}  bound or found of the first row of
 #                                   results/certify/dir/certify.csv, in u
 #   {{CP key}}                      a '# key: value' line of certify.csv
-#   With --onbh: scripts/onbh.in into include/onb.h's header comment:
+#   With --onbh: scripts/onbh.in into include/libonb/onb.h's header comment:
 #   {{ONBH}}                        one comment line per method
 #   {{CB method precision column}}  (any mode) bound or found of the
 #                                   whole-sphere row of certify.csv

@@ -1,5 +1,5 @@
-# mutants.awk - list the one-token mutations of include/onb.h's kernels.
-#   awk -f scripts/mutants.awk include/onb.h
+# mutants.awk - list the one-token mutations of include/libonb/onb.h's kernels.
+#   awk -f scripts/mutants.awk include/libonb/onb.h
 # prints one mutation per line, tab-separated:
 #   LINE  COL  LEN  REPLACEMENT  KIND  WHERE
 # (COL is 1-based; the mutant replaces LEN characters at LINE:COL).

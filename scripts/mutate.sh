@@ -1,5 +1,5 @@
 #!/bin/sh
-# mutate.sh - mutation testing of include/onb.h's kernels.
+# mutate.sh - mutation testing of include/libonb/onb.h's kernels.
 #   sh scripts/mutate.sh [--jobs N] [--out FILE] [--limit SECONDS]
 # Lists every one-token mutation of the kernels (scripts/mutants.awk:
 # numeric constants, comparisons, signs, float/double conversions, swapped
@@ -40,9 +40,9 @@ one() {
 	ln=$(printf '%s\n' "$site" | cut -f1); col=$(printf '%s\n' "$site" | cut -f2)
 	len=$(printf '%s\n' "$site" | cut -f3); rep=$(printf '%s\n' "$site" | cut -f4)
 	kind=$(printf '%s\n' "$site" | cut -f5); where=$(printf '%s\n' "$site" | cut -f6)
-	w="$d/m$i"; mkdir -p "$w"
+	w="$d/m$i"; mkdir -p "$w/libonb"
 	awk -v L="$ln" -v C="$col" -v N="$len" -v R="$rep" \
-		'NR == L { $0 = substr($0, 1, C - 1) R substr($0, C + N) } { print }' include/onb.h > "$w/onb.h"
+		'NR == L { $0 = substr($0, 1, C - 1) R substr($0, C + N) } { print }' include/libonb/onb.h > "$w/libonb/onb.h"
 	compiled=0; changed=0; caught=0
 	if $CC $FLAGS -I"$w" -c -o "$w/lib.o" tests/indep_lib.c 2>/dev/null &&
 	   $CC -o "$w/t" "$d/driver.o" "$w/lib.o" -lm 2>/dev/null; then
@@ -53,7 +53,7 @@ one() {
 		[ "$h" != "$(cat "$d/base.hash")" ] && changed=1
 	fi
 	printf '%s\t%s\t%s\t%s:%s\t%s\t%s\t%s\t%s\n' "$i" "$kind" "$where" "$ln" "$col" "$compiled" "$changed" "$caught" \
-		"$(sed -n "${ln}p" "$w/onb.h" | sed 's/^[[:space:]]*//')" > "$d/res/$i"
+		"$(sed -n "${ln}p" "$w/libonb/onb.h" | sed 's/^[[:space:]]*//')" > "$d/res/$i"
 	rm -rf "$w"
 }
 if [ "${1:-}" != "" ] && [ -d "${1:-}" ]; then one "$1" "$2"; exit 0; fi
@@ -62,7 +62,7 @@ start=$(date +%s)
 rev="$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- include tests 2>/dev/null || echo -dirty)"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/res"
-awk -f scripts/mutants.awk include/onb.h > "$tmp/list"
+awk -f scripts/mutants.awk include/libonb/onb.h > "$tmp/list"
 # MUTATE_EVERY=K: only every K-th mutant (a quick check of this script)
 if [ "${MUTATE_EVERY:-1}" -gt 1 ]; then awk -v k="$MUTATE_EVERY" 'NR % k == 1' "$tmp/list" > "$tmp/l2" && mv "$tmp/l2" "$tmp/list"; fi
 n=$(wc -l < "$tmp/list")
@@ -72,7 +72,7 @@ if ! $CC $FLAGS -Iinclude -DINDEP_SPLIT -c -o "$tmp/driver.o" tests/test_indep.c
 	echo "mutate: the unmutated header fails test_indep" >&2; exit 1
 fi
 sed -n 's/^outputs-hash //p' "$tmp/base.out" > "$tmp/base.hash"
-echo "mutate: $n mutants of include/onb.h, $JOBS at a time"
+echo "mutate: $n mutants of include/libonb/onb.h, $JOBS at a time"
 seq 1 "$n" | xargs -P "$JOBS" -I{} sh scripts/mutate.sh --one "$tmp" {}
 cat "$tmp"/res/* | sort -n > "$tmp/all"
 tried=$(wc -l < "$tmp/all")
@@ -82,7 +82,7 @@ caught=$(awk -F'\t' '$6 == 1 && $7 == 1' "$tmp/all" | wc -l)
 survived=$((changed - caught))
 secs=$(( $(date +%s) - start ))
 {
-	echo "# mutate.sh: one-token mutants of include/onb.h judged by tests/test_indep.c --quick (inline versions)"
+	echo "# mutate.sh: one-token mutants of include/libonb/onb.h judged by tests/test_indep.c --quick (inline versions)"
 	echo "# revision: $rev (at the start of the run)"
 	echo "# compiler: $($CC --version | head -1); flags: $FLAGS"
 	echo "tried: $tried"

@@ -1,13 +1,13 @@
 /*
  * indep.h - a second, independent implementation of every method of
- * libonb, transliterated from each source (not from include/onb.h, which
+ * libonb, transliterated from each source (not from include/libonb/onb.h, which
  * this file must never include): each source's own vector type and
  * operators are written out in C with that language's semantics, then the
  * published function body follows them statement by statement.
  *
  * tests/test_indep.c compares these bit for bit with the library's inline,
  * out-of-line and batch versions; scripts/mutate.sh uses the same test to
- * catch mutations of include/onb.h.  Source by source:
+ * catch mutations of include/libonb/onb.h.  Source by source:
  *   Frisvad 2012 (JGT 16(3)): Listing 1 naive, hughes_moeller; Listing 2
  *     frisvad; Listing 3 rsqrt, InvSqrt, SSE_rsqrt, SSE_rsqrt_1N.  Vec3f is
  *     three floats; operator*(float) scales, dot sums left to right,

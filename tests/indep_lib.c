@@ -1,10 +1,10 @@
 /*
  * indep_lib.c - the method table of tests/test_indep.c in a file of its
- * own, for scripts/mutate.sh: each mutant of include/onb.h rebuilds only
+ * own, for scripts/mutate.sh: each mutant of include/libonb/onb.h rebuilds only
  * this file and links it with the test's driver, compiled once
  * (-DINDEP_SPLIT).  Not part of `make test`, which builds test_indep.c whole.
  */
-#include "onb.h"
+#include "libonb/onb.h"
 #include "indep.h"
 #define INDEP_TABLE_DEFINE
 #include "indep_table.h"

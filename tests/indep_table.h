@@ -1,6 +1,6 @@
 /*
  * indep_table.h - the library's methods as tests/test_indep.c sees them:
- * name, the inline double and float functions of include/onb.h, and the
+ * name, the inline double and float functions of include/libonb/onb.h, and the
  * id of the independent implementation (tests/indep.h) with its
  * normalization.  Needs onb.h and indep.h first.  With INDEP_TABLE_DEFINE
  * it defines the table T and NT; without, only the row type.

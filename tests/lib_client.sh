@@ -25,7 +25,7 @@ LIBFP="-O2 -ffp-contract=off -fno-math-errno -fno-trapping-math"
 
 # 1. every inline function, under the strict warnings
 cat > "$tmp/all.c" <<'C'
-#include "onb.h"
+#include "libonb/onb.h"
 #define USE(m) \
 	static void use_##m(onb_vec3 n, onb_vec3f nf, onb_vec3 *b, onb_vec3f *bf) \
 	{ onb_##m(n, b, b + 1); onb_##m##f(nf, bf, bf + 1); }
@@ -127,7 +127,7 @@ done
 # under GCC with an FMA target in GNU mode, and with ONB_FORCE_OUTLINE;
 # "inline" (no onb_ symbol at all) everywhere else.
 cat > "$tmp/inl.c" <<'C'
-#include "onb.h"
+#include "libonb/onb.h"
 void f(const onb_vec3f *n, onb_vec3f *b1, onb_vec3f *b2) { onb_duff_branchlessf(*n, b1, b2); }
 void g(const onb_vec3 *n, onb_vec3 *b1, onb_vec3 *b2) { onb_naive_rsqrt(*n, b1, b2); }
 onb_vec3 h(onb_vec3 n) { return onb_frisvad_rotate(n, 1.0, 2.0, 3.0); }
@@ -163,14 +163,14 @@ L
 
 # 4. &v.x of a renderer's struct, at -O0 and -O2: no warning
 cat > "$tmp/st.c" <<'C'
-#include "onb.h"
+#include "libonb/onb.h"
 typedef struct { float x, y, z; } vec3;
 typedef struct { double x, y, z; } dvec3;
 void frame(const vec3 *n, vec3 *t, vec3 *b) { onb_duff_branchless_arrayf(&n->x, &t->x, &b->x); }
 float frame2(vec3 n) { vec3 t, b; onb_pbrt_v3_arrayf(&n.x, &t.x, &b.x); return t.x + b.y; }
 double frame3(dvec3 n) { dvec3 t, b; onb_basis_array(onb_find("duff"), &n.x, &t.x, &b.x); return t.x + b.y; }
 C
-sed 's/#include "onb.h"/void onb_duff_branchless_arrayf(const float n[3], float b1[3], float b2[3]);\nvoid onb_pbrt_v3_arrayf(const float n[3], float b1[3], float b2[3]);/; /frame3/d' "$tmp/st.c" > "$tmp/st3.c"
+sed 's|#include "libonb/onb.h"|void onb_duff_branchless_arrayf(const float n[3], float b1[3], float b2[3]);\nvoid onb_pbrt_v3_arrayf(const float n[3], float b1[3], float b2[3]);|; /frame3/d' "$tmp/st.c" > "$tmp/st3.c"
 for c in gcc clang; do
 	command -v $c >/dev/null 2>&1 || continue
 	for o in -O0 -O2; do
@@ -185,7 +185,7 @@ echo "control: n[3] parameters, gcc -O2: $nw warnings for the same calls"
 [ "$nw" -gt 0 ] && ok || bad "control: n[3] parameters gave no warning, the check above could not fail"
 
 # 5. a static client of one function pulls only that function
-printf '#include "onb.h"\nint main(void) { float n[3] = { 0, 0, 1 }, t[3], b[3]; onb_duff_branchless_arrayf(n, t, b); return t[0] != 1.0f; }\n' > "$tmp/one.c"
+printf '#include "libonb/onb.h"\nint main(void) { float n[3] = { 0, 0, 1 }, t[3], b[3]; onb_duff_branchless_arrayf(n, t, b); return t[0] != 1.0f; }\n' > "$tmp/one.c"
 if cc -std=c99 -O2 $SAN -Iinclude "$tmp/one.c" libonb.a -lm -o "$tmp/one" && "$tmp/one"; then
 	pulled=$(nm "$tmp/one" | awk '$NF ~ /^onb_/ { print $NF }' | sort -u | tr '\n' ' ')
 	[ "$pulled" = "onb_duff_branchless_arrayf " ] && ok || bad "one-function client pulled: $pulled"

@@ -20,12 +20,13 @@ undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" 
 if [ -z "$undef" ]; then ok; else bad "libonb.a needs more than libm and libc: $undef"; fi
 
 # 2. a renderer-like program elsewhere
-mkdir -p "$tmp/app"
-cp include/onb.h libonb.a "$tmp/app/"
+mkdir -p "$tmp/app/libonb"
+cp include/libonb/onb.h "$tmp/app/libonb/"
+cp libonb.a "$tmp/app/"
 cat > "$tmp/app/app.c" <<'C'
 #include <stdio.h>
 #include <math.h>
-#include "onb.h"
+#include "libonb/onb.h"
 int main(void)
 {
 	size_t n, i, calls = 0;
@@ -62,7 +63,7 @@ if (cd "$tmp/app" && cc -std=c99 -Wall -Wextra -O2 -ffp-contract=off $SAN app.c 
 # 3. install, pkg-config, uninstall
 if make -s install PREFIX=/opt/onb DESTDIR="$tmp/root" >/dev/null; then ok; else bad "make install"; fi
 pc="$tmp/root/opt/onb/lib/pkgconfig"
-if [ -f "$pc/onb.pc" ] && [ -f "$tmp/root/opt/onb/include/onb.h" ] && [ -f "$tmp/root/opt/onb/lib/libonb.a" ]; then ok; else bad "installed files"; fi
+if [ -f "$pc/onb.pc" ] && [ -f "$tmp/root/opt/onb/include/libonb/onb.h" ] && [ -f "$tmp/root/opt/onb/lib/libonb.a" ]; then ok; else bad "installed files"; fi
 if command -v pkg-config >/dev/null 2>&1; then
 	flags=$(PKG_CONFIG_PATH="$pc" PKG_CONFIG_SYSROOT_DIR="$tmp/root" pkg-config --cflags --libs onb)
 	if cc -std=c99 $SAN "$tmp/app/app.c" -o "$tmp/app2" $flags && "$tmp/app2" >/dev/null; then ok; else bad "build with pkg-config flags: $flags"; fi
@@ -86,14 +87,14 @@ done
 
 # 4. -ffast-math compiles with no define, and the method names then call
 # libonb.a's out-of-line copies (issue 25; the bits: tests/lib_client.sh)
-printf '#include "onb.h"\nvoid f(onb_vec3 n, onb_vec3 *a, onb_vec3 *b) { onb_duff(n, a, b); }\n' > "$tmp/fm.c"
+printf '#include "libonb/onb.h"\nvoid f(onb_vec3 n, onb_vec3 *a, onb_vec3 *b) { onb_duff(n, a, b); }\n' > "$tmp/fm.c"
 if cc -std=c99 -ffast-math -O2 -Wall -Wextra -Werror -Iinclude -c "$tmp/fm.c" -o "$tmp/fm.o" 2>"$tmp/fm.err"; then
 	nm "$tmp/fm.o" | grep -q ' U onb_duff_outline$' && ok || bad "-ffast-math: onb_duff does not call onb_duff_outline"
 else bad "-ffast-math did not compile: $(head -3 "$tmp/fm.err")"; fi
 
 # 5. onbstudy list names every method; --help works; a bad command exits 2
-nmeth=$(sed -n '/define ONB_METHOD_LIST/,/^$/p' include/onb.h | grep -o 'X([a-z0-9_]*)' | wc -l)
-nmeth=$((nmeth + $(grep 'define ONB_FLOAT_METHOD_LIST' include/onb.h | grep -o 'X([a-z0-9_]*)' | wc -l)))
+nmeth=$(sed -n '/define ONB_METHOD_LIST/,/^$/p' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | wc -l)
+nmeth=$((nmeth + $(grep 'define ONB_FLOAT_METHOD_LIST' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | wc -l)))
 if [ "$nmeth" -ge 18 ] && [ "$(./onbstudy list --format csv | tail -n +2 | wc -l)" -eq "$nmeth" ]; then ok; else bad "onbstudy list (want $nmeth methods)"; fi
 ./onbstudy --help >/dev/null && ok || bad "onbstudy --help"
 ./onbstudy frobnicate 2>/dev/null; [ $? -eq 2 ] && ok || bad "unknown command must exit 2"

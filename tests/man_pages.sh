@@ -2,7 +2,7 @@
 # man_pages.sh - the man pages (issue 23): man/onbstudy.1 is what help2man
 # makes of this build's --help texts (scripts/man.sh --check); man/onb.3,
 # written by hand, names every method of the registry and every public
-# function and type of include/onb.h; `make install` puts both where
+# function and type of include/libonb/onb.h; `make install` puts both where
 # `man onbstudy` and `man onb` find them, and `make uninstall` removes them.
 . "$(dirname "$0")/lib.sh"
 sh scripts/man.sh --check > "$tmp/check" 2>&1 && ok || bad "$(cat "$tmp/check")"
@@ -13,7 +13,7 @@ methods=$(./onbstudy list --format csv | tail -n +2 | cut -d, -f1)
 for m in $methods; do
 	grep -qw -- "$m" man/onb.3 || bad "man/onb.3 does not name the method $m"
 done
-names=$(grep -oE '^(static inline )?(const )?[a-z_0-9]+ \*?onb_[a-z0-9_]+ *\(' include/onb.h | grep -oE 'onb_[a-z0-9_]+' | grep -v '^onb__' | sort -u)
+names=$(grep -oE '^(static inline )?(const )?[a-z_0-9]+ \*?onb_[a-z0-9_]+ *\(' include/libonb/onb.h | grep -oE 'onb_[a-z0-9_]+' | grep -v '^onb__' | sort -u)
 missing=""
 for n in $names; do
 	s=${n#onb_}; s=${s%f}
@@ -21,17 +21,17 @@ for n in $names; do
 	grep -qF -- "$n" man/onb.3 || missing="$missing $n"
 done
 [ -z "$missing" ] && ok || bad "man/onb.3 does not name:$missing"
-[ "$(echo "$names" | wc -w)" -ge 10 ] && ok || bad "found only $(echo "$names" | wc -w) public names in include/onb.h"
+[ "$(echo "$names" | wc -w)" -ge 10 ] && ok || bad "found only $(echo "$names" | wc -w) public names in include/libonb/onb.h"
 # onb.3's synopsis gives each one-line declaration of onb.h as onb.h has it
 # (whitespace aside): the registry, the checked and array entry points, the
 # tools, and the per-method array functions with NAME for the method
 MANWIDTH=400 man -P cat -l man/onb.3 2> /dev/null | sed 's/[[:space:]]\{1,\}/ /g' > "$tmp/onb3.txt"
 {
-	grep -E '^(const )?[a-z_]+ \*?onb_[a-z_]+ *\(.*\);$' include/onb.h
-	grep -E '^static inline [a-z_0-9]+ \*?onb_frisvad_(threshold|rotate)f? *\(.*\)$' include/onb.h | sed 's/$/;/'
-	grep -E '^[[:space:]]*void onb_##m##_arrayf? *\(.*\);' include/onb.h | sed 's/##m##/NAME/; s/; *\\$/;/'
+	grep -E '^(const )?[a-z_]+ \*?onb_[a-z_]+ *\(.*\);$' include/libonb/onb.h
+	grep -E '^static inline [a-z_0-9]+ \*?onb_frisvad_(threshold|rotate)f? *\(.*\)$' include/libonb/onb.h | sed 's/$/;/'
+	grep -E '^[[:space:]]*void onb_##m##_arrayf? *\(.*\);' include/libonb/onb.h | sed 's/##m##/NAME/; s/; *\\$/;/'
 } | sed -e 's/^static inline //' -e 's/^[[:space:]]*//' -e 's/[[:space:]]\{1,\}/ /g' -e 's/ *( */(/' | sort -u > "$tmp/decls"
-[ "$(wc -l < "$tmp/decls")" -ge 11 ] && ok || bad "found only $(wc -l < "$tmp/decls") declarations in include/onb.h"
+[ "$(wc -l < "$tmp/decls")" -ge 11 ] && ok || bad "found only $(wc -l < "$tmp/decls") declarations in include/libonb/onb.h"
 while IFS= read -r d; do
 	grep -qF -- "$d" "$tmp/onb3.txt" || bad "man/onb.3's synopsis lacks: $d"
 done < "$tmp/decls"

@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "certify/models.h"
 #include "certify/model_int.h"
 

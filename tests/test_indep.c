@@ -1,6 +1,6 @@
 /*
  * test_indep.c - every method of libonb against a second implementation
- * written separately from include/onb.h (tests/indep.h, transliterated
+ * written separately from include/libonb/onb.h (tests/indep.h, transliterated
  * from each source), bit for bit, in float and double, for the inline
  * function, the out-of-line copy and the batch kernel.
  *
@@ -23,7 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "indep.h"
 
 #define IND_PI 3.14159265358979323846

@@ -1,6 +1,6 @@
 /*
  * test_parts.c - adding a method is one checked path (issue 23): every
- * method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST (include/onb.h),
+ * method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST (include/libonb/onb.h),
  * and frisvad_rotate, has each part the study needs, and this test names
  * the part that is missing:
  *   registry   onb_find(name), with the out-of-line and batch kernels of its
@@ -26,7 +26,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "methods/kernels.h"
 #include "reference/reference.h"
 #include "reference/reffast.h"

@@ -100,7 +100,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <mpfr.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "inputs/rng.h"
 
 #define NS (1u << 16)    /* samples per row */

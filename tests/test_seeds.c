@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "cli/cli.h"
 #include "cli/output.h"
 #include "inputs/rng.h"

@@ -1,5 +1,5 @@
 # duff_branchless_f.g - Gappa proof of the orthonormality defect of
-# onb_duff_branchlessf (include/onb.h; float, round to nearest, no FMA)
+# onb_duff_branchlessf (include/libonb/onb.h; float, round to nearest, no FMA)
 # over the region n.z in [0.5, 0.75], every azimuth (issue 22).
 #
 # Domain: n = (rnd(ux), rnd(uy), rnd(uz)) for a REAL unit vector u with

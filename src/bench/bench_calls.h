@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 /* ---- the inline call loops (macro-generated in bench_calls.c) -------- */
 typedef struct { onb_vec3  b1, b2; } bench_pair;

@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 /* ---- clocks ------------------------------------------------------- */
 double   bench_now(void);        /* CLOCK_MONOTONIC, seconds            */

@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 /* ---- yardstick.c: compiled -O3 -march=native -------------------------- */
 typedef struct {

@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "model.h"
 #include "model_int.h"
 
@@ -120,7 +120,7 @@ cv cm_neg(cm *c, cv a)
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_NEG, CM_F64, a, -1, -1) : put(c, -c->x[a]);
 }
 
-/* The seeds as the kernels compute them (include/onb.h). */
+/* The seeds as the kernels compute them (include/libonb/onb.h). */
 static double exec_seed(seed_kind k, double a)
 {
 	if (k == SEED_RSQRTSS)

@@ -3,7 +3,7 @@
  *
  * Each method is written once more here, as a straight sequence of
  * operations on value handles (cv), in the order and format in which the
- * kernel in include/onb.h performs them.  The same model function runs on
+ * kernel in include/libonb/onb.h performs them.  The same model function runs on
  * two back ends:
  *
  *   CM_EXEC  every operation is performed in its format with IEEE rounding

@@ -1,12 +1,12 @@
 /*
  * models.c - each libonb method as a model (model.h): the operations of
- * its kernel in include/onb.h, in the same order and format.  C evaluates
+ * its kernel in include/libonb/onb.h, in the same order and format.  C evaluates
  * a*b*c as (a*b)*c and -a*b as (-a)*b; the models spell that out.
  * Branch points are numbered per method from 0.
  */
 #include <stddef.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "models.h"
 #include "model_int.h"
 

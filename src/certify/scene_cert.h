@@ -6,7 +6,7 @@
 #define ONB_CERTIFY_SCENE_CERT_H
 
 #include <stddef.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "search.h"
 
 /* Prints, for each of the nm methods, the proven bound over the patches of

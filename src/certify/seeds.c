@@ -25,7 +25,7 @@
 #include <mpfr.h>
 #include <stdlib.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "seeds.h"
 
 /* The kernels' own function: rsqrtss where onb.h has it (ONB_HAVE_HW_RSQRT),

@@ -49,7 +49,7 @@ int seed_bound_get(seed_kind k, seed_bound *out);
 
 const char *seed_name(seed_kind k);
 
-/* The seeds exactly as the kernels of include/onb.h compute them
+/* The seeds exactly as the kernels of include/libonb/onb.h compute them
    (tests/test_seeds.c checks them against onb.h bit for bit). */
 float  seed_rsqrtss(float x);
 float  seed_invsqrt_f(float x);

@@ -12,7 +12,7 @@
 
 #include <stdio.h>
 #include <stddef.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 /* Exit status for bad usage or input: one line on stderr, then 2. */
 #define ONB_EXIT_USAGE 2

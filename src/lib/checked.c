@@ -4,7 +4,7 @@
  * normal maps, user meshes).
  */
 #define ONB_BUILDING_LIB 1
-#include "onb.h"
+#include "libonb/onb.h"
 
 static void onb__safe_frame(onb_vec3 *b1, onb_vec3 *b2)
 {

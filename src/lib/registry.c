@@ -1,10 +1,10 @@
 /*
  * registry.c - the one method table.  Every tool (list, sweep, bench,
  * table, scene, the tests) loops over it; adding a method means adding a
- * row here and its kernel in include/onb.h.
+ * row here and its kernel in include/libonb/onb.h.
  */
 #define ONB_BUILDING_LIB 1
-#include "onb.h"
+#include "libonb/onb.h"
 
 #if ONB_HAVE_HW_RSQRT
 #define ONB__HW ONB_HW_RSQRT
@@ -71,7 +71,7 @@ static const onb_method onb__table[] = {
 };
 
 /* One row for every method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST
-   (include/onb.h): a list entry without a row stops the build here (a
+   (include/libonb/onb.h): a list entry without a row stops the build here (a
    negative array size); tests/test_parts.c checks the rows' names. */
 #define ONB__ONE(m) + 1
 typedef char onb__one_row_per_listed_method[

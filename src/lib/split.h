@@ -10,7 +10,7 @@
 #ifndef ONB_SPLIT_H
 #define ONB_SPLIT_H
 #define ONB_BUILDING_LIB 1
-#include "onb.h"
+#include "libonb/onb.h"
 
 /* X(NAME) with ONB_ONE expanded first (X pastes its argument). */
 #define ONB__APPLY(X, m) X(m)

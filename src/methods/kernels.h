@@ -13,7 +13,7 @@
 #ifndef ONB_KERNELS_H
 #define ONB_KERNELS_H
 
-#include "onb.h"
+#include "libonb/onb.h"
 
 enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
 

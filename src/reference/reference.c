@@ -3,7 +3,7 @@
  * per-input metrics (see reference.h).
  *
  * Each family's formula is written out below exactly as its kernel in
- * include/onb.h computes it, with every operation exact or rounded at the
+ * include/libonb/onb.h computes it, with every operation exact or rounded at the
  * context's precision (128 bits by default: 2.4 times double's 53).  The
  * branch is not recomputed in MPFR: it is the branch the kernel took
  * (branch.inc), so a kernel is compared with its own formula on its own

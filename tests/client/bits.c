@@ -17,7 +17,7 @@
 #include <stdint.h>
 #include <string.h>
 #include <math.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 typedef float  my_vec3f[3]; /* a renderer's own vector types */
 typedef double my_vec3[3];

@@ -7,7 +7,7 @@
  * called), else the kernel was inlined into the loop.
  */
 #include <stddef.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "percall.h"
 
 #define LOOPS(m)                                                               \

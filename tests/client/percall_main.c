@@ -13,7 +13,7 @@
 #include <stdint.h>
 #include <math.h>
 #include <time.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "percall.h"
 
 #define K 4096

@@ -22,7 +22,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "onb.h"
+#include "libonb/onb.h"
 #include "hash.h"
 
 static double *nx, *ny, *nz, *o[6];

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "onb.h"
+#include "libonb/onb.h"
 
 typedef struct { const char *name; double x, y, z; } kase;
 

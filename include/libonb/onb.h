@@ -1,7 +1,9 @@
 /*
- * onb.h - orthonormal bases {b1, b2, n} from a 3D unit vector n.
+ * libonb/onb.h - orthonormal bases {b1, b2, n} from a 3D unit vector n.
  *
- * The whole public face of libonb.  C99, libm only.
+ * The whole public face of libonb.  C99, libm only.  Include it as
+ * <libonb/onb.h> (pkg-config's -I names the folder above libonb/), so it
+ * cannot clash with a renderer's own onb.h; its guard is LIBONB_ONB_H.
  *
  * Index
  *   Types ............ onb_vec3 (double), onb_vec3f (float), onb_method
@@ -88,8 +90,8 @@
  *   - onb_NAME_outline[f], onb_NAME_array[f] and method->basis[f] are
  *     always the out-of-line copies, compiled with the library's flags.
  */
-#ifndef ONB_H
-#define ONB_H
+#ifndef LIBONB_ONB_H
+#define LIBONB_ONB_H
 
 #include <math.h>
 #include <stddef.h>
@@ -1029,4 +1031,4 @@ static inline onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float
 #pragma float_control(pop)
 #endif
 
-#endif /* ONB_H */
+#endif /* LIBONB_ONB_H */

@@ -176,8 +176,10 @@ static long report(const char *name, const char *prec, const char *what, long ba
 	return bad;
 }
 
-/* One method in double: indep vs inline (and out-of-line, batch). */
-static long check_d(size_t t, const inset *s, double *bo)
+/* One method in double: indep vs inline (and out-of-line, batch).  The
+   transliteration is `id` (with normalization k): T[t]'s own, or an
+   alias's, then reported under `label`. */
+static long check_d(size_t t, int id, int k, const char *label, const inset *s, double *bo)
 {
 	long bad = 0;
 	size_t i;
@@ -194,7 +196,7 @@ static long check_d(size_t t, const inset *s, double *bo)
 		const char *what = NULL;
 		int j;
 		n.x = s->x[i]; n.y = s->y[i]; n.z = s->z[i];
-		indep_d(T[t].id, T[t].k, in, &r1, &r2);
+		indep_d(id, k, in, &r1, &r2);
 		ref[0] = r1.x; ref[1] = r1.y; ref[2] = r1.z; ref[3] = r2.x; ref[4] = r2.y; ref[5] = r2.z;
 		T[t].d(n, &b1, &b2);
 		got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
@@ -213,13 +215,14 @@ static long check_d(size_t t, const inset *s, double *bo)
 #endif
 		(void)j;
 		if (what)
-			report(T[t].name, "double", what, ++bad, nn, got, ref);
+			report(label, "double", what, ++bad, nn, got, ref);
 	}
 	return bad;
 }
 
 /* The same in float; fx, fy, fz hold the inputs, bo the batch outputs. */
-static long check_f(size_t t, const inset *s, const float *fx, const float *fy, const float *fz, float *bo)
+static long check_f(size_t t, int id, int k, const char *label, const inset *s, const float *fx, const float *fy,
+                    const float *fz, float *bo)
 {
 	long bad = 0;
 	size_t i;
@@ -236,7 +239,7 @@ static long check_f(size_t t, const inset *s, const float *fx, const float *fy, 
 		const char *what = NULL;
 		int j;
 		n.x = fx[i]; n.y = fy[i]; n.z = fz[i];
-		indep_f(T[t].id, T[t].k, in, &r1, &r2);
+		indep_f(id, k, in, &r1, &r2);
 		ref[0] = r1.x; ref[1] = r1.y; ref[2] = r1.z; ref[3] = r2.x; ref[4] = r2.y; ref[5] = r2.z;
 		T[t].f(n, &b1, &b2);
 		got[0] = b1.x; got[1] = b1.y; got[2] = b1.z; got[3] = b2.x; got[4] = b2.y; got[5] = b2.z;
@@ -257,7 +260,7 @@ static long check_f(size_t t, const inset *s, const float *fx, const float *fy, 
 		if (what) {
 			double nn[3] = { fx[i], fy[i], fz[i] }, g[6], r[6];
 			for (j = 0; j < 6; j++) { g[j] = got[j]; r[j] = ref[j]; }
-			report(T[t].name, "float", what, ++bad, nn, g, r);
+			report(label, "float", what, ++bad, nn, g, r);
 		}
 	}
 	return bad;
@@ -300,6 +303,90 @@ static int coverage(void)
 	return 0;
 }
 
+/* The aliases: each claimed precision of each alias's transliteration
+   against its target's inline, out-of-line and batch code, on the same
+   inputs; the registry's alias table and this test's must agree. */
+static int alias_coverage(void)
+{
+	size_t i, j, n = 0;
+#ifndef INDEP_INLINE_ONLY
+	const onb_alias *a = onb_aliases(&n);
+	if (n != NIA) { printf("FAIL: registry has %zu aliases, test %zu\n", n, (size_t)NIA); return 1; }
+	for (i = 0; i < n; i++) {
+		const int both = strcmp(a[i].precisions, "float and double") == 0;
+		for (j = 0; j < NIA && strcmp(IA[j].name, a[i].name) != 0; j++)
+			;
+		if (j == NIA || strcmp(IA[j].target, a[i].target) != 0 || IA[j].dbl != both || !IA[j].fl ||
+		    (!both && strcmp(a[i].precisions, "float") != 0)) {
+			printf("FAIL: alias %s: registry and test disagree (target, precisions)\n", a[i].name);
+			return 1;
+		}
+		if (onb_find(a[i].name) || !onb_find(a[i].target) || onb_find_alias(a[i].name) != &a[i]) {
+			printf("FAIL: alias %s: a method of that name, or no target method\n", a[i].name);
+			return 1;
+		}
+	}
+#endif
+	(void)j;
+	for (i = 0; i < NIA; i++) {
+		for (j = 0; j < NT && strcmp(T[j].name, IA[i].target) != 0; j++)
+			;
+		if (j == NT) { printf("FAIL: alias %s: target %s has no row\n", IA[i].name, IA[i].target); return 1; }
+	}
+	return 0;
+}
+static size_t alias_row(size_t i)
+{
+	size_t j;
+	for (j = 0; j < NT && strcmp(T[j].name, IA[i].target) != 0; j++)
+		;
+	return j;
+}
+/* Non-finite inputs (NaN, +-inf, +-0, 1/2 in every component), NaN
+   compared as a class (which NaN propagates is the compiler's operand order):
+   the count of inputs where alias i and its target's inline float code differ. */
+static long alias_nonfinite(size_t i)
+{
+	static const float v[6] = { NAN, -NAN, INFINITY, -INFINITY, -0.0f, 0.5f };
+	long bad = 0;
+	int a, b, c, j;
+	for (a = 0; a < 6; a++) for (b = 0; b < 6; b++) for (c = 0; c < 6; c++) {
+		onb_vec3f n, l1, l2;
+		Vec3f r1, r2;
+		float g[6], r[6];
+		n.x = v[a]; n.y = v[b]; n.z = v[c];
+		T[alias_row(i)].f(n, &l1, &l2);
+		indep_f(IA[i].id, 0, vf(n.x, n.y, n.z), &r1, &r2);
+		g[0] = l1.x; g[1] = l1.y; g[2] = l1.z; g[3] = l2.x; g[4] = l2.y; g[5] = l2.z;
+		r[0] = r1.x; r[1] = r1.y; r[2] = r1.z; r[3] = r2.x; r[4] = r2.y; r[5] = r2.z;
+		for (j = 0; j < 6; j++)
+			if (!(g[j] != g[j] && r[j] != r[j]) && !same_f(g[j], r[j])) { bad++; break; }
+	}
+	return bad;
+}
+static long check_aliases(const inset *sd, const inset *sf, const float *fx, const float *fy, const float *fz,
+                          float *bof, double *bod)
+{
+	long fails = 0;
+	size_t i;
+	for (i = 0; i < NIA; i++) {
+		const size_t t = alias_row(i);
+		long bd = IA[i].dbl ? check_d(t, IA[i].id, 0, IA[i].name, sd, bod) : 0;
+		long bf = check_f(t, IA[i].id, 0, IA[i].name, sf, fx, fy, fz, bof);
+		long nf = alias_nonfinite(i);
+		printf("  alias %-18s = %-16s double %s, float %ld differ; non-finite inputs: %ld of 216 differ%s\n",
+		       IA[i].name, IA[i].target, IA[i].dbl ? (bd ? "DIFFERS" : "0 differ") : "(float only)", bf, nf,
+		       strcmp(IA[i].name, "falcor") == 0 ? " (the NaN-z exception of the registry's note: expected > 0)" : "");
+		fails += bd + bf;
+		/* the registry notes only falcor's NaN-z exception */
+		if ((strcmp(IA[i].name, "falcor") == 0) != (nf > 0)) {
+			printf("FAIL: alias %s: non-finite behaviour not as its registry note says\n", IA[i].name);
+			fails++;
+		}
+	}
+	return fails;
+}
+
 int main(int argc, char **argv)
 {
 	const int quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
@@ -312,7 +399,7 @@ int main(int argc, char **argv)
 #ifdef INDEP_SPLIT
 	T = indep_rows(&NT);
 #endif
-	if (coverage())
+	if (coverage() || alias_coverage())
 		return 1;
 	if (quick)
 		reps_div = 4;
@@ -324,7 +411,8 @@ int main(int argc, char **argv)
 	for (i = 0; i < sf.n; i++) { fx[i] = (float)sf.x[i]; fy[i] = (float)sf.y[i]; fz[i] = (float)sf.z[i]; }
 	printf("test_indep: %zu double and %zu float inputs (%zu uniform each, poles, thresholds +-8 ulps)\n", sd.n, sf.n, nuni);
 	for (t = 0; t < NT; t++) {
-		long bd = T[t].d ? check_d(t, &sd, bod) : 0, bf = check_f(t, &sf, fx, fy, fz, bof);
+		long bd = T[t].d ? check_d(t, T[t].id, T[t].k, T[t].name, &sd, bod) : 0;
+		long bf = check_f(t, T[t].id, T[t].k, T[t].name, &sf, fx, fy, fz, bof);
 		printf("  %-24s double %ld differ, float %ld differ%s\n", T[t].name, bd, bf,
 #ifdef INDEP_INLINE_ONLY
 		       " (inline only)"
@@ -334,9 +422,10 @@ int main(int argc, char **argv)
 		       );
 		fails += bd + bf;
 	}
+	fails += check_aliases(&sd, &sf, fx, fy, fz, bof, bod);
 	free(sd.x); free(sd.y); free(sd.z); free(sf.x); free(sf.y); free(sf.z);
 	free(fx); free(fy); free(fz); free(bof); free(bod);
 	printf("outputs-hash %016llx\n", (unsigned long long)out_hash);
-	printf("test_indep: %s\n", fails ? "FAILED" : "all methods agree bit for bit");
+	printf("test_indep: %s\n", fails ? "FAILED" : "all methods and aliases agree bit for bit");
 	return fails ? 1 : 0;
 }

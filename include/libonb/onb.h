@@ -30,7 +30,10 @@
  *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
  *                      onb_basis_checked[f]      normalize + status + method
  *   Batch (libonb.a) . onb_<method>_batch[f]     structure-of-arrays loops
- *   Registry ......... onb_methods, onb_find, onb_batch_isa
+ *   Registry ......... onb_methods, onb_find, onb_batch_isa; onb_provenance
+ *                      (shipped code: repository, commit, lines, license)
+ *   Aliases .......... onb_aliases, onb_find_alias: engines' code that is an
+ *                      existing method bit for bit (pbrt_v4 = duff_branchless)
  *
  * Conventions
  *   - Precondition of every method: n is a unit vector as received in the
@@ -894,6 +897,19 @@ typedef void (*onb_batchf_fn)(size_t count,
 #define ONB_NORMALIZES_N 0x8u /* the method normalizes n itself (rtow)        */
 #define ONB_FLOAT_ONLY   0x10u /* float only: basis and batch (double) are NULL */
 
+/* Where a method or an alias comes from when it is code that an engine
+   ships (the registry's "wild" rows), rather than a paper's listing: what a
+   reader needs to find the lines and judge the transliteration. */
+typedef struct onb_provenance {
+	const char *repository; /* e.g. "github.com/mmp/pbrt-v4"                   */
+	const char *commit;     /* the 40-hex commit that was read                */
+	const char *path;       /* file:first-last line, e.g. "src/x.h:10-20"      */
+	const char *license;    /* SPDX identifier of that file                   */
+	const char *language;   /* "C++", "GLSL", "ISPC", ...                      */
+	const char *precision;  /* the source's own precision and what sets it    */
+	const char *build;      /* the build the kernel follows (IEEE source, FMA) */
+} onb_provenance;
+
 typedef struct onb_method {
 	const char   *name;       /* e.g. "duff_branchless"                        */
 	const char   *family;     /* the exact formula the MPFR reference follows  */
@@ -908,12 +924,30 @@ typedef struct onb_method {
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
 	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
+	const onb_provenance *prov; /* shipped code: where it is; NULL for papers  */
 } onb_method;
+
+/* An alias: an engine's code that is bit-for-bit an existing method (in the
+   precisions named), recorded instead of a copy.  `onbstudy list` shows
+   each as "NAME = TARGET, bit for bit"; the command line accepts the alias
+   where it accepts a method name and runs the target. */
+typedef struct onb_alias {
+	const char    *name;       /* e.g. "pbrt_v4"                                */
+	const char    *target;     /* the method it equals, e.g. "duff_branchless"  */
+	const char    *precisions; /* where the identity holds: "float and double", "float" */
+	const char    *source;     /* one line: engine and function                 */
+	const char    *note;       /* inputs excepted and why, or ""                */
+	onb_provenance prov;
+} onb_alias;
 
 /* All methods, in a fixed order; *count receives their number. */
 const onb_method *onb_methods(size_t *count);
-/* The method called `name`, or NULL. */
+/* The method called `name`, or NULL (an alias's name gives NULL). */
 const onb_method *onb_find(const char *name);
+/* All aliases; *count receives their number. */
+const onb_alias *onb_aliases(size_t *count);
+/* The alias called `name`, or NULL. */
+const onb_alias *onb_find_alias(const char *name);
 /* The instruction set the batch kernels run on this CPU:
    "avx512f", "avx2" or "sse2" (or "generic" off x86-64). */
 const char *onb_batch_isa(void);

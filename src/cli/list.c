@@ -56,26 +56,66 @@ static void list_axes(const onb_method *m, size_t n, int csv)
 		}
 }
 
+/* A provenance's fields as CSV cells (empty for a paper's method). */
+static void prov_csv(const onb_provenance *p)
+{
+	static const onb_provenance none = { "", "", "", "", "", "", "" };
+	if (!p)
+		p = &none;
+	printf(",%s,%s,\"%s\",%s,\"%s\",\"%s\",\"%s\"", p->repository, p->commit, p->path, p->license, p->language,
+	       p->precision, p->build);
+}
+
+/* The aliases: engines' code that is a registry method bit for bit. */
+static void list_aliases(int csv)
+{
+	size_t n, i;
+	const onb_alias *a = onb_aliases(&n);
+	if (csv) {
+		printf("name,target,precisions,source,note,repository,commit,path,license,language,precision,build\n");
+		for (i = 0; i < n; i++) {
+			printf("%s,%s,%s,\"%s\",\"%s\"", a[i].name, a[i].target, a[i].precisions, a[i].source, a[i].note);
+			prov_csv(&a[i].prov);
+			printf("\n");
+		}
+		return;
+	}
+	printf("# %zu aliases: shipped code that is a method above, bit for bit\n", n);
+	for (i = 0; i < n; i++) {
+		printf("%-24s = %s, bit for bit (%s): %s\n", a[i].name, a[i].target, a[i].precisions, a[i].source);
+		printf("%-24s   %s %.12s %s (%s)\n", "", a[i].prov.repository, a[i].prov.commit, a[i].prov.path, a[i].prov.license);
+		if (a[i].note[0])
+			printf("%-24s   note: %s\n", "", a[i].note);
+	}
+}
+
 int cmd_list(int argc, char **argv)
 {
 	static const struct option lo[] = {
 		{ "format", required_argument, NULL, 'f' }, { "axes", no_argument, NULL, 'a' },
+		{ "aliases", no_argument, NULL, 'l' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t n, i;
 	const onb_method *m = onb_methods(&n);
-	int csv = 0, axes = 0, v, rc = 0;
+	int csv = 0, axes = 0, aliases = 0, v, rc = 0;
 	cli_args c;
 	if (cli_begin(&c, "list", argc, argv))
 		return 1;
 	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
 		if (v == CLI_HELP) {
-			printf("usage: onbstudy list [--axes] [--format table|csv]\n"
-			       "  The methods in the registry: name, handedness, singular directions, source.\n"
-			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there.\n");
+			printf("usage: onbstudy list [--axes | --aliases] [--format table|csv]\n"
+			       "  The methods in the registry: name, handedness, singular directions, source;\n"
+			       "  then the aliases (an engine's code that is a method bit for bit).\n"
+			       "  CSV: one row per method, with the provenance of shipped code (repository,\n"
+			       "  commit, path:lines, license, language, precision, build).\n"
+			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there.\n"
+			       "  --aliases: the aliases alone (target, precisions, exceptions, provenance).\n");
 			rc = -1;
 		} else if (v == 'a') {
 			axes = 1;
+		} else if (v == 'l') {
+			aliases = 1;
 		} else if (v != 'f' || (csv = cli_format("--format", c.arg, 0)) < 0) {
 			rc = ONB_EXIT_USAGE;
 		}
@@ -85,15 +125,27 @@ int cmd_list(int argc, char **argv)
 	cli_end(&c);
 	if (rc)
 		return rc < 0 ? 0 : rc;
+	if (axes && aliases) {
+		study_error("list: --axes and --aliases exclude each other");
+		return ONB_EXIT_USAGE;
+	}
 	if (axes) {
 		list_axes(m, n, csv);
 		return 0;
 	}
+	if (aliases) {
+		list_aliases(csv);
+		return 0;
+	}
 	if (csv) {
-		printf("name,family,handedness,flags,threshold,source,singular,thresholds\n");
-		for (i = 0; i < n; i++)
-			printf("%s,%s,%+d,%u,%a,\"%s\",\"%s\",\"%s\"\n", m[i].name, m[i].family, m[i].handedness,
+		printf("name,family,handedness,flags,threshold,source,singular,thresholds,"
+		       "repository,commit,path,license,language,precision,build\n");
+		for (i = 0; i < n; i++) {
+			printf("%s,%s,%+d,%u,%a,\"%s\",\"%s\",\"%s\"", m[i].name, m[i].family, m[i].handedness,
 			       m[i].flags, m[i].threshold, m[i].source, m[i].singular, m[i].thresholds);
+			prov_csv(m[i].prov);
+			printf("\n");
+		}
 		return 0;
 	}
 	printf("# %zu methods; batch kernels run %s; hardware rsqrt: %s\n", n, onb_batch_isa(),
@@ -103,5 +155,6 @@ int cmd_list(int argc, char **argv)
 		printf("%-24s %+4d  %-52s %s%s\n", m[i].name, m[i].handedness, m[i].singular, m[i].source,
 		       (m[i].flags & ONB_FELL_BACK) ? " [FELL BACK: no hardware rsqrt]" :
 		       (m[i].flags & ONB_FLOAT_ONLY) ? " [float only]" : "");
+	list_aliases(0);
 	return 0;
 }

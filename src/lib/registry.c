@@ -23,51 +23,51 @@
 
 static const onb_method onb__table[] = {
 	{ "naive", "naive", SRC_L1 " naive, rsqrt = (float)(1.0/sqrt(x))",
-	  SING_NAIVE, THR_NAIVE, +1, 0, NAN, ONB__NORM_LIBM, ONB__PTRS(naive) },
+	  SING_NAIVE, THR_NAIVE, +1, 0, NAN, ONB__NORM_LIBM, ONB__PTRS(naive), NULL },
 	{ "naive_invsqrt", "naive", SRC_L1 " naive + Listing 3 InvSqrt (0x5f3759df, 1 Newton step)",
-	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM, NAN, ONB__NORM_INVSQRT, ONB__PTRS(naive_invsqrt) },
+	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM, NAN, ONB__NORM_INVSQRT, ONB__PTRS(naive_invsqrt), NULL },
 	{ "naive_rsqrt", "naive", SRC_L1 " naive + Listing 3 SSE_rsqrt (rsqrtss)",
-	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT, ONB__PTRS(naive_rsqrt) },
+	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT, ONB__PTRS(naive_rsqrt), NULL },
 	{ "naive_rsqrt_nr", "naive", SRC_L1 " naive + Listing 3 SSE_rsqrt_1N (rsqrtss + 1 Newton step)",
-	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT_NR, ONB__PTRS(naive_rsqrt_nr) },
+	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT_NR, ONB__PTRS(naive_rsqrt_nr), NULL },
 	{ "naive_nonorm", "naive", SRC_L1 " naive, no normalization (Table 1)",
-	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM, NAN, ONB__NORM_NONE, ONB__PTRS(naive_nonorm) },
+	  SING_NAIVE, THR_NAIVE, +1, ONB_APPROX_NORM, NAN, ONB__NORM_NONE, ONB__PTRS(naive_nonorm), NULL },
 	{ "hughes_moeller", "hughes_moeller", SRC_HM ", rsqrt = (float)(1.0/sqrt(x))",
-	  "none", THR_HM, +1, 0, NAN, ONB__NORM_LIBM, ONB__PTRS(hughes_moeller) },
+	  "none", THR_HM, +1, 0, NAN, ONB__NORM_LIBM, ONB__PTRS(hughes_moeller), NULL },
 	{ "hughes_moeller_invsqrt", "hughes_moeller", SRC_HM " + Listing 3 InvSqrt",
-	  "none", THR_HM, +1, ONB_APPROX_NORM, NAN, ONB__NORM_INVSQRT, ONB__PTRS(hughes_moeller_invsqrt) },
+	  "none", THR_HM, +1, ONB_APPROX_NORM, NAN, ONB__NORM_INVSQRT, ONB__PTRS(hughes_moeller_invsqrt), NULL },
 	{ "hughes_moeller_rsqrt", "hughes_moeller", SRC_HM " + Listing 3 SSE_rsqrt",
-	  "none", THR_HM, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT, ONB__PTRS(hughes_moeller_rsqrt) },
+	  "none", THR_HM, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT, ONB__PTRS(hughes_moeller_rsqrt), NULL },
 	{ "hughes_moeller_rsqrt_nr", "hughes_moeller", SRC_HM " + Listing 3 SSE_rsqrt_1N",
-	  "none", THR_HM, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT_NR, ONB__PTRS(hughes_moeller_rsqrt_nr) },
+	  "none", THR_HM, +1, ONB_APPROX_NORM | ONB__HW, NAN, ONB__NORM_RSQRT_NR, ONB__PTRS(hughes_moeller_rsqrt_nr), NULL },
 	{ "hughes_moeller_nonorm", "hughes_moeller", SRC_HM ", no normalization (Table 1)",
-	  "none", THR_HM, +1, ONB_APPROX_NORM, NAN, ONB__NORM_NONE, ONB__PTRS(hughes_moeller_nonorm) },
+	  "none", THR_HM, +1, ONB_APPROX_NORM, NAN, ONB__NORM_NONE, ONB__PTRS(hughes_moeller_nonorm), NULL },
 	{ "frisvad", "frisvad", "Frisvad 2012, JGT 16(3), Listing 2 (t = -0.9999999)",
 	  "none exactly; error ~ eps/(1+n.z) just above t (O(1) in float)", "n.z < -0.9999999",
-	  +1, 0, ONB_FRISVAD_T, 0, ONB__PTRS(frisvad) },
+	  +1, 0, ONB_FRISVAD_T, 0, ONB__PTRS(frisvad), NULL },
 	{ "frisvad_max", "frisvad", "Max 2017, JCGT 6(1): Frisvad Listing 2 with t = -0.99998796",
 	  "none exactly; error ~ eps/(1+n.z) just above t", "n.z < -0.99998796",
-	  +1, 0, ONB_FRISVAD_MAX_T, 0, ONB__PTRS(frisvad_max) },
+	  +1, 0, ONB_FRISVAD_MAX_T, 0, ONB__PTRS(frisvad_max), NULL },
 	{ "duff", "duff", "Duff et al. 2017, JCGT 6(1), Listing 2 (revisedONB, branch on n.z < 0)",
-	  "none", "n.z < 0 (-0 takes the upper branch)", +1, 0, NAN, 0, ONB__PTRS(duff) },
+	  "none", "n.z < 0 (-0 takes the upper branch)", +1, 0, NAN, 0, ONB__PTRS(duff), NULL },
 	{ "duff_branchless", "duff_branchless", "Duff et al. 2017, JCGT 6(1), Listing 3 (branchlessONB; pbrt-v4, Mitsuba 3)",
-	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, 0, ONB__PTRS(duff_branchless) },
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, 0, ONB__PTRS(duff_branchless), NULL },
 	{ "stark", "stark", "Stark 2009, JGT 14(1): branch-free perpendicular as published (zm = 1^(xm & ym)), then 1/sqrt normalize and cross",
-	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark) },
+	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark), NULL },
 	{ "stark_fixed", "stark_fixed", "Stark 2009 with Hill 2011's fix zm = 1^(xm | ym) (axis of the smallest |component|)",
-	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark_fixed) },
+	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark_fixed), NULL },
 	{ "pbrt_v3", "pbrt_v3", "pbrt-v3 CoordinateSystem (src/core/geometry.h)",
-	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(pbrt_v3) },
+	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(pbrt_v3), NULL },
 	{ "rtow", "rtow", "Shirley, Ray Tracing: The Rest of Your Life, onb::build_from_w",
-	  "n = 0 only (normalizes its input)", "|n.x| > 0.9", -1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(rtow) },
+	  "n = 0 only (normalizes its input)", "|n.x| > 0.9", -1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(rtow), NULL },
 	{ "tangent_cross_z", "tangent_cross_z", "sydneyzh blog, Vector transformation using projection between ONBs, get_onb",
-	  "n = +z and n = -z (0/0 = NaN); float n.x^2+n.y^2 underflow", "none", -1, 0, NAN, 0, ONB__PTRS(tangent_cross_z) },
+	  "n = +z and n = -z (0/0 = NaN); float n.x^2+n.y^2 underflow", "none", -1, 0, NAN, 0, ONB__PTRS(tangent_cross_z), NULL },
 	/* This project's own methods (issue 16), float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
-	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_wide) },
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_wide), NULL },
 	{ "duff_comp", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 in float, fma-compensated products and sums",
-	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp) },
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp), NULL },
 };
 
 /* One row for every method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST
@@ -77,6 +77,57 @@ static const onb_method onb__table[] = {
 typedef char onb__one_row_per_listed_method[
 	sizeof onb__table / sizeof onb__table[0] == 0 ONB_METHOD_LIST(ONB__ONE) ONB_FLOAT_METHOD_LIST(ONB__ONE) ? 1 : -1];
 #undef ONB__ONE
+
+/* Aliases: engines' code that is an existing method bit for bit, in the
+   precisions named.  Each row's independent transliteration (tests/indep_wild.h)
+   is compared with its target, bit for bit, by tests/test_indep.c on the
+   same inputs as the methods (10^6 uniform, poles, every threshold +-8 ulps,
+   signed zeros, subnormals, the axes).  The notes under each row say why
+   the arithmetic agrees; docs/wild.md has the rest. */
+static const onb_alias onb__aliases[] = {
+	/* copysign(1, z) as Listing 3; Sqr(x) = x*x then times sign: exact for sign = +-1 */
+	{ "pbrt_v4", "duff_branchless", "float and double", "pbrt-v4 CoordinateSystem (Vector3 and Normal3 overloads)", "",
+	  { "github.com/mmp/pbrt-v4", "5f7a606806a4ac7b939131ded9d7a30ebd02416e", "src/pbrt/util/vecmath.h:1006-1022",
+	    "Apache-2.0", "C++", "Float: float, double with PBRT_FLOAT_AS_DOUBLE",
+	    "CPU, no contraction (clang >= 14 gets -ffp-contract=off; the x86-64 baseline has no FMA); nvcc's --use_fast_math build not modelled" } },
+	/* Frisvad Listing 2 with Max's threshold, term for term */
+	{ "nvpro", "frisvad_max", "float", "nvpro_core nvvkhl orthonormalBasis (GLSL and C++)",
+	  "float only: the float literal -0.99998796F widened is not frisvad_max's double threshold",
+	  { "github.com/nvpro-samples/nvpro_core", "ba24b73e3a918adfe6ca932a6bf749a1d874d9b0", "nvvkhl/shaders/func.h:102-114",
+	    "Apache-2.0", "GLSL and C++ (glm)", "float", "IEEE, the C++ path (a GLSL driver may contract into fma: not modelled)" } },
+	/* signf(z) = z < 0 ? -1 : 1 picks Listing 2's branch; Listing 3's arithmetic equals Listing 2's up to exact sign flips */
+	{ "cycles_duff", "duff", "float", "Blender Cycles make_orthonormals, the Duff copy (May-Oct 2023, reverted by cb18628fd)", "",
+	  { "github.com/blender/cycles", "9056d818a18b5f148f1d8f1e987b6ce14d0cfffb", "src/util/math.h:569-579",
+	    "Apache-2.0", "C++", "float",
+	    "IEEE as the SSE kernels run it; the AVX2 kernel (-mfma, GCC's default contraction) may fuse, and -fno-signed-zeros may drop zero signs: not modelled" } },
+	/* sign = z >= 0 ? 1 : -1: Listing 2's branch except for NaN z */
+	{ "falcor", "duff", "float", "Falcor branchlessONB (MathHelpers.slang and MathHelpers.h)",
+	  "NaN z excepted: z >= 0 is false for NaN, so Falcor takes the lower branch and b1.z = +x where duff gives -x",
+	  { "github.com/NVIDIAGameWorks/Falcor", "eb540f6748774680ce0039aaf3ac9279266ec521", "Source/Falcor/Utils/Math/MathHelpers.slang:559-567",
+	    "BSD-3-Clause", "Slang and C++", "float", "IEEE (source level; the host copy MathHelpers.h:62-70 is the same)" } },
+	/* GLSL sign(0) = 0, so sign(sign(z) + 0.5) = +1 for +-0: Listing 2's branch */
+	{ "pasvulkan", "duff", "float", "PasVulkan getTangentSpaceBasisFromNormal, s = sign(sign(n.z) + 0.5)", "",
+	  { "github.com/BeRo1985/pasvulkan", "bc6681f3198632210c4382464c40a9ab163d1bc7", "src/assets/shaders/scene3d/tangentspacebasis.glsl:4-11",
+	    "Zlib", "GLSL", "float", "IEEE; sign(NaN) read as 0 (GLSL leaves it undefined); a driver may contract into fma: not modelled" } },
+};
+
+const onb_alias *onb_aliases(size_t *count)
+{
+	if (count)
+		*count = sizeof onb__aliases / sizeof onb__aliases[0];
+	return onb__aliases;
+}
+
+const onb_alias *onb_find_alias(const char *name)
+{
+	size_t i;
+	if (!name)
+		return NULL;
+	for (i = 0; i < sizeof onb__aliases / sizeof onb__aliases[0]; i++)
+		if (strcmp(onb__aliases[i].name, name) == 0)
+			return &onb__aliases[i];
+	return NULL;
+}
 
 const onb_method *onb_methods(size_t *count)
 {

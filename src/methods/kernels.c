@@ -34,6 +34,11 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 {
 	study_kernel *s;
 	const onb_method *m = onb_find(name);
+	const onb_alias *al = m ? NULL : onb_find_alias(name);
+	if (al) { /* an alias runs its target, under the target's name */
+		name = al->target;
+		m = onb_find(name);
+	}
 	if (!m && strcmp(name, "frisvad_rotate") != 0) {
 		char all[2048];
 		size_t i, n, len = 0;
@@ -41,7 +46,7 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 		all[0] = '\0';
 		for (i = 0; i < n && len + 64 < sizeof all; i++)
 			len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", ms[i].name);
-		study_error("unknown method '%s' (valid: %sfrisvad_rotate, or all; 'onbstudy list' describes them)", name, all);
+		study_error("unknown method '%s' (valid: %sfrisvad_rotate, an alias of 'onbstudy list --aliases', or all)", name, all);
 		return -1;
 	}
 	if (*k >= cap) {

@@ -572,8 +572,9 @@ static inline void ONB__K(dufff)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	}
 }
 
-/* duff_branchless (Duff et al. 2017, Listing 3; pbrt-v4 CoordinateSystem,
-   Mitsuba 3 coordinate_system): sign = copysign(1, n.z),
+/* duff_branchless (Duff et al. 2017, Listing 3; pbrt-v4's CoordinateSystem
+   bit for bit, the alias pbrt_v4; Mitsuba 3's coordinate_system is the same
+   formula with another product order): sign = copysign(1, n.z),
    a = -1/(sign + n.z), b = n.x*n.y*a,
    b1 = (1 + sign*n.x*n.x*a, sign*b, -sign*n.x), b2 = (b, sign + n.y*n.y*a, -n.y).
    Handedness +1.  Threshold: the sign bit of n.z, so n.z = -0 takes the

@@ -50,7 +50,7 @@ static const onb_method onb__table[] = {
 	  +1, 0, ONB_FRISVAD_MAX_T, 0, ONB__PTRS(frisvad_max), NULL },
 	{ "duff", "duff", "Duff et al. 2017, JCGT 6(1), Listing 2 (revisedONB, branch on n.z < 0)",
 	  "none", "n.z < 0 (-0 takes the upper branch)", +1, 0, NAN, 0, ONB__PTRS(duff), NULL },
-	{ "duff_branchless", "duff_branchless", "Duff et al. 2017, JCGT 6(1), Listing 3 (branchlessONB; pbrt-v4, Mitsuba 3)",
+	{ "duff_branchless", "duff_branchless", "Duff et al. 2017, JCGT 6(1), Listing 3 (branchlessONB; pbrt-v4 bit for bit)",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, 0, ONB__PTRS(duff_branchless), NULL },
 	{ "stark", "stark", "Stark 2009, JGT 14(1): branch-free perpendicular as published (zm = 1^(xm & ym)), then 1/sqrt normalize and cross",
 	  "none", "|n.x| = |n.y|, |n.x| = |n.z|, |n.y| = |n.z|", +1, 0, NAN, 0, ONB__PTRS(stark), NULL },

@@ -6,8 +6,19 @@
 # 2. every graph (a bordered rectangle at least 100 px each way) has a
 #    y label (a text turned 90 degrees left of it, beside its middle
 #    third) and an x label (a level text under its tick labels);
-# 3. every series with a key title has at least one drawn point or line
-#    segment off its key sample, unless its title says "no finite point".
+# 3. every series with a key title has at least one drawn point, line
+#    segment or filled area off its key sample, unless its title says "no
+#    finite point";
+# 4. no text lies over data: no text box (shrunk by 1.5 px) is crossed by
+#    a line segment of a plotted series or holds one of its markers (key
+#    samples excepted: a key title may sit beside its own sample, never
+#    over another series' data);
+# 5. every accuracy-floor band names the methods of its own panel: a
+#    series titled "floor of A, B" needs series A and B in the same plot;
+#    "floor of all N" needs N method series there, "floor of the other N"
+#    needs N that no other floor title of the plot names (a floor band
+#    titled without names, or with a method the panel does not draw, is
+#    a floor from another method).
 # A text's box is estimated from gnuplot's font size (width 0.56 em per
 # character, height 1 em, on the baseline), so "overlap" means boxes
 # that share more than 1.5 px each way.  Texts turned by other than 0 or
@@ -23,8 +34,14 @@ insvg && /height="[0-9.]+"/ && !ch { match($0, /height="[0-9.]+"/); ch = substr(
 /<g id="gnuplot_plot_[0-9]+" ><title>/ {
 	ns++; st[ns] = $0; sub(/.*<title>/, "", st[ns]); sub(/<\/title>.*/, "", st[ns]); st[ns] = ent(st[ns])
 	if (st[ns] ~ /^gnuplot_plot_/) st[ns] = ""
+	# plot ids restart at 1 in each plot of a multiplot: one panel each
+	match($0, /gnuplot_plot_[0-9]+/); pid = substr($0, RSTART + 13, RLENGTH - 13) + 0
+	if (pid <= lastpid || ns == 1) npl++
+	lastpid = pid; spl[ns] = npl
 	cur = ns; keyy[ns] = -1e9; npts[ns] = 0
 }
+# the end of a plot's group (a text's group ends in the rule below)
+cur && !intext && /^\t<\/g>$/ { cur = 0; next }
 /<g transform="translate\(/ {
 	s = $0; match(s, /translate\([-0-9.]+,[-0-9.]+\)/); xy = substr(s, RSTART + 10, RLENGTH - 11); split(xy, c, ",")
 	tx = c[1] + 0; ty = c[2] + 0; rot = 0
@@ -47,15 +64,28 @@ intext && /<\/g>/ {
 	else if (rot == 90) { X0[n] = tx - 0.2 * fs; X1[n] = tx + 0.8 * fs; Y0[n] = ty + lo; Y1[n] = ty + hi; K[n] = "v" }
 	else { a = rot * 3.14159265 / 180; X0[n] = tx + (lo < 0 ? lo : 0) * 0.71 - fs; X1[n] = tx + hi * 0.71 + fs; Y0[n] = ty - fs; Y1[n] = ty + w * 0.71 + fs; K[n] = "d" }
 	if (cur && K[n] == "h" && keyy[cur] == -1e9 && st[cur] != "") keyy[cur] = ty - 0.325 * fs
+	TS[n] = cur
 	next
 }
+function offkey(y) { return y - keyy[cur] > 0.6 || keyy[cur] - y > 0.6 }
 cur && /<path / && !/ Z  '/ {
-	d = $0; sub(/.*d='/, "", d); sub(/'.*/, "", d); m = split(d, p, /[ML] ?/)
-	for (i = 1; i <= m; i++) if (p[i] ~ /,/) { split(p[i], q, ","); if ((q[2] + 0) - keyy[cur] > 0.6 || keyy[cur] - (q[2] + 0) > 0.6) npts[cur]++ }
+	d = $0; sub(/.*d='/, "", d); sub(/'.*/, "", d); m = split(d, p, / +/); have = 0
+	for (i = 1; i <= m; i++) {
+		if (p[i] !~ /,/) continue
+		mv = (p[i] ~ /^M/); t = p[i]; sub(/^[ML]/, "", t); split(t, q, ","); x = q[1] + 0; y = q[2] + 0
+		if (offkey(y)) npts[cur]++
+		# a segment of data: not the key sample (both ends on the key's row)
+		if (!mv && have && (offkey(y) || offkey(py))) { nseg++; SX0[nseg] = px; SY0[nseg] = py; SX1[nseg] = x; SY1[nseg] = y; SS[nseg] = cur }
+		px = x; py = y; have = 1
+	}
 }
 cur && /<use xlink:href=/ {
 	u = $0; if (match(u, /translate\([-0-9.]+,[-0-9.]+\)/)) { xy = substr(u, RSTART + 10, RLENGTH - 11); split(xy, c, ",")
-		if ((c[2] + 0) - keyy[cur] > 0.6 || keyy[cur] - (c[2] + 0) > 0.6) npts[cur]++ }
+		if (offkey(c[2] + 0)) { npts[cur]++; nmk++; MKX[nmk] = c[1] + 0; MKY[nmk] = c[2] + 0; MKS[nmk] = cur } }
+}
+cur && /<polygon / && match($0, /points = '[^']*'/) {
+	d = substr($0, RSTART + 10, RLENGTH - 11); m = split(d, p, / +/)
+	for (i = 1; i <= m; i++) if (p[i] ~ /,/) { split(p[i], q, ","); if (offkey(q[2] + 0)) npts[cur]++ }
 }
 /<path stroke='black'  d='M[-0-9.]+,[-0-9.]+ L[-0-9.]+,[-0-9.]+ L[-0-9.]+,[-0-9.]+ L[-0-9.]+,[-0-9.]+ L[-0-9.]+,[-0-9.]+ Z/ {
 	d = $0; match(d, /stroke='black'  d='M[^']* Z/); d = substr(d, RSTART + 20, RLENGTH - 22); m = split(d, p, / L?/)
@@ -93,5 +123,54 @@ END {
 	for (t in tot)
 		if (tot[t] == 0 && t !~ /no finite point/)
 			fail(sprintf("series \"%s\" draws nothing and does not say so", t))
+	overdata()
+	floors()
 	exit bad > 0
+}
+# cross(i, s): 1 when segment s passes through text box i (shrunk 1.5 px):
+# Liang-Barsky clipping of the segment to the box
+function cross(i, s,   x0, y0, dx, dy, t0, t1, k, pp, qq, r, bx0, bx1, by0, by1) {
+	bx0 = X0[i] + 1.5; bx1 = X1[i] - 1.5; by0 = Y0[i] + 1.5; by1 = Y1[i] - 1.5
+	x0 = SX0[s]; y0 = SY0[s]; dx = SX1[s] - x0; dy = SY1[s] - y0; t0 = 0; t1 = 1
+	for (k = 1; k <= 4; k++) {
+		if (k == 1) { pp = -dx; qq = x0 - bx0 } else if (k == 2) { pp = dx; qq = bx1 - x0 }
+		else if (k == 3) { pp = -dy; qq = y0 - by0 } else { pp = dy; qq = by1 - y0 }
+		if (pp == 0) { if (qq < 0) return 0; continue }
+		r = qq / pp
+		if (pp < 0) { if (r > t1) return 0; if (r > t0) t0 = r }
+		else { if (r < t0) return 0; if (r < t1) t1 = r }
+	}
+	return 1
+}
+function overdata(   i, s, k, hit, lo, hi) {
+	for (i = 1; i <= n; i++) {
+		if (K[i] == "d") continue
+		hit = ""
+		for (s = 1; s <= nseg && hit == ""; s++) {
+			if ((SX0[s] < X0[i] && SX1[s] < X0[i]) || (SX0[s] > X1[i] && SX1[s] > X1[i]) || (SY0[s] < Y0[i] && SY1[s] < Y0[i]) || (SY0[s] > Y1[i] && SY1[s] > Y1[i])) continue
+			if (cross(i, s)) hit = st[SS[s]] != "" ? st[SS[s]] : "an untitled series"
+		}
+		for (k = 1; k <= nmk && hit == ""; k++)
+			if (MKX[k] > X0[i] + 1.5 && MKX[k] < X1[i] - 1.5 && MKY[k] > Y0[i] + 1.5 && MKY[k] < Y1[i] - 1.5)
+				hit = "a marker of " (st[MKS[k]] != "" ? st[MKS[k]] : "an untitled series")
+		if (hit != "") fail(sprintf("text \"%s\" lies over data (%s)", T[i], hit))
+	}
+}
+# floors(): the floor bands of each plot name methods of that plot
+function floors(   s, t, a, k, nm, pl, named, other, cntm, x) {
+	for (s = 1; s <= ns; s++) if (st[s] != "" && st[s] !~ /floor/) { t = st[s]; sub(/ .*/, "", t); inpl[spl[s], t] = 1; nmeth[spl[s]]++ }
+	for (s = 1; s <= ns; s++) {
+		if (st[s] !~ /floor/) continue
+		pl = spl[s]; t = st[s]
+		if (t ~ /^floor of all [0-9]+$/) { x = t; sub(/.* /, "", x); if (x + 0 != nmeth[pl]) fail(sprintf("floor band \"%s\": its plot draws %d methods", t, nmeth[pl])); continue }
+		if (t ~ /^floor of the other [0-9]+$/) { otherc[pl] = t; continue }
+		if (t !~ /^floor of [^ ]/) { fail(sprintf("floor band \"%s\" does not name whose floor it is", t)); continue }
+		sub(/^floor of /, "", t); k = split(t, a, /, /)
+		for (x = 1; x <= k; x++) {
+			if (!((pl, a[x]) in inpl)) fail(sprintf("floor band \"%s\" is the floor of %s, which its plot does not draw", st[s], a[x]))
+			else named[pl]++
+		}
+	}
+	for (pl in otherc) { x = otherc[pl]; sub(/.* /, "", x)
+		if (x + named[pl] != nmeth[pl]) fail(sprintf("floor band \"%s\": %d methods of its plot are not named by another floor band", otherc[pl], nmeth[pl] - named[pl])) }
 }

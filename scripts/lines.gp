@@ -19,8 +19,9 @@
 #   here: the scripts directory (style.gp)
 #   optional zero_x: where the pole bin is drawn (an x tic "-z", or
 #     zero_label: "+z" at the north pole)
-#   optional ref_file, ref_title: the accuracy floor band (x lo hi), drawn
-#     grey in every panel under the methods
+#   optional bands: a file (scripts/floor-bands.awk's output), one line per
+#     accuracy-floor band: "data-file panel colour title...", each drawn
+#     under the methods of its panel, translucent, in its colour
 #   optional single=1: one panel (the README's figures), W_SINGLE wide
 load here."/style.gp"
 if (exists("yl_key")) yl = value(yl_key)
@@ -58,16 +59,28 @@ ncols = (np > 1) ? 2 : 1
 nrows = (np + ncols - 1) / ncols
 W = single ? W_SINGLE : W_MULTI
 H = single ? H_SINGLE : 90 + H_PANEL_ROW * nrows
-has_ref = exists("ref_file") ? (ref_file ne "") : 0
 in_panel(i, p) = single ? 1 : (int(word(panels, i)) == p)
+nb = exists("bands") ? int(system(sprintf("awk 'END { print NR }' '%s'", bands))) : 0
+bfield(b, k) = system(sprintf("awk -v b=%d -v k=%d 'NR == b { if (k < 4) print $k; else { sub(/^[^ ]+ [^ ]+ [^ ]+ /, \"\"); print } }' '%s'", b, k, bands))
+BF = ""; BP = ""; BC = ""
+do for [b = 1:nb] { BF = BF." ".bfield(b, 1); BP = BP." ".bfield(b, 2); BC = BC." ".bfield(b, 3) }
+in_band(b, p) = single ? 1 : (int(word(BP, b)) == p)
+# the key above each panel: room for its entries, two to a row
+most = 0
+do for [p = 1:np] {
+    e = 0
+    do for [i = 1:n] { if (in_panel(i, p)) { e = e + 1 } }
+    do for [b = 1:nb] { if (in_band(b, p)) { e = e + 1 } }
+    if (e > most) { most = e }
+}
 title(i) = system(sprintf("sed -n '%dp' '%s'", i, titles))
 # fixed margins, so that every panel's graph has the same size
-set tmargin 5.5
+set tmargin 2.2 + 1.25 * ceil(most / (single ? 3.0 : 2.0))
 set bmargin 3.5
 set lmargin 14
 set rmargin 10
-REF = has_ref ? sprintf("'%s' using 1:2:3 with filledcurves fc rgb '%s' fs transparent solid 0.35 noborder title '%s',", ref_file, C_FLOOR, ref_title) : ""
 note = sprintf("zero error drawn at %.0e; wide lines: frisvad, frisvad\\_max, duff", floor)
+if (nb > 0) note = note."}\n{/*0.8 bands: each method's own accuracy floor (its exact formula rounded once), RMS to max per bin, in its colour"
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
     set output out.ext(term_i)
@@ -75,11 +88,22 @@ do for [term_i = 1:NTERM] {
     do for [p = 1:np] {
         # no panel title: the key above each panel names its series
         unset title
-        plot @REF for [i = 1:n] word(files, i) using 1:(in_panel(i, p) ? column(col) : 1/0) with linespoints \
+        # (gnuplot evaluates an empty iteration's colour once: no bands, no clause)
+        if (nb > 0) {
+        plot for [b = 1:nb] word(BF, b) using 1:(in_band(b, p) ? $2 : 1/0):3 with filledcurves fc rgb word(BC, b) \
+                 fs transparent solid 0.22 noborder title (in_band(b, p) ? bfield(b, 4) : ""), \
+             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) ? column(col) : 1/0) with linespoints \
                  pt int(word(points, i)) ps 0.6 pi 4 lw real(word(widths, i)) lc rgb word(colors, i) dt int(word(dashes, i)) \
                  title (in_panel(i, p) ? title(i) : ""), \
              for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && column(4) > 0 ? ceil : 1/0) with points \
                  pt int(word(points, i)) ps 1.2 lc rgb word(colors, i) notitle
+        } else {
+        plot for [i = 1:n] word(files, i) using 1:(in_panel(i, p) ? column(col) : 1/0) with linespoints \
+                 pt int(word(points, i)) ps 0.6 pi 4 lw real(word(widths, i)) lc rgb word(colors, i) dt int(word(dashes, i)) \
+                 title (in_panel(i, p) ? title(i) : ""), \
+             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && column(4) > 0 ? ceil : 1/0) with points \
+                 pt int(word(points, i)) ps 1.2 lc rgb word(colors, i) notitle
+        }
     }
     unset multiplot
 }

@@ -63,19 +63,13 @@ range() {
 		END { if (lx) { x0 /= 1.4; x1 *= 1.4 } if (!m) { y0 = 1e-20; y1 = 10 } printf "%g %g %g %g\n", x0, x1, y0 / 4, y1 * 4 }'
 }
 
-# floor_band METHOD PREC "DISTS" AXIS lin|log: x, floor RMS, floor max per
-# bin of by_nz.csv (columns found by name; max over the distributions)
-floor_band() {
-	awk -F, -v m="$1" -v p="$2" -v ds="$3" -v ax="$4" -v sc="$5" '
-		BEGIN { n = split(ds, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 }
-		/^#/ { next }
-		$1 == "method" { for (i = 1; i <= NF; i++) h[$i] = i; next }
-		!("floor_max" in h) { exit }
-		$1 == m && $2 == p && ($3 in want) && $4 == ax && $(h["floor_max"]) != "nan" && $(h["floor_max"]) + 0 > 0 {
-			k = $5; c[k] = ($5 + $6) / 2
-			if (!(k in hi) || $(h["floor_max"]) + 0 > hi[k]) hi[k] = $(h["floor_max"]) + 0
-			if (!(k in lo) || $(h["floor_rms"]) + 0 > lo[k]) lo[k] = $(h["floor_rms"]) + 0 }
-		END { for (k in hi) print (sc == "log" ? 10 ^ c[k] : c[k]), lo[k], hi[k] }' "$RUN/by_nz.csv" | sort -g
+# bands NAME "DISTS" AXIS lin|log "METHODS" "PANELS" "COLORS": the
+# accuracy-floor bands of a chart (scripts/floor-bands.awk: each method's
+# own floor, merged where floors agree), their list in W/NAME.bands
+bands() {
+	awk -F, -v p="$P" -v ds="$2" -v ax="$3" -v sc="$4" -v zx="$ZX" -v methods="$5" -v panels="$6" -v colors="$7" \
+		-v out="$W/$1" -f "$HERE/floor-bands.awk" "$RUN/by_nz.csv" > "$W/$1.bands"
+	[ -s "$W/$1.bands" ] && echo "bands='$W/$1.bands';" || true
 }
 
 # series METHOD "DISTS" AXIS lin|log CEIL: x, max, RMS, non-finite per bin
@@ -158,18 +152,10 @@ for P in float double; do
 		names="$names $m"; colors="$colors $(sty "$m" 3)"; dashes="$dashes $(sty "$m" 4)"
 		points="$points $(sty "$m" 5)"; widths="$widths $(sty "$m" 6)"; panels="$panels $(sty "$m" 2)"
 	done
-	# the accuracy floor band (issue 16): the floor of one method's family
-	# (duff_branchless when the run has it), its RMS to its max per bin;
-	# runs from before the floor have no floor columns and get no band
-	fm=$(echo "$pmethods" | grep -x duff_branchless || echo "$first")
-	floor_band "$fm" "$P" uniform nz lin > "$W/fb1_$P.dat"
-	floor_band "$fm" "$P" "south exhaustive uniform" log10_1pnz log > "$W/fb2_$P.dat"
-	floor_band "$fm" "$P" nonunit log10_absnorm log > "$W/fb6_$P.dat"
-	bt="accuracy floor (RMS to max)"
-	b1=""; b2=""; b6=""
-	[ -s "$W/fb1_$P.dat" ] && b1="ref_file='$W/fb1_$P.dat'; ref_title='$bt';"
-	[ -s "$W/fb2_$P.dat" ] && b2="ref_file='$W/fb2_$P.dat'; ref_title='$bt';"
-	[ -s "$W/fb6_$P.dat" ] && b6="ref_file='$W/fb6_$P.dat'; ref_title='$bt';"
+	# the accuracy-floor bands: each method's own (floor-bands.awk)
+	b1=$(bands fb1_$P uniform nz lin "$names" "$panels" "$colors")
+	b2=$(bands fb2_$P "south exhaustive uniform" log10_1pnz log "$names" "$panels" "$colors")
+	b6=$(bands fb6_$P nonunit log10_absnorm log "$names" "$panels" "$colors")
 	common="here='$HERE'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
@@ -191,8 +177,9 @@ for P in float double; do
 		sf=""; sc=""; sd=""; sp=""; sw=""
 		for m in $sel; do sf="$sf $W/sp_${P}_$m.dat"; sc="$sc $(sty "$m" 3)"; sd="$sd $(sty "$m" 4)"; sp="$sp $(sty "$m" 5)"; sw="$sw $(sty "$m" 6)"; done
 		awk -v files="$sf" -v names="$sel" -v panels="$(echo $sel | sed 's/[^ ]*/1/g')" -v col=2 -v ce="$C2" -f "$HERE/series-titles.awk" > "$W/t2s.txt"
+		bs=$(bands fbs_$P "south exhaustive uniform" log10_1pnz log "$sel" "$(echo $sel | sed 's/[^ ]*/1/g')" "$sc")
 		set -- $(range "$sf" 2 1)
-		gp lines.gp "$b2 here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$P near n.z = -1: frisvad fails, duff stays at the floor'"
+		gp lines.gp "$bs here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$P near n.z = -1: frisvad fails on its own floor, duff stays at its floor'"
 	fi
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
@@ -240,22 +227,32 @@ for P in float double; do
 
 	# 5. threshold
 	if [ -f "$RUN/threshold.csv" ] && grep -q "^$P," "$RUN/threshold.csv"; then
-		awk -F, -v p="$P" '!/^#/ && $1 == p { print $4, $5, $6, $7 }' "$RUN/threshold.csv" > "$W/th_$P.dat"
-		awk -v p="$P" -v F="$RUN/threshold.csv" 'BEGIN { sect = ""
+		# the finite rows; the non-finite ones (t = -1: no fallback, so n = -z
+		# divides by zero) counted and drawn in the non-finite band
+		awk -F, -v p="$P" '!/^#/ && $1 == p && $5 !~ /inf|nan/ && $6 !~ /inf|nan/ { print $4, $5, $6, $7 }' "$RUN/threshold.csv" > "$W/th_$P.dat"
+		thnf=$(awk -F, -v p="$P" '!/^#/ && $1 == p && ($5 ~ /inf|nan/ || $6 ~ /inf|nan/) { n++; t = t (t == "" ? "" : ", ") $3 } END { printf "%d %s", n, t }' "$RUN/threshold.csv")
+		# the published thresholds and the minimax, as vertical lines with
+		# their error in the key; marks at one t share one line
+		awk -v p="$P" -v F="$RUN/threshold.csv" -v W="$W/thm_$P" 'BEGIN { sect = ""
 			while ((getline l < F) > 0) {
 				if (l ~ /^[a-z]/) { split(l, a, ","); sect = a[1]; continue }
-				if (sect != p) continue
-				if (l ~ /^# minimax both/ || l ~ /^# published/) {
-					# one_plus_t, not 1 + the rounded decimal t (which reads -1 in double)
-					match(l, /one_plus_t [-0-9.e+]+/); x = substr(l, RSTART + 11, RLENGTH - 11) + 0
-					lab = (l ~ /minimax/) ? "minimax (both)" : (l ~ /Frisvad/ ? "Frisvad 2012" : "Max 2017")
-					n++; printf "set arrow %d from %g, graph 0 to %g, graph 1 nohead dt %d lw 1.5 lc rgb \"%s\"\n", n, x, x, (l ~ /minimax/) ? 1 : 3, (l ~ /minimax/) ? "#009E73" : "#555555"
-					# boxed (opaque): a curve never draws over the label
-					printf "set label %d \"%s\" at %g, graph %g rotate by 90 right font \",10\" offset %s,0 boxed front\n", n, lab, x, (l ~ /minimax/) ? 0.97 : (l ~ /Frisvad/ ? 0.97 : 0.55), (l ~ /minimax/) ? "-0.8" : "1.4"
-				}
-			} }' > "$W/marks_$P.gp"
-		[ "$P" = float ] && mkdir -p "$FIGS" && gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$FIGS/threshold_minimax_$P'; ttl='$P: the threshold t of Frisvad Listing 2 (Max 2017): error against 1 + t'"
-		gp threshold.gp "file='$W/th_$P.dat'; marks='$W/marks_$P.gp'; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") n.z near -1 x $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths'"
+				if (sect != p || (l !~ /^# minimax both/ && l !~ /^# published/)) continue
+				# one_plus_t, not 1 + the rounded decimal t (which reads -1 in double)
+				match(l, /one_plus_t [-0-9.e+]+/); x = substr(l, RSTART + 11, RLENGTH - 11) + 0
+				match(l, /max_both [-0-9.e+]+/); v = substr(l, RSTART + 9, RLENGTH - 9) + 0
+				match(l, /\([-0-9.e]+\)/); t = substr(l, RSTART + 1, RLENGTH - 2)
+				lab = (l ~ /minimax/) ? "minimax" : (l ~ /Frisvad/ ? "Frisvad 2012" : "Max 2017")
+				for (k = 1; k <= n; k++) if (X[k] == x) break
+				if (k > n) { n = k; X[k] = x; V[k] = v; T[k] = t; L[k] = lab } else L[k] = L[k] " = " lab
+			}
+			for (k = 1; k <= n; k++) {
+				printf "%.9g 1e-300\n%.9g 1e300\n", X[k], X[k] > (W "_" k ".dat")
+				printf "%s: t = -1 + %.3g, largest error %#.3g\n", L[k], X[k], V[k] > (W ".titles")
+			} }'
+		thfiles=$(ls "$W"/thm_"$P"_*.dat 2>/dev/null | sort | tr '\n' ' ')
+		thv="file='$W/th_$P.dat'; mfiles='$thfiles'; mtitles='$W/thm_$P.titles'; nfrows=${thnf%% *}; nft='${thnf#* }'"
+		[ "$P" = float ] && mkdir -p "$FIGS" && gp threshold.gp "$thv; out='$FIGS/threshold_minimax_$P'; ttl='$P: the threshold t of Frisvad Listing 2 (Max 2017): error against 1 + t'"
+		gp threshold.gp "$thv; out='$RUN/threshold_$P'; ttl='$P: Frisvad Listing 2 with threshold t (Max 2017); $(awk -F, -v p=$P '$1 == p { n++ } END { print n }' "$RUN/threshold.csv") n.z near -1 x $(grep -m1 '^# inputs' "$RUN/threshold.csv" | sed 's/.* \([0-9]*\) azimuths.*/\1/') azimuths'"
 	elif [ -f "$RUN/threshold.csv" ]; then skip "threshold_$P" "threshold.csv has no $P section"
 	else skip "threshold_$P" "no threshold.csv (run ./onbstudy threshold)"
 	fi

@@ -48,10 +48,10 @@ for s in south north; do
 	awk -v files="$files" -v names="$names" -v panels="$panels" -v col=2 -v ce="$CEIL" -f "$HERE/series-titles.awk" > "$W/titles_$s"
 	# shellcheck disable=SC2086
 	nf=$(cat $files | awk -v ce="$CEIL" '$4 > 0 || $2 + 0 >= ce + 0 { f = 1 } END { print f + 0 }')
-	# the accuracy floor band: duff_branchless's floor, its RMS to its max
-	awk -F, -v a="$axis" -v zx="$ZX" '!/^#/ && $1 == "duff_branchless" && $3 == "exhaustive" && $4 == a && $11 != "nan" {
-		print (($5 + 0 <= -17) ? zx : 10 ^ (($5 + $6) / 2)), $10, $11 }' "$DIR/$s/by_nz.csv" | sort -g > "$W/floor_$s"
-	band=""; [ -s "$W/floor_$s" ] && band="ref_file='$W/floor_$s'; ref_title='accuracy floor (RMS to max)';"
+	# the accuracy-floor bands: each method's own (scripts/floor-bands.awk)
+	awk -F, -v p="$P" -v ds=exhaustive -v ax="$axis" -v sc=log -v zx="$ZX" -v methods="$names" -v panels="$panels" -v colors="$colors" \
+		-v out="$W/floor_$s" -f "$HERE/floor-bands.awk" "$DIR/$s/by_nz.csv" > "$W/floor_$s.bands"
+	band=""; [ -s "$W/floor_$s.bands" ] && band="bands='$W/floor_$s.bands';"
 	inputs=$(awk -F, '!/^#/ && $3 == "exhaustive" { print $4; exit }' "$DIR/$s/summary.csv")
 	az=$(sed -n 's/^# exhaustive: .* \([0-9]*\) azimuths.*/\1/p' "$DIR/$s/summary.csv" | head -1)
 	common="here='$HERE'; nosvg=${NOSVG:-0}; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"

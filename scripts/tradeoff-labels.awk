@@ -12,11 +12,17 @@ function free(x0, y0, w,   k) {
 	if (x0 < 0 || x0 + w > 0.99 || y0 < 0.02 || y0 > 0.98) return 0
 	for (k = 1; k <= nl; k++)
 		if (x0 < lx[k] + lw[k] && lx[k] < x0 + w && y0 - H < ly[k] + H && ly[k] - H < y0 + H) return 0
+	for (k = 1; k < ns; k++) # and off the staircase (axis-parallel segments between its corners)
+		if ((sx[k] < sx[k + 1] ? sx[k] : sx[k + 1]) < x0 + w && (sx[k] > sx[k + 1] ? sx[k] : sx[k + 1]) > x0 && \
+		    (sy[k] < sy[k + 1] ? sy[k] : sy[k + 1]) < y0 + H && (sy[k] > sy[k + 1] ? sy[k] : sy[k + 1]) > y0 - H) return 0
 	for (k = 1; k <= n; k++) # keep off the markers too (up to the front's circles, 9 px)
 		if (px[k] > x0 - MX && px[k] < x0 + w + MX && py[k] > y0 - H - MY && py[k] < y0 + H + MY) return 0
 	return 1
 }
-BEGIN { CW = 7.4 / gw; H = 8.5 / gh; MX = 9 / gw; MY = 5 / gh } # width of a character, half a label's height (fractions)
+BEGIN { CW = 7.4 / gw; H = 8.5 / gh; MX = 9 / gw; MY = 5 / gh # width of a character, half a label's height (fractions)
+	# the staircase (stairs: "x y" corners), clamped to the graph
+	if (stairs != "") while ((getline l < stairs) > 0) { split(l, c, " "); ns++
+		sx[ns] = c[1] + 0 < xmin ? 0 : (c[1] + 0 > xmax ? 1 : fx(c[1] + 0)); sy[ns] = c[2] + 0 > ymax ? 1 : (c[2] + 0 < ymin ? 0 : fy(c[2] + 0)) } }
 { n++; px[n] = fx($1); py[n] = fy($col); name[n] = $4; X[n] = $1; Y[n] = $col }
 END {
 	# coincident points: one label

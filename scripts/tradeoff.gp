@@ -3,7 +3,9 @@
 # against the RMSE on uniform inputs, and against the worst max defect over
 # uniform, south and threshold inputs, where `onbstudy table`'s Pareto
 # front is drawn (circled, and its staircase).  No key: the subtitle says
-# what the marks mean and every point is labelled directly.
+# what the marks mean, with the front's rule (read from tradeoff-data.sh's
+# rule file: table's own, speeds within 5% equal), and every point is
+# labelled directly.
 # Called by plots.sh with: dir (holding tradeoff_PREC.dat and
 # front_PREC.dat from tradeoff-data.sh), prec, out, floor, ceil, here (the
 # scripts directory: tradeoff-labels.awk places the labels so that none
@@ -29,20 +31,22 @@ stats data using 6 nooutput
 ymin1 = STATS_min / 5
 ymax1 = (STATS_max >= ceil) ? ceil * 4 : STATS_max * 4
 W = single ? W_SINGLE : W_MULTI
-H = single ? H_SINGLE + 80 : 760
+H = single ? H_SINGLE + 110 : 790
 # the graph's size in pixels (for the label placer's character sizes)
 gw = (single ? W : W / 2) - 150
 gh = H - 170
-labels(c, y0, y1) = sprintf("< awk -v col=%d -v xmin=%g -v xmax=%g -v ymin=%g -v ymax=%g -v gw=%d -v gh=%d -f '%s/tradeoff-labels.awk' '%s'", c, xmin, xmax, y0, y1, gw, gh, here, data)
+labels(c, y0, y1) = sprintf("< awk -v col=%d -v xmin=%g -v xmax=%g -v ymin=%g -v ymax=%g -v gw=%d -v gh=%d -v stairs='%s' -f '%s/tradeoff-labels.awk' '%s'", c, xmin, xmax, y0, y1, gw, gh, (c == 2 ? front : ""), here, data)
 set xrange [xmin:xmax]
 set xlabel "batch throughput, 1 thread, L2-resident (million bases per second)" font F_AXIS
 set lmargin 14
 set rmargin 3
-set tmargin 4
+set tmargin 5
 set bmargin 4
 # nonfinite(y1): the band and the axis label of non-finite output
 nf_band(y1) = (y1 > ceil) ? 1 : 0
-sub = sprintf("{/*0.8 right is faster, down is more accurate; circled: on the Pareto front (table's worst case); zero error drawn at %.0e}", floor)
+rule1 = system(sprintf("sed -n 1p '%s/rule_%s.txt'", dir, prec))
+rule2 = system(sprintf("sed -n 2p '%s/rule_%s.txt'", dir, prec))
+sub = sprintf("{/*0.8 right is faster, down is more accurate; zero error drawn at %.0e}\n{/*0.8 %s}\n{/*0.8 %s}", floor, rule1, rule2)
 FRONT = "front using 1:2 with steps lw 2 lc rgb '#555555' notitle, data using 1:($5 == 1 ? $2 : 1/0) with points pt 6 ps 2.6 lw 1.5 lc rgb '#000000' notitle,"
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)

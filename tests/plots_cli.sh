@@ -9,11 +9,14 @@
 #     one shared axis note);
 #   - no series with a key title draws nothing unless its title says
 #     "no finite point".
+#   - no text lies over a drawn line segment or marker of a series;
+#   - every accuracy-floor band names methods drawn in its own panel;
+# and the colours of scripts/styles.sh: within a hue group every two
+# shades differ by a CIELAB delta-E of at least 15, none is near-black,
+# duff and duff_branchless share a group and sit side by side.
 # Not checked mechanically, and why:
-#   - a text over a curve or a marker (a key over data): the SVG gives the
-#     curves as paths, and which crossings hide something is a judgement;
-#     the charts keep keys above the panels (lines.gp) or direct labels
-#     placed off the markers (tradeoff-labels.awk) so that none arise;
+#   - a text over a filled area or an image (a map's cells): only lines
+#     and markers are data paths in gnuplot's SVG;
 #   - text widths are estimated from the font size (0.56 em a character):
 #     SVG has no metrics, so a near miss of a pixel or two can pass;
 #   - diagonal texts (the bar chart's method names) are checked against the
@@ -73,6 +76,30 @@ for want in "leaves the" "overlap" "no y label" "\"empty\" draws nothing"; do
 	echo "$out" | grep -q "$want" && ok || bad "chart check missed: $want (it said: $out)"
 done
 echo "$out" | grep -q "no x label" && bad "chart check: a false x-label defect: $out" || ok
+# a label over data, and floor bands that are another method's or nobody's
+printf '1 1e-7\n2 1e-7\n' > "$T/f.dat"
+gnuplot -e "set terminal svg size 500,400; set output '$T/bad2.svg'; set xlabel 'x label here'; set ylabel 'y label here'; set logscale y; \
+	set label 1 'a label on the line' at 1.2, 1.25 front; set key outside top; \
+	plot '$T/d.dat' using 1:2 with lines title 'frisvad', \
+	'$T/f.dat' using 1:2:(\$2*2) with filledcurves title 'floor of duff_branchless' noenhanced, \
+	'$T/f.dat' using 1:2:(\$2*2) with filledcurves title 'accuracy floor (RMS to max)', \
+	'$T/f.dat' using 1:2:(\$2*2) with filledcurves title 'floor of all 3'" 2>/dev/null
+out=$(awk -f scripts/chart-check.awk "$T/bad2.svg")
+for want in "\"a label on the line\" lies over data (frisvad)" "floor of duff_branchless\" is the floor of duff_branchless, which its plot does not draw" \
+	"\"accuracy floor (RMS to max)\" does not name whose floor" "\"floor of all 3\": its plot draws 1 methods"; do
+	echo "$out" | grep -qF "$want" && ok || bad "chart check missed: $want (it said: $out)"
+done
+# the shades: delta-E >= 15 within a group, nothing near-black, duff and
+# duff_branchless adjacent in one group
+sh scripts/styles.sh results/reference/summary.csv > "$T/sty" && ok || bad "styles.sh failed"
+out=$(awk -f scripts/lab.awk -f /dev/stdin "$T/sty" <<'EOF2'
+{ c[NR] = $3; g[NR] = $7; m[NR] = $1; if ($1 == "duff") dg = NR; if ($1 == "duff_branchless") db = NR }
+END { for (i = 1; i <= NR; i++) { lab_of(c[i]); if (LAB_L < 25) printf "%s is near-black (L* %.0f)\n", m[i], LAB_L
+		for (j = i + 1; j <= NR; j++) if (g[i] == g[j] && delta_e(c[i], c[j]) < 15) printf "%s and %s: delta-E %.1f\n", m[i], m[j], delta_e(c[i], c[j]) }
+	if (!dg || !db || g[dg] != g[db] || db - dg != 1) print "duff and duff_branchless not adjacent in one group" }
+EOF2
+)
+[ -z "$out" ] && ok || bad "shades: $out"
 # bad input
 sh scripts/plots.sh "$T/nothing" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "plots.sh on a missing run must exit 2"
 NZ=x sh scripts/polecap.sh "$T/pc2" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "polecap.sh with NZ=x must exit 2"

@@ -1,0 +1,75 @@
+# styles.awk - the program of scripts/styles.sh (which see), with
+# scripts/lab.awk's colour functions.
+BEGIN {
+	while ((getline l < L) > 0) { split(l, a, " "); fam[a[1]] = a[2]; if (!(a[2] in forder)) forder[a[2]] = ++nf0 }
+	# Okabe-Ito (2008) without its yellow, which vanishes on white, and
+	# without its black; then darker stand-ins for more groups (registry
+	# order: naive orange, hughes_moeller green, frisvad vermillion, duff
+	# blue, ...)
+	nh = split("#E69F00 #009E73 #D55E00 #0072B2 #CC79A7 #56B4E9 #8C6D00 #5C3A92 #7A7A7A #A6761D #1B9E77 #E7298A", hue, " ")
+	split("7 5 9 11 13 15", pts, " ")
+	split(HEAD, h, " "); for (i in h) head[h[i]] = 1
+}
+# the registry family; else the shortest family (or, without a registry,
+# other method) whose name is a prefix of this one, followed by "_"
+function family(m,   b, f, best) {
+	b = m; sub(/\+fma$/, "", b)
+	if (b in fam) return fam[b]
+	best = b
+	for (f in forder) if (index(b, f "_") == 1 && length(f) < length(best)) best = f
+	if (best == b) for (f in allm) if (index(b, f "_") == 1 && length(f) < length(best)) best = f
+	return best
+}
+# the hue group of a family: the shortest other family of the run whose
+# name, followed by "_", begins this one
+function group(f,   g, best) {
+	best = f
+	for (g in present) if (g != f && index(f, g "_") == 1 && length(g) < length(best)) best = g
+	return best
+}
+/^#/ || $1 == "method" || seen[$1]++ { next }
+{ b = $1; sub(/\+fma$/, "", b); allm[b] = 1; order[++nm] = $1 }
+END {
+	for (q = 1; q <= nm; q++) { fm[q] = family(order[q]); present[fm[q]] = 1 }
+	# each group's hue: its rank among the groups of the whole registry
+	# (then of the run), the same in every chart and precision
+	for (f in forder) present[f] = 1
+	for (r = 1; r <= nf0 + nm; r++) for (f in forder) if (forder[f] == r) { g = group(f); if (!(g in grank)) grank[g] = ++ngr }
+	for (q = 1; q <= nm; q++) {
+		m = order[q]; f = fm[q]; g = group(f)
+		if (!(f in forder)) forder[f] = 1000 + ++nx
+		nf1 = 1000 + nx
+		if (!(g in gorder) || forder[f] < gorder[g]) gorder[g] = forder[f]
+		if (!(g in nv)) { ng++; grs[ng] = g }
+		k = ++nv[g]; mem[g, k] = m; mfo[g, k] = forder[f] * 10000 + q
+	}
+	# groups in registry order; within a group, members by family, then run order
+	for (i = 1; i <= ng; i++) for (j = i + 1; j <= ng; j++)
+		if (gorder[grs[j]] < gorder[grs[i]]) { t = grs[i]; grs[i] = grs[j]; grs[j] = t }
+	for (i = 1; i <= ng; i++) { g = grs[i]
+		for (u = 1; u <= nv[g]; u++) for (c = u + 1; c <= nv[g]; c++)
+			if (mfo[g, c] < mfo[g, u]) { t = mem[g, u]; mem[g, u] = mem[g, c]; mem[g, c] = t; t = mfo[g, u]; mfo[g, u] = mfo[g, c]; mfo[g, c] = t } }
+	p = 1; fill = 0
+	for (i = 1; i <= ng; i++) {
+		g = grs[i]
+		if (fill > 0 && fill + nv[g] > MAX) { p++; fill = 0 }
+		fill += nv[g]
+		# the hue follows the place of the group in the registry, so it is
+		# the same in every chart and precision
+		if (!(g in grank)) grank[g] = ++ngr
+		hi = grank[g]
+		# members that are NAME+fma share NAME's shade (a dashed line)
+		nb = 0; split("", slot)
+		for (k = 1; k <= nv[g]; k++) { b = mem[g, k]; sub(/\+fma$/, "", b); if (!(b in slot)) slot[b] = ++nb }
+		# the headline methods first, wide, so the thin variants drawn over
+		# them stay visible where they coincide
+		for (pass = 1; pass >= 0; pass--)
+			for (k = 1; k <= nv[g]; k++) {
+				m = mem[g, k]; b = m; sub(/\+fma$/, "", b)
+				if ((b in head) != pass) continue
+				s = slot[b]
+				d = (m ~ /\+fma$/) ? 2 : ((s - 1) % 5) + 1
+				print m, p, lab_shade(hue[(hi - 1) % nh + 1], s, nb), d, pts[(s - 1) % 6 + 1], (b in head) ? 3 : 1.5, g
+			}
+	}
+}

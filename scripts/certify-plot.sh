@@ -1,42 +1,103 @@
 #!/bin/sh
-# certify-plot.sh [DIR] - the charts of `onbstudy certify` (issue 22):
-# DIR/certify_float.png and certify_double.png (and SVG), the bracket
-# found <= true max <= bound of each method's defect against 1 + n.z (log),
-# per band of n.z (the largest over the band's sectors), beside the
-# accuracy floor of the committed reference sweep.  DIR: results/certify.
+# certify-plot.sh [DIR] - the charts of `onbstudy certify`, from
+# DIR/certify.csv (columns found by name; DIR default results/certify):
+#   DIR/certify_P.png        per band of n.z, each method's bracket: the
+#                            largest defect found (solid) <= the true
+#                            maximum <= the proven bound (dashed), shaded
+#                            between; a singular band has no bound and is
+#                            drawn as a marker in the "no bound" strip
+#   DIR/certify_ratio_P.png  bound / found per band: where the proof is
+#                            tight (near 1) and where it is loose
+#   FIGS/certify_frisvad_duff_float.png  (when FIGS is set: results/figures)
+#                            the brackets of frisvad, frisvad_max and duff
+#                            in one panel, the README's figure
+# for P in float and double (and SVG beside each).  The x axis gives every
+# band the same width, from -z to +z: the log bands near each pole (1 + n.z
+# near -z, 1 - n.z near +z) and the linear bands between, so that the
+# seam at n.z = 0 and the north get the room the south gets.  Methods are
+# grouped into panels and coloured as in every other chart
+# (scripts/styles.sh); the style is scripts/style.gp.
 set -eu
 DIR=${1:-results/certify}
 HERE=$(cd "$(dirname "$0")" && pwd)
-REF=${REF:-$HERE/../results/reference/by_nz.csv}
 [ -f "$DIR/certify.csv" ] || { echo "certify-plot: $DIR/certify.csv not found (run ./onbstudy certify --out $DIR)" >&2; exit 2; }
 command -v gnuplot >/dev/null 2>&1 || { echo "certify-plot: gnuplot is not installed" >&2; exit 2; }
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
+sh "$HERE/styles.sh" "$DIR/certify.csv" > "$W/styles"
 for p in float double; do
-	# per method and band: x_lo x_hi found bound (bound 1e300 where singular)
+	# the bands of this precision, in order, each a slot k (0, 1, ...); per
+	# method and band: k found bound ratio (bound and ratio "nan" where
+	# singular: no bound), and the x tics
 	grep -v '^#' "$DIR/certify.csv" | awk -F, -v p="$p" -v w="$W" '
-	NR == 1 || $2 != p || ($3 == -1 && $4 == 1) { next }
-	{ k = $1 SUBSEP $3 SUBSEP $4
-	  b = ($12 == "singular" || $7 == "inf") ? 1e300 : $7 + 0
-	  if (!(k in F) || $8 + 0 > F[k]) F[k] = $8 + 0
-	  if (!(k in B) || b > B[k]) B[k] = b
-	  M[$1] = 1; L[k] = $3 + 0; H[k] = $4 + 0 }
-	END { for (k in F) { split(k, a, SUBSEP)
-	        lo = 1 + L[k]; hi = 1 + H[k]; if (lo <= 0) lo = hi / 10
-	        f = F[k] > 0 ? F[k] : 1e-30
-	        printf "%.17g %.17g %.6e %.6e\n", lo, hi, f, (B[k] > f ? B[k] : f) >> (w "/" a[1] "." p) } }'
-	for f in "$W"/*."$p"; do [ -f "$f" ] && sort -g -o "$f" "$f"; done
-	# the floor: the largest floor defect of duff_branchless per log10(1 + n.z) bin (unit inputs)
-	if [ -f "$REF" ]; then
-		grep -v '^#' "$REF" | awk -F, -v p="$p" '$1 == "duff_branchless" && $2 == p && $4 == "log10_1pnz" &&
-			($3 == "uniform" || $3 == "south" || $3 == "threshold" || $3 == "exhaustive") {
-			k = $5; if (!(k in m) || $11 + 0 > m[k]) m[k] = $11 + 0; h[k] = $6 }
-			END { for (k in m) if (m[k] > 0) printf "%.6g %.6g\n", 10 ^ ((k + h[k]) / 2), m[k] }' | sort -g > "$W/floor.$p"
-	else
-		: > "$W/floor.$p"
+	NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
+	$(h["precision"]) != p { next }
+	{ lo = $(h["nz_lo"]); hi = $(h["nz_hi"]) }
+	lo == -1 && hi == 1 { next }
+	{ m = $1; b = lo SUBSEP hi
+	  if (!(b in seen)) { seen[b] = 1; nb++; L[nb] = lo + 0; Hh[nb] = hi + 0; key[nb] = b }
+	  f = $(h["found"]) + 0; bd = $(h["bound"])
+	  sing = ($(h["status"]) == "singular" || bd == "inf")
+	  if (!((m, b) in F) || f > F[m, b]) F[m, b] = f
+	  if (sing) S[m, b] = 1
+	  else if (!((m, b) in B) || bd + 0 > B[m, b]) B[m, b] = bd + 0
+	  M[m] = 1 }
+	function lab(e,   d, r) {
+		if (e == -1) return "-z"
+		if (e == 1) return "+z"
+		if (e < -0.9 + 1e-9 || e > 0.9 - 1e-9) {
+			d = (e < 0) ? 1 + e : 1 - e; r = log(d) / log(10)
+			if ((r - int(r - 0.5)) ^ 2 > 1e-8 && ((r - int(r + 0.5)) ^ 2) > 1e-8) return ""
+			r = (r < 0) ? int(r - 0.5) : int(r + 0.5)
+			if (e > -0.9 - 1e-9 && e < 0.9 + 1e-9) return sprintf("%g", e)
+			# (none next to the labels of the -0.9 and 0.9 edges)
+			return (r <= -3 && r % (nb > 30 ? 4 : 2) == 0) ? sprintf("10^{%d}", r) : ""
+		}
+		return (e == 0) ? "0" : ""
+	}
+	END {
+		for (i = 1; i <= nb; i++) for (j = i + 1; j <= nb; j++) if (L[j] < L[i]) {
+			t = L[i]; L[i] = L[j]; L[j] = t; t = Hh[i]; Hh[i] = Hh[j]; Hh[j] = t; t = key[i]; key[i] = key[j]; key[j] = t }
+		for (m in M) {
+			f = w "/" m "." p
+			for (i = 1; i <= nb; i++) { b = key[i]; if (!((m, b) in F)) continue
+				fo = F[m, b] > 0 ? F[m, b] : 1e-300
+				if ((m, b) in S) printf "%d %.6e nan nan 1\n", i - 1, fo > f
+				else printf "%d %.6e %.6e %.6e 0\n", i - 1, fo, B[m, b], B[m, b] / fo > f }
+			close(f)
+		}
+		t = ""
+		for (i = 1; i <= nb; i++) { s = lab(L[i]); if (s != "") t = t (t == "" ? "" : ", ") sprintf("\"%s\" %d", s, i - 1) }
+		t = t ", \"+z\" " nb
+		print "set xtics (" t ")" > (w "/xtics." p)
+		# the region boundaries: where the log bands of each pole meet the linear ones, and the seam
+		for (i = 1; i <= nb; i++) { if (L[i] > -0.9 - 1e-9 && L[i] < -0.9 + 1e-9) s1 = i - 1; if (L[i] > 0.9 - 1e-9 && L[i] < 0.9 + 1e-9) s3 = i - 1; if (L[i] == 0) s2 = i - 1 }
+		printf "nbands = %d; xs1 = %d; xs2 = %d; xs3 = %d\n", nb, s1 + 0, s2 + 0, s3 + 0 > (w "/xtics." p)
+	}'
+	files=""; names=""; colors=""; dashes=""; points=""; panels=""
+	for m in $(awk '{ print $1 }' "$W/styles"); do
+		[ -s "$W/$m.$p" ] || continue
+		files="$files $W/$m.$p"; names="$names $m"
+		colors="$colors $(awk -v m="$m" '$1 == m { print $3 }' "$W/styles")"
+		dashes="$dashes $(awk -v m="$m" '$1 == m { print $4 }' "$W/styles")"
+		points="$points $(awk -v m="$m" '$1 == m { print $5 }' "$W/styles")"
+		panels="$panels $(awk -v m="$m" '$1 == m { print $2 }' "$W/styles")"
+	done
+	[ -n "$files" ] || { echo "certify-plot: no $p rows in $DIR/certify.csv" >&2; continue; }
+	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'"
+	gnuplot -e "$v; ratio=0; out='$DIR/certify_$p'" "$HERE/certify.gp"
+	gnuplot -e "$v; ratio=1; out='$DIR/certify_ratio_$p'" "$HERE/certify.gp"
+	outs="$DIR/certify_$p $DIR/certify_ratio_$p"
+	# the README's figure (FIGS, float): frisvad, frisvad_max and duff in one panel
+	sel=""; for m in frisvad frisvad_max duff; do case " $names " in *" $m "*) sel="$sel $m";; esac; done
+	if [ -n "${FIGS:-}" ] && [ "$p" = float ] && [ -n "$sel" ]; then
+		mkdir -p "$FIGS"
+		sv=$(for m in $sel; do awk -v m="$m" '$1 == m { print $3, $4, $5 }' "$W/styles"; done)
+		gnuplot -e "$v; single=1; files='$(for m in $sel; do printf '%s ' "$W/$m.$p"; done)'; names='$sel'; colors='$(echo "$sv" | awk '{ print $1 }' | tr '\n' ' ')'; dashes='$(echo "$sv" | awk '{ print $2 }' | tr '\n' ' ')'; points='$(echo "$sv" | awk '{ print $3 }' | tr '\n' ' ')'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ratio=0; out='$FIGS/certify_frisvad_duff_$p'" "$HERE/certify.gp"
+		outs="$outs $FIGS/certify_frisvad_duff_$p"
 	fi
-	have=" "
-	for f in "$W"/*."$p"; do [ -f "$f" ] && have="$have$(basename "$f" ".$p") "; done
-	gnuplot -e "dir='$W'; prec='$p'; out='$DIR/certify_$p'; have='$have'" "$HERE/certify.gp"
+	if command -v pngquant >/dev/null 2>&1; then
+		for o in $outs; do pngquant --force --skip-if-larger --speed 1 --output "$o.png" 64 "$o.png" || true; done
+	fi
 done
-echo "certify-plot: wrote $DIR/certify_float.png and $DIR/certify_double.png"
+echo "certify-plot: wrote $DIR/certify_float.png, certify_double.png, certify_ratio_float.png, certify_ratio_double.png"

@@ -1,51 +1,101 @@
-# certify.gp - the bracket of each method's defect against 1 + n.z (log):
-# a band from the largest defect found (solid line) to the proven bound
-# (dashed), per band of n.z; singular bands draw no bound.  Four panels of
-# related methods; the accuracy floor (the exact formula rounded once) in
-# grey.  Called by certify-plot.sh with dir, prec, out.
+# certify.gp - onbstudy certify's brackets (ratio=0) or their tightness
+# (ratio=1), per band of n.z, one slot of equal width per band from -z to
+# +z (the x tics give the bands' edges: 1 + n.z near -z, n.z between -0.9
+# and 0.9, 1 - n.z near +z; dotted lines where the regions meet, and at the
+# seam n.z = 0).  Small multiples: the panels and colours of
+# scripts/styles.sh, each panel's key above it.
+#   ratio=0: the largest defect found (solid line) and the proven bound
+#     (dashed), shaded between: the true maximum lies in the shade; a
+#     singular band has no bound: a marker in the "no bound" strip on top
+#   ratio=1: bound / found per band (1: the proof is tight), the singular
+#     bands in the same strip
+# Called by certify-plot.sh with: prec, files (lines "k found bound ratio
+# singular"), names, colors, dashes, points, panels, xt (a file setting
+# the x tics, nbands, xs1, xs2, xs3), out, ratio,
+# here; optional single=1: one panel of all the files (the README's figure)
+load here."/style.gp"
 set datafile separator whitespace
-set logscale xy
-set format x "10^{%L}"
-set format y "10^{%L}"
+load xt
+set logscale y
+set xrange [0:nbands]
 u = (prec eq "float") ? 2.0**-24 : 2.0**-53
-set xrange [(prec eq "float") ? 1e-8 : 1e-17 : 2]
-set yrange [u / 8 : 4]
-set grid lc rgb "#dddddd"
-set style fill transparent solid 0.25 noborder
-set key inside left top font ",10" samplen 2 spacing 1.1 opaque box lc rgb "#bbbbbb"
-set xlabel "1 + n.z" font ",11"
-set ylabel "orthonormality defect (max over the band)" font ",11"
-# Okabe-Ito: two methods per panel, orange and blue; a third in bluish green
-hues = "#E69F00 #0072B2 #009E73"
-# the panels' methods; `have` (from certify-plot.sh) lists the methods of
-# this run, each between spaces
-g1 = "frisvad frisvad_max"; g2 = "duff duff_branchless"
-g3 = "hughes_moeller pbrt_v3 stark_fixed"; g4 = "naive rtow tangent_cross_z"
-f(m) = dir."/".m.".".prec
-step(file, col) = sprintf("< awk '{ print $1, $%d; print $2, $%d }' %s", col, col, file)
-band(file) = sprintf("< awk '{ print $1, $3, ($4 < 1e299 ? $4 : 1/0); print $2, $3, ($4 < 1e299 ? $4 : 1/0) }' %s", file)
-do for [t = 1:2] {
-  if (t == 1) { set terminal pngcairo size 1400,1000 font ",10"; set output out.".png" }
-  if (t == 2) { set terminal svg size 1400,1000 font "sans,10"; set output out.".svg" }
-  set multiplot layout 2,2 title sprintf("Proven brackets, %s: largest defect found (solid) <= true maximum <= certified bound (dashed), per band of n.z\n{/*0.8 onbstudy certify; u = 2^{%d}; grey: the accuracy floor (exact formula rounded once, duff\\_branchless); no bound where the method is singular}", prec, (prec eq "float") ? -24 : -53) font ",13"
-  do for [g = 1:4] {
-    grp = (g == 1) ? g1 : (g == 2) ? g2 : (g == 3) ? g3 : g4
-    ms = ""
-    do for [k = 1:words(grp)] { if (strstrt(have, " ".word(grp, k)." ") > 0) { ms = ms." ".word(grp, k) } }
-    n = words(ms)
-    tit = word(grp, 1)
-    do for [k = 2:words(grp)] { tit = tit.", ".word(grp, k) }
-    set title tit noenhanced font ",12"
-    if (n == 0) {
-      set label 1 "none of these methods in this run" at graph 0.5, 0.5 center font ",11"
-      plot dir."/floor.".prec using 1:2 with lines lw 5 lc rgb "#c8c8c8" title "floor"
-      unset label 1
-    } else {
-      plot dir."/floor.".prec using 1:2 with lines lw 5 lc rgb "#c8c8c8" title "floor", \
-           for [k = 1:n] band(f(word(ms, k))) using 1:2:3 with filledcurves fc rgb word(hues, k) notitle, \
-           for [k = 1:n] step(f(word(ms, k)), 3) using 1:2 with lines lw 2 lc rgb word(hues, k) title word(ms, k) noenhanced, \
-           for [k = 1:n] step(f(word(ms, k)), 4) using 1:($2 < 1e299 ? $2 : 1/0) with lines lw 2 dt 2 lc rgb word(hues, k) notitle
+n = words(files)
+# the y range: from the data (found and bound), and a strip on top for "no bound"
+ymin = 1e300; ymax = 0; anysing = 0
+do for [i = 1:n] {
+    stats word(files, i) using 5 nooutput
+    if (STATS_max > 0) { anysing = 1 }
+    stats word(files, i) using (ratio ? $4 : $2) nooutput
+    if (STATS_records > 0 && STATS_min < ymin && STATS_min > 0) { ymin = STATS_min }
+    if (STATS_records > 0 && STATS_max > ymax) { ymax = STATS_max }
+    if (!ratio) {
+        stats word(files, i) using 3 nooutput
+        if (STATS_records > 0 && STATS_max > ymax) { ymax = STATS_max }
     }
-  }
-  unset multiplot
+}
+# (ratio: at most 100 on the axis; a larger ratio is drawn at 100, the
+# tick "100 or more")
+RCAP = 100.0
+if (ratio) { ymin = 1; ymax = (ymax < 2) ? 2 : (ymax > RCAP ? RCAP : ymax) }
+ylo = ratio ? 0.8 : ymin / 4
+# y tics by hand: whole decades, at most 8 labels, and "no bound" a decade
+# and a half above the data, clear of them
+e0 = ceil(log10(ylo)); e1 = ceil(log10(ymax))
+estep = ceil((e1 - e0 + 1) / 8.0)
+set ytics ()
+do for [e = e0:e1] { if (e % estep == 0) { set ytics add ((e == 0 ? "1" : (e == 1 ? "10" : (ratio && 10.0**e >= RCAP ? ">= 100" : sprintf("10^{%d}", e)))) 10.0**e) } }
+set mytics 10
+ystrip = 10.0**(e1 + (ratio ? 0.6 : 1.5))
+yhi = anysing ? ystrip * (ratio ? 2 : 4) : 10.0**e1 * 3
+set yrange [ylo:yhi]
+if (anysing) set ytics add ("no bound" ystrip)
+if (anysing) set object 13 rect from graph 0, first ystrip / (ratio ? 1.6 : 2) to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
+if (ratio) { set arrow 14 from graph 0, first 1.25 to graph 1, first 1.25 nohead dt 3 lw 1 lc rgb "#555555" back }
+do for [k = 1:3] {
+    xs = (k == 1) ? xs1 : (k == 2) ? xs2 : xs3
+    if (xs > 0) { set arrow 20 + k from first xs, graph 0 to first xs, graph 1 nohead dt 2 lw 1 lc rgb "#999999" back }
+}
+set xtics rotate by 0 font F_TICK
+set grid ytics lc rgb "#e0e0e0"
+set key outside top center horizontal Left reverse maxcols 3 samplen 2.5 spacing 1.1 width 1 noenhanced
+set xlabel "band of n.z: 1 + n.z near -z | n.z from -0.9 to 0.9 (seam at 0) | 1 - n.z near +z" font F_AXIS
+set ylabel (ratio ? "proven bound / largest defect found" : "orthonormality defect, largest over the band") font F_AXIS
+if (!exists("single")) single = 0
+np = 0
+do for [i = 1:n] { if (int(word(panels, i)) > np) { np = int(word(panels, i)) } }
+if (single) { np = 1 }
+ncols = (np > 1) ? 2 : 1
+nrows = (np + ncols - 1) / ncols
+in_panel(i, p) = single ? 1 : (int(word(panels, i)) == p)
+# the key above each panel: its methods, three to a row
+most = 0
+do for [p = 1:np] { e = 0; do for [i = 1:n] { if (in_panel(i, p)) { e = e + 1 } }; if (e > most) { most = e } }
+set tmargin 2 + 1.25 * ceil(most / (single ? 3.0 : 2.0))
+set bmargin 3.5
+set lmargin 12
+set rmargin 3
+W = single ? W_SINGLE : W_MULTI; H = single ? H_SINGLE + 60 : 100 + H_PANEL_ROW * nrows
+# steps: each band a slot from k to k + 1
+st(c) = sprintf("< awk '{ print $1, $%d; print $1 + 1, $%d; print \"\" }' ", c, c)
+sub1 = ratio ? "proven bound / largest defect found, per band (1: tight; the run's target 1.25, dotted; 100 or more drawn at 100)" \
+             : "largest defect found (solid) <= true maximum (in the shade) <= proven bound (dashed), per band"
+ttl = sprintf("%s: onbstudy certify, %s\n{/*0.8 %s; u = 2^{%d}}%s", \
+              prec, ratio ? "how tight each proof is" : "the proven brackets", sub1, (prec eq "float") ? -24 : -53, \
+              anysing ? "\n{/*0.8 no bound: a singular band (the method returns NaN or inf there: no finite bound exists)}" : "")
+do for [term_i = 1:NTERM] {
+    eval term(term_i, W, H)
+    set output out.ext(term_i)
+    set multiplot layout nrows, ncols title ttl font F_TITLE
+    do for [p = 1:np] {
+        if (ratio) {
+        plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? word(names, i) : ""), \
+             for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
+        } else {
+        plot for [i = 1:n] st(2).word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0) with lines lw 2 lc rgb word(colors, i) title (in_panel(i, p) ? word(names, i) : ""), \
+             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent solid 0.18 noborder notitle, \
+             for [i = 1:n] st(3).word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0) with lines lw 1.5 dt 2 lc rgb word(colors, i) notitle, \
+             for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
+        }
+    }
+    unset multiplot
 }

@@ -6,9 +6,12 @@
 #                         lightness kept, until it lies in the gamut)
 #   delta_e(hex1, hex2)   CIE76 distance
 #   lab_shade(hex, s, n)  member s of n of the group of hue hex: lightness
-#                         spread evenly over at most [26, 80] and hue turned
-#                         in steps of 8 degrees, so that members differ by
-#                         a delta-E of at least 15; n = 1: the hue itself
+#                         26 + 14 (s - 1) (26 to 82; from the sixth
+#                         member on, again, with the hue turned by 40
+#                         degrees more) and hue turned in steps of 11
+#                         degrees, so that members differ by a delta-E of
+#                         at least 15 and a member's shade does not depend
+#                         on the group's size; n = 1: the hue itself
 function lab_hx(c) { return index("0123456789abcdef", tolower(c)) - 1 }
 function lab_lin(c) { c /= 255; return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ^ 2.4 }
 function lab_gam(c) { c = c <= 0.0031308 ? 12.92 * c : 1.055 * c ^ (1 / 2.4) - 0.055; return c * 255 }
@@ -43,14 +46,11 @@ function delta_e(h1, h2,   L1, a1, b1) {
 	lab_of(h2)
 	return sqrt((L1 - LAB_L) ^ 2 + (a1 - LAB_A) ^ 2 + (b1 - LAB_B) ^ 2)
 }
-function lab_shade(h, s, n,   dl, span, lc, L, C, hu, a) {
+function lab_shade(h, s, n,   L, C, hu, a) {
 	if (n <= 1) return tolower(h)
 	lab_of(h)
-	dl = 54 / (n - 1); if (dl > 20) dl = 20
-	span = dl * (n - 1)
-	lc = LAB_L; if (lc < 26 + span / 2) lc = 26 + span / 2; if (lc > 80 - span / 2) lc = 80 - span / 2
-	L = lc - span / 2 + (s - 1) * dl
+	L = 26 + ((s - 1) % 5) * 14
 	C = sqrt(LAB_A ^ 2 + LAB_B ^ 2); hu = atan2(LAB_B, LAB_A)
-	a = hu + (s - (n + 1) / 2) * 8 * 3.14159265 / 180
+	a = hu + ((s - 3) * 11 + int((s - 1) / 5) * 40) * 3.14159265 / 180
 	return hex_of(L, C * cos(a), C * sin(a))
 }

@@ -115,6 +115,12 @@ polecap() {
 	tf=$(sed -n 's/^# published Frisvad 2012: .*one_plus_t \([-0-9.e+]*\),.*/\1/p' "$RUN/threshold.csv" 2>/dev/null | head -1)
 	tm=$(sed -n 's/^# published Max 2017: .*one_plus_t \([-0-9.e+]*\),.*/\1/p' "$RUN/threshold.csv" 2>/dev/null | head -1)
 	prov=$(sed -n 's/^# grid: \([0-9]*\) values.* x \([0-9]*\) azimuths.*/\1 values of 1 + n.z x \2 azimuths/p' "$pc")
+	# the thresholds in the axis's coordinates: the axis is 1 + n.z before
+	# rounding to float, the test n.z < t is on the float n.z, and near -1
+	# floats are u = 2^-24 apart, so n.z rounds below t = -1 + k u exactly
+	# when 1 + n.z < (k - 1/2) u
+	tf=$(echo "${tf:-0}" | awk '{ u = 2 ^ -24; k = int($1 / u + 0.5); print (k > 0 ? (k - 0.5) * u : 0) }')
+	tm=$(echo "${tm:-0}" | awk '{ u = 2 ^ -24; k = int($1 / u + 0.5); print (k > 0 ? (k - 0.5) * u : 0) }')
 	pcv="cbmin=$3; cbmax=0; ymin=$1; ymax=$2; tfris=${tf:-0}; tmax=${tm:-0}"
 	gp polecap.gp "$pcv; files='$pcf'; names='$pcm'; out='$PCDIR/polecap_float'; ttl='float: the southern cap, $prov (unit inputs rounded to float; polecap.csv)'"
 	two=$(for m in frisvad duff; do [ -s "$W/pc_$m.dat" ] && printf '%s ' "$m"; done)
@@ -191,26 +197,29 @@ for P in float double; do
 
 	# 3. maps and continuity, from grid.csv
 	if [ -f "$RUN/grid.csv" ]; then
-		mfiles=""; mnames=""; k=0
-		for m in $pmethods; do
+		# one panel per method of either precision, in the same place in
+		# float and double (a method with no rows in this one: "-", a
+		# blank panel); the colour: the defect in units of u (2^-24 float,
+		# 2^-53 double), log2, from 1/4 u to 64 u, so that the seams of
+		# the accurate methods show; a larger defect saturates, zero sits
+		# at the bottom
+		U=$(awk -v p="$P" 'BEGIN { print (p == "float") ? 2 ^ -24 : 2 ^ -53 }')
+		mfiles=""; mnames=""; k=0; have=0
+		for m in $(awk '{ print $1 }' "$W/styles_all"); do
 			f="$W/map_${P}_$m.dat"
-			awk -F, -v m="$m" -v p="$P" -v fl="$FLOOR" -v ce="$CEIL" '
-				function v(x) { return (x == "inf" || x == "nan" || x == "-nan") ? ce : (x + 0 == 0 ? fl : x) }
+			awk -F, -v m="$m" -v p="$P" -v u="$U" '
 				!/^#/ && $1 == m && $2 == p { if ($3 != last && NR > 1 && started) print ""; last = $3; started = 1
-					print $6 * 57.29577951308232, $5, (($7 == "inf" || $7 == "nan" || $7 == "-nan") ? "nan" : log(v($7)) / log(10)) }' "$RUN/grid.csv" > "$f"
-			[ -s "$f" ] || continue
+					x = $7; v = (x == "inf" || x == "nan" || x == "-nan") ? "nan" : (x + 0 <= u / 4 ? -2 : log(x / u) / log(2))
+					if (v != "nan" && v > 6) v = 6
+					print $6 * 57.29577951308232, $5, v }' "$RUN/grid.csv" > "$f"
+			if [ -s "$f" ]; then have=$((have + 1)); else f=-; fi
 			mfiles="$mfiles $f"; mnames="$mnames $m"; k=$((k + 1))
 		done
-		if [ $k -gt 0 ]; then
+		if [ $have -gt 0 ]; then
 			ncols=6; [ $k -lt 6 ] && ncols=$k
 			nrows=$(( (k + ncols - 1) / ncols ))
-			cells=$(awk -F, '!/^#/ && $1 != "method" { n++ } END { print n }' "$RUN/grid.csv")
-			# the colour scale: from the smallest value in the data (at
-			# most the floor) to 0, in whole decades
-			# shellcheck disable=SC2086
-			lo=$(cat $mfiles | awk -v f=$FLOOR 'NF == 3 && $3 != "nan" && (!n++ || $3 < m) { m = $3 } END { fl = log(f) / log(10); if (!n || m < fl) m = fl; print (m == int(m)) ? m : int(m) - (m < 0) }')
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=$lo; cbmax=0; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error); zero drawn at $FLOOR'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them)'"
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error)'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them); blank: no rows in $P'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

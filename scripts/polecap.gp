@@ -7,7 +7,8 @@
 # Called by plots.sh with: out, ttl, files (one per panel, lines "azimuth
 # log10(1+n.z) half-width half-height log10(defect)|nan", a regular grid
 # row by row), names, cbmin,
-# cbmax, ymin, ymax, tfris, tmax (1 + t of the two thresholds, 0: none),
+# cbmax, ymin, ymax, tfris, tmax (where the two thresholds fall on the
+# axis, 1 + n.z before rounding: below it the float n.z is below t; 0: none),
 # here; optional single=1 (the README's figure: W_SINGLE wide)
 load here."/style.gp"
 set datafile separator whitespace
@@ -42,13 +43,15 @@ do for [term_i = 1:NTERM] {
         set xlabel "azimuth (degrees)" font F_AXIS
         set ylabel (i == 1 ? "1 + n.z of the input (before rounding to float)" : "1 + n.z") font F_AXIS
         unset arrow; unset label
+        # the lines' key, under the panels, off the data
+        if (i == 1 && (tfris > 0 || tmax > 0)) {
+            set label 90 "white lines: ".(tfris > 0 ? "dashed, Frisvad 2012's t" : "").(tfris > 0 && tmax > 0 ? "; " : "").(tmax > 0 ? "dotted, Max 2017's t" : "")." (below a line the float n.z is below t: the fallback branch)" at screen 0.46, screen 0.03 center font F_TICK
+        }
         if (tfris > 0) {
             set arrow 1 from 0, log10(tfris) to 360, log10(tfris) nohead lw 1.5 dt 2 lc rgb "#ffffff" front
-            set label 1 "Frisvad's t" at 358, log10(tfris) right offset 0,0.6 tc rgb "#ffffff" font F_TICK front
         }
         if (tmax > 0) {
             set arrow 2 from 0, log10(tmax) to 360, log10(tmax) nohead lw 1.5 dt 3 lc rgb "#ffffff" front
-            set label 2 "Max's t" at 358, log10(tmax) right offset 0,0.6 tc rgb "#ffffff" font F_TICK front
         }
         if (i == n) {
             set colorbox user origin screen 0.87, screen 0.16 size screen 0.018, screen 0.68

@@ -1,12 +1,12 @@
 # styles.awk - the program of scripts/styles.sh (which see), with
 # scripts/lab.awk's colour functions.
 BEGIN {
-	while ((getline l < L) > 0) { split(l, a, " "); fam[a[1]] = a[2]; if (!(a[2] in forder)) forder[a[2]] = ++nf0 }
+	while ((getline l < L) > 0) { split(l, a, " "); fam[a[1]] = a[2]; rix[a[1]] = ++nreg; if (!(a[2] in forder)) forder[a[2]] = ++nf0 }
 	# Okabe-Ito (2008) without its yellow, which vanishes on white, and
-	# without its black; then darker stand-ins for more groups (registry
+	# without its black; then other saturated hues for more groups (registry
 	# order: naive orange, hughes_moeller green, frisvad vermillion, duff
 	# blue, ...)
-	nh = split("#E69F00 #009E73 #D55E00 #0072B2 #CC79A7 #56B4E9 #8C6D00 #5C3A92 #7A7A7A #A6761D #1B9E77 #E7298A", hue, " ")
+	nh = split("#E69F00 #009E73 #D55E00 #0072B2 #CC79A7 #56B4E9 #8C6D00 #5C3A92 #E7298A #66A61E #17BECF #BCBD22", hue, " ")
 	split("7 5 9 11 13 15", pts, " ")
 	split(HEAD, h, " "); for (i in h) head[h[i]] = 1
 }
@@ -41,7 +41,11 @@ END {
 		nf1 = 1000 + nx
 		if (!(g in gorder) || forder[f] < gorder[g]) gorder[g] = forder[f]
 		if (!(g in nv)) { ng++; grs[ng] = g }
-		k = ++nv[g]; mem[g, k] = m; mfo[g, k] = forder[f] * 10000 + q
+		# within a group: by family, then the registry's order, then
+		# methods outside it (frisvad_rotate) in the run's order, so that a
+		# method's shade is the same in every chart
+		b = m; sub(/\+fma$/, "", b)
+		k = ++nv[g]; mem[g, k] = m; mfo[g, k] = forder[f] * 100000 + ((b in rix) ? rix[b] * 10 : 50000 + q) + (m != b)
 	}
 	# groups in registry order; within a group, members by family, then run order
 	for (i = 1; i <= ng; i++) for (j = i + 1; j <= ng; j++)

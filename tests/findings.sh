@@ -1,7 +1,9 @@
 #!/bin/sh
 # findings.sh - the Findings quote the committed reference run: regenerate
 # docs/findings.md's section and the README's headline findings from
-# results/reference/*.csv (scripts/findings.sh) and compare; the README
+# results/reference/*.csv (scripts/findings.sh) and compare; the same for
+# docs/charts.md's captions (--charts), with a broken caption and a broken
+# CSV that must fail; the README
 # has at most ten headlines; docs/certify.md's results and include/libonb/onb.h's
 # proven bounds quote results/certify/certify.csv the same way.
 . "$(dirname "$0")/lib.sh"
@@ -9,6 +11,19 @@ sh scripts/findings.sh --check docs/findings.md && ok || bad "docs/findings.md d
 sh scripts/findings.sh --headlines --check README.md && ok || bad "README's headline findings differ from scripts/findings.sh --headlines"
 sh scripts/findings.sh --certify --check docs/certify.md && ok || bad "docs/certify.md's results differ from results/certify (scripts/findings.sh --certify)"
 sh scripts/findings.sh --onbh --check include/libonb/onb.h && ok || bad "include/libonb/onb.h's proven bounds differ from results/certify (scripts/findings.sh --onbh)"
+sh scripts/findings.sh --charts --check docs/charts.md && ok || bad "docs/charts.md's numbers differ from results/ (scripts/findings.sh --charts)"
+# a deliberately broken caption: one number of docs/charts.md changed, then
+# one value of the CSV it quotes; both must fail the check
+T=$tmp
+n=$(grep -o 'up to [0-9.]*' docs/charts.md | head -1)
+sed "s/$n/${n}9/" docs/charts.md > "$T/charts.md"
+sh scripts/findings.sh --charts --check "$T/charts.md" >/dev/null 2>&1 && bad "a changed caption number ($n -> ${n}9) passed the check" || ok
+mkdir -p "$T/r/reference" "$T/r/polecap" "$T/r/certify" "$T/r/poles"
+cp -r results/reference/*.csv results/reference/renders results/reference/fma results/reference/mutation.txt "$T/r/reference/"
+cp -r results/poles/north results/poles/south "$T/r/poles/"; cp results/certify/certify.csv "$T/r/certify/"
+awk -F, '!/^#/ && $1 != "one_plus_nz" && $3 + 0 > m { m = $3 + 0; l = NR } { r[NR] = $0 } END { for (i = 1; i <= NR; i++) { if (i == l) { split(r[i], a, ","); a[3] = a[3] * 1.5; r[i] = a[1]; for (k = 2; k in a; k++) r[i] = r[i] "," a[k] } print r[i] } }' \
+	results/polecap/polecap.csv > "$T/r/polecap/polecap.csv"
+REF="$T/r/reference" sh scripts/findings.sh --charts --check docs/charts.md >/dev/null 2>&1 && bad "a changed polecap.csv passed the caption check" || ok
 n=$(sed -n '/^<!-- headlines:begin/,/^<!-- headlines:end/p' README.md | grep -c '^[0-9][0-9]*\. ')
 [ "$n" -ge 1 ] && [ "$n" -le 10 ] && ok || bad "README: $n headline findings, want 1 to 10"
 finish findings

@@ -42,7 +42,10 @@
  * random numbers) and writes |image - reference| on a colour scale from
  * black (0) through blue and red to yellow (DIFF_MAX = 0.05 or more),
  * NaN in a colour of its own (cyan), with the scale as a bar under the
- * image, numbered 0, 0.025 and >=0.05, and a cyan swatch named NaN.
+ * image, numbered 0, 0.025 and >=0.05, a cyan swatch named NaN, and a line
+ * naming the quantity and its largest value ("|image - double reference|:
+ * max 0.156"; with --obj "|image - exact frame|";
+ * "max 0" when the images are identical), in a 5x7 font drawn 2x.
  * Both images are written UP (3) times their size, nearest-neighbour,
  * so that each rendered pixel stays one visible square.
  */
@@ -57,7 +60,7 @@
 #define W 160
 #define H 120
 #define UP 3       /* the written images: UP x UP pixels per rendered pixel */
-#define STRIP 34   /* the written diff image's legend strip, in its pixels */
+#define STRIP 58   /* the written diff image's legend strip, in its pixels */
 
 /* ---- PNG: zlib stored blocks, crc32, adler32 ---- */
 static unsigned long crc_table[256];
@@ -657,24 +660,31 @@ static unsigned char pal_index(double v)
 	return (unsigned char)((SCALE_N - 1) * v + 0.5);
 }
 
-/* A 3x5 pixel font for the legend: the glyphs of "0123456789.>=Na",
-   each 5 rows of 3 bits (most significant: left). */
-static const char *const FONT_CHARS = "0123456789.>=Na";
-static const unsigned char FONT[15][5] = {
-	{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
-	{7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
-	{0, 0, 0, 0, 2}, {4, 2, 1, 2, 4}, {0, 7, 0, 7, 0}, {5, 7, 7, 7, 5}, {0, 6, 1, 7, 7}};
+/* A 5x7 pixel font for the legend (the HD44780's glyphs): the characters
+   of FONT_CHARS, each 7 rows of 5 bits (most significant: left). */
+static const char *const FONT_CHARS = "0123456789.>=|-:Nabcdefgilmnorstux";
+static const unsigned char FONT[][7] = {
+	{14, 17, 19, 21, 25, 17, 14}, {4, 12, 4, 4, 4, 4, 14}, {14, 17, 1, 2, 4, 8, 31}, {31, 2, 4, 2, 1, 17, 14},
+	{2, 6, 10, 18, 31, 2, 2}, {31, 16, 30, 1, 1, 17, 14}, {6, 8, 16, 30, 17, 17, 14}, {31, 1, 2, 4, 8, 8, 8},
+	{14, 17, 17, 14, 17, 17, 14}, {14, 17, 17, 15, 1, 2, 12}, {0, 0, 0, 0, 0, 12, 12}, {8, 4, 2, 1, 2, 4, 8},
+	{0, 0, 31, 0, 31, 0, 0}, {4, 4, 4, 4, 4, 4, 4}, {0, 0, 0, 31, 0, 0, 0}, {0, 12, 12, 0, 12, 12, 0},
+	{17, 17, 25, 21, 19, 17, 17}, {0, 0, 14, 1, 15, 17, 15}, {16, 16, 22, 25, 17, 17, 30}, {0, 0, 14, 16, 16, 17, 14}, {1, 1, 13, 19, 17, 17, 15},
+	{0, 0, 14, 17, 31, 16, 14}, {6, 9, 8, 28, 8, 8, 8}, {0, 15, 17, 17, 15, 1, 14}, {4, 0, 12, 4, 4, 4, 14},
+	{12, 4, 4, 4, 4, 4, 14}, {0, 0, 26, 21, 21, 17, 17}, {0, 0, 22, 25, 17, 17, 17}, {0, 0, 14, 17, 17, 17, 14},
+	{0, 0, 22, 25, 16, 16, 16}, {0, 0, 14, 16, 14, 1, 30}, {8, 8, 28, 8, 8, 9, 6}, {0, 0, 17, 17, 17, 19, 13},
+	{0, 0, 17, 10, 4, 10, 17}};
 
-/* text at (x, y) of an image w wide, each font pixel s x s, in entry c */
+/* text at (x, y) of an image w wide, each font pixel s x s, in entry c
+   (a space, or a character without a glyph, leaves a gap) */
 static void draw_text(unsigned char *img, int w, int x, int y, int s, const char *t, unsigned char c)
 {
-	for (; *t; t++, x += 4 * s) {
+	for (; *t; t++, x += 6 * s) {
 		const char *g = strchr(FONT_CHARS, *t);
 		int r, b, i, j;
 		if (!g || *t == '\0') continue;
-		for (r = 0; r < 5; r++)
-			for (b = 0; b < 3; b++)
-				if (FONT[g - FONT_CHARS][r] >> (2 - b) & 1)
+		for (r = 0; r < 7; r++)
+			for (b = 0; b < 5; b++)
+				if (FONT[g - FONT_CHARS][r] >> (4 - b) & 1)
 					for (i = 0; i < s; i++)
 						for (j = 0; j < s; j++)
 							img[(size_t)(y + r * s + i) * (size_t)w + (size_t)(x + b * s + j)] = c;
@@ -699,10 +709,13 @@ static int write_up(const char *path, const unsigned char *pix, const unsigned c
 }
 
 /* The diff image's legend: the scale as a bar (0 to DIFF_MAX over the
-   left 3/4), its numbers, and a NaN swatch; STRIP rows of W * UP. */
-static void diff_legend(unsigned char *strip)
+   left 3/4), its numbers, a NaN swatch, and a line naming the quantity
+   and its largest value ("max 0" when the images are identical); STRIP
+   rows of W * UP. */
+static void diff_legend(unsigned char *strip, const char *what, double maxd)
 {
 	const int w = W * UP, bar = w * 3 / 4 - 24, s = 2;
+	char line[64];
 	int x, y;
 	memset(strip, 0, (size_t)STRIP * (size_t)w);
 	for (y = 4; y < 16; y++) {
@@ -712,14 +725,18 @@ static void diff_legend(unsigned char *strip)
 			strip[y * w + x] = PAL_NAN;
 	}
 	draw_text(strip, w, 12, 20, s, "0", PAL_TEXT);
-	draw_text(strip, w, 12 + bar / 2 - 5 * 4 * s / 2, 20, s, "0.025", PAL_TEXT);
-	draw_text(strip, w, 12 + bar - 6 * 4 * s, 20, s, ">=0.05", PAL_TEXT);
-	draw_text(strip, w, w - 60, 20, s, "NaN", PAL_TEXT);
+	draw_text(strip, w, 12 + bar / 2 - 5 * 6 * s / 2, 20, s, "0.025", PAL_TEXT);
+	draw_text(strip, w, 12 + bar - 6 * 6 * s, 20, s, ">=0.05", PAL_TEXT);
+	draw_text(strip, w, w - 66, 20, s, "NaN", PAL_TEXT);
+	if (maxd == 0) snprintf(line, sizeof line, "|image - %s|: max 0", what);
+	else snprintf(line, sizeof line, "|image - %s|: max %.3f", what, maxd);
+	draw_text(strip, w, 12, 40, s, line, PAL_TEXT);
 }
 
-/* --diff: |img - ref| on the colour scale, written to path; prints the
-   summary line make render collects (renders/summary.txt). */
-static int write_diff(const char *path, const char *name, int fl, const double *img, const double *ref)
+/* --diff: |img - ref| on the colour scale, written to path, its legend
+   naming ref as `what`; prints the summary line make render collects
+   (renders/summary.txt). */
+static int write_diff(const char *path, const char *name, int fl, const char *what, const double *img, const double *ref)
 {
 	static unsigned char pix[W * H], plte[768], strip[STRIP * W * UP];
 	double maxd = 0, sumd = 0;
@@ -734,7 +751,7 @@ static int write_diff(const char *path, const char *name, int fl, const double *
 		colour(k / (SCALE_N - 1.0), plte + 3 * k);
 	memset(plte + 3 * PAL_TEXT, 255, 3);
 	plte[3 * PAL_NAN] = 0; plte[3 * PAL_NAN + 1] = 255; plte[3 * PAL_NAN + 2] = 255;
-	diff_legend(strip);
+	diff_legend(strip, what, maxd);
 	if (write_up(path, pix, strip, STRIP, plte) != 0) {
 		fprintf(stderr, "aorender: cannot write '%s'\n", path);
 		return 1;
@@ -826,7 +843,7 @@ int main(int argc, char **argv)
 			render_mesh(&sc, m, fl, 1, spp, ref);
 		else
 			render(onb_find("duff_branchless"), 0, spp, ref);
-		if (write_diff(diff, name, fl, img, ref) != 0)
+		if (write_diff(diff, name, fl, obj ? "exact frame" : "double reference", img, ref) != 0)
 			return 1;
 	}
 	if (obj) {

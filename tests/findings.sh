@@ -11,6 +11,15 @@ sh scripts/findings.sh --check docs/findings.md && ok || bad "docs/findings.md d
 sh scripts/findings.sh --headlines --check README.md && ok || bad "README's headline findings differ from scripts/findings.sh --headlines"
 sh scripts/findings.sh --certify --check docs/certify.md && ok || bad "docs/certify.md's results differ from results/certify (scripts/findings.sh --certify)"
 sh scripts/findings.sh --onbh --check include/libonb/onb.h && ok || bad "include/libonb/onb.h's proven bounds differ from results/certify (scripts/findings.sh --onbh)"
+sh scripts/findings.sh --quotes --check && ok || bad "a number quoted in docs/ differs from results/ (scripts/quotes.in)"
+# docs/scene.md's cube example: every line it shows is in a fresh run's output
+cube=/usr/share/assimp/models/OBJ/cube_usemtl.obj
+if [ -f "$cube" ] && [ -x ./onbstudy ]; then
+	./onbstudy scene "$cube" > "$tmp/cube.out" 2>&1
+	awk -v c="$cube" 'index($0, "$ ./onbstudy scene " c) == 1 { on = 1; next } on && /^```/ { exit } on' docs/scene.md > "$tmp/cube.doc"
+	[ -s "$tmp/cube.doc" ] && ok || bad "docs/scene.md: the cube example is gone"
+	while IFS= read -r l; do grep -qxF -- "$l" "$tmp/cube.out" || { bad "docs/scene.md's cube example says '$l', the run does not"; break; }; done < "$tmp/cube.doc"
+fi
 sh scripts/findings.sh --charts --check docs/charts.md && ok || bad "docs/charts.md's numbers differ from results/ (scripts/findings.sh --charts)"
 # a deliberately broken caption: one number of docs/charts.md changed, then
 # one value of the CSV it quotes; both must fail the check

@@ -290,7 +290,7 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	if (c->band)
 		fprintf(f, "# band: %.17g <= n.z <= %.17g (the first row of each method is this band, not the sphere)\n",
 		        c->band_lo, c->band_hi);
-	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt\n");
+	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt, subnormals kept (no FTZ/DAZ)\n");
 	seeds_provenance(f, ks, nk);
 	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status\n");
 	for (k = 0; k < nk; k++)

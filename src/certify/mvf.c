@@ -11,9 +11,12 @@
  * (u = 2^-24, eta_f = 2^-150 in float; 2^-53 and 2^-1074 in double);
  * round_to uses the tighter form fl(v) = v + d, |d| <= half an ulp of
  * the largest binade v can reach, which implies both.
- * An operation the box proves exact adds no term: a product by 0 or 1, by
- * a power of two that cannot underflow, of two floats in double, a
- * conversion that widens, and x - y with y/2 <= x <= 2y (Sterbenz).
+ * An operation the box proves exact adds no term: a product by 0 or +-1,
+ * by a power of two that cannot underflow, of two floats in double (a
+ * widened float stays a float), a conversion that widens, x + 0, x - 0
+ * and 0 - x (0 a constant or a product by 0), negation, and x - y with
+ * y/2 <= x <= 2y (Sterbenz); each only when the other operand is in the
+ * format of the result.
  *
  * Mean value theorem: for any quantity Q of the outputs,
  *     Q(u, e) = Q(u, 0) + sum_k e_k dQ/de_k(u, xi),  xi between 0 and e,
@@ -233,10 +236,27 @@ static double half_ulp_of(mvf *m, mpfi_srcptr v, int f)
 	return h == 0.0 ? 0x1p-1074 : h;              /* 2^-1075 is not a double */
 }
 
-/* x->v += [-h, h], keeping its sign: rounding maps values >= 0 to >= 0. */
+/* 1 when x has a gradient entry: its value depends on some error term. */
+static int has_grad(const mval *x)
+{
+	int k;
+	for (k = 0; k < x->ng; k++)
+		if (x->nz[k])
+			return 1;
+	return 0;
+}
+
+/* x->v += [-h, h] for a rounding v -> v + d.  Rounding maps values >= 0 to
+   >= 0, so the actual result keeps the sign of V; but in a run with
+   gradients x->v also encloses the points v(theta e) + theta d (0 <= theta
+   <= 1) where the mean value form evaluates, and when v depends on other
+   error terms, v(theta e) can lie below the actual v while theta d is
+   still the actual (negative) d: the sign is kept there only when v does
+   not move with the e's (an input u_i, a constant). */
 static void add_sym(mvf *m, mval *x, double h)
 {
-	const int nonneg = mpfi_is_nonneg(x->v), nonpos = mpfi_is_nonpos(x->v);
+	const int keep = no_grad(m) || !has_grad(x);
+	const int nonneg = keep && mpfi_is_nonneg(x->v), nonpos = keep && mpfi_is_nonpos(x->v);
 	mpfi_interv_d(m->t1, -h, h);
 	mpfi_add(x->v, x->v, m->t1);
 	if (nonneg || nonpos) {
@@ -261,6 +281,10 @@ static void round_to(mvf *m, cv r, int f)
 }
 
 static int is_cst(const mval *x, double v) { return x->is_cst && x->cval == v; }
+
+/* x is 0 at every point of the box and for every e (a constant 0, a
+   product by 0): v + 0 and v - 0 are v, exact when v is in the format. */
+static int is_zero(const mval *x) { return is_cst(x, 0.0) || mpfi_is_zero(x->v); }
 
 static int is_pow2(const mval *x)
 {
@@ -312,19 +336,21 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 	case MVF_CVT:
 		return f == CM_F64 || a->fmt == CM_F32;
 	case MVF_MUL:
-		if (is_cst(a, 0.0) || is_cst(b, 0.0) || is_cst(a, 1.0) || is_cst(b, 1.0) ||
-		    is_cst(a, -1.0) || is_cst(b, -1.0))
+		if (is_zero(a) || is_zero(b))
+			return 1;
+		if (((is_cst(a, 1.0) || is_cst(a, -1.0)) && b->fmt <= f) ||
+		    ((is_cst(b, 1.0) || is_cst(b, -1.0)) && a->fmt <= f))
 			return 1;
 		if (f == CM_F64 && a->fmt == CM_F32 && b->fmt == CM_F32)
 			return 1; /* 24 + 24 bits fit in 53 */
-		if (is_pow2(a) || is_pow2(b)) {
+		if ((is_pow2(a) && b->fmt <= f) || (is_pow2(b) && a->fmt <= f)) {
 			mpfi_mig(m->f1, r->v);
 			return mpfr_cmp_d(m->f1, normal_min(f)) >= 0;
 		}
 		return 0;
 	case MVF_ADD:
 	case MVF_SUB:
-		if (is_cst(a, 0.0) || is_cst(b, 0.0))
+		if ((is_zero(a) && b->fmt <= f) || (is_zero(b) && a->fmt <= f))
 			return 1;
 		return sterbenz(m, a, b, op == MVF_ADD, f);
 	default:
@@ -431,8 +457,14 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		r->fmt = a->fmt;
 	} else if (!exact_op(m, op, f, a, b, r)) {
 		round_to(m, ir, f);
+	} else if ((op == MVF_ADD || op == MVF_SUB) && (is_zero(a) || is_zero(b))) {
+		r->fmt = is_zero(a) ? b->fmt : a->fmt;   /* +-v itself */
 	} else if (op == MVF_CVT) {
-		r->rsqrt_of = a->rsqrt_of;  /* a widening keeps a seed a seed */
+		/* a widening keeps the value a float (so a product of two
+		   widened floats in double is exact), and a seed a seed */
+		if (a->fmt < r->fmt)
+			r->fmt = a->fmt;
+		r->rsqrt_of = a->rsqrt_of;
 		r->rel_lo = a->rel_lo;
 		r->rel_hi = a->rel_hi;
 	}
@@ -552,7 +584,15 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->nograd = mode == MVF_VALUES;
 	for (i = 0; i < 3; i++)
 		in[i] = fresh(m, b->prec);
-	mpfi_interv_d(m->t1, b->z_lo, b->z_hi);                 /* z             */
+	if (b->has_zpoint) {   /* zpoint + [dz_lo, dz_hi], rounded outward */
+		mpfr_set_d(m->f1, b->zpoint, MPFR_RNDN);
+		mpfr_add_d(m->f1, m->f1, b->dz_lo, MPFR_RNDD);
+		mpfr_set_d(m->f2, b->zpoint, MPFR_RNDN);
+		mpfr_add_d(m->f2, m->f2, b->dz_hi, MPFR_RNDU);
+		mpfi_interv_fr(m->t1, m->f1, m->f2);
+	} else {
+		mpfi_interv_d(m->t1, b->z_lo, b->z_hi);             /* z             */
+	}
 	mpfi_d_sub(m->s1, 1.0, m->t1);
 	mpfi_add_d(m->s2, m->t1, 1.0);
 	mpfi_mul(m->s1, m->s1, m->s2);

@@ -20,6 +20,11 @@ typedef struct {
 	   at e = 0, so every quantity takes its centre Q(U, 0). */
 	int has_zpoint;
 	double zpoint;
+	/* has_zpoint: the u.z of the box are exactly zpoint + [dz_lo, dz_hi].
+	   The ends of a rounding cell in double are midpoints between doubles,
+	   which are no doubles: z_lo and z_hi are then only the nearest doubles
+	   to them (for sampling), and the bound reads dz_lo, dz_hi. */
+	double dz_lo, dz_hi;
 } mvf_box;
 
 /* Runs: the values and gradients over the box (MVF_FULL), the values with

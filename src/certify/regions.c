@@ -7,6 +7,9 @@
 #include "regions.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
+/* The error of cert_phi_deg's azimuth, in radians, with a margin of 6
+   (region_box). */
+#define PHI_SLACK 1e-14
 
 double cert_phi_deg(double x, double y)
 {
@@ -87,15 +90,21 @@ void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 	b->nz_lo = r->nz_lo;
 	b->nz_hi = r->nz_hi;
 	b->has_zpoint = 0;
-	b->zpoint = 0.0;
+	b->zpoint = b->dz_lo = b->dz_hi = 0.0;
 	b->z_lo = fmax(-1.0, r->nz_lo - w * fabs(r->nz_lo) * 1.01 - eta);
 	b->z_hi = fmin(1.0, r->nz_hi + w * fabs(r->nz_hi) * 1.01 + eta);
 	zmax = fmax(fabs(b->z_lo), fabs(b->z_hi));   /* r = sqrt(1 - z^2) is least there */
 	rmin = sqrt(fmax(0.0, (1.0 - zmax) * (1.0 + zmax)));
-	/* the azimuth of n differs from u's by at most 2u + 2 eta / r radians */
+	/* the azimuth of n differs from u's by at most 2u + 2 eta / r radians
+	   (n = (1 + t) u with a tolerance: the same azimuth); and membership
+	   is decided on cert_phi_deg's phi, which atan2 (within an ulp of pi),
+	   the conversion to degrees and the wrap to [0, 360) (each within half
+	   an ulp of 360 degrees) put within 1.7e-15 rad of n's azimuth: PHI_SLACK
+	   covers that, so every input a region claims lies in its box */
 	dphi = rmin > 0.0 ? 2.01 * (u + 2.0 * eta / rmin) : INFINITY;
 	if (tolerance >= 0)
-		dphi = 0.0;   /* n = (1 + t) u: the same azimuth */
+		dphi = 0.0;
+	dphi += PHI_SLACK;
 	if (!(dphi < 1e-3)) {
 		b->phi_lo = 0.0;
 		b->phi_hi = 360.0 * DEG;

@@ -275,13 +275,36 @@ static int zvalues(const mvf_box *b, double *zs, int max)
 	return n;
 }
 
-/* The reals that round to the format value z: [z - gap below/2, z + gap above/2]. */
-static void rounding_cell(double z, int prec, double *lo, double *hi)
+/* The reals that round to the format value z (near a pole): z + [dlo, dhi]
+   with dlo = -(gap below)/2, dhi = (gap above)/2, both exact doubles (the
+   gaps are powers of two), cut to [-1, 1].  z + dlo itself is no double
+   in double precision (a midpoint between two doubles): rounded to
+   nearest it would tie to even, to z (an empty cell) or to the next double
+   (a cell twice as wide), so the offsets are kept apart from z. */
+static void rounding_cell(double z, int prec, double *dlo, double *dhi)
 {
 	double up = prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY);
 	double dn = prec == CM_F32 ? (double)nextafterf((float)z, -INFINITY) : nextafter(z, -INFINITY);
-	*lo = z - (z - dn) / 2;
-	*hi = z + (up - z) / 2;
+	*dlo = fmax(-(z - dn) / 2, -1.0 - z);   /* -1 - z exact near -1 (Sterbenz) */
+	*dhi = fmin((up - z) / 2, 1.0 - z);
+}
+
+/* Split a box with n.z given: in its offsets dz from n.z (exact), or in
+   the azimuth, whichever is wider in units of the rounding cell of n.z and
+   of 0.1 rad.  c[0] and c[1] hold copies of b on entry. */
+static int split_cell(const mvf_box *b, mvf_box *c, double u)
+{
+	const double zw = (b->dz_hi - b->dz_lo) / (u * fmax(fabs(b->zpoint), 0x1p-126));
+	const double pw = (b->phi_hi - b->phi_lo) / 0.1, dm = 0.5 * (b->dz_lo + b->dz_hi);
+	if (zw >= pw && dm > b->dz_lo && dm < b->dz_hi) {
+		c[0].dz_hi = c[1].dz_lo = dm;
+		c[0].z_hi = c[1].z_lo = b->zpoint + dm;
+		return 2;
+	}
+	if (b->phi_hi - b->phi_lo < 1e-12)
+		return 0;
+	c[0].phi_hi = c[1].phi_lo = 0.5 * (b->phi_lo + b->phi_hi);
+	return c[0].phi_hi > b->phi_lo && c[0].phi_hi < b->phi_hi ? 2 : 0;
 }
 
 /* Split b: near the poles, once n.z can take at most 8 format values, into
@@ -298,22 +321,18 @@ static int split(const mvf_box *b, mvf_box *c)
 	   of 1 -+ n.z and the first-order form cannot follow it */
 	int i, k = (1.0 + b->z_hi <= 32 * u || 1.0 - b->z_lo <= 32 * u) ? zvalues(b, zs, 8) : 0;
 	for (i = 0; i < k; i++) {
-		double lo, hi;
-		rounding_cell(zs[i], b->prec == CM_F32 ? PREC_FLOAT : PREC_DOUBLE, &lo, &hi);
 		c[i] = *b;
 		c[i].has_zpoint = 1;
 		c[i].zpoint = zs[i];
-		c[i].z_lo = fmax(-1.0, lo);   /* the u.z that round to it */
-		c[i].z_hi = fmin(1.0, hi);
+		rounding_cell(zs[i], b->prec == CM_F32 ? PREC_FLOAT : PREC_DOUBLE, &c[i].dz_lo, &c[i].dz_hi);
+		c[i].z_lo = zs[i] + c[i].dz_lo;   /* the u.z that round to it (nearly) */
+		c[i].z_hi = zs[i] + c[i].dz_hi;
 	}
 	if (k > 0)
 		return k;
-	if (b->has_zpoint) {   /* in units of the rounding cell of n.z, and of 0.1 rad */
-		zw = (b->z_hi - b->z_lo) / (u * fmax(fabs(b->zpoint), 0x1p-126));
-		pw = (b->phi_hi - b->phi_lo) / 0.1;
-		zm = 0.5 * (b->z_lo + b->z_hi);
-	}
 	c[0] = c[1] = *b;
+	if (b->has_zpoint)   /* in units of the rounding cell of n.z, and of 0.1 rad */
+		return split_cell(b, c, u);
 	if (zw >= pw && !isnan(zm) && zm > b->z_lo && zm < b->z_hi) {
 		c[0].z_hi = zm;
 		c[1].z_lo = zm;
@@ -396,7 +415,7 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 {
 	const long cap = e->o->budget + 8;
 	leaf *l = malloc((size_t)cap * sizeof *l);
-	int nl = 1;
+	int nl = 1, i;
 	double worst = INFINITY, at_check = INFINITY;
 	long next_check = STALL_BOXES;
 	if (!l) {
@@ -408,7 +427,7 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	l[0].stuck = 0;
 	e->res->boxes = 1;
 	for (;;) {
-		int i = worst_leaf(l, nl, &worst);
+		i = worst_leaf(l, nl, &worst);
 		mvf_box c[8];
 		double parent;
 		int k, j;
@@ -438,6 +457,9 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	e->res->bound = worst;
 	if (!(worst <= e->o->target * e->res->found))
 		probe_worst_leaves(e, l, nl, PROBE_LEAVES, e->o->samples / 16 + 8);
+	if (e->o->leaf_fn)
+		for (i = 0; i < nl; i++)
+			e->o->leaf_fn(e->o->leaf_arg, &l[i].b, l[i].bound);
 	if (getenv("ONB_CERT_DEBUG"))
 		for (nl--; nl >= 0; nl--)
 			if (l[nl].bound >= worst)

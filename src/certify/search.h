@@ -18,6 +18,10 @@ typedef struct {
 	double target;      /* proven when bound <= target * found (1.25)          */
 	double tolerance;   /* < 0: the default domain                             */
 	uint64_t seed;
+	/* Called with every leaf of the branch and bound and its bound, when
+	   set (tests: every input of the region lies in some leaf). */
+	void (*leaf_fn)(void *arg, const mvf_box *b, double bound);
+	void *leaf_arg;
 } cert_opts;
 
 typedef struct {

@@ -40,7 +40,7 @@ ifneq ($(filter 1 2,$(FLT_EVAL)),)
   FPFLAGS += -fexcess-precision=fast
 endif
 OPT     ?= -O3
-WARN    = -Wall -Wextra -Wpedantic -Wshadow
+WARN    = -Wall -Wextra -Wpedantic -Wshadow -Werror=implicit-function-declaration
 # The library is held to a stricter standard: -Wconversion and -Werror.
 LIBWARN = $(WARN) -Wconversion -Werror
 CFLAGS  ?= -g
@@ -113,13 +113,25 @@ deps: $(B)/deps.stamp
 # --- libonb rules (issue 25) ---
 .PHONY: lib
 lib: libonb.a
+# The scalar entry points (one basis per call: array, outline, checked)
+# are built without basic-block (SLP) vectorization.  With it GCC reads
+# n.y and n.z as one 8-byte (float) or 16-byte (double) load; when the
+# caller has just stored them one at a time, or when the by-value struct
+# comes in two registers that the entry spills, that load cannot be
+# forwarded from the store buffer and a call cost up to 5x the kernel
+# (results/clients/entries.md).  Same bits: SLP reorders no arithmetic.
+# The batch loops keep it (their loads are of arrays written long before).
+ENTRYFLAGS = -fno-tree-slp-vectorize
+ENTRYFLAGS_array = $(ENTRYFLAGS)
+ENTRYFLAGS_outline = $(ENTRYFLAGS)
+ENTRYFLAGS_checked = $(ENTRYFLAGS)
 $(B)/lib/%.o: src/lib/%.c include/libonb/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(BASE) $(LIBWARN) -DONB_COMMON -c $< -o $@
+	$(CC) $(BASE) $(LIBWARN) $(ENTRYFLAGS_$*) -DONB_COMMON -c $< -o $@
 define ONB_SPLIT_RULE
 $(B)/lib/split/$(1)-$(2)-%.o: src/lib/$(1).c include/libonb/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
 	@mkdir -p $$(@D)
-	$$(CC) $$(BASE) $$(LIBWARN) -DONB_ONE=$$* -DONB_ONE_$(3) -c $$< -o $$@
+	$$(CC) $$(BASE) $$(LIBWARN) $$(ENTRYFLAGS_$(1)) -DONB_ONE=$$* -DONB_ONE_$(3) -c $$< -o $$@
 endef
 $(foreach f,$(LIB_SPLIT),$(eval $(call ONB_SPLIT_RULE,$(f),d,D))$(eval $(call ONB_SPLIT_RULE,$(f),f,F)))
 

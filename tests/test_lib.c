@@ -581,6 +581,39 @@ static void test_floor_methods(void)
 	CHECK(comp_differ <= 6 * NFLOOR / 10000, "duff_comp = duff_wide on all but a few components (%d differ)", comp_differ);
 }
 
+/* onb_basis_array[f]'s paths: the header's inline one (through the row's
+   array entry), the library's function itself, and its by-value fallback
+   for a table of the caller's own without array entries: the same bits;
+   a NULL method, or double on a float-only one, touches nothing. */
+static void test_basis_array(void)
+{
+	size_t count, k;
+	const onb_method *all = onb_methods(&count);
+	const double n[3] = { 0.48, 0.6, -0.64 };
+	const float nf[3] = { 0.48f, 0.6f, -0.64f };
+	float z[6];
+	for (k = 0; k < count; k++) {
+		onb_method own = all[k];
+		double a[6], b[6], c[6];
+		float af[6], bf[6], cf[6];
+		int same;
+		own.array = NULL;
+		own.arrayf = NULL;
+		same = onb_basis_arrayf(&all[k], nf, af, af + 3) == ONB_OK && (onb_basis_arrayf)(&all[k], nf, bf, bf + 3) == ONB_OK &&
+		       onb_basis_arrayf(&own, nf, cf, cf + 3) == ONB_OK && !memcmp(af, bf, sizeof af) && !memcmp(af, cf, sizeof af);
+		if (all[k].basis)
+			same = same && onb_basis_array(&all[k], n, a, a + 3) == ONB_OK && (onb_basis_array)(&all[k], n, b, b + 3) == ONB_OK &&
+			       onb_basis_array(&own, n, c, c + 3) == ONB_OK && !memcmp(a, b, sizeof a) && !memcmp(a, c, sizeof a);
+		else {
+			a[0] = 42.0;
+			same = same && onb_basis_array(&all[k], n, a, a + 3) == ONB_BAD_METHOD && a[0] == 42.0;
+		}
+		CHECK(same, "%s: onb_basis_array[f]'s inline, library and by-value paths agree", all[k].name);
+	}
+	z[0] = 42.0f;
+	CHECK(onb_basis_arrayf(NULL, nf, z, z + 3) == ONB_BAD_METHOD && z[0] == 42.0f, "onb_basis_arrayf(NULL) is ONB_BAD_METHOD");
+}
+
 int main(void)
 {
 	printf("test_lib: libonb %s, batch isa %s, hw rsqrt %d\n", ONB_VERSION, onb_batch_isa(), ONB_HAVE_HW_RSQRT);
@@ -589,6 +622,7 @@ int main(void)
 	test_faithful();
 	test_special();
 	test_checked();
+	test_basis_array();
 	test_floor_methods();
 	return check_finish(NULL);
 }

@@ -3,8 +3,8 @@
  * method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST (include/libonb/onb.h),
  * and frisvad_rotate, has each part the study needs, and this test names
  * the part that is missing:
- *   registry   onb_find(name), with the out-of-line and batch kernels of its
- *              precisions (src/lib/registry.c, batch.c)
+ *   registry   onb_find(name), with the out-of-line, array and batch kernels
+ *              of its precisions (src/lib/registry.c, batch.c)
  *   kernel     the study's kernel, which needs the family to be known
  *              (src/methods/kernels.c)
  *   branch     a branch rule for its family (src/methods/branch.inc; -1
@@ -78,6 +78,8 @@ static void check_registry(const char *name)
 	dbl = !(m->flags & ONB_FLOAT_ONLY);
 	part(m->basisf && m->batchf, name, "no float out-of-line or batch kernel", "src/lib/batch.c");
 	part(!dbl || (m->basis && m->batch), name, "no double out-of-line or batch kernel", "src/lib/batch.c");
+	part(m->arrayf && (dbl ? m->array != NULL : m->array == NULL), name,
+	     "no array entry for onb_basis_array[f] (ONB__PTRS)", "src/lib/registry.c");
 	part(bench_call_find(name) != NULL, name, "no inline call loops", "src/bench/bench_calls.c");
 }
 

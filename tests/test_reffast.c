@@ -14,6 +14,7 @@
  * Usage: test_reffast [N] (inputs per distribution, default 2000).
  */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <math.h>
 #include <float.h>

@@ -877,6 +877,8 @@ static inline void ONB__K(duff_compf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 
 typedef void (*onb_basis_fn) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2);
 typedef void (*onb_basisf_fn)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2);
+typedef void (*onb_array_fn) (const double *n, double *b1, double *b2);
+typedef void (*onb_arrayf_fn)(const float  *n, float  *b1, float  *b2);
 
 /* Structure-of-arrays batch: for i < count, (b1[i], b2[i]) = method(n[i]).
    The nine arrays must not overlap.  Bit-identical to the scalar function
@@ -925,6 +927,8 @@ typedef struct onb_method {
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
 	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
+	onb_array_fn  array;      /* onb_NAME_array, double (NULL: float only)     */
+	onb_arrayf_fn arrayf;     /* onb_NAME_arrayf                               */
 	const onb_provenance *prov; /* shipped code: where it is; NULL for papers  */
 } onb_method;
 
@@ -1016,12 +1020,34 @@ ONB_FLOAT_METHOD_LIST(ONB__DECLARE_F)
 	void onb_##m##_arrayf(const float  *n, float  *b1, float  *b2);
 ONB_METHOD_LIST(ONB__DECLARE_ARRAY)
 #undef ONB__DECLARE_ARRAY
-/* method->basis(f) on arrays (3 values each, as above); a NULL method (or
-   function: a float-only method in double) leaves b1, b2 untouched and
-   returns ONB_BAD_METHOD, else ONB_OK (no check of n: see
-   onb_basis_checked). */
+/* method->array(f) (or, for a table of your own without it, method->basis(f))
+   on arrays (3 values each, as above); a NULL method (or function: a
+   float-only method in double) leaves b1, b2 untouched and returns
+   ONB_BAD_METHOD, else ONB_OK (no check of n: see onb_basis_checked). */
 onb_status onb_basis_array (const onb_method *method, const double *n, double *b1, double *b2);
 onb_status onb_basis_arrayf(const onb_method *method, const float  *n, float  *b1, float  *b2);
+/* The same, inline, so that a method chosen at run time costs one indirect
+   call (method->array[f]) more than onb_NAME_array[f].  Through a second
+   call level, the methods whose branches mispredict (stark) cost 1.7x the
+   array entry, not 1.1x (results/clients/entries.md).  No arithmetic here:
+   the client's flags change nothing.  (onb_basis_array)(...) and
+   &onb_basis_array still name the library's functions. */
+static inline onb_status onb__basis_array(const onb_method *method, const double *n, double *b1, double *b2)
+{
+	if (!method || !method->basis || !method->array)
+		return onb_basis_array(method, n, b1, b2);
+	method->array(n, b1, b2);
+	return ONB_OK;
+}
+static inline onb_status onb__basis_arrayf(const onb_method *method, const float *n, float *b1, float *b2)
+{
+	if (!method || !method->basisf || !method->arrayf)
+		return onb_basis_arrayf(method, n, b1, b2);
+	method->arrayf(n, b1, b2);
+	return ONB_OK;
+}
+#define onb_basis_array(method, n, b1, b2) onb__basis_array(method, n, b1, b2)
+#define onb_basis_arrayf(method, n, b1, b2) onb__basis_arrayf(method, n, b1, b2)
 #define ONB__DECLARE_ARRAY_F(m) \
 	void onb_##m##_arrayf(const float *n, float *b1, float *b2);
 ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)

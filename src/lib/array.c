@@ -34,27 +34,60 @@
 ONB__SPLIT(ONB__ARRAY_D, ONB__ARRAY_F)
 
 #if ONB__COMMON
-onb_status onb_basis_array(const onb_method *method, const double *n, double *b1, double *b2)
+/* The registry's rows point to the array entries above, so a method chosen
+   at run time costs one indirect call more than onb_NAME_array[f], with no
+   copy through a by-value struct (onb.h inlines that path too).  A table of the caller's own that lacks
+   them goes through method->basis[f]; its n is copied with memcpy, not
+   three stores into the struct (the struct goes in registers, x and y in
+   one 8-byte lane: a load of two 4-byte stores just made is not forwarded
+   from the store buffer, a stall of about 15 cycles), which needs structs
+   without padding: */
+typedef char onb__vec3_unpadded[sizeof(onb_vec3) == 3 * sizeof(double) ? 1 : -1];
+typedef char onb__vec3f_unpadded[sizeof(onb_vec3f) == 3 * sizeof(float) ? 1 : -1];
+
+/* Apart, so that the usual path below needs no stack frame of its own. */
+#if defined(__GNUC__)
+#define ONB__APART __attribute__((noinline))
+#else
+#define ONB__APART
+#endif
+static ONB__APART onb_status onb__by_value(const onb_method *method, const double *n, double *b1, double *b2)
 {
 	onb_vec3 v, u1, u2;
-	if (!method || !method->basis)
-		return ONB_BAD_METHOD;
-	v.x = n[0]; v.y = n[1]; v.z = n[2];
+	memcpy(&v, n, sizeof v);
 	method->basis(v, &u1, &u2);
 	b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;
 	b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;
 	return ONB_OK;
 }
 
-onb_status onb_basis_arrayf(const onb_method *method, const float *n, float *b1, float *b2)
+static ONB__APART onb_status onb__by_valuef(const onb_method *method, const float *n, float *b1, float *b2)
 {
 	onb_vec3f v, u1, u2;
-	if (!method || !method->basisf)
-		return ONB_BAD_METHOD;
-	v.x = n[0]; v.y = n[1]; v.z = n[2];
+	memcpy(&v, n, sizeof v);
 	method->basisf(v, &u1, &u2);
 	b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;
 	b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;
+	return ONB_OK;
+}
+
+onb_status (onb_basis_array)(const onb_method *method, const double *n, double *b1, double *b2)
+{
+	if (!method || !method->basis)
+		return ONB_BAD_METHOD;
+	if (!method->array)
+		return onb__by_value(method, n, b1, b2);
+	method->array(n, b1, b2);
+	return ONB_OK;
+}
+
+onb_status (onb_basis_arrayf)(const onb_method *method, const float *n, float *b1, float *b2)
+{
+	if (!method || !method->basisf)
+		return ONB_BAD_METHOD;
+	if (!method->arrayf)
+		return onb__by_valuef(method, n, b1, b2);
+	method->arrayf(n, b1, b2);
 	return ONB_OK;
 }
 #endif

@@ -10,9 +10,27 @@
 #define ONB__OUTLINE_D(m)                                                      \
 	void onb_##m##_outline(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)             \
 	{ onb_##m(n, b1, b2); }
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(_WIN32)
+/* GCC on x86-64 (System V ABI): n arrives as x and y in the low 8 bytes of
+   xmm0 and z in xmm1.  Given the struct, GCC spills xmm0 to the stack to
+   reach y (an 8-byte store, then 4-byte loads), which puts a store-to-load
+   forwarding, about 5 cycles, before the kernel's first comparison: for
+   the branchy kernels (stark_fixed: 1.6x the array entry) that was the
+   whole difference.  The same registers declared as a vector of two floats
+   and a float (identical in the ABI) are read with a shuffle instead.
+   The header's declaration is unchanged; the bit tests call this entry
+   through it (tests/test_lib.c: inline == out of line for every method). */
+typedef float onb__xy __attribute__((vector_size(8)));
+#define ONB__OUTLINE_F(m)                                                      \
+	void onb__##m##_outlinef_xy(onb__xy xy, float z, onb_vec3f *b1, onb_vec3f *b2) \
+		__asm__("onb_" #m "_outlinef");                                        \
+	void onb__##m##_outlinef_xy(onb__xy xy, float z, onb_vec3f *b1, onb_vec3f *b2) \
+	{ onb_vec3f n; n.x = xy[0]; n.y = xy[1]; n.z = z; onb_##m##f(n, b1, b2); }
+#else
 #define ONB__OUTLINE_F(m)                                                      \
 	void onb_##m##_outlinef(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)         \
 	{ onb_##m##f(n, b1, b2); }
+#endif
 ONB__SPLIT(ONB__OUTLINE_D, ONB__OUTLINE_F)
 
 #if ONB__COMMON

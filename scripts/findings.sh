@@ -38,6 +38,8 @@
 #   {{RATE key}}        summary.csv's '# rate:' line: evals, secs,
 #                       persec, perthread, threads
 #   {{PTOL}}            the Pareto rule's speed tolerance, in % (tradeoff.csv)
+#   {{INPUTS prec/dist}} summary.csv's '# inputs:' count (float/threshold);
+#                       INPUTSC: with thousands separators
 #   {{GRID}}            the equal-area grid of summary.csv (16x32)
 #   {{BZ method precision distribution bin|max|floor}}  by_nz.csv's bin of
 #                       1 + n.z (log axis) holding the method's largest
@@ -258,6 +260,7 @@ generate() {
 		if (what == "max") return fmt(best)
 		return sprintf("%.2g to %.2g", 10 ^ lo, 10 ^ hi)
 	}
+	function commas(v,   o) { o = ""; while (length(v) > 3 && v ~ /^[0-9]+$/) { o = "," substr(v, length(v) - 2) o; v = substr(v, 1, length(v) - 3) } return v o }
 	function V(path, key, col, comma,   f, line, n, a, i, h, nh, v, o) {
 		f = REF "/../" path; nh = 0
 		while ((getline line < f) > 0) {
@@ -444,6 +447,7 @@ generate() {
 			if (cl[i] ~ /^# rate: /) { split(cl[i], a, " ")
 				RATED["evals"] = a[3]; RATED["secs"] = a[7]; RATED["persec"] = a[10]; RATED["threads"] = a[14]; v = cl[i]; sub(/.*\(/, "", v); sub(/ per thread.*/, "", v); RATED["perthread"] = v }
 			if (match(cl[i], /grid: [0-9]+x[0-9]+/)) GRIDV = substr(cl[i], RSTART + 6, RLENGTH - 6)
+			if (cl[i] ~ /^# inputs: /) { n2 = split(cl[i], a, " "); for (k = 3; k <= n2; k++) { split(a[k], kv, "="); INPUTSD[kv[1]] = kv[2] } }
 		}
 		tf = REF "/threshold.csv"
 		while ((getline line < tf) > 0) {
@@ -496,6 +500,8 @@ generate() {
 			else if (a[1] == "PCH" && nt == 2) rep = PCH(a[2])
 			else if (a[1] == "RATE" && nt == 2) rep = RATE(a[2])
 			else if (a[1] == "PTOL" && nt == 1) rep = (PTOLV == "" ? "?" : PTOLV)
+			else if (a[1] == "INPUTS" && nt == 2) rep = ((a[2] in INPUTSD) ? INPUTSD[a[2]] : "?")
+			else if (a[1] == "INPUTSC" && nt == 2) rep = ((a[2] in INPUTSD) ? commas(INPUTSD[a[2]]) : "?")
 			else if (a[1] == "GRID" && nt == 1) rep = (GRIDV == "" ? "?" : GRIDV)
 			else if (a[1] == "PS" && nt == 5) rep = PS(a[2], a[3], a[4], a[5])
 			else if (a[1] == "CB" && nt == 4) rep = CF(a[2], a[3], a[4])

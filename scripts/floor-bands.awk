@@ -9,7 +9,7 @@
 #     -v out=PREFIX -f floor-bands.awk by_nz.csv
 # writes PREFIX_K.dat (x rms max, by x) per band and prints one line per
 # band: "PREFIX_K.dat panel colour title".  Titles: "floor of A", "floor
-# of A, B", "floor of all N" (every method of the panel), "floor of the
+# of A, B", "floor of all N" (every method of a panel of 3 or more), "floor of the
 # other N" (the N methods of the panel that no other band names);
 # scripts/chart-check.awk checks that each names methods of its own panel
 # and that the counts add up.  Prints nothing when the run has no floor
@@ -59,7 +59,7 @@ END {
 			if (g[j] == i) names = names (names == "" ? "" : ", ") M[j]
 			else { others = others (others == "" ? "" : ", ") M[j]; no++ }
 		}
-		if (cnt[i] > 1 && no == 0) t = "floor of all " cnt[i]
+		if (cnt[i] > 2 && no == 0) t = "floor of all " cnt[i]
 		else if (cnt[i] > 2 && !(PN[i] in other)) { t = "floor of the other " cnt[i]; other[PN[i]] = 1 }
 		else t = "floor of " names
 		print f, PN[i], CO[i], t

@@ -11,6 +11,8 @@
 #     "no finite point".
 #   - no text lies over a drawn line segment or marker of a series;
 #   - every accuracy-floor band names methods drawn in its own panel;
+# that the tradeoff chart's Pareto circles are onbstudy table's (a file
+# whose pareto column breaks the table's rule is refused);
 # and the colours of scripts/styles.sh: within a hue group every two
 # shades differ by a CIELAB delta-E of at least 15, none is near-black,
 # duff and duff_branchless share a group and sit side by side.
@@ -89,6 +91,15 @@ for want in "\"a label on the line\" lies over data (frisvad)" "floor of duff_br
 	"\"accuracy floor (RMS to max)\" does not name whose floor" "\"floor of all 3\": its plot draws 1 methods"; do
 	echo "$out" | grep -qF "$want" && ok || bad "chart check missed: $want (it said: $out)"
 done
+# the Pareto circles are onbstudy table's: tradeoff-data.sh redraws the
+# front by the table's rule and refuses a file whose pareto column differs
+if [ -f "$T/run/tradeoff.csv" ]; then
+	: > "$T/cols"
+	sh scripts/tradeoff-data.sh "$T/run/tradeoff.csv" float "$T" "$T/cols" && ok || bad "tradeoff-data.sh refused the table's own front"
+	awk -F, 'BEGIN { OFS = "," } /^method,/ { for (i = 1; i <= NF; i++) if ($i == "pareto") c = i; print; next }
+		!/^#/ && $2 == "float" && !done && $c == "0" { $c = "1"; done = 1 } { print }' "$T/run/tradeoff.csv" > "$T/bad_tradeoff.csv"
+	sh scripts/tradeoff-data.sh "$T/bad_tradeoff.csv" float "$T" "$T/cols" 2>/dev/null && bad "tradeoff-data.sh drew a front that is not the table's" || ok
+fi
 # the shades: delta-E >= 15 within a group, nothing near-black, duff and
 # duff_branchless adjacent in one group
 sh scripts/styles.sh results/reference/summary.csv > "$T/sty" && ok || bad "styles.sh failed"

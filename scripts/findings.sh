@@ -55,6 +55,8 @@
 #                       separators (3,451,513)
 #   With --onbh: scripts/onbh.in into include/libonb/onb.h's header comment:
 #   {{ONBH}}                        one comment line per method
+#   {{CR method precision}}  (any mode) bound / found of the whole-sphere
+#                                   row, to 2 decimals
 #   {{CB method precision column}}  (any mode) bound or found of the
 #                                   whole-sphere row of certify.csv
 #   Optional values (issue 16: "n/a" when the reference run predates them,
@@ -318,6 +320,13 @@ generate() {
 		if (c == "bound" && CRT[k, "status"] == "singular") return "singular"
 		return fmt(CRT[k, c])
 	}
+	# bound / found of the whole-sphere row, to 2 decimals ("-" when singular)
+	function CR(m, p,   k) {
+		k = m SUBSEP p SUBSEP "-1" SUBSEP "1" SUBSEP "0" SUBSEP "360"
+		if (!((k, "bound") in CRT)) { print "findings: no whole-sphere row of " m " " p " in certify.csv" > "/dev/stderr"; bad = 1; return "?" }
+		if (CRT[k, "status"] == "singular" || CRT[k, "found"] + 0 == 0) return "-"
+		return sprintf("%.2f", CRT[k, "bound"] / CRT[k, "found"])
+	}
 	function unit(p) { return p == "float" ? 2 ^ -24 : 2 ^ -53 }
 	function inu(v, p) { return v == "inf" ? "inf" : sprintf("%.4g", v / unit(p)) }
 	function ratio(b, f) { return (b == "inf" || f + 0 == 0) ? "-" : sprintf("%.3g", b / f) }
@@ -505,6 +514,7 @@ generate() {
 			else if (a[1] == "GRID" && nt == 1) rep = (GRIDV == "" ? "?" : GRIDV)
 			else if (a[1] == "PS" && nt == 5) rep = PS(a[2], a[3], a[4], a[5])
 			else if (a[1] == "CB" && nt == 4) rep = CF(a[2], a[3], a[4])
+			else if (a[1] == "CR" && nt == 3) rep = CR(a[2], a[3])
 			else { print "findings: bad placeholder {{" tok "}}" > "/dev/stderr"; bad = 1; rep = "?" }
 			line = substr(line, 1, rs - 1) rep substr(line, rs + rl)
 		}

@@ -12,6 +12,11 @@ sh scripts/findings.sh --headlines --check README.md && ok || bad "README's head
 sh scripts/findings.sh --certify --check docs/certify.md && ok || bad "docs/certify.md's results differ from results/certify (scripts/findings.sh --certify)"
 sh scripts/findings.sh --onbh --check include/libonb/onb.h && ok || bad "include/libonb/onb.h's proven bounds differ from results/certify (scripts/findings.sh --onbh)"
 sh scripts/findings.sh --quotes --check && ok || bad "a number quoted in docs/ differs from results/ (scripts/quotes.in)"
+# and a doc whose quoted rate is changed must fail it
+mkdir -p "$tmp/qq/docs" && cp docs/*.md "$tmp/qq/docs/" && cp README.md "$tmp/qq/"
+sed 's/ referenced evaluations, \([0-9]*\) per second per thread/ referenced evaluations, 1\1 per second per thread/' docs/sweep.md > "$tmp/qq/docs/sweep.md"
+cmp -s docs/sweep.md "$tmp/qq/docs/sweep.md" && bad "the quotes fixture changed nothing" || ok
+(cd "$tmp/qq" && REF="$OLDPWD/results/reference" sh "$OLDPWD/scripts/findings.sh" --quotes --check >/dev/null 2>&1) && bad "a changed rate in docs/sweep.md passed the quotes check" || ok
 # docs/scene.md's cube example: every line it shows is in a fresh run's output
 cube=/usr/share/assimp/models/OBJ/cube_usemtl.obj
 if [ -f "$cube" ] && [ -x ./onbstudy ]; then

@@ -55,4 +55,9 @@ build/tests/test_sampling > "$OUT/sampling.txt"
 sh scripts/findings.sh --update docs/findings.md
 sh scripts/findings.sh --headlines --update README.md
 sh scripts/reproduce-md.sh --update docs/findings.md
+# the chart captions, the sweep's rate in docs/sweep.md and docs/scene.md's
+# cube example quote this run too
+sh scripts/findings.sh --charts --update docs/charts.md
+sh scripts/findings.sh --section sweeprate --update docs/sweep.md
+sh scripts/scene-example.sh --update
 echo "reference: $(du -sh "$OUT" | cut -f1) in $OUT"

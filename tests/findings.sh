@@ -12,19 +12,14 @@ sh scripts/findings.sh --headlines --check README.md && ok || bad "README's head
 sh scripts/findings.sh --certify --check docs/certify.md && ok || bad "docs/certify.md's results differ from results/certify (scripts/findings.sh --certify)"
 sh scripts/findings.sh --onbh --check include/libonb/onb.h && ok || bad "include/libonb/onb.h's proven bounds differ from results/certify (scripts/findings.sh --onbh)"
 sh scripts/findings.sh --quotes --check && ok || bad "a number quoted in docs/ differs from results/ (scripts/quotes.in)"
-# and a doc whose quoted rate is changed must fail it
+# and a doc whose quoted figure is changed must fail it
 mkdir -p "$tmp/qq/docs" && cp docs/*.md "$tmp/qq/docs/" && cp README.md "$tmp/qq/"
-sed 's/ referenced evaluations, \([0-9]*\) per second per thread/ referenced evaluations, 1\1 per second per thread/' docs/sweep.md > "$tmp/qq/docs/sweep.md"
-cmp -s docs/sweep.md "$tmp/qq/docs/sweep.md" && bad "the quotes fixture changed nothing" || ok
-(cd "$tmp/qq" && REF="$OLDPWD/results/reference" sh "$OLDPWD/scripts/findings.sh" --quotes --check >/dev/null 2>&1) && bad "a changed rate in docs/sweep.md passed the quotes check" || ok
-# docs/scene.md's cube example: every line it shows is in a fresh run's output
-cube=/usr/share/assimp/models/OBJ/cube_usemtl.obj
-if [ -f "$cube" ] && [ -x ./onbstudy ]; then
-	./onbstudy scene "$cube" > "$tmp/cube.out" 2>&1
-	awk -v c="$cube" 'index($0, "$ ./onbstudy scene " c) == 1 { on = 1; next } on && /^```/ { exit } on' docs/scene.md > "$tmp/cube.doc"
-	[ -s "$tmp/cube.doc" ] && ok || bad "docs/scene.md: the cube example is gone"
-	while IFS= read -r l; do grep -qxF -- "$l" "$tmp/cube.out" || { bad "docs/scene.md's cube example says '$l', the run does not"; break; }; done < "$tmp/cube.doc"
-fi
+sed 's/^| float | \([0-9,]*\) |/| float | 1\1 |/' docs/reference.md > "$tmp/qq/docs/reference.md"
+cmp -s docs/reference.md "$tmp/qq/docs/reference.md" && bad "the quotes fixture changed nothing" || ok
+(cd "$tmp/qq" && REF="$OLDPWD/results/reference" sh "$OLDPWD/scripts/findings.sh" --quotes --check >/dev/null 2>&1) && bad "a changed rate in docs/reference.md passed the quotes check" || ok
+sh scripts/findings.sh --section sweeprate --check docs/sweep.md && ok || bad "docs/sweep.md's reference-run rate differs from summary.csv (scripts/findings.sh --section sweeprate)"
+# docs/scene.md's cube example is what onbstudy scene prints now
+sh scripts/scene-example.sh --check && ok || bad "docs/scene.md's cube example differs from onbstudy scene (sh scripts/scene-example.sh --update)"
 sh scripts/findings.sh --charts --check docs/charts.md && ok || bad "docs/charts.md's numbers differ from results/ (scripts/findings.sh --charts)"
 # a deliberately broken caption: one number of docs/charts.md changed, then
 # one value of the CSV it quotes; both must fail the check

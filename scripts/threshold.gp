@@ -55,7 +55,8 @@ if (nfrows > 0) {
 set logscale y2
 set y2range [y0 / 3 : (nfrows > 0 ? ynf * 6 : y1 * 3)]
 set ytics nomirror
-set y2tics font F_TICK
+set y2tics () font F_TICK
+set my2tics 1
 set format y2 ""
 if (EPS_FLOAT > y0 / 3 && EPS_FLOAT < y1 * 3) {
     set y2tics add ("float eps" EPS_FLOAT)

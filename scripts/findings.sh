@@ -37,6 +37,7 @@
 #   {{PCH key}}         its header: evals, secs, nz, az, procs
 #   {{RATE key}}        summary.csv's '# rate:' line: evals, secs,
 #                       persec, perthread, threads
+#   {{FASTEST precision}}  the fastest method, and what beats it by the rule
 #   {{PTOL}}            the Pareto rule's speed tolerance, in % (tradeoff.csv)
 #   {{INPUTS prec/dist}} summary.csv's '# inputs:' count (float/threshold);
 #                       INPUTSC: with thousands separators
@@ -290,6 +291,24 @@ generate() {
 		close(f)
 		print "findings: no " key " " col " in " f > "/dev/stderr"; bad = 1; return "?"
 	}
+	# the fastest method of a precision and, when it is off the front, one
+	# method that beats it by the rule of onbstudy table (speeds within PTOLV% equal)
+	function werr(m, p,   k) { k = m SUBSEP p; return (TRD[k, "nonfinite"] + 0 > 0 || TRD[k, "max_defect_worst"] ~ /nan|inf/) ? 1e300 : TRD[k, "max_defect_worst"] + 0 }
+	function FASTEST(p,   i, m, f, fs, t, j, s, e, ef) {
+		fs = -1; t = PTOLV / 100
+		for (i = 1; i <= nmeth; i++) { m = meth[i]
+			if (!((m SUBSEP p, "pareto") in TRD) || TRD[m SUBSEP p, "pareto"] == "na") continue
+			if (TRD[m SUBSEP p, "batch_mbases_1t"] + 0 > fs) { fs = TRD[m SUBSEP p, "batch_mbases_1t"] + 0; f = m } }
+		if (fs < 0) { print "findings: no speeds for " p > "/dev/stderr"; bad = 1; return "?" }
+		if (TRD[f SUBSEP p, "pareto"] == "1") return "`" f "`, the fastest at " fmt(fs) " M bases/s, is on it"
+		ef = werr(f, p)
+		for (i = 1; i <= nmeth; i++) { m = meth[i]
+			if (m == f || !((m SUBSEP p, "pareto") in TRD) || TRD[m SUBSEP p, "pareto"] == "na") continue
+			s = TRD[m SUBSEP p, "batch_mbases_1t"] + 0; e = werr(m, p)
+			if (s >= (1 - t) * fs && e <= ef && (e < ef || s > (1 + t) * fs)) return "`" f "`, the fastest at " fmt(fs) " M bases/s, is beaten by `" m "` at " fmt(s)
+		}
+		print "findings: " f " is off the front, but no method beats it" > "/dev/stderr"; bad = 1; return "?"
+	}
 	function PARETO(p,   i, m, out) {
 		out = ""
 		for (i = 1; i <= nmeth; i++) {
@@ -521,6 +540,7 @@ generate() {
 			else if (a[1] == "BZ" && nt == 5) rep = BZ(a[2], a[3], a[4], a[5])
 			else if (a[1] == "PCH" && nt == 2) rep = PCH(a[2])
 			else if (a[1] == "RATE" && nt == 2) rep = RATE(a[2])
+			else if (a[1] == "FASTEST" && nt == 2) rep = FASTEST(a[2])
 			else if (a[1] == "PTOL" && nt == 1) rep = (PTOLV == "" ? "?" : PTOLV)
 			else if (a[1] == "INPUTS" && nt == 2) rep = ((a[2] in INPUTSD) ? INPUTSD[a[2]] : "?")
 			else if (a[1] == "INPUTSC" && nt == 2) rep = ((a[2] in INPUTSD) ? commas(INPUTSD[a[2]]) : "?")

@@ -2,7 +2,7 @@
 #   make            libonb.a and the study CLI ./onbstudy
 #   make lib        libonb.a alone (a C compiler and make; no packages)
 #   make cross-check  arm64 and s390x under qemu (scripts/cross-check.sh)
-#   make test       every test (installs missing packages via scripts/install-deps.sh)
+#   make test       every test (installs missing packages: scripts/install-deps.sh --test)
 #   make bench      the default benchmark run
 #   make plots      charts of the newest run
 #   make mpi        onbstudy-mpi, the MPI driver of the sweep (needs Open MPI's mpicc)
@@ -103,10 +103,21 @@ PROV     = -DONB_GIT_REV='"$(GIT_REV)"' -DONB_CC='"$(shell $(CC) --version | hea
 .PHONY: all test bench plots install uninstall clean deps
 all: libonb.a onbstudy
 
-# Dependencies: installed by the script when missing (a stamp records success).
+# Dependencies: installed by the script when missing (a stamp records
+# success): the study's few for `make`, the charts' for `make plots` and
+# `make render`, and everything the tests and CI use for `make test`
+# (README, "Quick start: the full study", gives what each costs).  The
+# stamps come one after the other: two apt-get runs at once would fight
+# over dpkg's lock under make -j.
 $(B)/deps.stamp: scripts/install-deps.sh
 	@mkdir -p $(B)
 	sh scripts/install-deps.sh
+	@touch $@
+$(B)/plot-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
+	sh scripts/install-deps.sh --plots
+	@touch $@
+$(B)/test-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
+	sh scripts/install-deps.sh --test
 	@touch $@
 deps: $(B)/deps.stamp
 
@@ -201,7 +212,7 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/libonb/onb.h $(wildcard te
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
-test: $(B)/deps.stamp all $(TEST_BIN) $(TEST_AUX)
+test: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX)
 	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
 	for t in tests/*.sh; do [ -f "$$t" ] && [ "$$t" != tests/lib.sh ] || continue; echo "== $$t"; ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1; done; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
@@ -211,7 +222,7 @@ bench: onbstudy
 
 # make plots [RUN=results/<run>]: charts of a run (default results/latest)
 RUN ?= results/latest
-plots: onbstudy
+plots: onbstudy $(B)/plot-deps.stamp
 	sh scripts/plots.sh $(RUN)
 
 # # make robustness: the hardening run (scripts/harden.sh, ~10 min on 2 cores),
@@ -274,7 +285,7 @@ $(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb
 RENDERS = results/reference/renders
 RENDER_GREY = frisvad tangent_cross_z
 .PHONY: render
-render: $(B)/aorender
+render: $(B)/aorender $(B)/plot-deps.stamp
 	@mkdir -p $(RENDERS)
 	$(B)/aorender --method duff_branchless --precision double --out $(RENDERS)/reference-double.png
 	@# every method's difference image; its grey image only for RENDER_GREY
@@ -287,7 +298,7 @@ render: $(B)/aorender
 	@# PNGs; lossless here: every image has at most 256 colours
 	@if command -v pngquant >/dev/null 2>&1; then for f in $(RENDERS)/*.png; do \
 	  pngquant --force --speed 1 --output $$f 256 $$f || exit 1; done; \
-	else echo "render: pngquant missing (scripts/install-deps.sh): the PNGs stay uncompressed"; fi
+	else echo "render: pngquant missing (scripts/install-deps.sh --plots): the PNGs stay uncompressed"; fi
 
 # Man pages (issue 23): man/onbstudy.1 is generated from the commands' own
 # --help by help2man (`make man`, scripts/man.sh; tests/man_pages.sh fails

@@ -16,7 +16,7 @@ set -eu
 cd "$(dirname "$0")/.."
 out=${1:-results/clients}
 rounds=${2:-3}
-command -v clang >/dev/null 2>&1 || { echo "client-bench: clang not installed (scripts/install-deps.sh)" >&2; exit 1; }
+command -v clang >/dev/null 2>&1 || { echo "client-bench: clang not installed (scripts/install-deps.sh --test)" >&2; exit 1; }
 [ -f libonb.a ] || make -s lib
 mkdir -p "$out"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

@@ -18,7 +18,7 @@
 #   4. tests/cross/meshhash on binary PLY in both byte orders (written
 #      here), tests/data/gltf (.gltf and .glb) and assimp's cube_binary.ply
 #      when installed: the same lines as on this host.
-# Needs (scripts/install-deps.sh): gcc-aarch64-linux-gnu,
+# Needs (scripts/install-deps.sh --test): gcc-aarch64-linux-gnu,
 # gcc-s390x-linux-gnu, their libc6-dev-*-cross, qemu-user; and cJSON for
 # each target, which Debian ships only per architecture:
 #   dpkg --add-architecture arm64 && dpkg --add-architecture s390x &&
@@ -47,7 +47,7 @@ W="-Wall -Wextra -Wpedantic -Wshadow"
 fail=0
 for t in aarch64 s390x; do
 	for tool in $t-linux-gnu-gcc $t-linux-gnu-ar qemu-$t; do
-		command -v $tool >/dev/null 2>&1 || { echo "cross-check: $tool not installed (scripts/install-deps.sh)" >&2; exit 1; }
+		command -v $tool >/dev/null 2>&1 || { echo "cross-check: $tool not installed (scripts/install-deps.sh --test)" >&2; exit 1; }
 	done
 	[ -e /usr/lib/$t-linux-gnu/libcjson.so ] || { echo "cross-check: no cJSON for $t (see the comment at the top of $0)" >&2; exit 1; }
 done

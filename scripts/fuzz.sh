@@ -22,7 +22,7 @@ secs=${1:-60}
 case "$secs" in ''|*[!0-9]*) echo "fuzz.sh: SECONDS must be a whole number, got '$secs'" >&2; exit 2;; esac
 CLANG=${CLANG:-clang}
 if ! command -v "$CLANG" >/dev/null 2>&1; then
-	echo "fuzz.sh: $CLANG not found; run scripts/install-deps.sh (clang, libclang-rt-dev)" >&2
+	echo "fuzz.sh: $CLANG not found; run scripts/install-deps.sh --test (clang, libclang-rt-dev)" >&2
 	exit 1
 fi
 out=build/fuzz

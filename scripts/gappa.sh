@@ -15,7 +15,7 @@ set -eu
 cd "$(dirname "$0")/.."
 G=scripts/gappa/duff_branchless_f.g
 out=${1-}
-command -v gappa >/dev/null 2>&1 || { echo "gappa.sh: gappa not found (scripts/install-deps.sh installs it)" >&2; exit 1; }
+command -v gappa >/dev/null 2>&1 || { echo "gappa.sh: gappa not found (scripts/install-deps.sh --test installs it)" >&2; exit 1; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/onb_gappa.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT INT TERM
 rev=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)

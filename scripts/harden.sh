@@ -1,7 +1,7 @@
 #!/bin/sh
 # The hardening checks of issue 7, each with its own time limit; CI runs
 # this after `make test` (.ci/run).  Every step's tool is installed by
-# scripts/install-deps.sh; a missing tool fails the step loudly.
+# scripts/install-deps.sh --test; a missing tool fails the step loudly.
 #   sh scripts/harden.sh [FUZZ_SECONDS]     (default 120 per harness)
 # Steps, in order (logs in build/harden/, durations in build/harden/steps.tsv):
 #   sanitize   make clean && make test SANITIZE=address,undefined
@@ -29,7 +29,7 @@ trap 'rm -rf "$tmplog"' EXIT
 need() {
 	for t in "$@"; do
 		if ! command -v "$t" >/dev/null 2>&1; then
-			echo "harden: $t is not installed (scripts/install-deps.sh installs it)" >&2
+			echo "harden: $t is not installed (scripts/install-deps.sh --test installs it)" >&2
 			return 1
 		fi
 	done

@@ -12,7 +12,7 @@ set -eu
 cd "$(dirname "$0")/.."
 BIN=./onbstudy
 [ -x "$BIN" ] || { echo "man.sh: no ./onbstudy (run make first)" >&2; exit 2; }
-command -v help2man > /dev/null 2>&1 || { echo "man.sh: help2man is not installed (scripts/install-deps.sh installs it)" >&2; exit 2; }
+command -v help2man > /dev/null 2>&1 || { echo "man.sh: help2man is not installed (scripts/install-deps.sh --test installs it)" >&2; exit 2; }
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 version=$($BIN --version | cut -d' ' -f1-2)
 cmds=$($BIN --help | awk '/^commands:/ { on = 1; next } on && /^  [a-z]/ { print $1 } on && /^$/ { on = 0 }')

@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 COUNT=${1:-4096}
 REPEATS=${2:-3}
 OUT=results/mpi-scaling
-command -v mpirun > /dev/null || { echo "mpi-scaling: no mpirun (scripts/install-deps.sh installs Open MPI)" >&2; exit 1; }
+command -v mpirun > /dev/null || { echo "mpi-scaling: no mpirun (scripts/install-deps.sh --test installs Open MPI)" >&2; exit 1; }
 make -s all mpi
 mkdir -p "$OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader

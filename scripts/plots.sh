@@ -13,7 +13,7 @@ set -eu
 RUN=${1:-results/latest}
 HERE=$(cd "$(dirname "$0")" && pwd)
 if ! command -v gnuplot >/dev/null 2>&1; then
-	echo "plots: gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox)" >&2
+	echo "plots: gnuplot is not installed (scripts/install-deps.sh --plots installs gnuplot-nox)" >&2
 	exit 2
 fi
 if [ ! -f "$RUN/summary.csv" ] || [ ! -f "$RUN/by_nz.csv" ]; then

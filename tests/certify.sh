@@ -76,7 +76,7 @@ if command -v gnuplot >/dev/null 2>&1; then
 		out=$(awk -f scripts/chart-check.awk "$T/a/certify_$p.svg" 2>&1) && ok || bad "certify_$p chart check: $out"
 	done
 else
-	bad "gnuplot missing: scripts/install-deps.sh must install it"
+	bad "gnuplot missing: scripts/install-deps.sh --test must install it"
 fi
 
 # 8. bad input: exit 2, one line, nothing written

@@ -15,7 +15,9 @@
 #     (ONB_INLINE_FOLLOWS_CLIENT_FP); by the object's symbols, the six
 #     client builds of issue 25 and the defines inline exactly where the
 #     flags cannot change the bits, call libonb.a elsewhere, and give the
-#     studied bits in every case;
+#     studied bits in every case; ONB_INLINE_ACTIVE agrees with the
+#     symbols, and ONB_WARN_OUTLINE gives its message exactly where the
+#     names call libonb.a (none without the define);
 #  4. the array API takes &v.x of a struct { float x, y, z; } without a
 #     warning (gcc and clang, -O0 and -O2), where n[3] parameters warn;
 #  5. a static client of one array function links only that function.
@@ -142,6 +144,16 @@ while IFS='|' read -r c flags want; do
 	got=inline
 	case "$syms" in *"U onb_duff_branchless_outlinef"*"U onb_frisvad_rotate_outline"*"U onb_naive_rsqrt_outline"*) got=call;; ?*) got="other: $syms";; esac
 	[ "$got" = "$want" ] && ok || bad "$c $flags: method names $got, expected $want"
+	# "did it inline?": ONB_INLINE_ACTIVE says what the symbols say, and
+	# ONB_WARN_OUTLINE speaks exactly when the names call libonb.a
+	w=1; [ "$got" = call ] && w=0
+	printf '#include "libonb/onb.h"\ntypedef char active_as_nm_says[(ONB_INLINE_ACTIVE == %d) ? 1 : -1];\n' $w > "$tmp/act.c"
+	if $c $flags -Iinclude -DONB_WARN_OUTLINE -c "$tmp/act.c" -o "$tmp/act.o" 2> "$tmp/act.err"; then ok
+	else bad "$c $flags: ONB_INLINE_ACTIVE is not $w (symbols: $got)"; fi
+	said=inline; grep -q "libonb: the method names call libonb.a's out-of-line copies" "$tmp/act.err" && said=call
+	[ "$said" = "$got" ] && ok || bad "$c $flags: ONB_WARN_OUTLINE says $said, the symbols $got: $(head -2 "$tmp/act.err")"
+	$c $flags -Iinclude -c "$tmp/act.c" -o "$tmp/act.o" 2> "$tmp/act.err"
+	[ ! -s "$tmp/act.err" ] && ok || bad "$c $flags: a message without ONB_WARN_OUTLINE: $(head -2 "$tmp/act.err")"
 	case "$flags" in *FOLLOWS*|*c++*) echo "$c $flags: $got"; continue;; esac
 	if BCC=$c build b_$c $flags -DMODE_REF && "$tmp/b_$c" < "$tmp/in.txt" > "$tmp/b_$c.txt" && cmp -s "$tmp/ref.txt" "$tmp/b_$c.txt"; then ok
 	else bad "$c $flags: method names not the studied bits"; fi

@@ -3,12 +3,14 @@
 # the same data as `onbstudy sweep` for N = 1, 2, 3 ranks with 1 and 2
 # threads; a rank killed with SIGKILL mid-run, then --resume, gives the same
 # files and redoes at most the batches in flight; a cancelled run (SIGTERM)
-# resumes too; a bad option, other options on one rank, and a checkpoint
-# of other options are refused with one message and no hang.
+# resumes too; --resume DIR before any checkpoint (a rank killed at its
+# start) starts from the beginning, so the same command line restarts any
+# job; a bad option, other options on one rank, and a checkpoint of other
+# options are refused with one message and no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
 . "$(dirname "$0")/lib.sh"
 if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
-	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh installs it)"
+	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh --test installs it)"
 fi
 make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
 # Open MPI as root (CI) and without a network: shared memory only
@@ -126,6 +128,35 @@ refuse "bad value on 2 ranks" "--samples" $MPIRUN -n 2 ./onbstudy-mpi sweep --sa
 refuse "other options on one rank" "other options" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$tmp/x" : -n 1 ./onbstudy-mpi sweep $A --seed 2 --out "$tmp/x"
 cp onbstudy-mpi "$tmp/other-mpi" && printf 'x' >> "$tmp/other-mpi"   # another build: other bytes, same code
 refuse "another binary on one rank" "different binary" $MPIRUN -n 1 ./onbstudy-mpi sweep $A --out "$tmp/x" : -n 1 "$tmp/other-mpi" sweep $A --out "$tmp/x"
-refuse "no checkpoint" "sweep-checkpoint.bin" $MPIRUN -n 2 ./onbstudy-mpi sweep $A --resume "$tmp/none"
+
+# One command line for the first start and every restart (a requeued
+# job): --resume DIR with no checkpoint there yet starts from the
+# beginning and says so.  Rank 1 is killed as soon as it runs, before rank
+# 0 has added a batch (one batch of every chunk: the first checkpoint would
+# come at the end), then the same command line runs again.
+early() { $MPIRUN -n 2 ./onbstudy-mpi sweep $K --batch 1000000 --resume "$tmp/early"; }
+early > /dev/null 2> "$tmp/early1.err" &
+mp=$!
+victim=""
+i=0
+while [ -z "$victim" ] && [ $i -lt 600 ]; do
+	for p in $(pgrep -f "onbstudy-mpi sweep $K --batch 1000000"); do
+		r=$(tr '\0' '\n' < /proc/$p/environ 2> /dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
+		[ "$r" = 1 ] && victim=$p
+	done
+	[ -n "$victim" ] || sleep 0.05
+	i=$((i + 1))
+done
+if [ -n "$victim" ]; then kill -KILL "$victim"; ok; else bad "no rank 1 to kill before the first checkpoint"; fi
+wait $mp; rc=$?
+[ $rc -ne 0 ] && ok || bad "mpirun exited 0 after rank 1 was killed at its start"
+[ ! -f "$tmp/early/sweep-checkpoint.bin" ] && ok || bad "a checkpoint exists after a kill before the first batch"
+early > "$tmp/early.out" 2> "$tmp/early2.err"
+rc=$?
+[ $rc -eq 0 ] && ok || bad "--resume with no checkpoint yet: exit $rc: $(head -3 "$tmp/early2.err")"
+grep -q 'no checkpoint there yet.*starting from the beginning' "$tmp/early2.err" && ok || bad "--resume with no checkpoint: no 'starting from the beginning' message"
+same "$tmp/kref" "$tmp/early" "rank killed before the first checkpoint + the same command line"
+grep -q '^# mpi: 2 ranks' "$tmp/early/summary.csv" && ! grep -q 'resumed from a checkpoint' "$tmp/early/summary.csv" && ok ||
+	bad "a run started from the beginning says 'resumed from a checkpoint'"
 refuse "not sweep" "sweep" $MPIRUN -n 2 ./onbstudy-mpi eval 0 0 1
 finish mpi

@@ -31,7 +31,7 @@
 . "$(dirname "$0")/lib.sh"
 T=$tmp
 if ! command -v gnuplot >/dev/null 2>&1; then
-	echo "plots_cli: gnuplot missing: scripts/install-deps.sh must install it"; exit 1
+	echo "plots_cli: gnuplot missing: scripts/install-deps.sh --test must install it"; exit 1
 fi
 ./onbstudy sweep --samples 2000 --exhaustive-count 1024 --azimuths 2 --grid 8x16 --quiet --out "$T/run" >/dev/null 2>&1 || bad "small sweep failed"
 ./onbstudy threshold --logspaced 300 --consecutive 256 --azimuths 4 --out "$T/run" >/dev/null 2>&1 || bad "threshold failed"

@@ -6,7 +6,7 @@
 . "$(dirname "$0")/lib.sh"
 M=/usr/share/assimp/models
 if [ ! -d "$M/OBJ" ] || [ ! -d "$M/PLY" ]; then
-	echo "SKIP: assimp-testmodels is not installed ($M missing; scripts/install-deps.sh installs it)"
+	echo "SKIP: assimp-testmodels is not installed ($M missing; scripts/install-deps.sh --test installs it)"
 	finish
 fi
 export XDG_CACHE_HOME="$tmp/cache"  # speeds: the committed reference run

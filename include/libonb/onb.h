@@ -153,6 +153,27 @@
 #define ONB__INLINE 1
 #endif
 
+/* "Did it inline?": ONB_INLINE_ACTIVE is 1 when the method names in this
+   file are the inline kernels, 0 when they call libonb.a's out-of-line
+   copies (same bits, a call each).  Test it (#if ONB_INLINE_ACTIVE) or
+   insist on it: _Static_assert(ONB_INLINE_ACTIVE, "...") in C11,
+   static_assert in C++, typedef char t[ONB_INLINE_ACTIVE ? 1 : -1] in C99.
+   Define ONB_WARN_OUTLINE to have the header say so, with the reason, at
+   compile time when it takes the out-of-line copies (a #pragma message:
+   a note with GCC, a warning with clang). */
+#define ONB_INLINE_ACTIVE ONB__INLINE
+#if !ONB__INLINE && defined(ONB_WARN_OUTLINE)
+#if defined(ONB_FORCE_OUTLINE)
+#pragma message("libonb: the method names call libonb.a's out-of-line copies (ONB_FORCE_OUTLINE is defined)")
+#elif defined(__FAST_MATH__)
+#pragma message("libonb: the method names call libonb.a's out-of-line copies (-ffast-math could change the kernels' bits; ONB_INLINE_FOLLOWS_CLIENT_FP inlines them anyway)")
+#elif ONB__WIDE_FLOAT
+#pragma message("libonb: the method names call libonb.a's out-of-line copies (FLT_EVAL_METHOD 1 or 2: float arithmetic wider than binary32 here)")
+#else
+#pragma message("libonb: the method names call libonb.a's out-of-line copies (GCC with an FMA target outside ISO C mode contracts a*b+c; -std=c99/c11/c17, or -ffp-contract=off with -DONB_FP_CONTRACT_OFF, inlines them)")
+#endif
+#endif
+
 /* No contraction into FMA inside the kernels, where a pragma does it
    without stopping inlining.  Popped at the end of the header. */
 #if ONB__INLINE && !defined(ONB_INLINE_FOLLOWS_CLIENT_FP) && defined(__clang__)

@@ -20,7 +20,9 @@
  * at most every --checkpoint-every S seconds (default 0: every batch).  A
  * run that loses a rank (the whole MPI job ends) or is cancelled restarts
  * with `--resume DIR` and redoes only the batches that were in flight (and,
- * with S > 0, those added since the last checkpoint).
+ * with S > 0, those added since the last checkpoint).  With no checkpoint
+ * in DIR yet, --resume DIR starts from the beginning (and says so), so a
+ * scheduler can requeue the same command line however early the job died.
  */
 #include <mpi.h>
 #include <pthread.h>
@@ -31,6 +33,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <fcntl.h>
+#include <errno.h>
 #include <sys/resource.h>
 #include "sweep/engine.h"
 #include "cli/cli.h"
@@ -156,7 +159,9 @@ static void mpi_usage(void)
 	       "The sweep over MPI ranks, OpenMP threads in each (--threads T per rank); the files are\n"
 	       "byte-identical to 'onbstudy sweep' with the same options.  MPI options:\n"
 	       "  --resume DIR           continue the run whose checkpoint is DIR/" CKPT_NAME "\n"
-	       "                         (same options; the output goes to DIR)\n"
+	       "                         (same options; the output goes to DIR); with no checkpoint\n"
+	       "                         there yet, start the run from the beginning, so one command\n"
+	       "                         line serves the first start and every restart\n"
 	       "  --checkpoint-every S   write the checkpoint at most every S seconds (default 0: after\n"
 	       "                         every batch, so a lost run redoes only the batches in flight)\n"
 	       "  --batch C              chunks of %d inputs per batch handed to a rank (default: about\n"
@@ -414,6 +419,21 @@ static int load_checkpoint(run_t *r)
 	return r->done ? 0 : -1;
 }
 
+/* --resume DIR before the run wrote a checkpoint there (a job killed early
+   and requeued with the same command line): a first start, said once.
+   0 then; 1 when DIR/CKPT_NAME exists or cannot be looked at (the load
+   names the problem). */
+static int checkpoint_present(const run_t *r)
+{
+	char path[4200];
+	snprintf(path, sizeof path, "%s/%s", r->mo.resume, CKPT_NAME);
+	if (access(path, F_OK) == 0 || errno != ENOENT)
+		return 1;
+	fprintf(stderr, "onbstudy-mpi: --resume %s: no checkpoint there yet (%s): starting from the beginning\n",
+	        r->mo.resume, path);
+	return 0;
+}
+
 /* The next batch not done, or -1 (under r->mu). */
 static int64_t take_batch(run_t *r)
 {
@@ -595,6 +615,8 @@ static int setup(run_t *r)
 		return ONB_EXIT_USAGE;
 	if (engine_state_init(&r->pl, &r->acc) != 0)
 		return 1;
+	if (r->mo.resume && !checkpoint_present(r))
+		r->mo.resume = NULL;
 	if (r->mo.resume)
 		return load_checkpoint(r) ? ONB_EXIT_USAGE : 0;
 	r->done = calloc(r->nbatches + 1, 1);

@@ -91,7 +91,7 @@ static int sweep_plots(const char *out)
 {
 	char cmd[8300];
 	if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
-		fprintf(stderr, "onbstudy: --plots: gnuplot is not installed (scripts/install-deps.sh installs it); skipped\n");
+		fprintf(stderr, "onbstudy: --plots: gnuplot is not installed (scripts/install-deps.sh --plots installs it); skipped\n");
 		return 0;
 	}
 	snprintf(cmd, sizeof cmd, "sh scripts/plots.sh '%s'", out);

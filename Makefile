@@ -240,7 +240,7 @@ robustness:
 ONB_PC = prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: onb\nDescription: orthonormal bases from a unit vector (onbstudy)\nVersion: 0.1.0\nCflags: -I$${includedir}\nLibs: -L$${libdir} -lonb -lm\n
 # The header goes to include/libonb/onb.h: clients write <libonb/onb.h>, so a
 # renderer's own onb.h (a common name) cannot shadow it or be shadowed.
-# `make install-compat` adds include/onb.h, a two-line forward for code
+# `make install-compat` adds include/onb.h, a short forward for code
 # written against the old <onb.h>; it is opt-in because it takes that name.
 install: libonb.a
 	install -d $(DESTDIR)$(PREFIX)/include/libonb $(DESTDIR)$(PREFIX)/lib/pkgconfig

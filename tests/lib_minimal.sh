@@ -31,7 +31,7 @@ while read -r h; do
 done < "$tmp/h"
 [ -z "$others" ] && ok || bad "headers outside the C library and the compiler:$others"
 # the commands make lib runs
-tools=$(make -n -B lib B="$tmp/b" 2>/dev/null | awk '{ print $1 }' | sort -u | tr '\n' ' ')
+tools=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -n -B lib B="$tmp/b" 2>/dev/null | awk '{ print $1 }' | sort -u | tr '\n' ' ')
 bads=$(for t in $tools; do case "$t" in cc|gcc|ar|mkdir|rm|"${CC:-cc}") ;; *) echo "$t";; esac; done)
 [ -n "$tools" ] && [ -z "$bads" ] && ok || bad "make lib runs more than cc, ar, mkdir, rm: $tools"
 finish lib_minimal

@@ -189,6 +189,30 @@ endif
 # reffast_f.c is reffast.c compiled again with pairs of doubles.
 $(B)/reference/reffast_f.o: src/reference/reffast.c
 
+# Each family file (src/families/family.h) is compiled three more times
+# beside the study's rule: its branch rule with contraction, as the FMA
+# copy of the kernels (FAMILY_PASS=1), and its fast-reference formula in
+# pairs of doubles (2) and of long doubles (3), with reffast.c's flags.
+FAMILY_SRC  = $(filter-out src/families/families.c,$(wildcard src/families/*.c))
+FAMILY_PASS_OBJ = $(foreach p,fma pair_d pair_l,$(FAMILY_SRC:src/families/%.c=$(B)/families/$(p)/%.o))
+ifeq ($(shell uname -m),x86_64)
+FAMILY_FMA_FLAGS  = -mfma -ffp-contract=fast
+FAMILY_PAIR_FLAGS = -mfma
+else
+FAMILY_FMA_FLAGS  = -ffp-contract=fast
+FAMILY_PAIR_FLAGS =
+endif
+FAMILY_CC = $(CC) $(BASE) $(WARN) $(OMP) -Isrc -D_POSIX_C_SOURCE=200809L
+$(B)/families/fma/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(FAMILY_CC) -DFAMILY_PASS=1 $(FAMILY_FMA_FLAGS) -c $< -o $@
+$(B)/families/pair_d/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(FAMILY_CC) -DFAMILY_PASS=2 $(FAMILY_PAIR_FLAGS) -c $< -o $@
+$(B)/families/pair_l/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
+	@mkdir -p $(@D)
+	$(FAMILY_CC) -DFAMILY_PASS=3 $(FAMILY_PAIR_FLAGS) -c $< -o $@
+
 # The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
 # (left out of the study's rule above, which compiles every other object)
@@ -201,7 +225,7 @@ $(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/libo
 # given at STUDY_LIBS).
 STUDY_LIBS := -Wl,-Bstatic -lmpfi -Wl,-Bdynamic $(STUDY_LIBS)
 
-$(STUDY_LIB): $(filter-out $(MAIN_OBJ),$(STUDY_OBJ))
+$(STUDY_LIB): $(filter-out $(MAIN_OBJ),$(STUDY_OBJ)) $(FAMILY_PASS_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 

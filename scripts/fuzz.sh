@@ -42,6 +42,15 @@ for src in src/*/*.c; do
 	# shellcheck disable=SC2086
 	$CLANG $CFL $SAN -fsanitize=fuzzer-no-link $extra -c "$src" -o "$o"
 	objs="$objs $o"
+	# a family file's other passes (src/families/family.h, the Makefile)
+	case "$src" in src/families/families.c) continue;; src/families/*) ;; *) continue;; esac
+	# (pass 1 as fma_kernels.c above, the pair passes as reffast.c)
+	for pass in 1 2 3; do
+		extra=""; [ $pass -eq 1 ] && { extra="-ffp-contract=fast"; [ "$(uname -m)" = x86_64 ] && extra="-mfma $extra"; }
+		# shellcheck disable=SC2086
+		$CLANG $CFL $SAN -fsanitize=fuzzer-no-link $extra -DFAMILY_PASS=$pass -c "$src" -o "${o%.o}_$pass.o"
+		objs="$objs ${o%.o}_$pass.o"
+	done
 done
 for h in $HARNESSES; do
 	# shellcheck disable=SC2086

@@ -1,7 +1,7 @@
 /*
  * test_certify.c - the rounding models are the kernels (issue 22, item 4).
  *
- * Every method's model (src/certify/models.c), executed in its format with
+ * Every method's model (its family's, src/families/), executed in its format with
  * every rounding performed, must give libonb's bits: the out-of-line
  * kernels of the registry, compiled with the library's flags, on 10^6
  * inputs per method and precision (argv[1] changes the count): uniform,
@@ -17,7 +17,7 @@
 #include <string.h>
 #include "libonb/onb.h"
 #include "certify/models.h"
-#include "certify/model_int.h"
+#include "model/model_int.h"
 
 static uint64_t mix(uint64_t x)
 {

@@ -33,7 +33,7 @@
 #include "inputs/inputs.h"
 #include "certify/enumerate.h"
 #include "certify/models.h"
-#include "certify/model.h"
+#include "model/model.h"
 #include "certify/regions.h"
 
 #define MAXK 64
@@ -168,7 +168,7 @@ static void one_box(cert_ctx *x, const cert_box *b, const study_kernel *ks, int 
 		const cm_method *m = ks[k].m ? cm_find(ks[k].m->name) : NULL;
 		if (!m || !kernel_runs(&ks[k], PREC_FLOAT) || (!seeds && uses_seed(ks[k].name)))
 			continue;
-		if (region_meets_singular(ks[k].name, &r)) {
+		if (region_meets_singular(&ks[k], &r)) {
 			printf("  %-22s skipped: the region meets its singular set\n", ks[k].name);
 			continue;
 		}

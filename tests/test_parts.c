@@ -5,18 +5,16 @@
  * the part that is missing:
  *   registry   onb_find(name), with the out-of-line, array and batch kernels
  *              of its precisions (src/lib/registry.c, batch.c)
- *   kernel     the study's kernel, which needs the family to be known
- *              (src/methods/kernels.c)
- *   branch     a branch rule for its family (src/methods/branch.inc; -1
- *              there means none)
- *   mpfr       an MPFR formula for its family (src/reference/reference.c;
- *              without one the reference is NaN)
- *   reffast    a fast-reference formula (src/reference/reffast.c; without
- *              one every input falls back to MPFR)
+ *   kernel     the study's kernel, which needs the family to be known: a
+ *              family file in src/families/ named in families.c's list
+ *   branch     the family's branch rule gives a branch (>= 0)
+ *   mpfr       the family's MPFR formula is finite on generic inputs
+ *   reffast    the family's fast-reference formula decides some inputs
+ *              (where it cannot, every input falls back to MPFR)
  *   bench      the inline call loops (src/bench/bench_calls.c, from the lists)
  *   indep      the independent transliteration (tests/indep.h and its row in
  *              tests/indep_table.h)
- *   model      a rounding model for `onbstudy certify` (src/certify/models.c;
+ *   model      a rounding model for `onbstudy certify` (the family's;
  *              frisvad_rotate's direction error has none, said in
  *              docs/certify.md); tests/test_certify.c checks it is bit-exact
  * The yardstick (src/bench/yardstick.c) re-implements four methods on
@@ -111,10 +109,10 @@ static void check_reference(const study_kernel *k, int p, ref_ctx *rc, reffast_c
 		if (fc)
 			decided += reffast_eval(fc, k, p, n, loc, 0, &s) != REFFAST_MPFR;
 	}
-	part(branch_ok, k->name, "no branch rule for its family", "src/methods/branch.inc");
-	part(mpfr_ok, k->name, "no MPFR formula for its family", "src/reference/reference.c");
+	part(branch_ok, k->name, "no branch rule for its family", k->fam->name);
+	part(mpfr_ok, k->name, "no MPFR formula for its family", k->fam->name);
 	if (fc)
-		part(decided > 0, k->name, "no fast-reference formula (every input fell back to MPFR)", "src/reference/reffast.c");
+		part(decided > 0, k->name, "no fast-reference formula (every input fell back to MPFR)", k->fam->name);
 }
 
 static void check_study(const char *name, ref_ctx *rc, reffast_ctx *fc)
@@ -122,7 +120,7 @@ static void check_study(const char *name, ref_ctx *rc, reffast_ctx *fc)
 	study_kernel k;
 	int p;
 	part(kernels_select(name, 0, &k, 1) == 1, name, "no study kernel (family unknown to the study)",
-	     "src/methods/kernels.c");
+	     "src/families/: a family file, and its name in families.c's list");
 	if (kernels_select(name, 0, &k, 1) != 1)
 		return;
 	for (p = 0; p < 2; p++)
@@ -147,7 +145,7 @@ int main(void)
 		if (strcmp(listed[i], "frisvad_rotate") != 0) {
 			check_registry(listed[i]);
 			check_indep(listed[i]);
-			part(cm_find(listed[i]) != NULL, listed[i], "no rounding model (certify skips it)", "src/certify/models.c");
+			part(cm_find(listed[i]) != NULL, listed[i], "no rounding model (certify skips it)", "its family file's model");
 		}
 		check_study(listed[i], rc, fc);
 	}

@@ -1,5 +1,5 @@
 /*
- * test_seeds.c - the seeds' error bounds (src/certify/seeds.[ch], issue 22).
+ * test_seeds.c - the seeds' error bounds (src/model/seeds.[ch], issue 22).
  *
  *   build/tests/test_seeds          make test (seconds): the seeds are the
  *       kernels' own; the float scan over two binades gives the same bound,
@@ -20,7 +20,7 @@
 #include "cli/cli.h"
 #include "cli/output.h"
 #include "inputs/rng.h"
-#include "certify/seeds.h"
+#include "model/seeds.h"
 #if ONB_HAVE_HW_RSQRT
 #include <xmmintrin.h>   /* rsqrtps beside rsqrtss: onb.h itself no longer includes it */
 #endif

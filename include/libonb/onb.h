@@ -291,6 +291,9 @@ enum {
 	ONB__NORM_RSQRT_NR, /* Listing 3 SSE_rsqrt_1N*/
 	ONB__NORM_NONE      /* no normalization      */
 };
+/* The float-only evaluations of duff_branchless's formula (onb_method.norm
+   of duff_wide and duff_comp): one exact formula, other roundings. */
+enum { ONB__EVAL_WIDE = 16, ONB__EVAL_COMP };
 
 static inline double onb__rsq(double x, int norm)
 {
@@ -943,7 +946,7 @@ typedef struct onb_method {
 	int           handedness; /* det(b1, b2, n): +1, -1, or 0 if it depends on n */
 	unsigned      flags;      /* ONB_* above                                   */
 	double        threshold;  /* Frisvad-family t, or NAN                      */
-	int           norm;       /* normalization variant, for the reference      */
+	int           norm;       /* variant in its family: ONB__NORM_*, ONB__EVAL_* */
 	onb_basis_fn  basis;      /* out-of-line scalar, double (NULL: float only) */
 	onb_basisf_fn basisf;     /* out-of-line scalar, float                     */
 	onb_batch_fn  batch;      /* SoA batch, double (NULL: float only)          */

@@ -6,7 +6,7 @@
 #define ONB_CERTIFY_BOUND_H
 
 #include "models.h"
-#include "mvf.h"
+#include "model/mvf.h"
 
 typedef struct bound_ctx bound_ctx;
 

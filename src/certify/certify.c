@@ -16,7 +16,7 @@
 #include "sweep/engine.h"
 #include "certify.h"
 #include "search.h"
-#include "seeds.h"
+#include "model/seeds.h"
 
 #define MAXREG 1024
 #define MAXK 64
@@ -251,12 +251,14 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 	return fail ? -1 : 0;
 }
 
-/* Does any selected method use an approximate reciprocal square root? */
+/* Does any selected method use an approximate reciprocal square root (a
+   normalization of its registry row that starts from a seed)? */
 static int uses_seeds(const study_kernel *ks, int nk)
 {
 	int k;
 	for (k = 0; k < nk; k++)
-		if (strstr(ks[k].name, "rsqrt") || strstr(ks[k].name, "invsqrt"))
+		if (ks[k].m && (ks[k].m->norm == ONB__NORM_INVSQRT || ks[k].m->norm == ONB__NORM_RSQRT ||
+		                ks[k].m->norm == ONB__NORM_RSQRT_NR))
 			return 1;
 	return 0;
 }

@@ -3,8 +3,9 @@
  * and region of the sphere, `onbstudy certify` brackets the largest
  * orthonormality defect between an input found (search.c) and a bound no
  * input can exceed: each kernel's operations written once more as a model
- * (models.c, bit-exact to the kernel: tests/test_certify.c), evaluated in
- * a mean value form over MPFI intervals (mvf.c, bound.c), by branch and
+ * (its family's model, src/families/, bit-exact to the kernel:
+ * tests/test_certify.c), evaluated in a mean value form over MPFI
+ * intervals (src/model/mvf.c, bound.c), by branch and
  * bound over boxes of the sphere (search.c, regions.c).  seeds.c bounds the
  * approximate reciprocal square roots; scene_cert.c answers for a scene.
  *

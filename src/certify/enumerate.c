@@ -23,7 +23,7 @@
 #include <string.h>
 #include "enumerate.h"
 #include "region.h"
-#include "model.h"
+#include "model/model.h"
 #include "cli/cli.h"
 #include "inputs/inputs.h"
 

@@ -1,20 +1,18 @@
 /*
- * models.h - the table of method models (models.c).
+ * models.h - the rounding model of each registry method (models.c): its
+ * family's model (src/families/), run with the method's registry row.
  */
 #ifndef ONB_CERTIFY_MODELS_H
 #define ONB_CERTIFY_MODELS_H
 
-#include "model.h"
-
-/* A model: the kernel's operations on n, writing b1 (out[0..2]) and b2
-   (out[3..5]) in precision P (CM_F32 or CM_F64). */
-typedef void (*cm_model_fn)(cm *c, int P, int param, const cv n[3], cv out[6]);
+#include "libonb/onb.h"
+#include "model/model.h"
+#include "families/family.h"
 
 typedef struct {
-	const char *name;    /* the registry name                         */
-	cm_model_fn fn;
-	int param;           /* the variant (normalization, threshold...) */
-	int nbranch;         /* branch points: paths are 2^nbranch        */
+	const onb_method *m;       /* the registry row: the model's parameters   */
+	const study_family *fam;   /* its family, whose model it runs            */
+	int nbranch;               /* branch points: paths are 2^nbranch         */
 	/* The defect quantities (CQ_ bits of model_int.h) that stay 0 in exact
 	   arithmetic for every n, unit or not (b2 = n x b1 is orthogonal to n
 	   and b1 whatever |n| is): where n is not unit at e = 0 (n.z given,
@@ -25,6 +23,8 @@ typedef struct {
 /* The model of registry method `name`, or NULL (frisvad_rotate has none
    yet: its direction error is not certified). */
 const cm_method *cm_find(const char *name);
+/* The kernel's operations on n, writing b1 (out[0..2]) and b2 (out[3..5])
+   in precision P (CM_F32 or CM_F64). */
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6]);
 
 #endif

@@ -114,22 +114,9 @@ void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 	}
 }
 
-const char *region_singular_set(const char *method)
+int region_meets_singular(const study_kernel *k, const cert_region *r)
 {
-	if (strncmp(method, "naive", 5) == 0 && strcmp(method, "naive_nonorm") != 0)
-		return "n = -x (and near it, n.y, n.z subnormal: |b1|^2 underflows)";
-	if (strcmp(method, "tangent_cross_z") == 0)
-		return "n = +-z (and, in float, n.x^2 + n.y^2 below the smallest subnormal)";
-	return "none";
-}
-
-int region_meets_singular(const char *method, const cert_region *r)
-{
-	if (strncmp(method, "naive", 5) == 0 && strcmp(method, "naive_nonorm") != 0)
-		return r->nz_lo <= 0.0 && r->nz_hi >= 0.0 && r->phi_lo <= 180.0 && r->phi_hi >= 180.0;
-	if (strcmp(method, "tangent_cross_z") == 0)
-		return r->nz_lo <= -1.0 || r->nz_hi >= 1.0;
-	return 0;
+	return k->m && k->fam->meets_singular(k->m, r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
 }
 
 /* The reals that round (to nearest) to the format value v have |u| in

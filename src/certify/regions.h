@@ -7,7 +7,8 @@
 
 #include <stddef.h>
 #include "region.h"
-#include "mvf.h"
+#include "model/mvf.h"
+#include "methods/kernels.h"
 
 /* The default regions for precision prec (CM_F32 or CM_F64): bands of n.z
    log-spaced in 1 + n.z near -1 (two per decade, down to the pole) and in
@@ -23,9 +24,8 @@ size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, 
    whose scaling) can land in r: r widened by the input's own rounding. */
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b);
 
-/* The singular set of a method, as text ("none" when it has none), and
-   whether the closure of region r meets it. */
-const char *region_singular_set(const char *method);
-int region_meets_singular(const char *method, const cert_region *r);
+/* Whether the closure of region r meets the singular set of kernel k (its
+   family's, src/families/). */
+int region_meets_singular(const study_kernel *k, const cert_region *r);
 
 #endif

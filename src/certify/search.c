@@ -23,7 +23,7 @@
 #include "search.h"
 #include "reference/reference.h"
 #include "inputs/inputs.h"
-#include "model_int.h"
+#include "model/model_int.h"
 
 struct cert_ctx {
 	bound_ctx *b;
@@ -477,7 +477,7 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
 	sample_region(&e);
 	walk(&e, o->samples / 4 + 16);
-	if (region_meets_singular(k->name, r) || res->nonfinite) {
+	if (region_meets_singular(k, r) || res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
 		return;

@@ -116,30 +116,10 @@ static int eval_parse(int argc, char **argv, eval_opts *o)
 	return rc;
 }
 
-/* What branch b (branch.inc's id) of kernel k means, in words. */
+/* What branch b of kernel k means, in words (its family's names). */
 static const char *branch_name(const study_kernel *k, int b, char *buf, size_t n)
 {
-	switch (k->family) {
-	case FAM_NAIVE:
-		return b ? "n.x > 0.9: b1 from the y-axis" : "n.x <= 0.9: b1 from the x-axis";
-	case FAM_HUGHES_MOELLER:
-		return b ? "|n.x| > |n.z|: b2 = (-n.y, n.x, 0)" : "|n.x| <= |n.z|: b2 = (0, -n.z, n.y)";
-	case FAM_FRISVAD:
-		snprintf(buf, n, b ? "fallback: n.z < t = %.9g" : "formula: n.z >= t = %.9g", k->m ? k->m->threshold : NAN);
-		return buf;
-	case FAM_DUFF:
-		return b ? "n.z < 0: the lower branch" : "n.z >= 0 (-0 too): the upper branch";
-	case FAM_DUFF_BRANCHLESS:
-		return b ? "signbit(n.z) set: sign = -1" : "signbit(n.z) clear: sign = +1";
-	case FAM_STARK: case FAM_STARK_FIXED:
-		return b == 0 ? "xm: p = n x (x-axis)" : b == 1 ? "ym: p = n x (y-axis)" : "zm: p = n x (z-axis)";
-	case FAM_PBRT_V3:
-		return b ? "|n.x| > |n.y|: b1 = (-n.z, 0, n.x) / len" : "|n.x| <= |n.y|: b1 = (0, n.z, -n.y) / len";
-	case FAM_RTOW:
-		return b ? "|unit(w).x| > 0.9: a = y-axis" : "|unit(w).x| <= 0.9: a = x-axis";
-	default:
-		return "no branch";
-	}
+	return k->fam->branch_name(k->m, b, buf, n);
 }
 
 /* Warnings on an input the methods do not expect (they assume a unit n). */

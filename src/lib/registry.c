@@ -66,9 +66,9 @@ static const onb_method onb__table[] = {
 	/* This project's own methods (issue 16), float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
-	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_wide), NULL },
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, ONB__EVAL_WIDE, ONB__PTRS_F(duff_wide), NULL },
 	{ "duff_comp", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 in float, fma-compensated products and sums",
-	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, 0, ONB__PTRS_F(duff_comp), NULL },
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, ONB__EVAL_COMP, ONB__PTRS_F(duff_comp), NULL },
 };
 
 /* One row for every method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST

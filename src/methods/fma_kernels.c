@@ -70,6 +70,9 @@ int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rot
 	return -1;
 }
 
-/* Same code as kernels_branch, contracted like the kernels here. */
-#define KERNELS_BRANCH_NAME fma_branch
-#include "methods/branch.inc"
+/* The family's branch rule compiled with contraction, like the kernels
+   here (its FMA pass, src/families/family.h). */
+int fma_branch(const study_kernel *k, int prec, const double n[3])
+{
+	return k->fam->branch_fma(k->m, prec, n);
+}

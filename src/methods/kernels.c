@@ -6,29 +6,14 @@
 #include "methods/kernels.h"
 #include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
 
-#define KERNELS_BRANCH_NAME kernels_branch
-#include "methods/branch.inc"
+/* The branch rule of the kernel's family, plain arithmetic. */
+int kernels_branch(const study_kernel *k, int prec, const double n[3])
+{
+	return k->fam->branch(k->m, prec, n);
+}
 
 static onb_vec3  plain_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
 static onb_vec3f plain_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
-
-/* The reference's family of a registry method, or -1 if it has none. */
-static int kernels_family(const onb_method *m)
-{
-	static const struct { const char *name; int id; } fam[] = {
-		{ "naive", FAM_NAIVE }, { "hughes_moeller", FAM_HUGHES_MOELLER }, { "frisvad", FAM_FRISVAD },
-		{ "duff", FAM_DUFF }, { "duff_branchless", FAM_DUFF_BRANCHLESS }, { "stark", FAM_STARK },
-		{ "stark_fixed", FAM_STARK_FIXED },
-		{ "pbrt_v3", FAM_PBRT_V3 }, { "rtow", FAM_RTOW }, { "tangent_cross_z", FAM_TANGENT_CROSS_Z },
-	};
-	size_t i;
-	if (!m)
-		return FAM_ROTATE;
-	for (i = 0; i < sizeof fam / sizeof fam[0]; i++)
-		if (strcmp(m->family, fam[i].name) == 0)
-			return fam[i].id;
-	return -1;
-}
 
 static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int *k)
 {
@@ -57,9 +42,9 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 	memset(s, 0, sizeof *s);
 	snprintf(s->name, sizeof s->name, "%s%s", name, fma ? "+fma" : "");
 	s->m = m;
-	s->family = kernels_family(m);
-	if (s->family < 0) {
-		study_error("method '%s': no MPFR reference for its family '%s' (src/reference/reference.c)", name, m->family);
+	s->fam = family_of(m);
+	if (!s->fam) {
+		study_error("method '%s': no family file knows its family '%s' (src/families/families.c)", name, m->family);
 		return -1;
 	}
 	s->fma = fma;

@@ -5,22 +5,18 @@
  * rotates a direction instead of returning a basis.
  *
  * src/methods/ holds the study's side of each method: this kernel table
- * (kernels.c), the FMA copy (fma_kernels.c) and the branch rule both
- * share (branch.inc), which the references follow.  Every command that
- * evaluates a method (sweep, eval, threshold, bench --reference) goes
- * through it; it imports only libonb (and cli.h for its messages).
+ * (kernels.c) and the FMA copy (fma_kernels.c); each kernel carries its
+ * family (src/families/), whose branch rule the references follow.  Every
+ * command that evaluates a method (sweep, eval, threshold, bench
+ * --reference) goes through it; it imports libonb and the families (and
+ * cli.h for its messages).
  */
 #ifndef ONB_KERNELS_H
 #define ONB_KERNELS_H
 
 #include "libonb/onb.h"
-
-enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
-
-/* The formula families the MPFR reference knows (onb_method.family),
-   resolved once per kernel so that the sweep loop switches on an int. */
-enum { FAM_ROTATE = 0, FAM_NAIVE, FAM_HUGHES_MOELLER, FAM_FRISVAD, FAM_DUFF, FAM_DUFF_BRANCHLESS,
-       FAM_STARK, FAM_PBRT_V3, FAM_RTOW, FAM_TANGENT_CROSS_Z, FAM_STARK_FIXED };
+#include "common/prec.h"
+#include "families/family.h"
 
 struct study_kernel;
 
@@ -30,15 +26,15 @@ typedef onb_vec3f (*rotatef_fn)(onb_vec3f n, float x, float y, float z);
 typedef struct study_kernel {
 	char name[64];          /* registry name, "+fma" appended for FMA copies */
 	const onb_method *m;    /* registry entry; NULL for frisvad_rotate       */
-	int family;             /* FAM_*, from m->family (FAM_ROTATE without m)   */
+	const study_family *fam; /* family_of(m): frisvad_rotate's without m     */
 	int fma;                /* compiled with -mfma -ffp-contract=fast        */
 	onb_basis_fn  basis;    /* NULL for frisvad_rotate                       */
 	onb_basisf_fn basisf;
 	rotate_fn  rot;         /* frisvad_rotate only                           */
 	rotatef_fn rotf;
-	/* The branch the kernel takes on n (see reference.c for the ids).  For
-	   the FMA copies it is evaluated in the FMA translation unit, since
-	   rtow's branch depends on rounded intermediates. */
+	/* The branch the kernel takes on n (the family's rule).  For the FMA
+	   copies it is the rule compiled with contraction, since rtow's
+	   branch depends on rounded intermediates. */
 	int (*branch)(const struct study_kernel *k, int prec, const double n[3]);
 } study_kernel;
 

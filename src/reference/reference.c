@@ -2,12 +2,13 @@
  * reference.c - the MPFR reference of every method family, and the
  * per-input metrics (see reference.h).
  *
- * Each family's formula is written out below exactly as its kernel in
- * include/libonb/onb.h computes it, with every operation exact or rounded at the
- * context's precision (128 bits by default: 2.4 times double's 53).  The
- * branch is not recomputed in MPFR: it is the branch the kernel took
- * (branch.inc), so a kernel is compared with its own formula on its own
- * side of every threshold.  The normalization variants (_invsqrt, _rsqrt,
+ * Each family's formula (its family file in src/families/) is written
+ * exactly as its kernel in include/libonb/onb.h computes it, with every
+ * operation exact or rounded at the context's precision (128 bits by
+ * default: 2.4 times double's 53).  The branch is not recomputed in MPFR:
+ * it is the branch the kernel took (the family's branch rule), so a
+ * kernel is compared with its own formula on its own side of every
+ * threshold.  The normalization variants (_invsqrt, _rsqrt,
  * _rsqrt_nr) are compared with the exactly normalized formula, so their
  * forward error includes the approximation; _nonorm is compared with the
  * unnormalized formula, which it computes faithfully.
@@ -17,13 +18,12 @@
 #include <stdio.h>
 #include <stdint.h>
 #include "reference/reference.h"
-
-#define NT 6
+#include "arith/mpfr_kit.h"
 
 struct ref_ctx {
 	mpfr_prec_t prec;
-	mpfr_t n[3], nn[3], b1[3], b2[3], r1[3], r2[3], w[3], u[3], t[NT];
-	mpfr_t p0, p1;   /* products for dot and cross */
+	mpfr_kit k;      /* the formulas' scratch: t[], p0, p1 (products), u[], w[] */
+	mpfr_t n[3], nn[3], b1[3], b2[3], r1[3], r2[3];
 	mpfr_t q[4];     /* exact products for dot_exact */
 	mpfr_t inv_n;    /* 1/|n| of the current input */
 	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
@@ -55,10 +55,9 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 		return NULL;
 	c->prec = prec;
 	c->have_last = 0;
+	kit_init(&c->k, prec);
 	vinit(c->n, 3, prec); vinit(c->nn, 3, prec); vinit(c->b1, 3, prec);
 	vinit(c->b2, 3, prec); vinit(c->r1, 3, prec); vinit(c->r2, 3, prec);
-	vinit(c->w, 3, prec); vinit(c->u, 3, prec); vinit(c->t, NT, prec);
-	mpfr_init2(c->p0, prec); mpfr_init2(c->p1, prec);
 	vinit(c->q, 4, prec < 106 ? 106 : prec);
 	mpfr_init2(c->inv_n, prec);
 	mpfr_init2(c->mid, prec);
@@ -70,10 +69,9 @@ void ref_free(ref_ctx *c)
 {
 	if (!c)
 		return;
+	kit_clear(&c->k);
 	vclear(c->n, 3); vclear(c->nn, 3); vclear(c->b1, 3); vclear(c->b2, 3);
-	vclear(c->r1, 3); vclear(c->r2, 3); vclear(c->w, 3); vclear(c->u, 3);
-	vclear(c->t, NT);
-	mpfr_clear(c->p0); mpfr_clear(c->p1);
+	vclear(c->r1, 3); vclear(c->r2, 3);
 	vclear(c->q, 4);
 	mpfr_clear(c->inv_n);
 	mpfr_clear(c->mid);
@@ -89,16 +87,6 @@ mpfr_prec_t ref_prec(const ref_ctx *c) { return c->prec; }
    of two doubles (every defect, every input) is exact there, and the
    reference's own intermediate products round at 2^-prec relative, far
    below what any metric reports (ref_agree checks it on every run). */
-
-/* out = a.b (out may be a temporary, never a component of a or b) */
-static void dot(ref_ctx *c, mpfr_t out, mpfr_t *a, mpfr_t *b)
-{
-	mpfr_mul(c->p0, a[0], b[0], R);
-	mpfr_mul(c->p1, a[1], b[1], R);
-	mpfr_add(out, c->p0, c->p1, R);
-	mpfr_mul(c->p0, a[2], b[2], R);
-	mpfr_add(out, out, c->p0, R);
-}
 
 /* Sums of exact products, for a, b and z holding doubles (the rounded
    outputs and the input; da, db are the same values as C doubles).  Each
@@ -153,236 +141,17 @@ static double norm_m1_exact(ref_ctx *c, mpfr_t *v, const double *dv)
 	mpfr_sqr(c->q[1], v[1], R);
 	mpfr_sqr(c->q[2], v[2], R);
 	mpfr_set_si(c->q[3], -1, R);
-	exact_sum(c, c->p0, 4, dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2] + 1.0);
-	e = mpfr_get_d(c->p0, R);
+	exact_sum(c, c->k.p0, 4, dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2] + 1.0);
+	e = mpfr_get_d(c->k.p0, R);
 	return e / (sqrt(1.0 + e) + 1.0);
 }
 
-/* o = a x b (o distinct from a and b) */
-static void cross(ref_ctx *c, mpfr_t *o, mpfr_t *a, mpfr_t *b)
-{
-	mpfr_mul(c->p0, a[1], b[2], R); mpfr_mul(c->p1, a[2], b[1], R); mpfr_sub(o[0], c->p0, c->p1, R);
-	mpfr_mul(c->p0, a[2], b[0], R); mpfr_mul(c->p1, a[0], b[2], R); mpfr_sub(o[1], c->p0, c->p1, R);
-	mpfr_mul(c->p0, a[0], b[1], R); mpfr_mul(c->p1, a[1], b[0], R); mpfr_sub(o[2], c->p0, c->p1, R);
-}
-
-static void set3(mpfr_t *o, double x, double y, double z)
-{
-	mpfr_set_d(o[0], x, R);
-	mpfr_set_d(o[1], y, R);
-	mpfr_set_d(o[2], z, R);
-}
-
-static void copy3(mpfr_t *o, mpfr_t *a)
-{
-	mpfr_set(o[0], a[0], R);
-	mpfr_set(o[1], a[1], R);
-	mpfr_set(o[2], a[2], R);
-}
-
-/* a *= 1/|a| (exactly rounded reciprocal square root) */
-static void normalize(ref_ctx *c, mpfr_t *a)
-{
-	dot(c, c->t[5], a, a);
-	mpfr_rec_sqrt(c->t[5], c->t[5], R);
-	mpfr_mul(a[0], a[0], c->t[5], R);
-	mpfr_mul(a[1], a[1], c->t[5], R);
-	mpfr_mul(a[2], a[2], c->t[5], R);
-}
-
-/* Frisvad's formula (Equations 4-6), shared with duff's upper branch:
-   a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
-static void frisvad_formula(ref_ctx *c, mpfr_t *n, mpfr_t *b1, mpfr_t *b2)
-{
-	mpfr_t *t = c->t;
-	mpfr_add_ui(t[0], n[2], 1, R);
-	mpfr_ui_div(t[0], 1, t[0], R);           /* a */
-	mpfr_mul(t[1], n[0], n[1], R);
-	mpfr_mul(t[1], t[1], t[0], R);
-	mpfr_neg(t[1], t[1], R);                 /* b */
-	mpfr_sqr(t[2], n[0], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_ui_sub(b1[0], 1, t[2], R);
-	mpfr_set(b1[1], t[1], R);
-	mpfr_neg(b1[2], n[0], R);
-	mpfr_set(b2[0], t[1], R);
-	mpfr_sqr(t[2], n[1], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_ui_sub(b2[1], 1, t[2], R);
-	mpfr_neg(b2[2], n[1], R);
-}
-
-/* frisvad_rotate, Equation 3: the direction loc of the local frame of n, into r1. */
-static void ref_rotate(ref_ctx *c, const double loc[3])
-{
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u, *t = c->t;
-	int i;
-	mpfr_add_ui(t[3], n[2], 1, R);
-	if (mpfr_zero_p(t[3])) {
-		mpfr_set_d(r1[0], -loc[1], R);
-		mpfr_set_d(r1[1], -loc[0], R);
-		mpfr_set_d(r1[2], -loc[2], R);
-		return;
-	}
-	frisvad_formula(c, n, u, r2);           /* u = b1, r2 = b2 */
-	mpfr_set_d(t[3], loc[0], R);
-	mpfr_set_d(t[4], loc[1], R);
-	mpfr_set_d(t[5], loc[2], R);
-	for (i = 0; i < 3; i++) {
-		mpfr_mul(c->p0, t[3], u[i], R);
-		mpfr_mul(c->p1, t[4], r2[i], R);
-		mpfr_add(r1[i], c->p0, c->p1, R);
-		mpfr_mul(c->p0, t[5], n[i], R);
-		mpfr_add(r1[i], r1[i], c->p0, R);
-	}
-}
-
-/* naive: u = e_y if br else e_x; d = u.n; b1 = u - n d; normalize; b2 = n x b1 */
-static void ref_naive(ref_ctx *c, const onb_method *m, int br)
-{
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
-	mpfr_set(t[0], br ? n[1] : n[0], R);   /* d, exactly */
-	mpfr_mul(r1[0], n[0], t[0], R);
-	mpfr_mul(r1[1], n[1], t[0], R);
-	mpfr_mul(r1[2], n[2], t[0], R);
-	mpfr_ui_sub(r1[br ? 1 : 0], 1, r1[br ? 1 : 0], R);
-	mpfr_neg(r1[br ? 0 : 1], r1[br ? 0 : 1], R);
-	mpfr_neg(r1[2], r1[2], R);
-	if (m->norm != ONB__NORM_NONE)
-		normalize(c, r1);
-	cross(c, r2, n, r1);
-}
-
-/* Hughes-Moeller: b2 = (-y, x, 0) if br else (0, -z, y); normalize; b1 = b2 x n */
-static void ref_hughes_moeller(ref_ctx *c, const onb_method *m, int br)
-{
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2;
-	if (br) {
-		mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
-	} else {
-		mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
-	}
-	if (m->norm != ONB__NORM_NONE)
-		normalize(c, r2);
-	cross(c, r1, r2, n);
-}
-
-/* duff's lower branch: a = 1/(1-z), b = x y a, b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y) */
-static void ref_duff_lower(ref_ctx *c)
-{
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
-	mpfr_ui_sub(t[0], 1, n[2], R);
-	mpfr_ui_div(t[0], 1, t[0], R);
-	mpfr_mul(t[1], n[0], n[1], R);
-	mpfr_mul(t[1], t[1], t[0], R);
-	mpfr_sqr(t[2], n[0], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_ui_sub(r1[0], 1, t[2], R);
-	mpfr_neg(r1[1], t[1], R);
-	mpfr_set(r1[2], n[0], R);
-	mpfr_set(r2[0], t[1], R);
-	mpfr_sqr(t[2], n[1], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_sub_ui(r2[1], t[2], 1, R);
-	mpfr_neg(r2[2], n[1], R);
-}
-
-/* duff_branchless: s = +-1, a = -1/(s + z), b = x y a,
-   b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y) */
-static void ref_duff_branchless(ref_ctx *c, int br)
-{
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *t = c->t;
-	const int s = br ? -1 : 1;
-	mpfr_add_si(t[0], n[2], s, R);
-	mpfr_si_div(t[0], -1, t[0], R);
-	mpfr_mul(t[1], n[0], n[1], R);
-	mpfr_mul(t[1], t[1], t[0], R);
-	mpfr_sqr(t[2], n[0], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_mul_si(t[2], t[2], s, R);
-	mpfr_add_ui(r1[0], t[2], 1, R);
-	mpfr_mul_si(r1[1], t[1], s, R);
-	mpfr_mul_si(r1[2], n[0], -s, R);
-	mpfr_set(r2[0], t[1], R);
-	mpfr_sqr(t[2], n[1], R);
-	mpfr_mul(t[2], t[2], t[0], R);
-	mpfr_add_si(r2[1], t[2], s, R);
-	mpfr_neg(r2[2], n[1], R);
-}
-
 /* The exact formula of kernel k on n along branch br, into r1, r2 (or the
-   rotated direction of loc into r1 for frisvad_rotate). */
+   rotated direction of loc into r1 for frisvad_rotate): its family's
+   (src/families/). */
 static void reference(ref_ctx *c, const study_kernel *k, int br, const double loc[3])
 {
-	mpfr_t *n = c->n, *r1 = c->r1, *r2 = c->r2, *u = c->u;
-	const onb_method *m = k->m;
-	if (!m) {
-		ref_rotate(c, loc);
-		return;
-	}
-	switch (k->family) {
-	case FAM_NAIVE:
-		ref_naive(c, m, br);
-		break;
-	case FAM_HUGHES_MOELLER:
-		ref_hughes_moeller(c, m, br);
-		break;
-	case FAM_FRISVAD:
-		if (br) {
-			set3(r1, 0.0, -1.0, 0.0);
-			set3(r2, -1.0, 0.0, 0.0);
-		} else {
-			frisvad_formula(c, n, r1, r2);
-		}
-		break;
-	case FAM_DUFF:
-		if (br)
-			ref_duff_lower(c);
-		else
-			frisvad_formula(c, n, r1, r2);
-		break;
-	case FAM_DUFF_BRANCHLESS:
-		ref_duff_branchless(c, br);
-		break;
-	case FAM_STARK:
-	case FAM_STARK_FIXED:
-		/* p = n x (xm, ym, zm), b1 = p/|p|, b2 = n x b1; as published
-		   zm = 1^(xm & ym) = 1, fixed zm = 1^(xm | ym) (e_k) */
-		set3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
-		cross(c, r1, n, u);
-		normalize(c, r1);
-		cross(c, r2, n, r1);
-		break;
-	case FAM_PBRT_V3:
-		if (br) {
-			mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
-		} else {
-			mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
-		}
-		normalize(c, r1);
-		cross(c, r2, n, r1);
-		break;
-	case FAM_RTOW:
-		/* uw = w/|w|; a = e_y if br else e_x; v = unit(uw x a); b1 = uw x v; b2 = v */
-		copy3(c->w, n);
-		normalize(c, c->w);
-		set3(u, br ? 0.0 : 1.0, br ? 1.0 : 0.0, 0.0);
-		cross(c, r2, c->w, u);
-		normalize(c, r2);
-		cross(c, r1, c->w, r2);
-		break;
-	case FAM_TANGENT_CROSS_Z: /* t = (x, y, z+1); b2 = unit(n x t); b1 = n x b2 */
-		mpfr_set(u[0], n[0], R);
-		mpfr_set(u[1], n[1], R);
-		mpfr_add_ui(u[2], n[2], 1, R);
-		cross(c, r2, n, u);
-		normalize(c, r2);
-		cross(c, r1, n, r2);
-		break;
-	default: /* a family with no formula here: NaN, which tests/test_parts.c refuses */
-		set3(r1, NAN, NAN, NAN);
-		set3(r2, NAN, NAN, NAN);
-	}
+	k->fam->mpfr(&c->k, k->m, br, loc, c->n, c->r1, c->r2);
 }
 
 /* Forward error of component value cv against the exact value e. */
@@ -395,8 +164,8 @@ static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s
 	*refd = mpfr_get_d(e, R);
 	if (!mpfr_number_p(e))
 		return;
-	mpfr_sub_d(c->t[4], e, cv, R);
-	diff = fabs(mpfr_get_d(c->t[4], R));
+	mpfr_sub_d(c->k.t[4], e, cv, R);
+	diff = fabs(mpfr_get_d(c->k.t[4], R));
 	if (diff / eps > s->abs_eps_max)
 		s->abs_eps_max = diff / eps;
 	/* Components whose exact value is below eps (zero ones above all) are
@@ -440,9 +209,9 @@ static int finite6(const double *v, int k)
    b1.b2. */
 static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int normalize_n, double d[NDEF])
 {
-	mpfr_t *t = c->t;
-	set3(c->b1, b[0], b[1], b[2]);
-	set3(c->b2, b[3], b[4], b[5]);
+	mpfr_t *t = c->k.t;
+	kit_set3(c->b1, b[0], b[1], b[2]);
+	kit_set3(c->b2, b[3], b[4], b[5]);
 	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
 	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
 	/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
@@ -460,16 +229,16 @@ static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int 
 static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const double loc[3], int prec,
                        int normalize_n, double *dir_norm, double *dir_cos)
 {
-	mpfr_t *t = c->t;
+	mpfr_t *t = c->k.t;
 	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
-	set3(c->w, w[0], w[1], w[2]);
-	*dir_norm = fabs(norm_m1_exact(c, c->w, w));
+	kit_set3(c->k.w, w[0], w[1], w[2]);
+	*dir_norm = fabs(norm_m1_exact(c, c->k.w, w));
 	if (normalize_n) {
-		dot_exact(c, t[0], c->w, c->n, w, n, 0.0);
+		dot_exact(c, t[0], c->k.w, c->n, w, n, 0.0);
 		mpfr_mul(t[0], t[0], c->inv_n, R);
 		mpfr_sub_d(t[0], t[0], z, R);
 	} else {
-		dot_exact(c, t[0], c->w, c->n, w, n, z);
+		dot_exact(c, t[0], c->k.w, c->n, w, n, z);
 	}
 	*dir_cos = fabs(mpfr_get_d(t[0], R));
 }
@@ -530,20 +299,20 @@ static int floor_round(ref_ctx *c, mpfr_t e, int prec, double *out)
 static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
                        const double loc[3], double fb[6])
 {
-	const int nc = k->m ? 6 : 3;
+	const int nc = k->m ? 6 : 3, zero = k->m ? k->fam->exact_zero(k->m, br) : -1;
 	int i, hard = 0;
 	for (i = 0; i < nc; i++)
 		hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &fb[i]);
-	/* naive's b2 = n x (e - n (n.e)) = n x e has no e component, for any
-	   n: that component of the exact formula is identically zero, where
-	   the reference's cross product leaves a rounding residue */
-	if (k->m && k->family == FAM_NAIVE && isfinite(fb[3 + br])) {
-		fb[3 + br] = 0.0;
+	/* a component identically zero in the exact formula (naive's b2 = n x
+	   (e - n (n.e)) = n x e has no e component, for any n), where the
+	   reference's cross product leaves a rounding residue */
+	if (zero >= 0 && isfinite(fb[zero])) {
+		fb[zero] = 0.0;
 		if (!hard)
 			return 0;
 		/* hard only through that residue? */
 		for (i = 0, hard = 0; i < nc; i++)
-			if (i != 3 + br) {
+			if (i != zero) {
 				double t;
 				hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &t);
 			}
@@ -556,11 +325,11 @@ static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, cons
 		fprintf(stderr, "onbstudy: out of memory for the floor's %ld-bit re-evaluation\n", (long)c->prec + 128);
 		return 1;
 	}
-	set3(c->hi->n, n[0], n[1], n[2]);
+	kit_set3(c->hi->n, n[0], n[1], n[2]);
 	c->hi->have_last = 0;
 	reference(c->hi, k, br, loc);
 	for (i = 0; i < nc; i++)
-		if (!(k->m && k->family == FAM_NAIVE && i == 3 + br))
+		if (i != zero)
 			(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
 	return 1;
 }
@@ -687,12 +456,12 @@ void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const
    bit pattern, so -0 and +0 are different inputs. */
 static void input_norm(ref_ctx *c, const double n[3])
 {
-	mpfr_t *t = c->t;
+	mpfr_t *t = c->k.t;
 	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
-		set3(c->n, n[0], n[1], n[2]);
+		kit_set3(c->n, n[0], n[1], n[2]);
 		c->last_norm = norm_m1_exact(c, c->n, n);
 		/* 1/|n| = 1/(1 + (|n| - 1)) at the context's precision */
-		dot(c, t[0], c->n, c->n);
+		kit_dot(&c->k, t[0], c->n, c->n);
 		mpfr_rec_sqrt(c->inv_n, t[0], R);
 		memcpy(c->last, n, sizeof c->last);
 		c->have_last = 1;
@@ -809,11 +578,11 @@ int ref_agree(const sample_metrics *a, const sample_metrics *b, char *why, size_
 
 void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF])
 {
-	mpfr_t *t = c->t;
-	set3(c->n, n[0], n[1], n[2]);
+	mpfr_t *t = c->k.t;
+	kit_set3(c->n, n[0], n[1], n[2]);
 	c->have_last = 0; /* c->n no longer holds the cached input */
-	set3(c->b1, b[0], b[1], b[2]);
-	set3(c->b2, b[3], b[4], b[5]);
+	kit_set3(c->b1, b[0], b[1], b[2]);
+	kit_set3(c->b2, b[3], b[4], b[5]);
 	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
 	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
 	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = mpfr_get_d(t[0], R);

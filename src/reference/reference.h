@@ -40,7 +40,7 @@ mpfr_prec_t ref_prec(const ref_ctx *c);
 enum { DEF_N1 = 0, DEF_N2, DEF_D1N, DEF_D2N, DEF_D12, NDEF };
 
 typedef struct {
-	int branch;          /* branch id the kernel took (branch.inc)               */
+	int branch;          /* branch id the kernel took (its family's rule)       */
 	int stratum;         /* the input's stratum (inputs.h), set by the engine    */
 	int nonfinite;       /* an output was NaN or infinite: no other metric       */
 	int wrong_hand;      /* det(b1, b2, n) * handedness <= 0                     */

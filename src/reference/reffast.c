@@ -28,9 +28,9 @@
  *
  * Speed (issue 14; each step measured, none changes a stored bit):
  *  - one formula per input and family: the kernels of a family (naive's
- *    four normalizations, frisvad and frisvad_max, duff's upper branch and
- *    frisvad, the float-only duff_wide and duff_comp...) share the
- *    formula's value, its roundings and its floor (fentry, formula());
+ *    four normalizations, frisvad and frisvad_max, duff_branchless and the
+ *    float-only duff_wide and duff_comp...) share the formula's value, its
+ *    roundings and its floor (fentry, formula());
  *  - the shape figures (defects, |w| - 1, w.n - z) are decided first by a
  *    lean dot (fdot_round: three TwoSums for floats, two TwoSum levels over
  *    TwoProd for doubles), four lanes at a time in AVX vectors where the
@@ -51,6 +51,7 @@
 #include <immintrin.h>
 #endif
 #include "reference/reffast.h"
+#include "arith/pair.h"
 
 /* The formula of a family on one input, shared by every kernel of that
    family on that input (the sweep evaluates all kernels of an input in a
@@ -58,12 +59,11 @@
    input (n, loc, precision, normalize_n) plus the formula: family, branch
    and whether it normalizes (naive and hughes_moeller have a _nonorm). */
 #define FCACHE 32
-/* A value with its bound (xv below) in each of the two instantiations:
-   the context is shared by both, so its entries hold either kind. */
-typedef struct { double h, l, e; } xv_pd;              /* reffast_f.c */
-typedef struct { long double h, l; double e; } xv_pl;  /* reffast.c   */
+/* The context is shared by both instantiations (xv_pd, xv_pl: pair.h),
+   so its entries hold either kind. */
 typedef struct {
-	int key;                  /* family * 64 + branch * 2 + normalizes, -1: empty */
+	const study_family *fam;  /* the formula's family, and its key in it (formula_key) */
+	int key;
 	int ok;                   /* the formula's bounds hold (else MPFR decides) */
 	int floor_ok;             /* floor figures determined                      */
 	union { xv_pd d[6]; xv_pl l[6]; } xr; /* r1[3], r2[3] (XR: this file's) */
@@ -82,12 +82,13 @@ typedef struct {
    earlier one on the same input has the same shape figures (defects, det,
    direction errors: functions of those bits, n and loc alone), and, when
    its formula is the same too (frisvad and frisvad_max almost always;
-   duff's upper branch and frisvad; duff_branchless, duff_wide and
-   duff_comp; the naive and hughes_moeller normalizations), every figure. */
+   duff_branchless, duff_wide and duff_comp; the naive and hughes_moeller
+   normalizations), every figure. */
 #define MEMO 48
 typedef struct {
 	uint64_t hash;            /* of out[], w[] and has_basis                */
-	int key;                  /* the formula's key (fentry.key)              */
+	const study_family *fam;  /* the formula's family and key (fentry)        */
+	int key;
 	int rc;                   /* what reffast_eval returned for it          */
 	sample_metrics smp;
 } memo_entry;
@@ -107,19 +108,6 @@ struct reffast_ctx {
 	double inv_e;
 };
 
-/* The hot helpers are inlined into their callers (measured: about a
-   fifth of the fast path's time went to calls and spills), and so are the
-   formula's building blocks (xrecip, xrsqrt, xdot, xcross, xnormalize,
-   xfrisvad, xduff: 4% in both precisions, for twice the code). */
-#if defined(__GNUC__)
-#define HOT static inline __attribute__((always_inline))
-#else
-#define HOT static inline
-#endif
-
-#define INFL (1.0 + 0x1p-40)     /* inflation of every computed bound        */
-#define TINY 0x1p-900            /* smallest magnitude allowed (no underflow) */
-#define FLOOR 0x1p-1000          /* absolute floor added to inexact bounds   */
 
 /* The two instantiations of everything below (see the top of the pair
    arithmetic): reffast.c with pairs of long doubles, reffast_f.c (this
@@ -182,7 +170,7 @@ int reffast_eval(reffast_ctx *c, const study_kernel *k, int prec, const double n
 }
 #endif
 
-#include "reference/reffast_arith.h"  /* the pair arithmetic and Ziv's test */
+#include "arith/pair_kit.h"  /* the pair arithmetic and Ziv's test */
 
 /* ---- exact sums of products (reference.c's exact_sum) ---- */
 
@@ -576,190 +564,19 @@ HOT int norm_m1_fast(const reffast_ctx *c, const double *v, double *out)
 	return 1;
 }
 
-/* ---- the method's formula, mirroring reference.c operation by operation ---- */
-
-/* dot(): p0 = a0 b0, p1 = a1 b1, out = p0 + p1, p0 = a2 b2, out += p0 */
-HOT xv xdot(const xv *a, const xv *b, int *bad)
-{
-	xv o = xadd(xmul(a[0], b[0], bad), xmul(a[1], b[1], bad), bad);
-	return xadd(o, xmul(a[2], b[2], bad), bad);
-}
-
-HOT void xcross(xv *o, const xv *a, const xv *b, int *bad)
-{
-	o[0] = xsub(xmul(a[1], b[2], bad), xmul(a[2], b[1], bad), bad);
-	o[1] = xsub(xmul(a[2], b[0], bad), xmul(a[0], b[2], bad), bad);
-	o[2] = xsub(xmul(a[0], b[1], bad), xmul(a[1], b[0], bad), bad);
-}
-
-HOT void xnormalize(xv *a, int *bad)
-{
-	const xv r = xrsqrt(xdot(a, a, bad), bad);
-	int i;
-	if (*bad)
-		return;
-	for (i = 0; i < 3; i++)
-		a[i] = xmul(a[i], r, bad);
-}
-
-static void xset3(xv *o, double x, double y, double z) { o[0] = xc(x); o[1] = xc(y); o[2] = xc(z); }
-
-/* frisvad_formula: a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
-HOT void xfrisvad(const xv *n, xv *b1, xv *b2, int *bad)
-{
-	const xv a = xrecip(xadd(n[2], xc(1.0), bad), bad);
-	const xv b = xneg(xmul(xmul(n[0], n[1], bad), a, bad));
-	if (*bad)
-		return;
-	b1[0] = xsub(xc(1.0), xmul(xmul(n[0], n[0], bad), a, bad), bad);
-	b1[1] = b;
-	b1[2] = xneg(n[0]);
-	b2[0] = b;
-	b2[1] = xsub(xc(1.0), xmul(xmul(n[1], n[1], bad), a, bad), bad);
-	b2[2] = xneg(n[1]);
-}
-
-/* Duff's lower branch and the branchless form with s = +-1:
-   a = -1/(s + z), b = x y a, b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y);
-   Duff's lower branch (branchless = 0): a = 1/(1 - z), b = x y a,
-   b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y). */
-HOT void xduff(const xv *n, int s, int branchless, xv *r1, xv *r2, int *bad)
-{
-	xv a, b, t2;
-	if (branchless) {
-		a = xneg(xrecip(xadd(n[2], xc((double)s), bad), bad));
-	} else {
-		a = xrecip(xsub(xc(1.0), n[2], bad), bad);
-	}
-	b = xmul(xmul(n[0], n[1], bad), a, bad);
-	if (*bad)
-		return;
-	t2 = xmul(xmul(n[0], n[0], bad), a, bad);
-	if (branchless) {
-		if (s < 0) t2 = xneg(t2);
-		r1[0] = xadd(t2, xc(1.0), bad);
-		r1[1] = s < 0 ? xneg(b) : b;
-		r1[2] = s < 0 ? n[0] : xneg(n[0]);
-		r2[0] = b;
-		r2[1] = xadd(xmul(xmul(n[1], n[1], bad), a, bad), xc((double)s), bad);
-	} else {
-		r1[0] = xsub(xc(1.0), t2, bad);
-		r1[1] = xneg(b);
-		r1[2] = n[0];
-		r2[0] = b;
-		r2[1] = xsub(xmul(xmul(n[1], n[1], bad), a, bad), xc(1.0), bad);
-	}
-	r2[2] = xneg(n[1]);
-}
-
-/* frisvad_rotate, Equation 3: the direction loc in Frisvad's basis of n
-   (r2 is scratch); at n.z = -1 exactly, (-y, -x, -z). */
-static void xrotate(const xv *n, const double loc[3], xv *r1, xv *r2, int *bad)
-{
-	xv u[3];
-	int i;
-	const xv t3 = xadd(n[2], xc(1.0), bad);
-	if (is_zero(t3)) {
-		xset3(r1, -loc[1], -loc[0], -loc[2]);
-		return;
-	}
-	xfrisvad(n, u, r2, bad);
-	if (*bad)
-		return;
-	for (i = 0; i < 3; i++) {
-		r1[i] = xadd(xmul(xc(loc[0]), u[i], bad), xmul(xc(loc[1]), r2[i], bad), bad);
-		r1[i] = xadd(r1[i], xmul(xc(loc[2]), n[i], bad), bad);
-	}
-}
-
 /* reference(): the exact formula of kernel k on n along branch br, into
-   r1, r2 (or the rotated direction into r1 for frisvad_rotate). */
+   r1, r2 (or the rotated direction into r1 for frisvad_rotate), by its
+   family's pair formula (src/families/). */
 static void xreference(const study_kernel *k, int br, const double loc[3], const double nd[3],
                        xv *r1, xv *r2, int *bad)
 {
-	xv n[3], u[3], w[3];
-	const onb_method *m = k->m;
-	int i;
+	xv n[3];
 	xset3(n, nd[0], nd[1], nd[2]);
-	if (!m) {
-		xrotate(n, loc, r1, r2, bad);
-		return;
-	}
-	switch (k->family) {
-	case FAM_NAIVE: {
-		const xv d = br ? n[1] : n[0];
-		for (i = 0; i < 3; i++)
-			r1[i] = xmul(n[i], d, bad);
-		r1[br ? 1 : 0] = xsub(xc(1.0), r1[br ? 1 : 0], bad);
-		r1[br ? 0 : 1] = xneg(r1[br ? 0 : 1]);
-		r1[2] = xneg(r1[2]);
-		if (m->norm != ONB__NORM_NONE)
-			xnormalize(r1, bad);
-		xcross(r2, n, r1, bad);
-		break;
-	}
-	case FAM_HUGHES_MOELLER:
-		if (br) {
-			r2[0] = xneg(n[1]); r2[1] = n[0]; r2[2] = xc(0.0);
-		} else {
-			r2[0] = xc(0.0); r2[1] = xneg(n[2]); r2[2] = n[1];
-		}
-		if (m->norm != ONB__NORM_NONE)
-			xnormalize(r2, bad);
-		xcross(r1, r2, n, bad);
-		break;
-	case FAM_FRISVAD:
-		if (br) {
-			xset3(r1, 0.0, -1.0, 0.0);
-			xset3(r2, -1.0, 0.0, 0.0);
-		} else {
-			xfrisvad(n, r1, r2, bad);
-		}
-		break;
-	case FAM_DUFF:
-		if (br)
-			xduff(n, -1, 0, r1, r2, bad);
-		else
-			xfrisvad(n, r1, r2, bad);
-		break;
-	case FAM_DUFF_BRANCHLESS:
-		xduff(n, br ? -1 : 1, 1, r1, r2, bad);
-		break;
-	case FAM_STARK:
-	case FAM_STARK_FIXED:
-		/* as published zm = 1; fixed (Hill 2011) e_k */
-		xset3(u, br == 0, br == 1, k->family == FAM_STARK ? 1 : br == 2);
-		xcross(r1, n, u, bad);
-		xnormalize(r1, bad);
-		xcross(r2, n, r1, bad);
-		break;
-	case FAM_PBRT_V3:
-		if (br) {
-			r1[0] = xneg(n[2]); r1[1] = xc(0.0); r1[2] = n[0];
-		} else {
-			r1[0] = xc(0.0); r1[1] = n[2]; r1[2] = xneg(n[1]);
-		}
-		xnormalize(r1, bad);
-		xcross(r2, n, r1, bad);
-		break;
-	case FAM_RTOW:
-		for (i = 0; i < 3; i++)
-			w[i] = n[i];
-		xnormalize(w, bad);
-		xset3(u, br ? 0.0 : 1.0, br ? 1.0 : 0.0, 0.0);
-		xcross(r2, w, u, bad);
-		xnormalize(r2, bad);
-		xcross(r1, w, r2, bad);
-		break;
-	case FAM_TANGENT_CROSS_Z:
-		u[0] = n[0]; u[1] = n[1]; u[2] = xadd(n[2], xc(1.0), bad);
-		xcross(r2, n, u, bad);
-		xnormalize(r2, bad);
-		xcross(r1, n, r2, bad);
-		break;
-	default: /* a family reference.c does not know: MPFR decides */
-		*bad = 1;
-	}
+#ifdef REFFAST_PAIR_DOUBLE
+	k->fam->pair_d(k->m, br, loc, n, r1, r2, bad);
+#else
+	k->fam->pair_l(k->m, br, loc, n, r1, r2, bad);
+#endif
 }
 
 /* forward(): the forward error of component cv against E.  1 when every
@@ -1084,11 +901,11 @@ static int floor_fast(const reffast_ctx *c, const fentry *e, const study_kernel 
                       const double n[3], const double loc[3], int normalize_n, xv inv, const xv *r1, const xv *r2,
                       double f[3])
 {
-	const int nc = k->m ? 6 : 3;
+	const int nc = k->m ? 6 : 3, zero = k->m ? k->fam->exact_zero(k->m, br) : -1;
 	double fb[6], w[3], d[NDEF];
 	int i;
 	for (i = 0; i < nc; i++) {
-		if (k->m && k->family == FAM_NAIVE && i == 3 + br) {
+		if (i == zero) {
 			fb[i] = 0.0; /* identically zero (reference.c floor_basis) */
 			continue;
 		}
@@ -1130,18 +947,12 @@ static int floor_fast(const reffast_ctx *c, const fentry *e, const study_kernel 
 	return 1;
 }
 
-/* The key of kernel k's formula on branch br: family * 64 + branch * 2 +
-   whether it normalizes (naive and hughes_moeller have a _nonorm). */
+/* The key of kernel k's formula on branch br, within its family:
+   branch * 2 + the family's variant (naive's and hughes_moeller's
+   normalized formula and the unnormalized one). */
 static int formula_key(const study_kernel *k, int br)
 {
-	int fam = k->family;
-	/* duff's upper branch is Frisvad's formula, and so is duff_branchless's
-	   (s = 1): a = -1/(1 + z) there, and every intermediate is Frisvad's
-	   or its exact negation, in MPFR (rounding to nearest is symmetric) as
-	   in the pairs; the same values to the last bit (reference.c) */
-	if ((fam == FAM_DUFF || fam == FAM_DUFF_BRANCHLESS) && br == 0)
-		fam = FAM_FRISVAD;
-	return fam * 64 + br * 2 + ((fam == FAM_NAIVE || fam == FAM_HUGHES_MOELLER) && k->m->norm != ONB__NORM_NONE);
+	return br * 2 + k->fam->variant(k->m);
 }
 
 /* Start the formula cache and the memo anew when the input (n, loc,
@@ -1173,7 +984,8 @@ static uint64_t out_hash(const sample_metrics *s, int has_basis)
 
 /* The memo's entry with the same output bits as s (and has_basis), the
    one of the same formula key if there is one; NULL if none. */
-static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, int key, const sample_metrics *s)
+static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, const study_family *fam, int key,
+                                   const sample_metrics *s)
 {
 	const memo_entry *any = NULL;
 	int i;
@@ -1182,7 +994,7 @@ static const memo_entry *memo_find(const reffast_ctx *c, uint64_t hash, int key,
 		if (m->hash != hash || memcmp(m->smp.out, s->out, sizeof s->out) != 0 ||
 		    memcmp(m->smp.w, s->w, sizeof s->w) != 0 || m->smp.has_basis != s->has_basis)
 			continue;
-		if (m->key == key)
+		if (m->fam == fam && m->key == key)
 			return m;
 		any = m;
 	}
@@ -1221,7 +1033,7 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int br, const doub
 	fentry *e;
 	int i;
 	for (i = 0; i < c->nf; i++)
-		if (c->fc[i].key == key) {
+		if (c->fc[i].fam == k->fam && c->fc[i].key == key) {
 			e = &c->fc[i];
 			*r1 = XR(e);
 			*r2 = XR(e) + 3;
@@ -1235,6 +1047,7 @@ static fentry *formula(reffast_ctx *c, const study_kernel *k, int br, const doub
 		return NULL;
 	}
 	e = &c->fc[c->nf++];
+	e->fam = k->fam;
 	e->key = key;
 	xreference(k, br, loc, n, XR(e), XR(e) + 3, bad);
 	e->ok = !*bad;
@@ -1308,8 +1121,8 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	same_input(c, prec, n, loc, normalize_n);
 	key = formula_key(k, s->branch);
 	hash = out_hash(s, s->has_basis);
-	mm = memo_find(c, hash, key, s);
-	if (mm && mm->key == key) { /* the same bits and formula: the same figures */
+	mm = memo_find(c, hash, k->fam, key, s);
+	if (mm && mm->fam == k->fam && mm->key == key) { /* the same bits and formula: the same figures */
 		*s = mm->smp;
 		set_hand(k, s);
 		return mm->rc;
@@ -1346,6 +1159,7 @@ int EVAL_NAME(reffast_ctx *c, const study_kernel *k, int prec, const double n_in
 	if (c->nmemo < MEMO) {
 		memo_entry *m = &c->memo[c->nmemo++];
 		m->hash = hash;
+		m->fam = k->fam;
 		m->key = key;
 		m->rc = rc;
 		m->smp = *s;

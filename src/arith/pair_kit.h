@@ -1,14 +1,20 @@
 /*
- * reffast_arith.h - the fast reference's arithmetic (internal to
- * reffast.c, which includes it once per instantiation: pairs of long
- * doubles in reffast.c, pairs of doubles in reffast_f.c, chosen by
- * REFFAST_PAIR_DOUBLE; so no include guard).  Exponents by bit pattern,
+ * pair_kit.h - the fast reference's arithmetic, included once per
+ * instantiation (pairs of long doubles, or pairs of doubles when
+ * REFFAST_PAIR_DOUBLE is defined; so no include guard) by reffast.c,
+ * reffast_f.c and each family's fast formula (src/families/).  Exponents by bit pattern,
  * error-free transformations, the pair ("double-long-double") arithmetic
  * with a running error bound on every value (xv: h + l, error e), and
  * Ziv's rounding test that decides whether a bounded value rounds to one
- * float or double.  Needs, from reffast.c: HOT, INFL, TINY, FLOOR and the
- * types xv_pd, xv_pl.
+ * float or double; then the formulas' building blocks (dot, cross,
+ * normalize, Frisvad's and Duff's formulas).  HOT, INFL, TINY, FLOOR and
+ * the types xv_pd, xv_pl come from pair.h.
  */
+#include <math.h>
+#include <float.h>
+#include <stdint.h>
+#include <string.h>
+#include "arith/pair.h"
 /* ---- exponents by bit pattern (no libm call on the fast path) ---- */
 
 /* Trailing zeros of m != 0. */
@@ -475,3 +481,80 @@ HOT int ziv(xv v, int bits, double *out)
 
 HOT int ziv_d(xv v, double *out) { return ziv(v, 53, out); }
 HOT int ziv_f(xv v, double *out) { return ziv(v, 24, out); }
+
+/* ---- the formulas' building blocks, mirroring the MPFR kit (mpfr_kit.c)
+   operation by operation ---- */
+
+/* dot(): p0 = a0 b0, p1 = a1 b1, out = p0 + p1, p0 = a2 b2, out += p0 */
+HOT xv xdot(const xv *a, const xv *b, int *bad)
+{
+	xv o = xadd(xmul(a[0], b[0], bad), xmul(a[1], b[1], bad), bad);
+	return xadd(o, xmul(a[2], b[2], bad), bad);
+}
+
+HOT void xcross(xv *o, const xv *a, const xv *b, int *bad)
+{
+	o[0] = xsub(xmul(a[1], b[2], bad), xmul(a[2], b[1], bad), bad);
+	o[1] = xsub(xmul(a[2], b[0], bad), xmul(a[0], b[2], bad), bad);
+	o[2] = xsub(xmul(a[0], b[1], bad), xmul(a[1], b[0], bad), bad);
+}
+
+HOT void xnormalize(xv *a, int *bad)
+{
+	const xv r = xrsqrt(xdot(a, a, bad), bad);
+	int i;
+	if (*bad)
+		return;
+	for (i = 0; i < 3; i++)
+		a[i] = xmul(a[i], r, bad);
+}
+
+static inline void xset3(xv *o, double x, double y, double z) { o[0] = xc(x); o[1] = xc(y); o[2] = xc(z); }
+
+/* kit_frisvad with sg = +1: a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
+HOT void xfrisvad(const xv *n, xv *b1, xv *b2, int *bad)
+{
+	const xv a = xrecip(xadd(n[2], xc(1.0), bad), bad);
+	const xv b = xneg(xmul(xmul(n[0], n[1], bad), a, bad));
+	if (*bad)
+		return;
+	b1[0] = xsub(xc(1.0), xmul(xmul(n[0], n[0], bad), a, bad), bad);
+	b1[1] = b;
+	b1[2] = xneg(n[0]);
+	b2[0] = b;
+	b2[1] = xsub(xc(1.0), xmul(xmul(n[1], n[1], bad), a, bad), bad);
+	b2[2] = xneg(n[1]);
+}
+
+/* Duff's lower branch and the branchless form with s = +-1:
+   a = -1/(s + z), b = x y a, b1 = (1 + s x^2 a, s b, -s x), b2 = (b, s + y^2 a, -y);
+   Duff's lower branch (branchless = 0): a = 1/(1 - z), b = x y a,
+   b1 = (1 - x^2 a, -b, x), b2 = (b, y^2 a - 1, -y). */
+HOT void xduff(const xv *n, int s, int branchless, xv *r1, xv *r2, int *bad)
+{
+	xv a, b, t2;
+	if (branchless) {
+		a = xneg(xrecip(xadd(n[2], xc((double)s), bad), bad));
+	} else {
+		a = xrecip(xsub(xc(1.0), n[2], bad), bad);
+	}
+	b = xmul(xmul(n[0], n[1], bad), a, bad);
+	if (*bad)
+		return;
+	t2 = xmul(xmul(n[0], n[0], bad), a, bad);
+	if (branchless) {
+		if (s < 0) t2 = xneg(t2);
+		r1[0] = xadd(t2, xc(1.0), bad);
+		r1[1] = s < 0 ? xneg(b) : b;
+		r1[2] = s < 0 ? n[0] : xneg(n[0]);
+		r2[0] = b;
+		r2[1] = xadd(xmul(xmul(n[1], n[1], bad), a, bad), xc((double)s), bad);
+	} else {
+		r1[0] = xsub(xc(1.0), t2, bad);
+		r1[1] = xneg(b);
+		r1[2] = n[0];
+		r2[0] = b;
+		r2[1] = xsub(xmul(xmul(n[1], n[1], bad), a, bad), xc(1.0), bad);
+	}
+	r2[2] = xneg(n[1]);
+}

@@ -1,5 +1,5 @@
 /*
- * model_int.h - inside the model context: shared by model.c, models.c and
+ * model_int.h - inside the model context: shared by model.c, model_kit.h and
  * mvf.c, never by the command.
  */
 #ifndef ONB_CERTIFY_MODEL_INT_H

@@ -1,0 +1,91 @@
+/*
+ * pbrt_v3.c - pbrt-v3's CoordinateSystem (src/core/geometry.h): b1 is n
+ * with a component zeroed, normalized; b2 = n x b1, the cross product
+ * widened to double in float (pbrt-v3's Cross).
+ */
+#include <math.h>
+#include "families/family.h"
+
+#define R MPFR_RNDN
+
+#if FAMILY_RULE_PASS
+/* 1 when |n.x| > |n.y| */
+int FAMILY_BRANCH(pbrt_v3)(const onb_method *m, int prec, const double n[3])
+{
+	(void)m;
+	if (prec == PREC_FLOAT)
+		return fabsf((float)n[0]) > fabsf((float)n[1]);
+	return fabs(n[0]) > fabs(n[1]);
+}
+#endif
+
+#if FAMILY_PAIR_PASS
+void FAMILY_PAIR(pbrt_v3)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
+{
+	(void)m; (void)loc;
+	if (br) {
+		r1[0] = xneg(n[2]); r1[1] = xc(0.0); r1[2] = n[0];
+	} else {
+		r1[0] = xc(0.0); r1[1] = n[2]; r1[2] = xneg(n[1]);
+	}
+	xnormalize(r1, bad);
+	xcross(r2, n, r1, bad);
+}
+#endif
+
+#if FAMILY_MAIN_PASS
+#include "model/model_kit.h"
+
+static const char *names(const onb_method *m, int b, char *buf, size_t n)
+{
+	(void)m; (void)buf; (void)n;
+	return b ? "|n.x| > |n.y|: b1 = (-n.z, 0, n.x) / len" : "|n.x| <= |n.y|: b1 = (0, n.z, -n.y) / len";
+}
+
+static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
+{
+	(void)m; (void)loc;
+	if (br) {
+		mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
+	} else {
+		mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
+	}
+	kit_normalize(c, r1);
+	kit_cross(c, r2, n, r1);
+}
+
+static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	cv inv, u[3], w[3], uw[3], b[3];
+	int i;
+	(void)m;
+	if (cm_branch_abs(c, 0, CM_GT, n[0], n[1])) {
+		inv = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[2], n[2]))));
+		u[0] = MUL(cm_neg(c, n[2]), inv); u[1] = MUL(K(0.0), inv); u[2] = MUL(n[0], inv);
+	} else {
+		inv = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
+		u[0] = MUL(K(0.0), inv); u[1] = MUL(n[2], inv); u[2] = MUL(cm_neg(c, n[1]), inv);
+	}
+	if (P == CM_F64) {
+		mk_post_n_cross_u(c, P, n, u, K(1.0), out);
+		return;
+	}
+	for (i = 0; i < 3; i++) {  /* pbrt-v3's Cross: widened to double, then to float */
+		out[i] = u[i];
+		w[i] = cm_cvt(c, CM_F64, n[i]);
+	}
+	for (i = 0; i < 3; i++)
+		uw[i] = cm_cvt(c, CM_F64, u[i]);
+	mk_cross(c, CM_F64, w, uw, b);
+	for (i = 0; i < 3; i++)
+		out[3 + i] = cm_cvt(c, CM_F32, b[i]);
+}
+
+static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
+
+FAMILY_DECLARE(pbrt_v3);
+const study_family family_pbrt_v3 = {
+	"pbrt_v3", FAMILY_PASSES(pbrt_v3), names, mpfr, FAMILY_PAIRS(pbrt_v3), family_no_variant,
+	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+};
+#endif

@@ -1,0 +1,101 @@
+/*
+ * model_kit.h - the operations the families' rounding models are written
+ * with (src/families/): a kernel's operations in the model context
+ * (model.h), in the same order and format as include/onb.h performs them.
+ * C evaluates a*b*c as (a*b)*c and -a*b as (-a)*b; the models spell that
+ * out.  The macros need `c` (the context) and `P` (CM_F32 or CM_F64) in
+ * scope.  The kit imports the model context alone.
+ */
+#ifndef ONB_CERTIFY_MODEL_KIT_H
+#define ONB_CERTIFY_MODEL_KIT_H
+
+#include "libonb/onb.h"
+#include "model.h"
+#include "model_int.h"
+
+#define ADD(a, b) cm_add(c, P, a, b)
+#define SUB(a, b) cm_sub(c, P, a, b)
+#define MUL(a, b) cm_mul(c, P, a, b)
+#define DIV(a, b) cm_div(c, P, a, b)
+#define K(v)      cm_cst(c, P == CM_F32 ? (double)(float)(v) : (v))
+
+/* b = cross(p, q) as onb.h writes it: b.x = p.y*q.z - p.z*q.y, ... */
+static inline void mk_cross(cm *c, int P, const cv p[3], const cv q[3], cv b[3])
+{
+	b[0] = SUB(MUL(p[1], q[2]), MUL(p[2], q[1]));
+	b[1] = SUB(MUL(p[2], q[0]), MUL(p[0], q[2]));
+	b[2] = SUB(MUL(p[0], q[1]), MUL(p[1], q[0]));
+}
+
+/* x*x + y*y + z*z, left to right */
+static inline cv mk_dot3(cm *c, int P, const cv p[3], const cv q[3])
+{
+	return ADD(ADD(MUL(p[0], q[0]), MUL(p[1], q[1])), MUL(p[2], q[2]));
+}
+
+/* onb__rsq / onb__rsqf: the normalization variants (onb_method.norm).
+   Newton's step y * (1.5 - 0.5*x*y*y) is Listing 3's (and InvSqrt's, with
+   xhalf = 0.5*x computed first: the same products in the same order). */
+static inline cv mk_rsq(cm *c, int P, cv x, int norm)
+{
+	switch (norm) {
+	case ONB__NORM_INVSQRT:
+		return cm_newton(c, P, x, cm_seed(c, P == CM_F32 ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
+	case ONB__NORM_RSQRT:
+	case ONB__NORM_RSQRT_NR: {
+		cv xf = P == CM_F32 ? x : cm_cvt(c, CM_F32, x), y;
+#if ONB_HAVE_HW_RSQRT
+		y = cm_seed(c, SEED_RSQRTSS, xf);
+#else
+		y = cm_div(c, CM_F32, cm_cst(c, 1.0), cm_sqrt(c, CM_F32, xf));
+#endif
+		y = cm_cvt(c, P, y);
+		return norm == ONB__NORM_RSQRT ? y : cm_newton(c, P, x, y);
+	}
+	case ONB__NORM_NONE:
+		cm_formula_nonzero(c, CQ_LENGTHS);
+		return K(1.0);
+	default: /* (float)(1.0/sqrt((double)x)) in float, 1.0/sqrt(x) in double */
+		return cm_cvt(c, P, cm_div(c, CM_F64, cm_cst(c, 1.0), cm_sqrt(c, CM_F64, cm_cvt(c, CM_F64, x))));
+	}
+}
+
+/* onb__naive_post: u *= s, b1 = u, b2 = cross(n, u). */
+static inline void mk_post_n_cross_u(cm *c, int P, const cv n[3], const cv u[3], cv s, cv out[6])
+{
+	int i;
+	for (i = 0; i < 3; i++)
+		out[i] = MUL(u[i], s);
+	mk_cross(c, P, n, out, out + 3);
+}
+
+/* Frisvad's formula with a = 1/(1 + n.z) (sg = +1) and Duff's mirror with
+   a = 1/(1 - n.z) (sg = -1), as onb_frisvad_threshold and onb_duff. */
+static inline void mk_frisvad(cm *c, int P, int sg, const cv n[3], cv out[6])
+{
+	cv one = K(1.0), a, b;
+	a = DIV(one, sg > 0 ? ADD(one, n[2]) : SUB(one, n[2]));
+	if (sg > 0) {
+		b = MUL(MUL(cm_neg(c, n[0]), n[1]), a);
+		out[0] = SUB(one, MUL(MUL(n[0], n[0]), a)); out[1] = b; out[2] = cm_neg(c, n[0]);
+		out[3] = b; out[4] = SUB(one, MUL(MUL(n[1], n[1]), a)); out[5] = cm_neg(c, n[1]);
+	} else {
+		b = MUL(MUL(n[0], n[1]), a);
+		out[0] = SUB(one, MUL(MUL(n[0], n[0]), a)); out[1] = cm_neg(c, b); out[2] = n[0];
+		out[3] = b; out[4] = SUB(MUL(MUL(n[1], n[1]), a), one); out[5] = cm_neg(c, n[1]);
+	}
+}
+
+/* The defect quantities (CQ_ bits) that stay 0 in exact arithmetic for
+   every n, unit or not: b1 normalized and b2 = n x b1 (naive); b2 = v s
+   with v.n = 0 and b1 = v x n (hughes_moeller); b1 = p/|p| with p = n x e
+   and b2 = n x b1 (stark, pbrt_v3; tangent_cross_z with b1 and b2
+   swapped).  Frisvad's and Duff's formulas need a unit n for every one. */
+#define ZN_CROSS     ((1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_NAIVE     (ZN_CROSS | (1u << CQ_N1))
+#define ZN_HM_NONORM ((1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_HM        (ZN_HM_NONORM | (1u << CQ_N2))
+#define ZN_UNIT_B1   ((1u << CQ_N1) | (1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+#define ZN_UNIT_B2   ((1u << CQ_N2) | (1u << CQ_D1N) | (1u << CQ_D2N) | (1u << CQ_D12))
+
+#endif

@@ -1,6 +1,6 @@
 /*
  * family.h - what the study knows about one formula family: everything
- * but the kernel (include/onb.h) and the method's parameters (its
+ * but the kernel (include/libonb/onb.h) and the method's parameters (its
  * registry row, src/lib/registry.c).  One file per family in
  * src/families/ fills one study_family; families.c names them all.
  *

@@ -1,7 +1,7 @@
 /*
  * model_kit.h - the operations the families' rounding models are written
  * with (src/families/): a kernel's operations in the model context
- * (model.h), in the same order and format as include/onb.h performs them.
+ * (model.h), in the same order and format as include/libonb/onb.h performs them.
  * C evaluates a*b*c as (a*b)*c and -a*b as (-a)*b; the models spell that
  * out.  The macros need `c` (the context) and `P` (CM_F32 or CM_F64) in
  * scope.  The kit imports the model context alone.

@@ -241,6 +241,22 @@ test: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX)
 	for t in tests/*.sh; do [ -f "$$t" ] && [ "$$t" != tests/lib.sh ] || continue; echo "== $$t"; ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1; done; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
 
+# make check-method M=NAME: what a new method needs, in about a minute:
+# its parts (test_parts NAME: registry, family, kernel against its
+# family's formula, eval's branch words, axes rows, man page, header index),
+# the independent transliterations (test_indep --quick), its rounding model
+# bit-exact on 20000 inputs (test_certify), and a small sweep and certify.
+CHECK_OUT = $(B)/check-method
+.PHONY: check-method
+check-method: all $(B)/tests/test_parts $(B)/tests/test_indep $(B)/tests/test_certify
+	@test -n "$(M)" || { echo "usage: make check-method M=NAME"; exit 2; }
+	$(B)/tests/test_parts $(M)
+	$(B)/tests/test_indep --quick
+	$(B)/tests/test_certify 20000 $(M)
+	./onbstudy sweep --methods $(M) --samples 4096 --exhaustive-count 512 --grid 4x8 --threads 2 --quiet --out $(CHECK_OUT)
+	./onbstudy certify --methods $(M) --quick --quiet --out $(CHECK_OUT)
+	@echo "check-method $(M): passed"
+
 bench: onbstudy
 	./onbstudy bench
 

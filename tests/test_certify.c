@@ -124,9 +124,11 @@ static long check(cm *c, const onb_method *m, const cm_method *cmm, int prec, lo
 	return bad;
 }
 
+/* argv[1]: inputs per method and precision; argv[2]: one method alone. */
 int main(int argc, char **argv)
 {
 	long count = argc > 1 ? atol(argv[1]) : 1000000;
+	const char *only = argc > 2 ? argv[2] : NULL;
 	size_t nm, i;
 	const onb_method *ms = onb_methods(&nm);
 	cm *c = cm_new(CM_EXEC);
@@ -136,6 +138,8 @@ int main(int argc, char **argv)
 	for (i = 0; i < nm; i++) {
 		const cm_method *cmm = cm_find(ms[i].name);
 		int prec;
+		if (only && strcmp(only, ms[i].name) != 0)
+			continue;
 		if (!cmm) {
 			printf("FAIL %s: no rounding model\n", ms[i].name);
 			fail = 1;

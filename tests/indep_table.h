@@ -31,6 +31,13 @@ static const indep_row T[] = {
 	{ "pbrt_v3", onb_pbrt_v3, onb_pbrt_v3f, IM_PBRT3, 0 },
 	{ "rtow", onb_rtow, onb_rtowf, IM_RTOW, 0 },
 	{ "tangent_cross_z", onb_tangent_cross_z, onb_tangent_cross_zf, IM_BLOG, 0 },
+	{ "q2rtx", onb_q2rtx, onb_q2rtxf, IW_Q2RTX, 0 },
+	{ "filament", onb_filament, onb_filamentf, IW_FILAMENT, 0 },
+	{ "mitsuba3", onb_mitsuba3, onb_mitsuba3f, IW_MITSUBA3, 0 },
+	{ "cycles_cross111", onb_cycles_cross111, onb_cycles_cross111f, IW_CYCLES111, 0 },
+	{ "cycles_cross111_avx2", onb_cycles_cross111_avx2, onb_cycles_cross111_avx2f, IW_CYCLES111_AVX2, 0 },
+	{ "embree", onb_embree, onb_embreef, IW_EMBREE, 0 },
+	{ "luxcore", onb_luxcore, onb_luxcoref, IW_LUXCORE, 0 },
 	/* float only (ONB_FLOAT_ONLY): no double function */
 	{ "duff_wide", NULL, onb_duff_widef, IM_DUFF_WIDE, 0 },
 	{ "duff_comp", NULL, onb_duff_compf, IM_DUFF_COMP, 0 },

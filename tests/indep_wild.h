@@ -15,9 +15,20 @@
  *   Falcor MathHelpers.slang branchlessONB: sign = n.z >= 0 ? 1 : -1 (ints).
  *   PasVulkan tangentspacebasis.glsl: GLSL sign() (0 for either zero; our
  *     reading for NaN: 0, both comparisons being false).
+ *   Quake II RTX utils.glsl construct_ONB_frisvad (mat3 columns b1, n, b2).
+ *   Filament TangentSpaceMesh.cpp frisvadKernel (y-up; returns {b, t}).
+ *   Mitsuba 3 vector.h coordinate_system with Dr.Jit's scalar sign,
+ *     rcp, square, mulsign, mulsign_neg and fmadd (no FMA).
+ *   Blender Cycles math_float3.h make_orthonormals, its SSE4.2 helpers
+ *     (dpps dot, lane-wise division, msub cross).
+ *   Embree linearspace3.h frame(N), vec3fa.h dot/cross/normalize,
+ *     emath.h rsqrt (rsqrtss and its Newton step).
+ *   LuxCoreRender vector.h CoordinateSystem and Cross.
  */
 #ifndef INDEP_WILD_H
 #define INDEP_WILD_H
+
+#include <float.h>
 
 /* pbrt-v4: Float sign = pstd::copysign(Float(1), v1.z); Float a = -1 / (sign + v1.z); ... */
 static float pbrt4_sqrf(float v) { return v * v; }
@@ -84,8 +95,227 @@ static void ind_pasvulkanf(Vec3f n, Vec3f *t, Vec3f *b)
 	*b = vf(c, s + n.y * n.y * a, -n.y);
 }
 
+/* ---- engines' methods (not aliases) ---- */
+
+/* Quake II RTX construct_ONB_frisvad(normal): a mat3 whose columns are
+   ret[0] = tangent, ret[1] = normal, ret[2] = bitangent; b1 = ret[0],
+   b2 = ret[2].  The double variant keeps the float literal. */
+static void ind_q2rtxf(Vec3f normal, Vec3f *r0, Vec3f *r2)
+{
+	if (normal.z < -0.999805696f) {
+		*r0 = vf(0.0f, -1.0f, 0.0f);
+		*r2 = vf(-1.0f, 0.0f, 0.0f);
+	} else {
+		float a = 1.0f / (1.0f + normal.z);
+		float b = -normal.x * normal.y * a;
+		*r0 = vf(1.0f - normal.x * normal.x * a, b, -normal.x);
+		*r2 = vf(b, 1.0f - normal.y * normal.y * a, -normal.y);
+	}
+}
+static void ind_q2rtxd(Vec3d normal, Vec3d *r0, Vec3d *r2)
+{
+	if (normal.z < (double)-0.999805696f) {
+		*r0 = vd(0.0, -1.0, 0.0);
+		*r2 = vd(-1.0, 0.0, 0.0);
+	} else {
+		double a = 1.0 / (1.0 + normal.z);
+		double b = -normal.x * normal.y * a;
+		*r0 = vd(1.0 - normal.x * normal.x * a, b, -normal.x);
+		*r2 = vd(b, 1.0 - normal.y * normal.y * a, -normal.y);
+	}
+}
+
+/* Filament frisvadKernel(n) -> {b, t}; the frame is {t, b, n}: b1 = t,
+   b2 = b.  The threshold -1.0f + std::numeric_limits<float>::epsilon() is
+   a float sum (exact), compared with n.y. */
+static void ind_filamentf(Vec3f n, Vec3f *t, Vec3f *b)
+{
+	if (n.y < -1.0f + FLT_EPSILON) {
+		*t = vf(-1.0f, 0.0f, 0.0f);
+		*b = vf(0.0f, 0.0f, -1.0f);
+	} else {
+		float const va = 1.0f / (1.0f + n.y);
+		float const vb = -n.z * n.x * va;
+		*t = vf(vb, -n.z, 1.0f - n.z * n.z * va);
+		*b = vf(1.0f - n.x * n.x * va, -n.x, vb);
+	}
+}
+static void ind_filamentd(Vec3d n, Vec3d *t, Vec3d *b)
+{
+	if (n.y < (double)(-1.0f + FLT_EPSILON)) {
+		*t = vd(-1.0, 0.0, 0.0);
+		*b = vd(0.0, 0.0, -1.0);
+	} else {
+		double const va = 1.0 / (1.0 + n.y);
+		double const vb = -n.z * n.x * va;
+		*t = vd(vb, -n.z, 1.0 - n.z * n.z * va);
+		*b = vd(1.0 - n.x * n.x * va, -n.x, vb);
+	}
+}
+
+/* Mitsuba 3 coordinate_system(n) with Dr.Jit's scalar helpers (no FMA):
+   sign = copysign(1, v); rcp(a) = 1 / a; square(v) = v * v; mulsign(v, s)
+   = v xor (s & sign bit); mulsign_neg(v, s) = v xor (~s & sign bit);
+   fmadd(a, b, c) = a * b + c. */
+static float drjit_mulsignf(float v, float s, int neg)
+{
+	uint32_t a, b;
+	memcpy(&a, &v, 4); memcpy(&b, &s, 4);
+	a ^= (neg ? ~b : b) & 0x80000000u;
+	memcpy(&v, &a, 4);
+	return v;
+}
+static double drjit_mulsignd(double v, double s, int neg)
+{
+	uint64_t a, b;
+	memcpy(&a, &v, 8); memcpy(&b, &s, 8);
+	a ^= (neg ? ~b : b) & 0x8000000000000000ull;
+	memcpy(&v, &a, 8);
+	return v;
+}
+static void ind_mitsuba3f(Vec3f n, Vec3f *s, Vec3f *t)
+{
+	float sign = copysignf(1.0f, n.z), a = -(1.0f / (sign + n.z)), b = n.x * n.y * a;
+	*s = vf(drjit_mulsignf((n.x * n.x) * a, n.z, 0) + 1, drjit_mulsignf(b, n.z, 0), drjit_mulsignf(n.x, n.z, 1));
+	*t = vf(b, n.y * (n.y * a) + sign, -n.y);
+}
+static void ind_mitsuba3d(Vec3d n, Vec3d *s, Vec3d *t)
+{
+	double sign = copysign(1.0, n.z), a = -(1.0 / (sign + n.z)), b = n.x * n.y * a;
+	*s = vd(drjit_mulsignd((n.x * n.x) * a, n.z, 0) + 1, drjit_mulsignd(b, n.z, 0), drjit_mulsignd(n.x, n.z, 1));
+	*t = vd(b, n.y * (n.y * a) + sign, -n.y);
+}
+
+/* Blender Cycles make_orthonormals(N, &a, &b) as its SSE4.2 kernel runs
+   it: dot = _mm_dp_ps(a, b, 0x7F) = (p0 + p1) + (p2 + 0), normalize(a) =
+   a / sqrt(dot(a, a)) lane by lane, cross(a, b) = shuffle(a * shuffle(b)
+   - shuffle(a) * b) (msub without FMA). */
+static float cyc_dotf(Vec3f a, Vec3f b) { return (a.x * b.x + a.y * b.y) + (a.z * b.z + 0.0f); }
+static double cyc_dotd(Vec3d a, Vec3d b) { return (a.x * b.x + a.y * b.y) + (a.z * b.z + 0.0); }
+static Vec3f cyc_crossf(Vec3f a, Vec3f b)
+{
+	/* x = a, y = (b.y, b.z, b.x), z = (a.y b.x, a.z b.y, a.x b.z); x y - z, then lanes (1, 2, 0) */
+	Vec3f m = vf(a.x * b.y - a.y * b.x, a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z);
+	return vf(m.y, m.z, m.x);
+}
+static Vec3d cyc_crossd(Vec3d a, Vec3d b)
+{
+	Vec3d m = vd(a.x * b.y - a.y * b.x, a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z);
+	return vd(m.y, m.z, m.x);
+}
+static void ind_cycles111f(Vec3f N, Vec3f *a, Vec3f *b)
+{
+	float l;
+	if (N.x != N.y || N.x != N.z)
+		*a = vf(N.z - N.y, N.x - N.z, N.y - N.x);  /* (1,1,1) x N */
+	else
+		*a = vf(N.z - N.y, N.x + N.z, -N.y - N.x); /* (-1,1,1) x N */
+	l = sqrtf(cyc_dotf(*a, *a));
+	*a = vf(a->x / l, a->y / l, a->z / l);
+	*b = cyc_crossf(N, *a);
+}
+static void ind_cycles111d(Vec3d N, Vec3d *a, Vec3d *b)
+{
+	double l;
+	if (N.x != N.y || N.x != N.z)
+		*a = vd(N.z - N.y, N.x - N.z, N.y - N.x);
+	else
+		*a = vd(N.z - N.y, N.x + N.z, -N.y - N.x);
+	l = sqrt(cyc_dotd(*a, *a));
+	*a = vd(a->x / l, a->y / l, a->z / l);
+	*b = cyc_crossd(N, *a);
+}
+
+/* The same in Cycles' AVX2 kernel: msub(a, b, c) = _mm_fmsub_ps(a, b, c),
+   one rounding of a*b - c, with c = shuffle(a) * b rounded before. */
+static Vec3f cyc_cross_fmsubf(Vec3f a, Vec3f b)
+{
+	Vec3f m = vf(fmaf(a.x, b.y, -(a.y * b.x)), fmaf(a.y, b.z, -(a.z * b.y)), fmaf(a.z, b.x, -(a.x * b.z)));
+	return vf(m.y, m.z, m.x);
+}
+static Vec3d cyc_cross_fmsubd(Vec3d a, Vec3d b)
+{
+	Vec3d m = vd(fma(a.x, b.y, -(a.y * b.x)), fma(a.y, b.z, -(a.z * b.y)), fma(a.z, b.x, -(a.x * b.z)));
+	return vd(m.y, m.z, m.x);
+}
+static void ind_cycles111_avx2f(Vec3f N, Vec3f *a, Vec3f *b)
+{
+	ind_cycles111f(N, a, b);
+	*b = cyc_cross_fmsubf(N, *a);
+}
+static void ind_cycles111_avx2d(Vec3d N, Vec3d *a, Vec3d *b)
+{
+	ind_cycles111d(N, a, b);
+	*b = cyc_cross_fmsubd(N, *a);
+}
+
+/* Embree frame(N) on Vec3fa (SSE4.2 kernel): dot as dpps, rsqrt =
+   rsqrtss estimate r, then 1.5 r + ((x -0.5) r)(r r) (emath.h), normalize(a)
+   = a * rsqrt(dot(a, a)), cross through msub without FMA; frame =
+   (dx, dy, N).  Double: the float estimate of the float-rounded argument,
+   widened, and the same step in double. */
+static float emb_rsqrtf(float x)
+{
+	float r;
+#if INDEP_SSE
+	r = _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x)));
+#else
+	r = 1.0f / sqrtf(x);
+#endif
+	return 1.5f * r + ((x * -0.5f) * r) * (r * r);
+}
+static double emb_rsqrtd(double x)
+{
+	double r;
+#if INDEP_SSE
+	r = (double)_mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss((float)x)));
+#else
+	r = (double)(1.0f / sqrtf((float)x));
+#endif
+	return 1.5 * r + ((x * -0.5) * r) * (r * r);
+}
+static void ind_embreef(Vec3f N, Vec3f *dx, Vec3f *dy)
+{
+	const Vec3f dx0 = vf(0, N.z, -N.y), dx1 = vf(-N.z, 0, N.x);
+	const Vec3f u = cyc_dotf(dx0, dx0) > cyc_dotf(dx1, dx1) ? dx0 : dx1;
+	Vec3f c;
+	*dx = mulf_(u, emb_rsqrtf(cyc_dotf(u, u)));
+	c = cyc_crossf(N, *dx);
+	*dy = mulf_(c, emb_rsqrtf(cyc_dotf(c, c)));
+}
+static void ind_embreed(Vec3d N, Vec3d *dx, Vec3d *dy)
+{
+	const Vec3d dx0 = vd(0, N.z, -N.y), dx1 = vd(-N.z, 0, N.x);
+	const Vec3d u = cyc_dotd(dx0, dx0) > cyc_dotd(dx1, dx1) ? dx0 : dx1;
+	Vec3d c;
+	*dx = muld_(u, emb_rsqrtd(cyc_dotd(u, u)));
+	c = cyc_crossd(N, *dx);
+	*dy = muld_(c, emb_rsqrtd(cyc_dotd(c, c)));
+}
+
+/* LuxCoreRender CoordinateSystem(v1, &v2, &v3); Frame: X = v2, Y = v3. */
+static void ind_luxcoref(Vec3f v1, Vec3f *v2, Vec3f *v3)
+{
+	float len = sqrtf(v1.x * v1.x + v1.y * v1.y);
+	if (len < 1e-5)
+		*v3 = vf(1.f, 0.f, 0.f);
+	else
+		*v3 = vf(-v1.y / len, v1.x / len, 0);
+	*v2 = vf((v1.y * v3->z) - (v1.z * v3->y), (v1.z * v3->x) - (v1.x * v3->z), (v1.x * v3->y) - (v1.y * v3->x));
+}
+static void ind_luxcored(Vec3d v1, Vec3d *v2, Vec3d *v3)
+{
+	double len = sqrt(v1.x * v1.x + v1.y * v1.y);
+	if (len < 1e-5)
+		*v3 = vd(1.0, 0.0, 0.0);
+	else
+		*v3 = vd(-v1.y / len, v1.x / len, 0);
+	*v2 = vd((v1.y * v3->z) - (v1.z * v3->y), (v1.z * v3->x) - (v1.x * v3->z), (v1.x * v3->y) - (v1.y * v3->x));
+}
+
 /* Ids of this file's transliterations, after indep.h's own. */
-enum { IW_PBRT4 = 100, IW_NVPRO, IW_CYCLES_DUFF, IW_FALCOR, IW_PASVULKAN };
+enum { IW_PBRT4 = 100, IW_NVPRO, IW_CYCLES_DUFF, IW_FALCOR, IW_PASVULKAN,
+       IW_Q2RTX, IW_FILAMENT, IW_MITSUBA3, IW_CYCLES111, IW_EMBREE, IW_LUXCORE, IW_CYCLES111_AVX2 };
 
 /* 1 when id is one of this file's (outputs written), else 0; a double
    variant that the source does not have gives 0 too. */
@@ -97,14 +327,28 @@ static int indep_wild_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IW_CYCLES_DUFF: ind_cycles_dufff(n, b1, b2); return 1;
 	case IW_FALCOR:      ind_falcorf(n, b1, b2); return 1;
 	case IW_PASVULKAN:   ind_pasvulkanf(n, b1, b2); return 1;
+	case IW_Q2RTX:       ind_q2rtxf(n, b1, b2); return 1;
+	case IW_FILAMENT:    ind_filamentf(n, b1, b2); return 1;
+	case IW_MITSUBA3:    ind_mitsuba3f(n, b1, b2); return 1;
+	case IW_CYCLES111:   ind_cycles111f(n, b1, b2); return 1;
+	case IW_CYCLES111_AVX2: ind_cycles111_avx2f(n, b1, b2); return 1;
+	case IW_EMBREE:      ind_embreef(n, b1, b2); return 1;
+	case IW_LUXCORE:     ind_luxcoref(n, b1, b2); return 1;
 	default:             return 0;
 	}
 }
 static int indep_wild_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
 	switch (id) {
-	case IW_PBRT4: ind_pbrt4d(n, b1, b2); return 1;
-	default:       return 0;
+	case IW_PBRT4:     ind_pbrt4d(n, b1, b2); return 1;
+	case IW_Q2RTX:     ind_q2rtxd(n, b1, b2); return 1;
+	case IW_FILAMENT:  ind_filamentd(n, b1, b2); return 1;
+	case IW_MITSUBA3:  ind_mitsuba3d(n, b1, b2); return 1;
+	case IW_CYCLES111: ind_cycles111d(n, b1, b2); return 1;
+	case IW_CYCLES111_AVX2: ind_cycles111_avx2d(n, b1, b2); return 1;
+	case IW_EMBREE:    ind_embreed(n, b1, b2); return 1;
+	case IW_LUXCORE:   ind_luxcored(n, b1, b2); return 1;
+	default:           return 0;
 	}
 }
 

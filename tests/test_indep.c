@@ -115,6 +115,38 @@ static void gen_pair(inset *s, int ca, int cb, int reps)
 		}
 	}
 }
+/* The engines' thresholds: q2rtx's n.z = -0.999805696f and filament's
+   n.y = -1 + FLT_EPSILON (+-8 ulps), luxcore's sqrt(n.x^2 + n.y^2) = 1e-5
+   (n.z = +-1 with a small transverse part in float, n.z stepped in double),
+   and cycles_cross111's diagonal n.x = n.y = n.z (+-4 ulps per component). */
+static void gen_engines(inset *s)
+{
+	int k, r, j;
+	for (k = -8; k <= 8; k++)
+		for (r = 0; r < 64 / reps_div; r++) {
+			push_fixed(s, 2, step(s, rnd(s, (double)-0.999805696f), k));
+			push_fixed(s, 1, step(s, rnd(s, (double)(-1.0f + FLT_EPSILON)), k));
+		}
+	for (r = 0; r < 512 / reps_div; r++) {
+		const double len = 1e-5 * pow(2.0, 4.0 * urand() - 2.0), ph = 2.0 * IND_PI * urand();
+		const double sg = urand() < 0.5 ? -1.0 : 1.0;
+		if (s->fl)
+			push(s, len * cos(ph), len * sin(ph), sg);
+		else
+			push_fixed(s, 2, sg * sqrt(1.0 - len * len));
+	}
+	for (r = 0; r < 2; r++) {
+		const double d = (r ? -1.0 : 1.0) / sqrt(3.0);
+		double o[3];
+		for (k = 0; k < 729; k++) { /* each component -4..4 ulps from the diagonal */
+			int q = k;
+			for (j = 0; j < 3; j++, q /= 9)
+				o[j] = step(s, rnd(s, d), q % 9 - 4);
+			push(s, o[0], o[1], o[2]);
+		}
+	}
+}
+
 static void gen_thresholds(inset *s)
 {
 	const double vals[] = { 0.9, -0.9, -0.9999999, -0.99998796 };
@@ -136,6 +168,7 @@ static void gen_thresholds(inset *s)
 			push_fixed(s, 2, -step(s, s->fl ? FLT_EPSILON : DBL_EPSILON, k - 4));
 		}
 	gen_pair(s, 0, 1, 2048 / reps_div); gen_pair(s, 0, 2, 2048 / reps_div); gen_pair(s, 1, 2, 2048 / reps_div);
+	gen_engines(s);
 	for (i = 0; i < 3; i++) {
 		double o[3] = { 0.0, 0.0, 0.0 };
 		o[i] = 1.0; push(s, o[0], o[1], o[2]);

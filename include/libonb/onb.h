@@ -24,6 +24,14 @@
  *     onb_pbrt_v3          onb_pbrt_v3f           pbrt-v3 CoordinateSystem
  *     onb_rtow             onb_rtowf              RTTROYL onb::build_from_w
  *     onb_tangent_cross_z  onb_tangent_cross_zf   blog get_onb
+ *     engines' shipped code (onb_method.prov: repository, commit, lines):
+ *     onb_q2rtx            onb_q2rtxf             Quake II RTX construct_ONB_frisvad
+ *     onb_filament         onb_filamentf          Filament frisvadKernel (y-up)
+ *     onb_mitsuba3         onb_mitsuba3f          Mitsuba 3 coordinate_system
+ *     onb_cycles_cross111  onb_cycles_cross111f   Blender Cycles make_orthonormals
+ *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
+ *     onb_embree           onb_embreef            Embree frame(N) (rsqrtss + Newton)
+ *     onb_luxcore          onb_luxcoref           LuxCoreRender CoordinateSystem
  *     (float only)         onb_duff_widef         this project: Duff in double
  *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
@@ -293,7 +301,7 @@ enum {
 };
 /* The float-only evaluations of duff_branchless's formula (onb_method.norm
    of duff_wide and duff_comp): one exact formula, other roundings. */
-enum { ONB__EVAL_WIDE = 16, ONB__EVAL_COMP };
+enum { ONB__EVAL_WIDE = 16, ONB__EVAL_COMP, ONB__EVAL_MITSUBA3, ONB__EVAL_FMSUB };
 
 static inline double onb__rsq(double x, int norm)
 {
@@ -827,6 +835,216 @@ static inline void ONB__K(tangent_cross_zf)(onb_vec3f n, onb_vec3f *b1, onb_vec3
 }
 
 /* ------------------------------------------------------------------ */
+/* Engines' shipped code ("every ONB in the wild"): each as the engine */
+/* writes it, at the commit its registry row names (onb_method.prov). */
+/* ------------------------------------------------------------------ */
+
+/* q2rtx (Quake II RTX, src/refresh/vkpt/shader/utils.glsl,
+   construct_ONB_frisvad): Frisvad's Listing 2 term for term with the
+   threshold -0.999805696f (Max's digits, mistyped?: 16 times further from
+   -1 than Max's -0.99998796), under GLSL `precise`.  The double variant
+   keeps the float literal, widened (the same n.z splits the branches).
+   Handedness +1 (the shader's mat3 columns are (b1, n, b2)). */
+#define ONB_Q2RTX_TF (-0.999805696f)
+static inline void ONB__K(q2rtx) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { ONB__K(frisvad_threshold)(n, ONB__CAST(double, ONB_Q2RTX_TF), b1, b2); }
+static inline void ONB__K(q2rtxf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { ONB__K(frisvad_thresholdf)(n, ONB_Q2RTX_TF, b1, b2); }
+
+/* filament (Filament libs/geometry/src/TangentSpaceMesh.cpp,
+   frisvadKernel): Frisvad's Listing 2 rotated to y-up, x -> z -> y -> x:
+   when n.y < -1 + FLT_EPSILON (= -0x1.fffffcp-1, Frisvad's float t),
+   b1 = (-1, 0, 0), b2 = (0, 0, -1); else va = 1/(1 + n.y), vb = -n.z*n.x*va,
+   b1 = (vb, -n.z, 1 - n.z*n.z*va), b2 = (1 - n.x*n.x*va, -n.x, vb)
+   (Filament's tangent t and bitangent b).  Bit for bit Frisvad's float
+   kernel on (n.z, n.x, n.y), outputs relabelled back; the pole is -y.
+   Handedness +1.  The double variant keeps the float constant, widened. */
+#define ONB_FILAMENT_TF (-0x1.fffffcp-1f) /* -1.0f + FLT_EPSILON */
+static inline void ONB__K(filament)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	double va, vb;
+	if (n.y < ONB__CAST(double, ONB_FILAMENT_TF)) {
+		b1->x = -1.0; b1->y = 0.0; b1->z = 0.0;
+		b2->x = 0.0;  b2->y = 0.0; b2->z = -1.0;
+		return;
+	}
+	va = 1.0 / (1.0 + n.y);
+	vb = -n.z * n.x * va;
+	b1->x = vb; b1->y = -n.z; b1->z = 1.0 - n.z * n.z * va;
+	b2->x = 1.0 - n.x * n.x * va; b2->y = -n.x; b2->z = vb;
+}
+static inline void ONB__K(filamentf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	float va, vb;
+	if (n.y < ONB_FILAMENT_TF) {
+		b1->x = -1.0f; b1->y = 0.0f; b1->z = 0.0f;
+		b2->x = 0.0f;  b2->y = 0.0f; b2->z = -1.0f;
+		return;
+	}
+	va = 1.0f / (1.0f + n.y);
+	vb = -n.z * n.x * va;
+	b1->x = vb; b1->y = -n.z; b1->z = 1.0f - n.z * n.z * va;
+	b2->x = 1.0f - n.x * n.x * va; b2->y = -n.x; b2->z = vb;
+}
+
+/* mitsuba3 (Mitsuba 3 include/mitsuba/core/vector.h, coordinate_system,
+   scalar variants, Dr.Jit without FMA): Duff's Listing 3 with Dr.Jit's
+   helpers: a = -(1/(s + n.z)), b1.x = mulsign(x*x*a, z) + 1 (the sign
+   flip is exact: s*(x*x*a)), b2.y = fmadd(y, y*a, s) = y*(y*a) + s: the
+   product order differs from Listing 3's (y*y)*a, so the bits differ from
+   duff_branchless (about 8% of float inputs, in b2.y).  Same exact
+   formula and branch (signbit(n.z)).  Handedness +1. */
+static inline void ONB__K(mitsuba3)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double sign = copysign(1.0, n.z);
+	const double a = -(1.0 / (sign + n.z));
+	const double b = n.x * n.y * a;
+	b1->x = sign * (n.x * n.x * a) + 1.0; b1->y = sign * b; b1->z = -sign * n.x;
+	b2->x = b; b2->y = n.y * (n.y * a) + sign; b2->z = -n.y;
+}
+static inline void ONB__K(mitsuba3f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float sign = copysignf(1.0f, n.z);
+	const float a = -(1.0f / (sign + n.z));
+	const float b = n.x * n.y * a;
+	b1->x = sign * (n.x * n.x * a) + 1.0f; b1->y = sign * b; b1->z = -sign * n.x;
+	b2->x = b; b2->y = n.y * (n.y * a) + sign; b2->z = -n.y;
+}
+
+/* cycles_cross111 (Blender Cycles src/util/math_float3.h,
+   make_orthonormals, since its first release): a = (1,1,1) x n =
+   (n.z - n.y, n.x - n.z, n.y - n.x), or (-1,1,1) x n = (n.z - n.y,
+   n.x + n.z, -n.y - n.x) when n.x = n.y = n.z; b1 = a / |a| (three
+   divisions, |a| = sqrt of the squares summed left to right), b2 =
+   cross(n, b1).  Cycles' SSE4.2 kernel (dpps, lane-wise division and
+   products) gives these bits; its AVX2 kernel fuses the cross (fmsub).
+   Near +-(1,1,1)/sqrt(3) the differences are exact (Sterbenz), so no
+   precision is lost there; the frame jumps across that diagonal.
+   Handedness +1.  No singular unit direction. */
+static inline onb_vec3 onb__cycles111_b1(onb_vec3 n)
+{
+	onb_vec3 a;
+	double l;
+	if (!(n.x <= n.y && n.x >= n.y && n.x <= n.z && n.x >= n.z)) { /* n.x != n.y || n.x != n.z */
+		a.x = n.z - n.y; a.y = n.x - n.z; a.z = n.y - n.x;
+	} else {
+		a.x = n.z - n.y; a.y = n.x + n.z; a.z = -n.y - n.x;
+	}
+	l = sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+	a.x = a.x / l; a.y = a.y / l; a.z = a.z / l;
+	return a;
+}
+static inline onb_vec3f onb__cycles111_b1f(onb_vec3f n)
+{
+	onb_vec3f a;
+	float l;
+	if (!(n.x <= n.y && n.x >= n.y && n.x <= n.z && n.x >= n.z)) {
+		a.x = n.z - n.y; a.y = n.x - n.z; a.z = n.y - n.x;
+	} else {
+		a.x = n.z - n.y; a.y = n.x + n.z; a.z = -n.y - n.x;
+	}
+	l = sqrtf(a.x * a.x + a.y * a.y + a.z * a.z);
+	a.x = a.x / l; a.y = a.y / l; a.z = a.z / l;
+	return a;
+}
+static inline void ONB__K(cycles_cross111)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb__naive_post(n, onb__cycles111_b1(n), 1.0, b1, b2);
+}
+static inline void ONB__K(cycles_cross111f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb__naive_postf(n, onb__cycles111_b1f(n), 1.0f, b1, b2);
+}
+
+/* cycles_cross111_avx2: the same in Cycles' AVX2 CPU kernel (-mavx2
+   -mfma), whose cross product is msub = _mm_fmsub_ps: each component of
+   b2 = n x b1 is fma(p, q, -(r s)), the second product rounded and the
+   first fused.  The rest (dpps, lane-wise division) as cycles_cross111. */
+static inline void ONB__K(cycles_cross111_avx2)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const onb_vec3 a = onb__cycles111_b1(n);
+	*b1 = a;
+	b2->x = fma(n.y, a.z, -(n.z * a.y));
+	b2->y = fma(n.z, a.x, -(n.x * a.z));
+	b2->z = fma(n.x, a.y, -(n.y * a.x));
+}
+static inline void ONB__K(cycles_cross111_avx2f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const onb_vec3f a = onb__cycles111_b1f(n);
+	*b1 = a;
+	b2->x = fmaf(n.y, a.z, -(n.z * a.y));
+	b2->y = fmaf(n.z, a.x, -(n.x * a.z));
+	b2->z = fmaf(n.x, a.y, -(n.y * a.x));
+}
+
+/* embree (Embree common/math/linearspace3.h, frame(N), on Vec3fa): dx0 =
+   (0, n.z, -n.y), dx1 = (-n.z, 0, n.x); dx = normalize(dx0 if |dx0|^2 >
+   |dx1|^2 else dx1); dy = normalize(cross(n, dx)).  normalize(v) = v *
+   rsqrt(dot(v, v)) with Embree's rsqrt: the hardware estimate r (rsqrtss)
+   and the Newton step 1.5 r + ((x (-0.5)) r)(r r), an order of its own.
+   dot is dpps: ((p0 + p1) + (p2 + p3)), so |dx0|^2 = n.z^2 + n.y^2 and
+   |dx1|^2 = n.z^2 + n.x^2.  The estimate's bits are the CPU's (Intel and AMD
+   differ), as for the _rsqrt variants; without SSE it falls back to
+   1/sqrt (ONB_FELL_BACK).  The SSE4.2 kernel's arithmetic (the AVX2 one
+   fuses the cross).  Double: the estimate of the float-rounded argument,
+   widened (onb__hw_rsqrt), then the same Newton step in double: a 24-bit
+   normalization.  Handedness +1.  No singular unit direction. */
+static inline float  onb__embree_rsqrtf(float x)  { const float  r = onb__hw_rsqrtf(x); return 1.5f * r + ((x * -0.5f) * r) * (r * r); }
+static inline double onb__embree_rsqrt (double x) { const double r = onb__hw_rsqrt(x);  return 1.5 * r + ((x * -0.5) * r) * (r * r); }
+static inline void ONB__K(embree)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double zz = n.z * n.z, d0 = zz + n.y * n.y, d1 = zz + n.x * n.x;
+	onb_vec3 u, c;
+	double s;
+	if (d0 > d1) { u.x = 0.0;  u.y = n.z; u.z = -n.y; s = onb__embree_rsqrt(d0); }
+	else         { u.x = -n.z; u.y = 0.0; u.z = n.x;  s = onb__embree_rsqrt(d1); }
+	u.x *= s; u.y *= s; u.z *= s;
+	c.x = n.y * u.z - n.z * u.y;
+	c.y = n.z * u.x - n.x * u.z;
+	c.z = n.x * u.y - n.y * u.x;
+	s = onb__embree_rsqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+	*b1 = u;
+	b2->x = c.x * s; b2->y = c.y * s; b2->z = c.z * s;
+}
+static inline void ONB__K(embreef)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float zz = n.z * n.z, d0 = zz + n.y * n.y, d1 = zz + n.x * n.x;
+	onb_vec3f u, c;
+	float s;
+	if (d0 > d1) { u.x = 0.0f; u.y = n.z;  u.z = -n.y; s = onb__embree_rsqrtf(d0); }
+	else         { u.x = -n.z; u.y = 0.0f; u.z = n.x;  s = onb__embree_rsqrtf(d1); }
+	u.x *= s; u.y *= s; u.z *= s;
+	c.x = n.y * u.z - n.z * u.y;
+	c.y = n.z * u.x - n.x * u.z;
+	c.z = n.x * u.y - n.y * u.x;
+	s = onb__embree_rsqrtf(c.x * c.x + c.y * c.y + c.z * c.z);
+	*b1 = u;
+	b2->x = c.x * s; b2->y = c.y * s; b2->z = c.z * s;
+}
+
+/* luxcore (LuxCoreRender include/luxrays/core/geometry/vector.h,
+   CoordinateSystem; Frame::SetFromZ makes X = v2, Y = v3): len =
+   sqrt(n.x^2 + n.y^2); when len < 1e-5 (a double literal), v3 = (1, 0, 0),
+   else v3 = (-n.y/len, n.x/len, 0); v2 = cross(n, v3).  b1 = v2, b2 = v3.
+   Handedness -1 (v2 x v3 = -n).  Near the poles (len < 1e-5) v3 is not
+   orthogonal to n: the defect there is up to |n.x| < 1e-5 (about 170u in
+   float), by design.  No singular unit direction. */
+static inline void ONB__K(luxcore)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double len = sqrt(n.x * n.x + n.y * n.y);
+	onb_vec3 v;
+	if (len < 1e-5) { v.x = 1.0; v.y = 0.0; v.z = 0.0; }
+	else            { v.x = -n.y / len; v.y = n.x / len; v.z = 0.0; }
+	onb__naive_post(n, v, 1.0, b2, b1);
+}
+static inline void ONB__K(luxcoref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float len = sqrtf(n.x * n.x + n.y * n.y);
+	onb_vec3f v;
+	if (ONB__CAST(double, len) < 1e-5) { v.x = 1.0f; v.y = 0.0f; v.z = 0.0f; }
+	else                               { v.x = -n.y / len; v.y = n.x / len; v.z = 0.0f; }
+	onb__naive_postf(n, v, 1.0f, b2, b1);
+}
+
+/* ------------------------------------------------------------------ */
 /* This project's own methods (issue 16), not published ones: Duff's   */
 /* branchless formula pushed to the accuracy floor, float only         */
 /* ------------------------------------------------------------------ */
@@ -1010,7 +1228,8 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	X(hughes_moeller) X(hughes_moeller_invsqrt) X(hughes_moeller_rsqrt) \
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
-	X(rtow) X(tangent_cross_z)
+	X(rtow) X(tangent_cross_z) \
+	X(q2rtx) X(filament) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore)
 
 #define ONB__DECLARE(m) \
 	void onb_##m##_outline (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2); \

@@ -4,7 +4,9 @@
  * float and double, the family holds this project's float-only
  * evaluations of the same formula (onb_method.norm): ONB__EVAL_WIDE
  * (duff_wide: in double, rounded once) and ONB__EVAL_COMP (duff_comp:
- * fma-compensated); they share the exact formula, not the rounding model.
+ * fma-compensated); they share the exact formula, not the rounding model,
+ * and so does Mitsuba 3's coordinate_system (ONB__EVAL_MITSUBA3: another
+ * product order in b2.y).
  */
 #include <math.h>
 #include "families/family.h"
@@ -111,9 +113,22 @@ static void model_comp(cm *c, int P, const cv n[3], cv out[6])
 	out[3] = bb; out[4] = ADD(t2, ADD(t2l, ql)); out[5] = cm_neg(c, y);
 }
 
+/* mitsuba3: Mitsuba 3's coordinate_system through Dr.Jit without FMA:
+   a = -(1/(s + z)), b1.x = s (x^2 a) + 1, b2.y = y (y a) + s. */
+static void model_mitsuba3(cm *c, int P, const cv n[3], cv out[6])
+{
+	const double sg = cm_branch_sign(c, 0, n[2]) ? -1.0 : 1.0;
+	cv s = K(sg), ms = K(-sg), a, b;
+	a = cm_neg(c, DIV(K(1.0), ADD(s, n[2])));
+	b = MUL(MUL(n[0], n[1]), a);
+	out[0] = ADD(MUL(s, MUL(MUL(n[0], n[0]), a)), K(1.0)); out[1] = MUL(s, b); out[2] = MUL(ms, n[0]);
+	out[3] = b; out[4] = ADD(MUL(n[1], MUL(n[1], a)), s); out[5] = cm_neg(c, n[1]);
+}
+
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	switch (m->norm) {
+	case ONB__EVAL_MITSUBA3: model_mitsuba3(c, P, n, out); break;
 	case ONB__EVAL_WIDE: model_wide(c, P, n, out); break;
 	case ONB__EVAL_COMP: model_comp(c, P, n, out); break;
 	default:             model_listing(c, P, n, out); break;

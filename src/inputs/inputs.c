@@ -157,23 +157,29 @@ static int build_threshold(dist_spec *d)
 	const int P = d->prec, NA = 8;
 	const double tiny[] = { 0.0, P == PREC_FLOAT ? 0x1p-149 : 0x1p-1074,
 	                        P == PREC_FLOAT ? FLT_MIN : DBL_MIN,
-	                        P == PREC_FLOAT ? FLT_EPSILON : DBL_EPSILON, 1e-4 };
+	                        P == PREC_FLOAT ? FLT_EPSILON : DBL_EPSILON, 1e-4, 0x1.4f8b58p-17 /* 1e-5 */ };
 	size_t m, nm;
 	const onb_method *ms = onb_methods(&nm);
 	int k, s, a, b, ax;
 	int rc = 0;
-	/* every Frisvad-family threshold in the registry, +-8 steps */
+	/* every Frisvad-family threshold in the registry, +-8 steps; on n.x and
+	   n.y too (an engine may put its pole there: filament's is -y), where
+	   only the steps that stay within [-1, 1] (unit inputs) are taken */
 	for (m = 0; m < nm; m++)
 		if (!isnan(ms[m].threshold))
-			for (k = -8; k <= 8; k++)
-				rc |= ring(&l, 2, fmt_step(fmt_round(ms[m].threshold, P), k, P), NA);
+			for (k = -8; k <= 8; k++) {
+				const double c = fmt_step(fmt_round(ms[m].threshold, P), k, P);
+				rc |= ring(&l, 2, c, NA);
+				for (ax = 0; ax < 2 && fabs(c) <= 1.0; ax++)
+					rc |= ring(&l, ax, c, NA);
+			}
 	/* the south and north poles: 1 -+ n.z from 0 to 32 steps */
 	for (k = 0; k <= 32; k++) {
 		rc |= ring(&l, 2, fmt_step(-1.0, k, P), NA);
 		rc |= ring(&l, 2, fmt_step(1.0, -k, P), NA);
 	}
-	/* the sign of n.z: +-0, subnormal, smallest normal, eps, 1e-4 */
-	for (k = 0; k < 5; k++)
+	/* the sign of n.z: +-0, subnormal, smallest normal, eps, 1e-4, 1e-5 */
+	for (k = 0; k < 6; k++)
 		for (s = -1; s <= 1; s += 2)
 			rc |= ring(&l, 2, s * tiny[k], NA);
 	/* naive's and rtow's n.x = +-0.9, and naive's singular n = -x */
@@ -186,10 +192,12 @@ static int build_threshold(dist_spec *d)
 	rc |= diagonal(&l, 0, 2, NA);
 	rc |= diagonal(&l, 0, 1, NA);
 	rc |= diagonal(&l, 1, 2, NA);
-	/* the six axes exactly, and with the other components tiny */
+	/* the six axes exactly, and with the other components tiny: 0 to eps
+	   (unit to the format); in float also 1e-4 and 1e-5 on one side (still
+	   unit to float rounding: luxcore's cut at sqrt(x^2 + y^2) = 1e-5) */
 	for (ax = 0; ax < 3; ax++)
 		for (s = -1; s <= 1; s += 2)
-			for (a = 0; a < 4; a++)     /* 0 to eps: unit to the format */
+			for (a = 0; a < (P == PREC_FLOAT ? 6 : 4); a++)
 				for (b = 0; b < 4; b++) {
 					double v[3];
 					v[ax] = s;

@@ -22,6 +22,31 @@
 #define THR_NAIVE "n.x > 0.9"
 #define THR_HM "|n.x| > |n.z|"
 
+/* Where the engines' methods come from (onb_method.prov); each kernel's
+   comment in include/libonb/onb.h gives the arithmetic. */
+static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
+	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
+	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
+static const onb_provenance P_FILAMENT = { "github.com/google/filament", "e91b6eb2016b9c47f196936a6489434ff15084aa",
+	"libs/geometry/src/TangentSpaceMesh.cpp:169-183", "Apache-2.0", "C++", "float",
+	"IEEE (x86-64: no contraction; arm64 clang's within-expression fma not modelled)" };
+static const onb_provenance P_MITSUBA3 = { "github.com/mitsuba-renderer/mitsuba3", "b45b0a930275114de0f8c34e8cf52775e176ca9a",
+	"include/mitsuba/core/vector.h:117-138", "BSD-3-Clause", "C++ (Dr.Jit dfccdd7967547efce49fb4a929c39e4474ea73e2)",
+	"Float: float (scalar_rgb), double (scalar_*_double)",
+	"scalar variants without FMA (x86-64 baseline): fmadd = a*b + c; with FMA (aarch64, AVX2 builds) fmadd fuses: not this method" };
+static const onb_provenance P_CYCLES = { "github.com/blender/cycles", "97dbe6f57cdf4ede2d2b75ebdda507c8712edb7a",
+	"src/util/math_float3.h:724-750", "Apache-2.0", "C++", "float",
+	"the SSE4.2 CPU kernel (dpps, lane-wise division): the source's IEEE arithmetic; the AVX2 kernel's fmsub cross not modelled" };
+static const onb_provenance P_CYCLES_AVX2 = { "github.com/blender/cycles", "97dbe6f57cdf4ede2d2b75ebdda507c8712edb7a",
+	"src/util/math_float3.h:724-750", "Apache-2.0", "C++", "float",
+	"the AVX2 CPU kernel (-mavx2 -mfma): cross = msub = _mm_fmsub_ps (src/util/math_float4.h:253-263), the rest as the SSE4.2 kernel" };
+static const onb_provenance P_EMBREE = { "github.com/embree/embree", "0c236df6f31a8e9c8a48803dada333e9ea0029a6",
+	"common/math/linearspace3.h:117-124", "Apache-2.0", "C++ (SSE intrinsics)", "float (Vec3fa)",
+	"the SSE4.2 kernel: dpps dots, rsqrtss estimate (this CPU's bits) and emath.h:129-151's Newton step, no FMA" };
+static const onb_provenance P_LUXCORE = { "github.com/LuxCoreRender/LuxCore", "d624e0445924c766c32fd9a08df56d3264cbd33f",
+	"include/luxrays/core/geometry/vector.h:169-177", "Apache-2.0", "C++", "float",
+	"IEEE, the CPU path (the OpenCL twin's -cl-fast-relaxed-math not modelled)" };
+
 static const onb_method onb__table[] = {
 	{ "naive", "naive", SRC_L1 " naive, rsqrt = (float)(1.0/sqrt(x))",
 	  SING_NAIVE, THR_NAIVE, +1, 0, NAN, ONB__NORM_LIBM, ONB__PTRS(naive), NULL },
@@ -63,6 +88,24 @@ static const onb_method onb__table[] = {
 	  "n = 0 only (normalizes its input)", "|n.x| > 0.9", -1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(rtow), NULL },
 	{ "tangent_cross_z", "tangent_cross_z", "sydneyzh blog, Vector transformation using projection between ONBs, get_onb",
 	  "n = +z and n = -z (0/0 = NaN); float n.x^2+n.y^2 underflow", "none", -1, 0, NAN, 0, ONB__PTRS(tangent_cross_z), NULL },
+	/* Engines' shipped code, each read at the commit of its provenance. */
+	{ "q2rtx", "frisvad", "Quake II RTX construct_ONB_frisvad: Frisvad Listing 2 with t = -0.999805696f",
+	  "none exactly; error ~ eps/(1+n.z) just above t, and a 1.1-degree tilt below it", "n.z < -0.999805696f",
+	  +1, 0, (double)-0.999805696f, 0, ONB__PTRS(q2rtx), &P_Q2RTX },
+	{ "filament", "filament", "Filament TangentSpaceMesh frisvadKernel: Frisvad Listing 2 rotated to y-up, t = -1 + FLT_EPSILON",
+	  "none exactly; error ~ eps/(1+n.y) just above t (O(1) in float)", "n.y < -1 + FLT_EPSILON",
+	  +1, 0, (double)(-0x1.fffffcp-1f), 0, ONB__PTRS(filament), &P_FILAMENT },
+	{ "mitsuba3", "duff_branchless", "Mitsuba 3 coordinate_system: Duff Listing 3 through Dr.Jit, b2.y = fmadd(y, y*a, s) unfused",
+	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, ONB__EVAL_MITSUBA3, ONB__PTRS(mitsuba3), &P_MITSUBA3 },
+	{ "cycles_cross111", "cycles_cross111", "Blender Cycles make_orthonormals: b1 = normalize((1,1,1) x n), b2 = n x b1",
+	  "none", "n.x = n.y = n.z (then (-1,1,1) x n)", +1, 0, NAN, 0, ONB__PTRS(cycles_cross111), &P_CYCLES },
+	{ "cycles_cross111_avx2", "cycles_cross111", "Blender Cycles make_orthonormals as its AVX2 kernel runs it: b2 = n x b1 through _mm_fmsub_ps",
+	  "none", "n.x = n.y = n.z (then (-1,1,1) x n)", +1, 0, NAN, ONB__EVAL_FMSUB, ONB__PTRS(cycles_cross111_avx2), &P_CYCLES_AVX2 },
+	{ "embree", "embree", "Embree frame(N): the longer of (0,z,-y), (-z,0,x), normalized by rsqrtss + Newton; b2 = normalize(n x b1)",
+	  "none", "z^2 + y^2 > z^2 + x^2 (rounded)", +1, ONB_APPROX_NORM | ONB__HW, NAN, 0, ONB__PTRS(embree), &P_EMBREE },
+	{ "luxcore", "luxcore", "LuxCoreRender CoordinateSystem: b2 = (-y, x, 0)/len, b1 = n x b2; (1,0,0) when len < 1e-5",
+	  "none; within 1e-5 of +-z b2 = (1,0,0) is off-orthogonal by |n.x| (by design)", "sqrt(n.x^2 + n.y^2) < 1e-5",
+	  -1, 0, NAN, 0, ONB__PTRS(luxcore), &P_LUXCORE },
 	/* This project's own methods (issue 16), float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",

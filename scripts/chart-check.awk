@@ -83,6 +83,9 @@ cur && /<use xlink:href=/ {
 	u = $0; if (match(u, /translate\([-0-9.]+,[-0-9.]+\)/)) { xy = substr(u, RSTART + 10, RLENGTH - 11); split(xy, c, ",")
 		if (offkey(c[2] + 0)) { npts[cur]++; nmk++; MKX[nmk] = c[1] + 0; MKY[nmk] = c[2] + 0; MKS[nmk] = cur } }
 }
+# an image (a map panel) draws: gnuplot's ids lose their letter after the
+# 26th panel of a multiplot, which then reads as a titled series here
+cur && /<image / { npts[cur]++ }
 cur && /<polygon / && match($0, /points = '[^']*'/) {
 	d = substr($0, RSTART + 10, RLENGTH - 11); m = split(d, p, / +/)
 	for (i = 1; i <= m; i++) if (p[i] ~ /,/) { split(p[i], q, ","); if (offkey(q[2] + 0)) npts[cur]++ }

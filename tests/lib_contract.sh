@@ -13,10 +13,10 @@
 # 1. symbol names
 others=$(nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | grep -v '^onb_' || true)
 if [ -z "$others" ]; then ok; else bad "non-onb_ global symbols in libonb.a: $others"; fi
-# External references: libm, libc's memcpy/strcmp, and libgcc's CPU
+# External references: libm (fma: cycles_cross111_avx2), libc's memcpy/memset/strcmp, and libgcc's CPU
 # detection for the ifunc resolvers.  Nothing else (no MPFR, no OpenMP).
 nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | sort -u > "$tmp/defined"
-undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(__asan_.*|__ubsan_.*|__sanitizer_.*|sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|fmaf|memcpy|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|_GLOBAL_OFFSET_TABLE_)$' || true)
+undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(__asan_.*|__ubsan_.*|__sanitizer_.*|sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|fma|fmaf|memcpy|memset|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|_GLOBAL_OFFSET_TABLE_)$' || true)
 if [ -z "$undef" ]; then ok; else bad "libonb.a needs more than libm and libc: $undef"; fi
 
 # 2. a renderer-like program elsewhere

@@ -82,6 +82,10 @@
  *     but the set is near the line); must pass elsewhere.  Its fallback
  *     tilt can push a grazing sample below the surface (seed 3 shows one
  *     in double on -z log).
+ *   - q2rtx (t = -0.999805696f): its fallback tilts by up to 0.0197 below
+ *     t, which the -z log set reaches (half its float normals have D >
+ *     2e-3): not asserted there; on -z ulps the tilt is at most
+ *     sqrt(2 * 16 ulps) < 1.4e-3: must pass, and elsewhere.
  *   - naive family at n = -x exactly: b1 = x - n (n.x) = 0, so b1 and b2
  *     are 0 (InvSqrt of 0 is finite: w = z n, every sample at u = 1) or
  *     NaN (1/sqrt(0) * 0): must fail on -x exact; every other method
@@ -331,6 +335,8 @@ static int expect(const char *name, int fl, int set)
 		return fl && (set == SET_ULPS || set == SET_LOG) ? EXP_FAIL : EXP_PASS;
 	if (!strcmp(name, "frisvad_max"))
 		return set == SET_LOG || (fl && set == SET_ULPS) ? EXP_ANY : EXP_PASS;
+	if (!strcmp(name, "q2rtx")) /* below t = -0.999805696f its fallback tilts by up to 0.0197 */
+		return set == SET_LOG ? EXP_ANY : EXP_PASS;
 	return EXP_PASS;
 }
 

@@ -94,8 +94,9 @@ MAIN_OBJ  = $(B)/cli/main.o
 STUDY_LIB = $(B)/libstudy.a
 TEST_SRC  = $(wildcard tests/test_*.c)
 TEST_BIN  = $(TEST_SRC:tests/%.c=$(B)/tests/%)
-# Helpers that shell tests call (not run on their own).
-TEST_AUX  = $(B)/tests/certify_check
+# Helpers that shell tests call (not run on their own); found_walk is the
+# outside search that certify's found side is measured against.
+TEST_AUX  = $(B)/tests/certify_check $(B)/tests/found_walk
 GIT_REV  := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo -dirty)
 PROV     = -DONB_GIT_REV='"$(GIT_REV)"' -DONB_CC='"$(shell $(CC) --version | head -1)"' \
            -DONB_CFLAGS='"$(BASE)"'

@@ -17,7 +17,7 @@ C="$T/a/certify.csv"
 
 # 1. the columns, and found <= bound wherever a bound is claimed
 head=$(data "$C" | head -1)
-[ "$head" = "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status" ] && ok || bad "header: $head"
+[ "$head" = "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated" ] && ok || bad "header: $head"
 data "$C" | awk -F, 'NR > 1 && $12 != "singular" && !($7 + 0 >= $8 + 0) { print; n++ } END { exit n > 0 }' >"$T/inv" \
 	&& ok || bad "found above bound in $(wc -l <"$T/inv") rows: $(head -2 "$T/inv")"
 data "$C" | awk -F, 'NR > 1 && $12 !~ /^(proven|singular|budget)$/ { n++ } END { exit n > 0 }' && ok || bad "a status outside proven/singular/budget"

@@ -107,7 +107,7 @@ static long long find_input(const double *in, long long count, const double n[3]
 static void one_method(cert_ctx *x, const study_kernel *k, const cm_method *m, const cert_box *b,
                        const double *in, long long count, double *d, const cert_region *r)
 {
-	const cert_opts o = { 120, 100, 1.25, -1.0, 22, NULL, NULL };
+	const cert_opts o = { 120, 100, 1.25, -1.0, 22, NULL, NULL, NULL, 0 };
 	cert_result res;
 	cert_enum e;
 	long long at;

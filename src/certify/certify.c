@@ -31,6 +31,7 @@ typedef struct {
 	double band_lo, band_hi;
 	int quick;
 	int quiet;
+	const char *starts;     /* --starts FILE[,FILE...] */
 } cert_cli;
 
 typedef struct {
@@ -42,12 +43,13 @@ static void usage(FILE *f)
 	fprintf(f,
 	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
 	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
-	"                        [--band LO,HI] [--seed S] [--quick] [--quiet]\n\n"
+	"                        [--band LO,HI] [--starts FILE[,FILE...]] [--seed S]\n"
+	"                        [--quick] [--quiet]\n\n"
 	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
 	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
 	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|):\n"
 	"  found  the largest defect of the real kernel on a real input of the region\n"
-	"         (sampled, then an ulp walk; replay it with `onbstudy eval`);\n"
+	"         (sampled, then ulp walks from many starts; replay it with `onbstudy eval`);\n"
 	"  bound  proven for every input of the region: the kernel's own operations,\n"
 	"         each rounded once, in a mean value form over MPFI intervals, by\n"
 	"         branch and bound until bound <= 1.25 found, the budget runs out or\n"
@@ -64,7 +66,110 @@ static void usage(FILE *f)
 	"  --tolerance T     the non-unit domain | |n| - 1 | <= T (T in [0, 0.01])\n"
 	"  --band LO,HI      only the inputs with LO <= n.z <= HI (-1 <= LO <= HI <= 1):\n"
 	"                    the default bands cut to it; the summary row is that band\n"
+	"  --starts FILES    CSV files of earlier worst inputs (columns method, precision,\n"
+	"                    nx,ny,nz or found_nx,found_ny,found_nz: a certify.csv or a\n"
+	"                    sweep's worst.csv): the found side also walks from those\n"
+	"                    of each method, precision and region\n"
 	"  --quick           budget 60, samples 150, 4 sectors: a run of under a minute\n");
+}
+
+/* Split line s at commas into f (at most max fields); returns the count. */
+static int split_fields(char *s, char **f, int max)
+{
+	int n = 0;
+	s[strcspn(s, "\r\n")] = '\0';
+	while (n < max) {
+		f[n++] = s;
+		if (!(s = strchr(s, ',')))
+			break;
+		*s++ = '\0';
+	}
+	return n;
+}
+
+static int col_of(char **h, int nh, const char *a, const char *b)
+{
+	int i;
+	for (i = 0; i < nh; i++)
+		if (strcmp(h[i], a) == 0 || (b && strcmp(h[i], b) == 0))
+			return i;
+	return -1;
+}
+
+/* The rows of one --starts file appended to *v (count *n, capacity *cap). */
+static int load_start_file(const char *path, cert_start **v, long *n, long *cap)
+{
+	char line[8192], head[8192], *h[64], *f[64];
+	int nh = 0, cmeth = -1, cp = -1, cx = -1, cy = -1, cz = -1;
+	FILE *in = fopen(path, "r");
+	if (!in) {
+		study_error("--starts: %s: cannot open", path);
+		return -1;
+	}
+	while (fgets(line, sizeof line, in)) {
+		cert_start *s;
+		char *end[3];
+		if (line[0] == '#')
+			continue;
+		if (!nh) {
+			memcpy(head, line, sizeof head);
+			nh = split_fields(head, h, 64);
+			cmeth = col_of(h, nh, "method", NULL); cp = col_of(h, nh, "precision", NULL);
+			cx = col_of(h, nh, "found_nx", "nx"); cy = col_of(h, nh, "found_ny", "ny"); cz = col_of(h, nh, "found_nz", "nz");
+			if (cmeth < 0 || cx < 0 || cy < 0 || cz < 0) {
+				study_error("--starts: %s: no method and nx,ny,nz (or found_nx,found_ny,found_nz) columns", path);
+				fclose(in);
+				return -1;
+			}
+			continue;
+		}
+		if (split_fields(line, f, 64) < nh || !*f[cx])
+			continue;
+		if (*n == *cap) {
+			cert_start *t = realloc(*v, (size_t)(*cap = *cap * 2 + 1024) * sizeof *t);
+			if (!t) {
+				study_error("out of memory");
+				fclose(in);
+				return -1;
+			}
+			*v = t;
+		}
+		s = &(*v)[*n];
+		snprintf(s->method, sizeof s->method, "%s", f[cmeth]);
+		s->prec = cp < 0 ? -1 : strcmp(f[cp], "double") == 0 ? PREC_DOUBLE : strcmp(f[cp], "float") == 0 ? PREC_FLOAT : -2;
+		s->n[0] = strtod(f[cx], &end[0]); s->n[1] = strtod(f[cy], &end[1]); s->n[2] = strtod(f[cz], &end[2]);
+		if (s->prec > -2 && !*end[0] && !*end[1] && !*end[2] && isfinite(s->n[0] + s->n[1] + s->n[2]))
+			(*n)++;
+	}
+	fclose(in);
+	return 0;
+}
+
+/* --starts FILE[,FILE...]: every row into c->o.starts (free it). */
+static int load_starts(cert_cli *c)
+{
+	char path[4096];
+	const char *p = c->starts;
+	cert_start *v = NULL;
+	long n = 0, cap = 0;
+	while (p && *p) {
+		size_t len = strcspn(p, ",");
+		if (len == 0 || len >= sizeof path) {
+			study_error("--starts: expected FILE[,FILE...], not '%s'", c->starts);
+			free(v);
+			return -1;
+		}
+		memcpy(path, p, len);
+		path[len] = '\0';
+		if (load_start_file(path, &v, &n, &cap)) {
+			free(v);
+			return -1;
+		}
+		p += len + (p[len] == ',');
+	}
+	c->o.starts = v;
+	c->o.nstarts = n;
+	return 0;
 }
 
 /* --band LO,HI: two numbers, -1 <= LO <= HI <= 1. */
@@ -97,7 +202,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "samples", required_argument, NULL, 'n' }, { "sectors", required_argument, NULL, 's' },
 		{ "tolerance", required_argument, NULL, 't' }, { "seed", required_argument, NULL, 'S' },
 		{ "quick", no_argument, NULL, 'q' }, { "quiet", no_argument, NULL, 'Q' },
-		{ "band", required_argument, NULL, 'B' },
+		{ "band", required_argument, NULL, 'B' }, { "starts", required_argument, NULL, 'T' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args a;
@@ -131,6 +236,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'q': c->quick = 1; break;
 		case 'Q': c->quiet = 1; break;
 		case 'B': if (parse_band(a.arg, c)) goto bad; break;
+		case 'T': c->starts = a.arg; break;
 		default: goto bad;
 		}
 	}
@@ -204,9 +310,10 @@ static void csv_row(FILE *f, const char *name, int p, const cert_region *r, cons
 	else
 		fprintf(f, "%.17g,", x->bound);   /* exact: the bound was rounded up once, never again */
 	if (x->found > 0.0)
-		fprintf(f, "%.17g,%a,%a,%a,%s\n", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
+		fprintf(f, "%.17g,%a,%a,%a,%s,", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
 	else
-		fprintf(f, "0,,,,%s\n", status_name(x->status));
+		fprintf(f, "0,,,,%s,", status_name(x->status));
+	fprintf(f, "%ld\n", x->probes);   /* inputs the found side evaluated */
 }
 
 /* Every region of every kernel and precision, in parallel. */
@@ -294,7 +401,9 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 		        c->band_lo, c->band_hi);
 	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt, subnormals kept (no FTZ/DAZ)\n");
 	seeds_provenance(f, ks, nk);
-	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status\n");
+	if (c->starts)
+		fprintf(f, "# starts: the found side also walked from the %ld inputs of %s\n", c->o.nstarts, c->starts);
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated\n");
 	for (k = 0; k < nk; k++)
 		for (p = 0; p < 2; p++) {
 			cert_result w;
@@ -355,6 +464,8 @@ int cmd_certify(int argc, char **argv)
 			study_error("--methods: %s has no rounding model (its direction error is not certified)", ks[k].name);
 			return ONB_EXIT_USAGE;
 		}
+	if (c.starts && load_starts(&c))
+		return ONB_EXIT_USAGE;
 	for (p = 0; p < 2; p++)
 		nreg[p] = c.band ? regions_band(p == PREC_FLOAT ? CM_F32 : CM_F64, c.sectors, c.band_lo, c.band_hi,
 		                                reg + p * MAXREG, MAXREG)
@@ -404,5 +515,6 @@ int cmd_certify(int argc, char **argv)
 done:
 	free(t);
 	free(res);
+	free((void *)c.o.starts);
 	return rc;
 }

@@ -224,7 +224,7 @@ int scene_certify(const char *path, char up, int fl, double E, const onb_method 
 	scene_bound *sb = calloc(nm ? nm : 1, sizeof *sb);
 	const int prec = fl ? PREC_FLOAT : PREC_DOUBLE;
 	size_t nreg = regions_default(fl ? CM_F32 : CM_F64, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
-	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL };
+	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0 };
 	double zmin = 2.0, zmax = -2.0;
 	o.tolerance = fl ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
 	memset(hit, 0, sizeof hit);

@@ -2,12 +2,12 @@
  * search.c - branch and bound over one region, with a search for the
  * largest defect beside it.
  *
- * The found side: inputs sampled in the region (log-spaced in 1 -+ n.z
- * near the poles, the sector's edges and diagonals), each rounded to the
- * format and kept only if it is in the region and in the domain, then the
- * centre of every box the bound side splits, inputs drawn in the 32 leaves
- * with the largest bounds when the bracket is still wide, and a walk of
- * ulp steps from the best input.  The bound side: the region's box of real
+ * The found side (found.c): inputs sampled in the region and ulp walks
+ * from random inputs and from the best ones, before the branch and bound
+ * (a good found value lets it stop early); then the centre of every box
+ * it splits, inputs drawn in the 32 leaves with the largest bounds when
+ * the bracket is still wide, and walks from the best inputs again.  The
+ * bound side: the region's box of real
  * unit vectors, bounded by bound_box; the box with the largest bound is
  * split in two (in log(1 -+ z) near the poles, else in z or in the
  * azimuth, whichever is wider) until the largest bound is within target x
@@ -21,15 +21,9 @@
 #include <string.h>
 #include <mpfr.h>
 #include "search.h"
-#include "reference/reference.h"
 #include "inputs/inputs.h"
 #include "model/model_int.h"
-
-struct cert_ctx {
-	bound_ctx *b;
-	ref_ctx *rc;
-	mpfr_t t, s;   /* scratch of last_component */
-};
+#include "found.h"
 
 cert_ctx *cert_ctx_new(void)
 {
@@ -74,157 +68,6 @@ static uint64_t mix(uint64_t v)
 	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
 	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
 	return v ^ (v >> 31);
-}
-
-typedef struct {
-	cert_ctx *x;
-	const study_kernel *k;
-	int prec;
-	const cert_region *r;
-	const cert_opts *o;
-	cert_result *res;
-} probe_env;
-
-/* |c| = sqrt(1 - a^2 - b^2) rounded to nearest in the format (a, b in it):
-   the squares and their sum are exact in 320 bits; NaN when a^2 + b^2 > 1. */
-static double last_component(cert_ctx *x, double a, double b, int prec)
-{
-	mpfr_set_d(x->t, a, MPFR_RNDN);
-	mpfr_sqr(x->t, x->t, MPFR_RNDN);
-	mpfr_set_d(x->s, b, MPFR_RNDN);
-	mpfr_sqr(x->s, x->s, MPFR_RNDN);
-	mpfr_add(x->t, x->t, x->s, MPFR_RNDN);
-	mpfr_ui_sub(x->t, 1, x->t, MPFR_RNDN);
-	if (mpfr_sgn(x->t) < 0)
-		return NAN;
-	mpfr_sqrt(x->t, x->t, MPFR_RNDN);
-	return prec == PREC_FLOAT ? (double)mpfr_get_flt(x->t, MPFR_RNDN) : mpfr_get_d(x->t, MPFR_RNDN);
-}
-
-/* Try an input near the unit vector at (z, phi radians): its two smaller
-   components rounded to the format, the largest one the rounding of the
-   exact value that makes the vector unit.  Then n is the rounding of a
-   unit vector, and the largest component carries a rounding error spread
-   over its whole half-ulp range, which sets | |n| - 1 |.  (Rounding all
-   three from a double vector would leave n.z exact in double, and | |n| - 1 |
-   near the poles far below its largest.)  In double the largest component
-   would still land within a tiny part of an ulp of the double it came
-   from, so one of the others is first moved by a random relative 2^-27 at
-   most: the last component then moves by many of its ulps. */
-static void try_u(probe_env *e, double z, double phi)
-{
-	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z))), n[3], c;
-	int i, nf = 0, big = 0;
-	double d;
-	n[0] = rr * cos(phi);
-	n[1] = rr * sin(phi);
-	n[2] = z;
-	if (e->o->tolerance > 0) {   /* scale within the tolerance: both ends */
-		double s = 1.0 + ((mix(e->res->probes) & 1) ? 1 : -1) * e->o->tolerance * 0.999;
-		for (i = 0; i < 3; i++)
-			n[i] *= s;
-	}
-	for (i = 1; i < 3; i++)
-		if (fabs(n[i]) > fabs(n[big]))
-			big = i;
-	if (e->prec == PREC_DOUBLE) {   /* see above: spread the last component's rounding */
-		double t = (double)(mix(e->res->probes ^ 0x3c3cu) >> 11) * 0x1p-53 - 0.5;
-		n[(big + 1) % 3] *= 1.0 + t * 0x1p-26;
-	}
-	for (i = 0; i < 3; i++)
-		n[i] = fmt_round(n[i], e->prec);   /* not (double)(float): GCC 12.2 -O2 drops it (inputs.c) */
-	if (e->o->tolerance < 0) {
-		c = last_component(e->x, n[(big + 1) % 3], n[(big + 2) % 3], e->prec);
-		if (!isnan(c))
-			n[big] = copysign(c, n[big]);
-	}
-	if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec == PREC_FLOAT ? CM_F32 : CM_F64, e->o->tolerance))
-		return;
-	e->res->probes++;
-	d = cert_probe(e->x, e->k, e->prec, n, &nf);
-	if (nf)
-		e->res->nonfinite = 1;
-	if (!nf && d > e->res->found) {
-		e->res->found = d;
-		memcpy(e->res->found_n, n, sizeof n);
-	}
-}
-
-#define DEG (3.14159265358979323846 / 180.0)
-
-/* z at t in [0, 1] across the band: log-spaced in 1 + z (1 - z) near the
-   poles, down to 1e-3 of the band's far end when the band holds the pole. */
-static double sample_z(const cert_region *r, double t)
-{
-	double lo = r->nz_lo, hi = r->nz_hi, a, b;
-	if (hi <= -0.9) {
-		b = 1.0 + hi;
-		a = 1.0 + lo > 0.0 ? 1.0 + lo : b * 1e-3;
-		return -1.0 + a * pow(b / a, t);
-	}
-	if (lo >= 0.9) {
-		b = 1.0 - lo;
-		a = 1.0 - hi > 0.0 ? 1.0 - hi : b * 1e-3;
-		return 1.0 - a * pow(b / a, t);
-	}
-	return lo + (hi - lo) * t;
-}
-
-static double unit01(uint64_t seed, uint64_t i) { return (double)(mix(seed ^ mix(i)) >> 11) * 0x1p-53; }
-
-/* The sampled part of the found side. */
-static void sample_region(probe_env *e)
-{
-	const cert_region *r = e->r;
-	const double plo = r->phi_lo * DEG, phi_w = (r->phi_hi - r->phi_lo) * DEG;
-	long i;
-	int j;
-	double d;
-	for (d = ceil(r->phi_lo / 45.0) * 45.0; d < r->phi_hi; d += 45.0)   /* diagonals and axes */
-		for (j = 0; j <= 16; j++)
-			try_u(e, sample_z(r, j / 16.0), d * DEG);
-	try_u(e, r->nz_lo, plo + phi_w / 2);
-	try_u(e, r->nz_hi, plo + phi_w / 2);
-	for (i = 0; i < e->o->samples; i++)
-		try_u(e, sample_z(r, unit01(e->o->seed, (uint64_t)i * 2)),
-		      plo + phi_w * unit01(e->o->seed, (uint64_t)i * 2 + 1));
-}
-
-/* One step of k ulps on component i of n (in the format). */
-static double step_ulps(double v, int prec, int k)
-{
-	for (; k > 0; k--)
-		v = prec == PREC_FLOAT ? (double)nextafterf((float)v, INFINITY) : nextafter(v, INFINITY);
-	for (; k < 0; k++)
-		v = prec == PREC_FLOAT ? (double)nextafterf((float)v, -INFINITY) : nextafter(v, -INFINITY);
-	return v;
-}
-
-/* A walk of ulp steps from the best input: each accepted step raises the
-   defect; stops after `tries` steps. */
-static void walk(probe_env *e, long tries)
-{
-	long t;
-	if (!(e->res->found > 0.0))
-		return;
-	for (t = 0; t < tries; t++) {
-		double n[3], d;
-		int i, nf = 0;
-		uint64_t h = mix(e->o->seed ^ 0x5a5a5a5au ^ (uint64_t)t);
-		memcpy(n, e->res->found_n, sizeof n);
-		for (i = 0; i < 3; i++)
-			n[i] = step_ulps(n[i], e->prec, (int)((h >> (8 * i)) % 9) - 4);
-		if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec == PREC_FLOAT ? CM_F32 : CM_F64, e->o->tolerance))
-			continue;
-		e->res->probes++;
-		d = cert_probe(e->x, e->k, e->prec, n, &nf);
-		if (nf)
-			e->res->nonfinite = 1;
-		else if (d > e->res->found) {
-			e->res->found = d;
-			memcpy(e->res->found_n, n, sizeof n);
-		}
-	}
 }
 
 /* How wide a box is, in a measure that splits where the error varies:
@@ -358,10 +201,10 @@ static void probe_box(probe_env *e, const mvf_box *b)
 	z_measure(b, &zm);
 	if (isnan(zm))
 		zm = 0.5 * (b->z_lo + b->z_hi);
-	try_u(e, zm, pm);
+	found_try_u(e, zm, pm);
 	if (b->has_zpoint) {
-		try_u(e, b->z_lo, pm);
-		try_u(e, b->z_hi, pm);
+		found_try_u(e, b->z_lo, pm);
+		found_try_u(e, b->z_hi, pm);
 	}
 }
 
@@ -380,9 +223,8 @@ static void probe_worst_leaves(probe_env *e, leaf *l, int nl, int top, int per)
 		tmp = l[t]; l[t] = l[imax]; l[imax] = tmp;
 		for (j = 0; j < per; j++) {
 			const mvf_box *b = &l[t].b;
-			const uint64_t s = e->o->seed ^ 0x77u ^ ((uint64_t)t << 32);
-			double z = b->z_lo + (b->z_hi - b->z_lo) * unit01(s, (uint64_t)j * 2);
-			try_u(e, z, b->phi_lo + (b->phi_hi - b->phi_lo) * unit01(s, (uint64_t)j * 2 + 1));
+			double z = b->z_lo + (b->z_hi - b->z_lo) * (double)(mix(e->rng++) >> 11) * 0x1p-53;
+			found_try_u(e, z, b->phi_lo + (b->phi_hi - b->phi_lo) * (double)(mix(e->rng++) >> 11) * 0x1p-53);
 		}
 	}
 }
@@ -468,15 +310,31 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	free(l);
 }
 
+/* The found side's random stream: from the seed and the region alone,
+   so a region draws the same inputs in any thread and any run. */
+static uint64_t region_seed(uint64_t seed, const cert_region *r)
+{
+	const double v[4] = { r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi };
+	uint64_t h = mix(seed), b;
+	int i;
+	for (i = 0; i < 4; i++) {
+		memcpy(&b, &v[i], sizeof b);
+		h = mix(h ^ b);
+	}
+	return h;
+}
+
 void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
                      const cert_region *r, const cert_opts *o, cert_result *res)
 {
 	probe_env e;
 	mvf_box b;
 	memset(res, 0, sizeof *res);
+	memset(&e, 0, sizeof e);
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
-	sample_region(&e);
-	walk(&e, o->samples / 4 + 16);
+	e.rng = region_seed(o->seed, r);
+	found_sample(&e);
+	found_walks(&e, 1);
 	if (region_meets_singular(k, r) || res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
@@ -484,7 +342,7 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	}
 	region_box(r, prec == PREC_FLOAT ? CM_F32 : CM_F64, o->tolerance, &b);
 	branch_and_bound(&e, m, &b);
-	walk(&e, o->samples / 4 + 16);
+	found_walks(&e, 0);
 	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;

@@ -12,6 +12,14 @@
 
 enum { CERT_PROVEN = 0, CERT_SINGULAR, CERT_BUDGET };
 
+/* An input the found side starts a walk from (--starts): another run's
+   worst input of a method, for one precision (-1: either). */
+typedef struct {
+	char method[48];
+	int prec;
+	double n[3];
+} cert_start;
+
 typedef struct {
 	long budget;        /* boxes bounded per region at most                    */
 	long samples;       /* kernel inputs sampled per region before the boxes   */
@@ -22,6 +30,8 @@ typedef struct {
 	   set (tests: every input of the region lies in some leaf). */
 	void (*leaf_fn)(void *arg, const mvf_box *b, double bound);
 	void *leaf_arg;
+	const cert_start *starts;   /* walks also start from these (those of the */
+	long nstarts;               /* kernel, precision and region)            */
 } cert_opts;
 
 typedef struct {
@@ -30,7 +40,8 @@ typedef struct {
 	double found_n[3];  /* that input (in the format)                          */
 	int status;         /* CERT_*                                              */
 	int nonfinite;      /* a sampled input gave a non-finite output            */
-	long boxes, probes;
+	long boxes;
+	long probes;        /* inputs of the region the found side evaluated      */
 } cert_result;
 
 typedef struct cert_ctx cert_ctx;

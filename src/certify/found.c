@@ -1,0 +1,402 @@
+/*
+ * found.c - the found side: the largest defect of the real kernel on
+ * inputs of the region.
+ *
+ * Every input is screened first: the kernel runs on it and its five
+ * defects are summed from exact products in double-double (error-free
+ * transformations), a relative error far below 1e-20.  Only an input
+ * whose screened defect reaches the largest found so far is measured
+ * again by cert_probe, exactly as `onbstudy eval` measures it, and only
+ * that measure is ever reported.  So the search can afford tens of
+ * thousands of inputs per region at a fraction of a microsecond each.
+ *
+ * Where it looks: samples spread over the region (log-spaced in 1 -+ n.z
+ * near the poles, the sector's edges and diagonals); ulp walks from random
+ * inputs of the region and from the FOUND_TOP best inputs seen, each step
+ * moving the two smaller components by a few ulps (at a random scale) and
+ * completing the largest so that the input is the rounding of a unit
+ * vector, or moving all three, or repeating the last step that paid;
+ * every input whose two smaller components lie within 5 ulps of those of
+ * the best inputs, with every domain value of the largest (each end of
+ * its run in float); and, from search.c, the centres of the boxes the
+ * branch and bound splits and inputs drawn in its worst leaves.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <mpfr.h>
+#include "found.h"
+#include "enumerate.h"
+#include "inputs/inputs.h"
+#include "model/model.h"
+
+static uint64_t mix(uint64_t v)
+{
+	v += 0x9e3779b97f4a7c15u;
+	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
+	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
+	return v ^ (v >> 31);
+}
+
+static uint64_t rnd(probe_env *e) { return mix(e->rng++); }
+static double rnd01(probe_env *e) { return (double)(rnd(e) >> 11) * 0x1p-53; }
+
+/* a b as an unevaluated sum hi + lo (exact), and s += v kept as a
+   double-double with Neumaier's compensation. */
+static void two_prod(double a, double b, double *hi, double *lo)
+{
+	*hi = a * b;
+	*lo = fma(a, b, -*hi);
+}
+
+static void acc(double *s, double *c, double v)
+{
+	double t = *s + v;
+	*c += fabs(*s) >= fabs(v) ? (*s - t) + v : (v - t) + *s;
+	*s = t;
+}
+
+/* p . q - sub, to a relative error far below 1e-20 of the terms' size. */
+static double dot_dd(const double *p, const double *q, double sub)
+{
+	double s = -sub, c = 0.0, hi, lo;
+	int i;
+	for (i = 0; i < 3; i++) {
+		two_prod(p[i], q[i], &hi, &lo);
+		acc(&s, &c, hi);
+		acc(&s, &c, lo);
+	}
+	return s + c;
+}
+
+/* The screened defect of kernel output b (6 values) on input n. */
+static double screen_defect(const double n[3], const double b[6])
+{
+	double d[5], m = 0.0;
+	int i;
+	d[0] = dot_dd(b, b, 1.0);
+	d[1] = dot_dd(b + 3, b + 3, 1.0);
+	d[0] = d[0] / (1.0 + sqrt(1.0 + d[0]));   /* |b| - 1 from |b|^2 - 1 */
+	d[1] = d[1] / (1.0 + sqrt(1.0 + d[1]));
+	d[2] = dot_dd(b, n, 0.0);
+	d[3] = dot_dd(b + 3, n, 0.0);
+	d[4] = dot_dd(b, b + 3, 0.0);
+	for (i = 0; i < 5; i++)
+		if (fabs(d[i]) > m)
+			m = fabs(d[i]);
+	return m;
+}
+
+/* Keep n among the best inputs seen (by screened defect, distinct). */
+static void keep_top(probe_env *e, const double n[3], double d)
+{
+	int i, low = 0;
+	for (i = 0; i < e->ntop; i++) {
+		if (memcmp(e->top[i].n, n, 3 * sizeof *n) == 0)
+			return;
+		if (e->top[i].d < e->top[low].d)
+			low = i;
+	}
+	if (e->ntop < FOUND_TOP)
+		low = e->ntop++;
+	else if (!(d > e->top[low].d))
+		return;
+	e->top[low].d = d;
+	memcpy(e->top[low].n, n, 3 * sizeof *n);
+}
+
+double found_try(probe_env *e, const double n[3], int in_domain)
+{
+	static const double loc[3] = { 0.0, 0.0, 1.0 };
+	const int fmt = e->prec == PREC_FLOAT ? CM_F32 : CM_F64;
+	sample_metrics s;
+	double nn[3], d;
+	int i;
+	if (!cert_in_region(e->r, n))
+		return -1.0;
+	if (!in_domain) {
+		int side = fmt == CM_F32 && e->o->tolerance < 0 ? cert_f32_side(n) : 2;
+		if (side == 2 ? !cert_in_domain(n, fmt, e->o->tolerance) : side != 0)
+			return -1.0;
+	}
+	e->res->probes++;
+	ref_run_kernel(e->k, e->prec, n, loc, nn, &s);
+	for (i = 0; i < 6; i++)
+		if (!isfinite(s.out[i])) {
+			e->res->nonfinite = 1;
+			return -1.0;
+		}
+	d = screen_defect(nn, s.out);
+	keep_top(e, n, d);
+	if (d >= e->res->found * (1.0 - 1e-9)) {   /* measure it exactly */
+		int nf = 0;
+		double exact = cert_probe(e->x, e->k, e->prec, n, &nf);
+		if (nf)
+			e->res->nonfinite = 1;
+		else if (exact > e->res->found) {
+			e->res->found = exact;
+			memcpy(e->res->found_n, n, sizeof e->res->found_n);
+		}
+	}
+	return d;
+}
+
+/* |c| = sqrt(1 - a^2 - b^2) rounded to nearest in the format (a, b in it),
+   NaN when a^2 + b^2 > 1; *sure = 1 when that rounding is certain (the
+   320-bit value is within 2^-316 relative of the exact one, and
+   mpfr_can_round says that decides it): then (a, b, +-c) is the rounding
+   of the unit vector (a, b, +-sqrt(1 - a^2 - b^2)), a domain member. */
+static double complete(probe_env *e, double a, double b, int *sure)
+{
+	cert_ctx *x = e->x;
+	const int p = e->prec == PREC_FLOAT ? 24 : 53;
+	mpfr_set_d(x->t, a, MPFR_RNDN);
+	mpfr_sqr(x->t, x->t, MPFR_RNDN);
+	mpfr_set_d(x->s, b, MPFR_RNDN);
+	mpfr_fma(x->t, x->s, x->s, x->t, MPFR_RNDN);
+	mpfr_ui_sub(x->t, 1, x->t, MPFR_RNDN);
+	*sure = 0;
+	if (mpfr_sgn(x->t) < 0)
+		return NAN;
+	mpfr_sqrt(x->t, x->t, MPFR_RNDN);
+	*sure = mpfr_cmp_d(x->t, 0.5) > 0 && mpfr_can_round(x->t, 316, MPFR_RNDN, MPFR_RNDZ, p + 1);
+	return p == 24 ? (double)mpfr_get_flt(x->t, MPFR_RNDN) : mpfr_get_d(x->t, MPFR_RNDN);
+}
+
+static int biggest(const double n[3])
+{
+	int i, b = 0;
+	for (i = 1; i < 3; i++)
+		if (fabs(n[i]) > fabs(n[b]))
+			b = i;
+	return b;
+}
+
+/* n with its largest component (index b) completed; 1 when n is then
+   surely a domain member, 0 when it must be asked, -1 when none exists. */
+static int complete_n(probe_env *e, double n[3], int b)
+{
+	int sure;
+	double c;
+	if (e->o->tolerance >= 0)
+		return 0;
+	c = complete(e, n[(b + 1) % 3], n[(b + 2) % 3], &sure);
+	if (isnan(c))
+		return -1;
+	n[b] = copysign(c, n[b]);
+	return sure;
+}
+
+/* Try an input near the unit vector at (z, phi): its two smaller
+   components rounded to the format, the largest one the rounding of the
+   exact value that makes the vector unit.  Then n is the rounding of a
+   unit vector, and the largest component carries a rounding error spread
+   over its whole half-ulp range, which sets | |n| - 1 |.  (Rounding all
+   three from a double vector would leave n.z exact in double, and | |n| - 1 |
+   near the poles far below its largest.)  In double the largest component
+   would still land within a tiny part of an ulp of the double it came
+   from, so one of the others is first moved by a random relative 2^-27 at
+   most: the last component then moves by many of its ulps. */
+static int make_u(probe_env *e, double z, double phi, double n[3])
+{
+	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z)));
+	int i, big = 0;
+	n[0] = rr * cos(phi);
+	n[1] = rr * sin(phi);
+	n[2] = z;
+	if (e->o->tolerance > 0) {   /* scale within the tolerance: both ends */
+		double s = 1.0 + ((rnd(e) & 1) ? 1 : -1) * e->o->tolerance * 0.999;
+		for (i = 0; i < 3; i++)
+			n[i] *= s;
+	}
+	big = biggest(n);
+	if (e->prec == PREC_DOUBLE)   /* see above: spread the last component's rounding */
+		n[(big + 1) % 3] *= 1.0 + (rnd01(e) - 0.5) * 0x1p-26;
+	for (i = 0; i < 3; i++)
+		n[i] = fmt_round(n[i], e->prec);   /* not (double)(float): GCC 12.2 -O2 drops it (inputs.c) */
+	return complete_n(e, n, big);
+}
+
+void found_try_u(probe_env *e, double z, double phi)
+{
+	double n[3];
+	found_try(e, n, make_u(e, z, phi, n) > 0);
+}
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+/* z at t in [0, 1] across the band: log-spaced in 1 + z (1 - z) near the
+   poles, down to 1e-3 of the band's far end when the band holds the pole. */
+static double sample_z(const cert_region *r, double t)
+{
+	double lo = r->nz_lo, hi = r->nz_hi, a, b;
+	if (hi <= -0.9) {
+		b = 1.0 + hi;
+		a = 1.0 + lo > 0.0 ? 1.0 + lo : b * 1e-3;
+		return -1.0 + a * pow(b / a, t);
+	}
+	if (lo >= 0.9) {
+		b = 1.0 - lo;
+		a = 1.0 - hi > 0.0 ? 1.0 - hi : b * 1e-3;
+		return 1.0 - a * pow(b / a, t);
+	}
+	return lo + (hi - lo) * t;
+}
+
+/* The --starts inputs of this kernel and precision (found_try keeps those
+   of the region). */
+static void try_starts(probe_env *e)
+{
+	long i;
+	for (i = 0; i < e->o->nstarts; i++) {
+		const cert_start *s = &e->o->starts[i];
+		if ((s->prec < 0 || s->prec == e->prec) && strcmp(s->method, e->k->name) == 0 &&
+		    (e->prec == PREC_DOUBLE || fmt_round(s->n[0], PREC_FLOAT) == s->n[0]) &&
+		    (e->prec == PREC_DOUBLE || (fmt_round(s->n[1], PREC_FLOAT) == s->n[1] &&
+		                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2])))
+			found_try(e, s->n, 0);
+	}
+}
+
+void found_sample(probe_env *e)
+{
+	const cert_region *r = e->r;
+	const double plo = r->phi_lo * DEG, phi_w = (r->phi_hi - r->phi_lo) * DEG;
+	long i;
+	int j;
+	double d;
+	for (d = ceil(r->phi_lo / 45.0) * 45.0; d < r->phi_hi; d += 45.0)   /* diagonals and axes */
+		for (j = 0; j <= 16; j++)
+			found_try_u(e, sample_z(r, j / 16.0), d * DEG);
+	found_try_u(e, r->nz_lo, plo + phi_w / 2);
+	found_try_u(e, r->nz_hi, plo + phi_w / 2);
+	for (i = 0; i < e->o->samples; i++)
+		found_try_u(e, sample_z(r, rnd01(e)), plo + phi_w * rnd01(e));
+	try_starts(e);
+}
+
+/* One proposal of a walk from n into m; k[] receives the ulp steps of the
+   two smaller components (for a repeat).  Returns the domain knowledge as
+   complete_n does (0 for a move of all three components). */
+static int propose(probe_env *e, const double n[3], double m[3], int k[2])
+{
+	static const int scale[4] = { 1, 2, 8, 64 };
+	const int b = biggest(n), s = scale[rnd(e) & 3];
+	const uint64_t h = rnd(e);
+	int i, r;
+	memcpy(m, n, 3 * sizeof *m);
+	/* moves off the completion need cert_in_domain, in MPFR at 4400 bits
+	   in double (tens of microseconds): float only */
+	if ((h & 7) == 0 && e->prec == PREC_FLOAT) {   /* all three by -2..2 ulps */
+		for (i = 0; i < 3; i++)
+			m[i] = fmt_step(m[i], (int64_t)((h >> (8 + 4 * i)) % 5) - 2, e->prec);
+		return 0;
+	}
+	k[0] = (int)((h >> 8) % (uint64_t)(2 * s + 1)) - s;
+	k[1] = (int)((h >> 24) % (uint64_t)(2 * s + 1)) - s;
+	m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], k[0], e->prec);
+	m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], k[1], e->prec);
+	r = complete_n(e, m, b);
+	if (r >= 0 && e->prec == PREC_FLOAT && (h & 0x300000000000ull) == 0) {   /* a quarter: the largest one ulp off */
+		m[b] = fmt_step(m[b], (h >> 50) & 1 ? 1 : -1, e->prec);
+		return 0;
+	}
+	return r;
+}
+
+/* A hill climb from n (screened defect d) of at most `steps` steps,
+   stopping after `stall` steps without a gain; a step that paid is
+   repeated. */
+static void climb(probe_env *e, double n[3], double d, long steps, long stall)
+{
+	double m[3], v;
+	long s, since = 0;
+	int k[2] = { 0, 0 }, last[2] = { 0, 0 }, repeat = 0, known;
+	for (s = 0; s < steps && since < stall; s++) {
+		if (repeat) {   /* the same step once more */
+			const int b = biggest(n);
+			memcpy(m, n, sizeof m);
+			m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], last[0], e->prec);
+			m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], last[1], e->prec);
+			known = complete_n(e, m, b);
+			k[0] = last[0];
+			k[1] = last[1];
+		} else {
+			k[0] = k[1] = 0;
+			known = propose(e, n, m, k);
+		}
+		v = known < 0 ? -1.0 : found_try(e, m, known > 0);
+		repeat = v > d && (k[0] || k[1]);
+		if (v > d) {
+			d = v;
+			memcpy(n, m, sizeof m);
+			last[0] = k[0];
+			last[1] = k[1];
+			since = 0;
+		} else {
+			since++;
+		}
+	}
+}
+
+/* Every input whose two smaller components are within `w` ulps of n's,
+   the largest completed; in float also every other domain value of the
+   largest (the ends of its run). */
+static void neighbourhood(probe_env *e, const double n[3], int w)
+{
+	const int b = biggest(n);
+	int i, j;
+	for (i = -w; i <= w; i++)
+		for (j = -w; j <= w; j++) {
+			double m[3], lo, hi;
+			int known;
+			memcpy(m, n, sizeof m);
+			m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], i, e->prec);
+			m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], j, e->prec);
+			if ((known = complete_n(e, m, b)) < 0)
+				continue;
+			found_try(e, m, known > 0);
+			if (e->prec == PREC_FLOAT && e->o->tolerance < 0 &&
+			    cert_f32_run(m, b, signbit(m[b]) ? -1 : 1, &lo, &hi) > 1) {
+				m[b] = copysign(lo, m[b]);
+				found_try(e, m, 1);
+				m[b] = copysign(hi, m[b]);
+				found_try(e, m, 1);
+			}
+		}
+}
+
+/* The walks: from random inputs of the region (samples / 8 of them, at
+   least 16; none unless `restarts`), then from each of the best inputs
+   seen, then the neighbourhoods of the four best. */
+void found_walks(probe_env *e, int restarts)
+{
+	const cert_region *r = e->r;
+	const long starts = !restarts ? 0 : e->o->samples / 8 > 16 ? e->o->samples / 8 : 16;
+	found_cand best[FOUND_TOP];
+	long i;
+	int nb, j;
+	for (i = 0; i < starts; i++) {
+		double n[3], d;
+		const int known = make_u(e, sample_z(r, rnd01(e)), (r->phi_lo + (r->phi_hi - r->phi_lo) * rnd01(e)) * DEG, n);
+		if (known >= 0 && (d = found_try(e, n, known > 0)) >= 0.0)
+			climb(e, n, d, 150, 40);
+	}
+	nb = e->ntop;
+	memcpy(best, e->top, (size_t)nb * sizeof *best);
+	for (j = 0; j < nb && (restarts || j < 4); j++)
+		climb(e, best[j].n, best[j].d, 300, 80);
+	for (j = 0; j < (restarts ? 4 : 2) && j < e->ntop; j++) {
+		int top = j, t;
+		for (t = j + 1; t < e->ntop; t++)
+			if (e->top[t].d > e->top[top].d)
+				top = t;
+		if (top != j) {
+			found_cand tmp = e->top[j];
+			e->top[j] = e->top[top];
+			e->top[top] = tmp;
+		}
+		memcpy(best[0].n, e->top[j].n, sizeof best[0].n);
+		neighbourhood(e, best[0].n, 5);
+	}
+}

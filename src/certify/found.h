@@ -1,0 +1,56 @@
+/*
+ * found.h - the found side of one region's bracket (found.c), shared with
+ * the branch and bound (search.c): inputs of the region evaluated on the
+ * real kernel, the largest defect kept with its input.
+ */
+#ifndef ONB_CERTIFY_FOUND_H
+#define ONB_CERTIFY_FOUND_H
+
+#include <mpfr.h>
+#include "search.h"
+#include "reference/reference.h"
+
+struct cert_ctx {
+	bound_ctx *b;
+	ref_ctx *rc;
+	mpfr_t t, s;   /* scratch of the completion of an input to unit length */
+};
+
+/* The inputs with the largest defects seen, as screened: where the
+   walks start. */
+#define FOUND_TOP 16
+
+typedef struct {
+	double d;      /* the screened defect */
+	double n[3];
+} found_cand;
+
+typedef struct {
+	cert_ctx *x;
+	const study_kernel *k;
+	int prec;
+	const cert_region *r;
+	const cert_opts *o;
+	cert_result *res;
+	found_cand top[FOUND_TOP];
+	int ntop;
+	uint64_t rng;
+} probe_env;
+
+/* Evaluate input n (in the format) if it lies in the region and the domain
+   (in_domain: 1 when known to be in it, so not asked again); returns its
+   screened defect, or -1 when it was not evaluated or gave a non-finite
+   output (then res->nonfinite is set). */
+double found_try(probe_env *e, const double n[3], int in_domain);
+
+/* An input near the unit vector at (z, phi radians), completed so that it
+   is the rounding of a unit vector (found.c), tried. */
+void found_try_u(probe_env *e, double z, double phi);
+
+/* The sampled start of the found side, and its walks: ulp walks from
+   random inputs of the region (when restarts) and from the best inputs
+   seen, then every input of a small neighbourhood of the best ones. */
+void found_sample(probe_env *e);
+void found_walks(probe_env *e, int restarts);
+
+#endif

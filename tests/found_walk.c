@@ -1,0 +1,220 @@
+/*
+ * found_walk.c - an outside search against certify's found side: ulp walks
+ * with random restarts in every region of a certify.csv, compared with the
+ * region's found value.
+ *
+ * usage: found_walk CERTIFY.CSV [RESTARTS [STEPS [SEED]]]
+ *
+ * Per region (not the whole-sphere rows, not singular ones): RESTARTS
+ * (default 20) walks from random inputs of the region, and one from the
+ * row's own found input, each STEPS (default 300) steps long.  A start is
+ * the rounding to the format of a unit vector at a random n.z (uniform, or
+ * log-uniform in 1 -+ n.z in the bands next to the poles) and azimuth in
+ * the sector, its largest component the rounding of the exact value that
+ * makes it unit.  A step moves each component by a random -4..4 ulps (or
+ * the two smaller ones, the largest again the rounding that makes the
+ * vector unit), and is kept when the input stays in the region and the
+ * domain and its defect (cert_probe, as `onbstudy eval` measures it) is
+ * larger.  Prints each region whose walk beats found by more than 5%, and
+ * a summary: regions, how many are beaten by more than 5%, the largest and
+ * the median walk / found.  Exit 0, or 2 on bad input.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <mpfr.h>
+#include "methods/kernels.h"
+#include "inputs/inputs.h"
+#include "certify/region.h"
+#include "certify/search.h"
+
+#define MAXK 128
+#define MAXROW 40000
+
+static uint64_t rng;
+static uint64_t next(void)
+{
+	uint64_t v = (rng += 0x9e3779b97f4a7c15u);
+	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
+	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
+	return v ^ (v >> 31);
+}
+static double unit(void) { return (double)(next() >> 11) * 0x1p-53; }
+
+typedef struct {
+	cert_ctx *x;
+	const study_kernel *k;
+	int prec;
+	cert_region r;
+	mpfr_t t, s;
+} walker;
+
+/* |c| with a^2 + b^2 + c^2 = 1, rounded to the format (NaN if none). */
+static double complete(walker *w, double a, double b)
+{
+	mpfr_set_d(w->t, a, MPFR_RNDN);
+	mpfr_sqr(w->t, w->t, MPFR_RNDN);
+	mpfr_set_d(w->s, b, MPFR_RNDN);
+	mpfr_fma(w->t, w->s, w->s, w->t, MPFR_RNDN);
+	mpfr_ui_sub(w->t, 1, w->t, MPFR_RNDN);
+	if (mpfr_sgn(w->t) < 0)
+		return NAN;
+	mpfr_sqrt(w->t, w->t, MPFR_RNDN);
+	return w->prec == PREC_FLOAT ? (double)mpfr_get_flt(w->t, MPFR_RNDN) : mpfr_get_d(w->t, MPFR_RNDN);
+}
+
+static int biggest(const double n[3])
+{
+	int i, b = 0;
+	for (i = 1; i < 3; i++)
+		if (fabs(n[i]) > fabs(n[b]))
+			b = i;
+	return b;
+}
+
+/* The defect at n, or -1 when n is outside the region or the domain. */
+static double defect(walker *w, const double n[3])
+{
+	int nf = 0;
+	double d;
+	if (!cert_in_region(&w->r, n) || !cert_in_domain(n, w->prec == PREC_FLOAT ? 0 : 1, -1.0))
+		return -1.0;
+	d = cert_probe(w->x, w->k, w->prec, n, &nf);
+	return nf ? -1.0 : d;
+}
+
+static void start(walker *w, double n[3])
+{
+	const cert_region *r = &w->r;
+	double z, phi, rr, c;
+	int b;
+	if (r->nz_hi <= -0.9 || r->nz_lo >= 0.9) {   /* log-uniform in 1 -+ z */
+		const int south = r->nz_hi <= -0.9;
+		double a = south ? 1.0 + r->nz_lo : 1.0 - r->nz_hi, e = south ? 1.0 + r->nz_hi : 1.0 - r->nz_lo;
+		if (a <= 0.0)
+			a = e * 1e-3;
+		z = a * pow(e / a, unit());
+		z = south ? -1.0 + z : 1.0 - z;
+	} else {
+		z = r->nz_lo + (r->nz_hi - r->nz_lo) * unit();
+	}
+	phi = (r->phi_lo + (r->phi_hi - r->phi_lo) * unit()) * 3.14159265358979323846 / 180.0;
+	rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z)));
+	n[0] = fmt_round(rr * cos(phi), w->prec);
+	n[1] = fmt_round(rr * sin(phi), w->prec);
+	n[2] = fmt_round(z, w->prec);
+	b = biggest(n);
+	c = complete(w, n[(b + 1) % 3], n[(b + 2) % 3]);
+	if (!isnan(c))
+		n[b] = copysign(c, n[b]);
+}
+
+/* A hill climb of `steps` steps from n; returns the best defect (n then
+   holds its input). */
+static double climb(walker *w, double n[3], long steps)
+{
+	double best = defect(w, n), m[3];
+	long s;
+	int i;
+	for (s = 0; s < steps; s++) {
+		double d;
+		memcpy(m, n, sizeof m);
+		if (next() & 1) {
+			for (i = 0; i < 3; i++)
+				m[i] = fmt_step(m[i], (int64_t)(next() % 9) - 4, w->prec);
+		} else {
+			int b = biggest(m);
+			double c;
+			m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], (int64_t)(next() % 9) - 4, w->prec);
+			m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], (int64_t)(next() % 9) - 4, w->prec);
+			c = complete(w, m[(b + 1) % 3], m[(b + 2) % 3]);
+			if (isnan(c))
+				continue;
+			m[b] = copysign(c, m[b]);
+		}
+		if ((d = defect(w, m)) > best) {
+			best = d;
+			memcpy(n, m, sizeof m);
+		}
+	}
+	return best;
+}
+
+static int cmp_d(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return x < y ? -1 : x > y;
+}
+
+static double ratios[MAXROW];
+
+int main(int argc, char **argv)
+{
+	static study_kernel ks[MAXK];
+	char line[4096];
+	long restarts = argc > 2 ? atol(argv[2]) : 20, steps = argc > 3 ? atol(argv[3]) : 300;
+	int nk = kernels_select(NULL, 0, ks, MAXK), nr = 0, beaten = 0;
+	double worst = 0.0;
+	walker w;
+	FILE *in;
+	if (argc < 2 || argc > 5 || restarts < 0 || steps < 0) {
+		fprintf(stderr, "usage: found_walk CERTIFY.CSV [RESTARTS [STEPS [SEED]]]\n");
+		return 2;
+	}
+	rng = argc > 4 ? strtoull(argv[4], NULL, 0) : 12345;
+	if (!(in = fopen(argv[1], "r"))) {
+		fprintf(stderr, "found_walk: %s: cannot open\n", argv[1]);
+		return 2;
+	}
+	memset(&w, 0, sizeof w);
+	w.x = cert_ctx_new();
+	mpfr_inits2(320, w.t, w.s, (mpfr_ptr)0);
+	while (fgets(line, sizeof line, in) && nr < MAXROW) {
+		char meth[64], prec[16], status[16], fx[64], fy[64], fz[64];
+		double bound, found, n[3], best;
+		long r;
+		int k;
+		if (line[0] == '#' || strncmp(line, "method,", 7) == 0)
+			continue;
+		for (k = 0; line[k]; k++)
+			if (line[k] == ',')
+				line[k] = ' ';
+		if (sscanf(line, "%63s %15s %lf %lf %lf %lf %lf %lf %63s %63s %63s %15s", meth, prec, &w.r.nz_lo,
+		           &w.r.nz_hi, &w.r.phi_lo, &w.r.phi_hi, &bound, &found, fx, fy, fz, status) != 12)
+			continue;
+		if (strcmp(status, "singular") == 0 || (w.r.nz_lo == -1.0 && w.r.nz_hi == 1.0 && w.r.phi_hi == 360.0 &&
+		                                        w.r.phi_lo == 0.0) || !(found > 0.0))
+			continue;
+		for (k = 0; k < nk && strcmp(ks[k].name, meth) != 0; k++)
+			;
+		if (k == nk)
+			continue;
+		w.k = &ks[k];
+		w.prec = strcmp(prec, "double") == 0 ? PREC_DOUBLE : PREC_FLOAT;
+		n[0] = strtod(fx, NULL); n[1] = strtod(fy, NULL); n[2] = strtod(fz, NULL);
+		best = climb(&w, n, steps);
+		for (r = 0; r < restarts; r++) {
+			double d;
+			start(&w, n);
+			if ((d = climb(&w, n, steps)) > best)
+				best = d;
+		}
+		ratios[nr++] = best / found;
+		if (best > 1.05 * found) {
+			beaten++;
+			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: found %.6g, walk %.6g (x%.3f) at (%a, %a, %a)\n", meth,
+			       prec, w.r.nz_lo, w.r.nz_hi, w.r.phi_lo, w.r.phi_hi, found, best, best / found, n[0], n[1], n[2]);
+		}
+		if (best / found > worst)
+			worst = best / found;
+	}
+	fclose(in);
+	qsort(ratios, (size_t)nr, sizeof *ratios, cmp_d);
+	printf("found_walk: %d regions, %ld restarts x %ld steps: walk beats found by > 5%% in %d; largest walk/found %.4f, median %.4f\n",
+	       nr, restarts, steps, beaten, worst, nr ? ratios[nr / 2] : NAN);
+	mpfr_clears(w.t, w.s, (mpfr_ptr)0);
+	cert_ctx_free(w.x);
+	return 0;
+}

@@ -169,7 +169,7 @@ $(B)/rev.stamp: FORCE
 	@mkdir -p $(B)
 	@echo '$(GIT_REV) $(BASE)' > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
-$(B)/cli/output.o $(MAIN_OBJ): $(B)/rev.stamp
+$(B)/common/output.o $(MAIN_OBJ): $(B)/rev.stamp
 .PHONY: FORCE
 FORCE:
 

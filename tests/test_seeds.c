@@ -17,8 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "libonb/onb.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "inputs/rng.h"
 #include "model/seeds.h"
 #if ONB_HAVE_HW_RSQRT

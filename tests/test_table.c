@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "cli/cli.h"
+#include "common/options.h"
 #include "bench/table.h"
 #include "bench/table.h"
 

@@ -17,8 +17,8 @@
 #include <unistd.h>
 #include <omp.h>
 #include "bench/bench.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "bench/bench_core.h"
 #include "bench/bench_calls.h"
 #include "bench/yardstick.h"

@@ -18,8 +18,8 @@
 #include <math.h>
 #include "bench/bench_ref.h"
 #include "bench/bench_core.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "inputs/inputs.h"
 #include "methods/kernels.h"
 #include "reference/reference.h"

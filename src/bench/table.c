@@ -25,8 +25,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "bench/table.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 
 #define CSV_MAXF 64
 

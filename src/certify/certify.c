@@ -11,9 +11,9 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
-#include "cli/cli.h"
-#include "cli/output.h"
-#include "sweep/engine.h"
+#include "common/options.h"
+#include "common/output.h"
+#include "common/progress.h"
 #include "certify.h"
 #include "search.h"
 #include "model/seeds.h"
@@ -320,11 +320,11 @@ static void csv_row(FILE *f, const char *name, int p, const cert_region *r, cons
 static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const size_t *nreg,
                     const task *t, int nt, const cert_cli *c, cert_result *res)
 {
-	engine_progress pr;
+	study_progress pr;
 	int fail = 0;
 	memset(&pr, 0, sizeof pr);
 	pr.bar = !c->quiet && isatty(2);
-	pr.t0 = engine_now();
+	pr.t0 = study_now();
 	pr.total = (unsigned long long)nt;
 #pragma omp parallel
 	{
@@ -346,7 +346,7 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 #else
 			if (pr.bar)
 #endif
-				engine_progress_line("certify", &pr);
+				study_progress_line("certify", &pr);
 		}
 		cert_ctx_free(x);
 	}

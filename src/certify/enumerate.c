@@ -24,7 +24,7 @@
 #include "enumerate.h"
 #include "region.h"
 #include "model/model.h"
-#include "cli/cli.h"
+#include "common/options.h"
 #include "inputs/inputs.h"
 
 /* Two fixed ranges of 21 floats about a centre (7 for -x itself). */

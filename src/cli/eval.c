@@ -8,7 +8,7 @@
 #include <math.h>
 #include <ctype.h>
 #include "cli/eval.h"
-#include "cli/cli.h"
+#include "common/options.h"
 #include "methods/kernels.h"
 #include "reference/reference.h"
 #include "inputs/inputs.h"

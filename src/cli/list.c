@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "cli/list.h"
-#include "cli/cli.h"
+#include "common/options.h"
 
 /* x as %g, every NaN as "nan" (its sign bit differs between CPUs). */
 static const char *num(char *buf, size_t len, double x)

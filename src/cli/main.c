@@ -7,8 +7,8 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "cli/list.h"
 #include "cli/eval.h"
 /* up: the commands of the other folders */

@@ -8,7 +8,7 @@
 #include "inputs/inputs.h"
 #include "methods/kernels.h"
 #include "inputs/rng.h"
-#include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
+#include "common/options.h"
 
 static const char *const names[NDIST] = {
 	"uniform", "north", "south", "threshold", "exhaustive", "nonunit", "grid"

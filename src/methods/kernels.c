@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "methods/kernels.h"
-#include "cli/cli.h"  /* up, for study_error alone: cli.c sits beside main but imports nothing of the study */
+#include "common/options.h"
 
 /* The branch rule of the kernel's family, plain arithmetic. */
 int kernels_branch(const study_kernel *k, int prec, const double n[3])

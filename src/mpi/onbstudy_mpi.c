@@ -36,8 +36,8 @@
 #include <errno.h>
 #include <sys/resource.h>
 #include "sweep/engine.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "sweep/sweep.h"
 
 #define CKPT_NAME "sweep-checkpoint.bin"
@@ -360,7 +360,7 @@ static int write_checkpoint(run_t *r);
 /* After an add (under r->mu): the checkpoint, when due. */
 static void maybe_checkpoint(run_t *r)
 {
-	if (r->dirty && engine_now() - r->t_ckpt >= r->mo.ckpt_every && write_checkpoint(r) != 0)
+	if (r->dirty && study_now() - r->t_ckpt >= r->mo.ckpt_every && write_checkpoint(r) != 0)
 		r->fail = 1;
 }
 
@@ -381,7 +381,7 @@ static int write_checkpoint(run_t *r)
 	rc = sweep_save_state_x(&r->acc, r->pl.out, CKPT_NAME, x, n);
 	free(x);
 	r->dirty = 0;
-	r->t_ckpt = engine_now();
+	r->t_ckpt = study_now();
 	return rc;
 }
 
@@ -483,8 +483,8 @@ static void *local_worker(void *arg)
 static void progress(run_t *r, int final)
 {
 	const int tty = isatty(2);
-	const double now = engine_now();
-	engine_progress pr;
+	const double now = study_now();
+	study_progress pr;
 	char label[64];
 	if (r->pl.quiet || (!final && now - r->t_progress < (tty ? 1.0 : 10.0)))
 		return;
@@ -495,7 +495,7 @@ static void progress(run_t *r, int final)
 	pr.skipped = r->evals_resumed;
 	pr.total = r->pl.evals;
 	snprintf(label, sizeof label, "sweep: %d ranks x %d thr", nranks, r->pl.threads);
-	engine_progress_line(label, &pr);
+	study_progress_line(label, &pr);
 	if (!tty || final)
 		fputc('\n', stderr);
 }
@@ -625,7 +625,7 @@ static int setup(run_t *r)
 
 static int finish(run_t *r)
 {
-	const double sec = engine_now() - r->t0;
+	const double sec = study_now() - r->t0;
 	char path[4200];
 	progress(r, 1);
 	fprintf(stderr, "onbstudy-mpi: %llu referenced evaluations in %.2f s on %d ranks x %d threads (%llu from the checkpoint): "
@@ -670,7 +670,7 @@ static int run(run_t *r, int argc, char **argv)
 	r->nbatches = (r->pl.chunks + r->B - 1) / r->B;
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
-	r->t0 = r->t_progress = engine_now();
+	r->t0 = r->t_progress = study_now();
 	r->cpu0 = cpu_seconds();
 	if (rank == 0) {
 		rc = master(r);

@@ -33,8 +33,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "reproduce/reproduce.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 
 typedef void (*fnf)(onb_vec3f, onb_vec3f *, onb_vec3f *);
 

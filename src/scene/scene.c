@@ -49,8 +49,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene/scene.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "mesh/meshio.h"
 #include "bench/bench_core.h"
 #include "scene/speed.h"

@@ -24,8 +24,8 @@
 #include <omp.h>
 #endif
 #include "sweep/engine.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "reference/reffast.h"
 
 volatile sig_atomic_t engine_stop;
@@ -47,13 +47,6 @@ typedef struct {
 	int p, d;                      /* -1: loc is empty */
 	unsigned long long evals, checked;
 } worker;
-
-double engine_now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 engine *engine_new(const sweep_plan *pl)
 {
@@ -238,31 +231,12 @@ static unsigned long long run_chunk(engine *e, worker *w, sweep_state *st, uint6
 	return (unsigned long long)(i1 - i0) * (unsigned long long)kernels_running(st->kernels, st->cfg.nk, p);
 }
 
-/* Fixed width: "  42 s  ", " 3.2 min", " 1.5 h  ", " 2.0 days". */
-static void print_eta(double s)
-{
-	const char *unit;
-	const double v = study_duration(s, &unit);
-	fprintf(stderr, v == s ? "%4.0f %-3s" : "%4.1f %-3s", v, unit);
-}
-
-void engine_progress_line(const char *label, const engine_progress *pr)
-{
-	const double el = engine_now() - pr->t0;
-	const unsigned long long fresh = pr->done > pr->skipped ? pr->done - pr->skipped : 0;
-	fprintf(stderr, "\r%-24s %5.1f%%  ETA ", label, 100.0 * (double)pr->done / (double)(pr->total ? pr->total : 1));
-	if (fresh > 0 && el > 0.5)
-		print_eta(el * (double)(pr->total > pr->done ? pr->total - pr->done : 0) / (double)fresh);
-	else
-		fprintf(stderr, "   ?     ");
-}
-
-static void report(engine *e, engine_progress *pr, unsigned long long n, uint64_t g)
+static void report(engine *e, study_progress *pr, unsigned long long n, uint64_t g)
 {
 	int p, d;
 	uint64_t c;
 	char label[64];
-	engine_progress snap;
+	study_progress snap;
 #pragma omp atomic
 	pr->done += n;
 	if (!pr->bar)
@@ -280,10 +254,10 @@ static void report(engine *e, engine_progress *pr, unsigned long long n, uint64_
 	if (plan_locate(e->pl, g, &p, &d, &c) != 0)
 		return;
 	snprintf(label, sizeof label, "sweep %-6s %-10s", p ? "double" : "float", dist_name(d));
-	engine_progress_line(label, &snap);
+	study_progress_line(label, &snap);
 }
 
-int engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, engine_progress *pr)
+int engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, study_progress *pr)
 {
 	long long g;
 	e->fail = 0;
@@ -337,7 +311,7 @@ double engine_calibrate(engine *e, int chunks, unsigned long long *evals)
 	*evals = 0;
 	if (pl->chunks == 0 || engine_state_init(pl, &scratch) != 0)
 		return 0.0;
-	t0 = engine_now();
+	t0 = study_now();
 	for (i = 0; i < chunks; i++) {
 		uint64_t g = (uint64_t)((double)pl->chunks * i / chunks);
 		while (g < pl->chunks && !plan_in_shard(pl, g))
@@ -345,7 +319,7 @@ double engine_calibrate(engine *e, int chunks, unsigned long long *evals)
 		if (g >= pl->chunks || engine_run(e, &scratch, g, g + 1, NULL) != ENGINE_OK)
 			break;
 	}
-	t = engine_now() - t0;
+	t = study_now() - t0;
 	*evals = scratch.cfg.evals;
 	sweep_free(&scratch);
 	return t > 0 ? (double)*evals / t : 0.0;

@@ -20,18 +20,9 @@
 
 #include <signal.h>
 #include "sweep/plan.h"
+#include "common/progress.h"
 
 typedef struct engine engine;
-
-/* Progress: the engine adds the evaluations it completes to done, and
-   thread 0 prints "\r<label> <pct> ETA ..." to stderr when bar is set. */
-typedef struct {
-	int bar;                       /* print the progress line */
-	double t0;                     /* engine_now() at the start */
-	unsigned long long done;       /* referenced evaluations completed */
-	unsigned long long total;      /* of the whole run */
-	unsigned long long skipped;    /* done before t0 (resumed chunks): not in the rate */
-} engine_progress;
 
 /* Set (from a signal handler, say) to stop: the running chunks finish,
    the rest are skipped, and engine_run returns ENGINE_STOPPED. */
@@ -46,8 +37,10 @@ void    engine_free(engine *e);
 int     engine_state_init(const sweep_plan *pl, sweep_state *st);
 /* Run the plan's global chunks g in [g0, g1) that belong to its shard
    into st (threads: pl->threads).  Returns an ENGINE_* code; after
-   ENGINE_DISAGREE, engine_why() says which input. */
-int     engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, engine_progress *pr);
+   ENGINE_DISAGREE, engine_why() says which input.  pr: the engine adds
+   the evaluations it completes to pr->done, and thread 0 prints the
+   progress line (common/progress.h) when pr->bar is set. */
+int     engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, study_progress *pr);
 const char *engine_why(const engine *e);
 /* Evaluations per second per thread, timed on up to `chunks` chunks spread
    over the plan (for --dry-run); *evals gets how many were timed. */
@@ -58,8 +51,5 @@ double  engine_calibrate(engine *e, int chunks, unsigned long long *evals);
    message. */
 int     engine_walk(sweep_state *s, int threads);
 
-double  engine_now(void);                            /* monotonic seconds */
-/* "\r<label> 42.0%  ETA 3.2 min" on stderr. */
-void    engine_progress_line(const char *label, const engine_progress *pr);
 
 #endif

@@ -11,8 +11,8 @@
 #endif
 #include "reference/reffast.h"
 #include "sweep/plan.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 
 int plan_all_cores(void)
 {

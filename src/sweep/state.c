@@ -12,8 +12,8 @@
 #include <string.h>
 #include <errno.h>
 #include "sweep/state.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 
 #define STATE_MAGIC "onbsweep-state4"
 

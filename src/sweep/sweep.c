@@ -18,8 +18,8 @@
 #include "sweep/sweep.h"
 #include "sweep/engine.h"
 #include "sweep/state.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "sweep/threshold.h"
 #include "sweep/writers.h"
 
@@ -58,7 +58,7 @@ static int sweep_dry_run(const sweep_plan *pl)
 /* Run every chunk of the plan into st.  0, or the exit status after a message. */
 static int sweep_run(const sweep_plan *pl, sweep_state *st, double *seconds)
 {
-	engine_progress pr;
+	study_progress pr;
 	engine *e;
 	int rc;
 	if (pl->evals > 1000000000ull)
@@ -73,9 +73,9 @@ static int sweep_run(const sweep_plan *pl, sweep_state *st, double *seconds)
 	pr.total = pl->evals;
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
-	pr.t0 = engine_now();
+	pr.t0 = study_now();
 	rc = engine_run(e, st, 0, pl->chunks, &pr);
-	*seconds = engine_now() - pr.t0;
+	*seconds = study_now() - pr.t0;
 	if (pr.bar)
 		fprintf(stderr, "\r%70s\r", "");
 	if (rc == ENGINE_DISAGREE)

@@ -27,8 +27,8 @@
 #endif
 #include "sweep/threshold.h"
 #include "sweep/state.h"  /* its state-file helpers */
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 #include "methods/kernels.h"
 #include "reference/reference.h"
 #include "inputs/inputs.h"

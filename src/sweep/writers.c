@@ -14,8 +14,8 @@
 #endif
 #include "sweep/writers.h"
 #include "sweep/state.h"
-#include "cli/cli.h"
-#include "cli/output.h"
+#include "common/options.h"
+#include "common/output.h"
 
 static const char *prec_name(int p) { return p == PREC_FLOAT ? "float" : "double"; }
 

@@ -27,7 +27,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "common/options.h"
 #include "cli/list.h"
 #include "sweep/sweep.h"
 #include "scene/scene.h"

@@ -11,8 +11,8 @@
 #include <unistd.h>
 #include <gmp.h>
 #include <mpfr.h>
-#include "cli/output.h"
-#include "cli/cli.h"
+#include "common/output.h"
+#include "common/options.h"
 
 int study_mkdir_p(const char *dir)
 {

@@ -1,9 +1,9 @@
 /*
- * cli/output.h - atomic result files, run directories and the provenance
+ * common/output.h - atomic result files, run directories and the provenance
  * header of every data file (output.c).
  */
-#ifndef ONB_OUTPUT_H
-#define ONB_OUTPUT_H
+#ifndef ONB_COMMON_OUTPUT_H
+#define ONB_COMMON_OUTPUT_H
 
 #include <stdio.h>
 #include <stddef.h>

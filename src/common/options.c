@@ -1,5 +1,5 @@
 /*
- * cli.c - argument parsing helpers shared by the subcommands.
+ * options.c - argument parsing helpers shared by the subcommands.
  */
 #include <errno.h>
 #include <getopt.h>
@@ -7,7 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "common/options.h"
 
 const char *study_cmdline = "";
 

@@ -1,14 +1,17 @@
 /*
- * cli/cli.h - the command line of onbstudy (not part of libonb): the one
- * getopt_long wrapper every command and the MPI driver parse their options
- * with, the value parsers and their messages, and the command line kept for
- * provenance lines.  src/cli/ holds main (the command table), this wrapper,
- * the result files and their provenance (output.h), and the thin commands
- * (list, eval); each other command lives in the folder of its concern and
- * is declared in that folder's header named after its file.
+ * common/options.h - the command line of onbstudy (not part of libonb):
+ * study_error, the one getopt_long wrapper every command and the MPI driver
+ * parse their options with, the value parsers and their messages, and the
+ * command line kept for provenance lines.  src/common/ is the ground floor:
+ * these helpers, the result files and their provenance (output.h), the
+ * progress line (progress.h) and the precisions (prec.h), which every room
+ * may import and which import nothing of the study.  src/cli/ holds main
+ * (the command table) and the thin commands (list, eval); each other
+ * command lives in the folder of its concern and is declared in that
+ * folder's header named after its file.
  */
-#ifndef ONB_CLI_H
-#define ONB_CLI_H
+#ifndef ONB_COMMON_OPTIONS_H
+#define ONB_COMMON_OPTIONS_H
 
 #include <stdio.h>
 #include <stddef.h>
@@ -17,7 +20,7 @@
 /* Exit status for bad usage or input: one line on stderr, then 2. */
 #define ONB_EXIT_USAGE 2
 
-/* cli.c: argument helpers.  Each prints one clear line and returns -1 on
+/* options.c: argument helpers.  Each prints one clear line and returns -1 on
    bad input; callers then exit with ONB_EXIT_USAGE. */
 void study_error(const char *fmt, ...)
 #if defined(__GNUC__)
@@ -28,7 +31,7 @@ int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned lo
 int parse_double(const char *opt, const char *s, double *out);
 int parse_int(const char *opt, const char *s, long lo, long hi, long *out);
 
-/* cli.c: getopt_long for every command, with the same messages for the same
+/* options.c: getopt_long for every command, with the same messages for the same
    mistakes.  Usage:
 	static const struct option lo[] = { { "samples", required_argument, NULL, 'n' }, ..., { 0, 0, 0, 0 } };
 	cli_args c; int v;

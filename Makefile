@@ -34,7 +34,7 @@ AR      ?= ar
 FPFLAGS = -ffp-contract=off -fno-math-errno -fno-trapping-math
 # Where GCC in ISO C mode evaluates float in double (FLT_EVAL_METHOD 1,
 # e.g. on s390x), binary32 rounding needs -fexcess-precision=fast; onb.h
-# refuses to build the library without it (issue 25).  x86-64: 0, no flag.
+# refuses to build the library without it.  x86-64: 0, no flag.
 FLT_EVAL := $(shell printf '__FLT_EVAL_METHOD__\n' | $(CC) -std=c99 -E -P - 2>/dev/null | tr -d ' ')
 ifneq ($(filter 1 2,$(FLT_EVAL)),)
   FPFLAGS += -fexcess-precision=fast
@@ -56,7 +56,7 @@ STUDY_LIBS = -Wl,-Bstatic -lmpfi -lmpfr -lgmp -Wl,-Bdynamic -lcjson -lm
 OMP     = -fopenmp
 
 B       = build
-# --- libonb (issue 25): `make lib` needs only a C compiler and make -------
+# --- libonb: `make lib` needs only a C compiler and make -------
 # array.c, outline.c and batch.c are compiled once per method and precision
 # (src/lib/split.h), so a static link pulls only the entry points a client
 # calls; once more with -DONB_COMMON for their shared part.  The method
@@ -122,7 +122,7 @@ $(B)/test-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
 	@touch $@
 deps: $(B)/deps.stamp
 
-# --- libonb rules (issue 25) ---
+# --- libonb rules ---
 .PHONY: lib
 lib: libonb.a
 # The scalar entry points (one basis per call: array, outline, checked)
@@ -180,7 +180,7 @@ else
 $(B)/methods/fma_kernels.o: XFLAGS = -ffp-contract=fast
 endif
 
-# The fast reference (issue 14): TwoProd through the fma instruction.  Only
+# The fast reference: TwoProd through the fma instruction.  Only
 # fma() calls use it: -ffp-contract=off (BASE) still forbids contraction.
 # reffast_usable() refuses this path on a CPU without FMA.
 ifeq ($(shell uname -m),x86_64)
@@ -214,14 +214,14 @@ $(B)/families/pair_l/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Mak
 	@mkdir -p $(@D)
 	$(FAMILY_CC) -DFAMILY_PASS=3 $(FAMILY_PAIR_FLAGS) -c $< -o $@
 
-# The benchmark's yardstick (issue 4): plain loops built for this CPU, beside
+# The benchmark's yardstick: plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.
 # (left out of the study's rule above, which compiles every other object)
 $(B)/bench/yardstick.o: src/bench/yardstick.c src/bench/yardstick.h include/libonb/onb.h Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) -march=native -fno-tree-loop-distribute-patterns $(WARN) -Isrc -c $< -o $@
 
-# Certify (issue 22): src/certify/ is compiled by the study's rule above; its
+# Certify: src/certify/ is compiled by the study's rule above; its
 # interval proofs use MPFI (linked statically, before MPFR, for the reason
 # given at STUDY_LIBS).
 STUDY_LIBS := -Wl,-Bstatic -lmpfi -Wl,-Bdynamic $(STUDY_LIBS)
@@ -305,7 +305,7 @@ install-compat: install
 clean:
 	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onb.pc   # onb.pc: left by older Makefiles
 
-# The MPI driver (issue 13): `make mpi` builds onbstudy-mpi with Open MPI's
+# The MPI driver: `make mpi` builds onbstudy-mpi with Open MPI's
 # mpicc; the default build does not need MPI.  It links the same study
 # library, so it runs the same engine as ./onbstudy.
 MPICC ?= mpicc
@@ -341,7 +341,7 @@ render: $(B)/aorender $(B)/plot-deps.stamp
 	  pngquant --force --speed 1 --output $$f 256 $$f || exit 1; done; \
 	else echo "render: pngquant missing (scripts/install-deps.sh --plots): the PNGs stay uncompressed"; fi
 
-# Man pages (issue 23): man/onbstudy.1 is generated from the commands' own
+# Man pages: man/onbstudy.1 is generated from the commands' own
 # --help by help2man (`make man`, scripts/man.sh; tests/man_pages.sh fails
 # when it is stale), man/onb.3 is written by hand from include/libonb/onb.h.
 # `make install` installs both under $(MANDIR); neither needs a tool to install.

@@ -1,6 +1,6 @@
 #!/bin/sh
 # byte-identity.sh - the runs whose CSV files must not change under a
-# refactoring (issue 23), and their comparison.
+# refactoring, and their comparison.
 #   sh scripts/byte-identity.sh runs DIR        run them with ./onbstudy and
 #                                               ./onbstudy-mpi (make all mpi)
 #   sh scripts/byte-identity.sh compare OLD NEW every CSV and stdout of two

@@ -1,5 +1,5 @@
 #!/bin/sh
-# certify-mutate.sh - the mutation check of issue 22: change one operation
+# certify-mutate.sh - the mutation check of certify: change one operation
 # of certify's rounding model and show that a test catches it.
 #   1. model_kit.h (mk_frisvad): frisvad's 1 + n.z done in double instead of the format
 #      (a dropped rounding in the model): tests/test_certify.c must find the

@@ -1,5 +1,5 @@
 # chart-check.awk - mechanical checks of a chart from gnuplot's own SVG
-# output (issue 24), one SVG at a time:
+# output, one SVG at a time:
 #   awk -f chart-check.awk CHART.svg   prints one line per defect, exit 1 if any
 # 1. every text (titles, axis and tick labels, key entries, labels) lies
 #    on the canvas, and no two texts overlap;

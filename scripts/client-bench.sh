@@ -1,5 +1,5 @@
 #!/bin/sh
-# Per-call cost of onb.h's method names in other people's builds (issue 25):
+# Per-call cost of onb.h's method names in other people's builds:
 # for each of six client builds (the issue's) and four more (the defines
 # that change the choice), whether the names inline, the ns per call,
 # and whether the bits equal libonb.a's out-of-line copies (the studied

@@ -1,5 +1,5 @@
 #!/bin/sh
-# What a static link of one libonb function pulls in (issue 25): the same
+# What a static link of one libonb function pulls in: the same
 # one-function client (onb_duff_branchless_arrayf only) linked against
 # libonb.a built at REV (default main) and at the working tree.
 #   sh scripts/client-size.sh [REV] [OUT]   (default main, results/clients/size.txt)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# make cross-check (issue 25): libonb and the mesh readers on arm64
+# make cross-check: libonb and the mesh readers on arm64
 # (aarch64) and big-endian s390x, cross-compiled and run under qemu-user.
 #   sh scripts/cross-check.sh [OUTDIR] [N]   (default build/cross-check, 1048576)
 # For each target:

@@ -1,5 +1,5 @@
 #!/bin/sh
-# fastref.sh [DIR] - the fast reference's speed figures (issue 14), each
+# fastref.sh [DIR] - the fast reference's speed figures, each
 # from a run of the project's own commands, into DIR (default
 # results/fastref):
 #   bench-reference.csv          ./onbstudy bench --reference (one core, both

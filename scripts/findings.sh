@@ -23,7 +23,7 @@
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
 #   {{TABLE tradeoff}}              the speed-accuracy table
 #   With --certify: scripts/certify.md.in into docs/certify.md, from
-#   results/certify/certify.csv (issue 22):
+#   results/certify/certify.csv:
 #   {{TABLE certify}}               every method's whole-sphere bracket
 #   {{TABLE certifybands method precision}}  the bands of n.z <= -0.9
 #   {{CW dir method precision column}}  bound or found of the first row of
@@ -63,7 +63,7 @@
 #                                   row, to 2 decimals
 #   {{CB method precision column}}  (any mode) bound or found of the
 #                                   whole-sphere row of certify.csv
-#   Optional values (issue 16: "n/a" when the reference run predates them,
+#   Optional values ("n/a" when the reference run predates them,
 #   instead of failing): {{SO method precision distribution column}},
 #   {{XO method precision column}}, ratios {{SR method precision
 #   distribution column1 column2}} (column1 / column2 of one summary.csv
@@ -344,7 +344,7 @@ generate() {
 		}
 		print "findings: no threshold " p " " key " " field > "/dev/stderr"; bad = 1; return "?"
 	}
-	# the whole-sphere row of certify.csv (results/certify, issue 22): the found
+	# the whole-sphere row of certify.csv (results/certify): the found
 	# maximum or the proven bound ("singular" where the method has NaN/inf)
 	function CF(m, p, c,   k) {
 		k = m SUBSEP p SUBSEP "-1" SUBSEP "1" SUBSEP "0" SUBSEP "360"
@@ -427,7 +427,7 @@ generate() {
 		for (i = 1; i <= n; i++) if (index(lines[i], "# " key ": ") == 1) return substr(lines[i], length(key) + 5)
 		print "findings: no # " key ": line in certify.csv" > "/dev/stderr"; bad = 1; return "?"
 	}
-	# " [lo, hi]" when summary.csv has the 95% interval columns (issue 11)
+	# " [lo, hi]" when summary.csv has the 95% interval columns
 	function CI(m, p, d, c,   k) {
 		k = m SUBSEP p SUBSEP d
 		if (!((k, c "_lo") in SUM) || SUM[k, c "_lo"] == "" || SUM[k, c "_lo"] ~ /nan/) return ""

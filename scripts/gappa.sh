@@ -1,5 +1,5 @@
 #!/bin/sh
-# gappa.sh [OUT] - the Gappa cross-check of issue 22: prove, with Gappa, a
+# gappa.sh [OUT] - the Gappa cross-check of certify: prove, with Gappa, a
 # bound on the orthonormality defect of onb_duff_branchlessf over the region
 # of scripts/gappa/duff_branchless_f.g (n.z in [0.5, 0.75], every azimuth,
 # n the float rounding of a real unit vector).  Each '#== name' block of the

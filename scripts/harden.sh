@@ -1,5 +1,5 @@
 #!/bin/sh
-# The hardening checks of issue 7, each with its own time limit; CI runs
+# The hardening checks (sanitizers, fuzzing, valgrind, cppcheck), each with its own time limit; CI runs
 # this after `make test` (.ci/run).  Every step's tool is installed by
 # scripts/install-deps.sh --test; a missing tool fails the step loudly.
 #   sh scripts/harden.sh [FUZZ_SECONDS]     (default 120 per harness)

@@ -11,10 +11,10 @@
 # 1.2 GB).  The library alone (`make lib`) needs none: gcc, make, libc6-dev.
 set -eu
 # The study: the compiler, MPFR/GMP/MPFI (the reference and certify, linked
-# statically), cJSON (the glTF reader, issue 12).  OpenMP comes with gcc.
+# statically), cJSON (the glTF reader).  OpenMP comes with gcc.
 PKGS="gcc make libc6-dev libmpfr-dev libgmp-dev libmpfi-dev libcjson-dev"
 # Charts: gnuplot; pngquant quantizes committed charts to palette PNGs,
-# keeping results/reference/ under 5 MB (issue 24).
+# keeping results/reference/ under 5 MB.
 PLOTS="gnuplot-nox pngquant"
 # make test and CI:
 # clang + libclang-rt-dev: libFuzzer (-fsanitize=fuzzer) for scripts/fuzz.sh.
@@ -23,14 +23,14 @@ PLOTS="gnuplot-nox pngquant"
 #   which holds libclang_rt.fuzzer-x86_64.a) is named explicitly.
 # valgrind: memcheck of a short sweep and scene run in .ci/run.
 # cppcheck: static analysis of src/lib in .ci/run.
-# libopenmpi-dev, openmpi-bin: `make mpi` builds onbstudy-mpi (issue 13).
+# libopenmpi-dev, openmpi-bin: `make mpi` builds onbstudy-mpi.
 # pkg-config: tests/lib_contract.sh builds a client with onb.pc's flags.
 # assimp-testmodels: real-world meshes for the scene readers' tests.
 TEST="$PLOTS pkg-config assimp-testmodels clang libclang-rt-dev valgrind cppcheck libomp-dev libopenmpi-dev openmpi-bin"
-TEST="$TEST help2man man-db"  # man pages: man/onbstudy.1 from --help (scripts/man.sh), `man` in tests/man_pages.sh (issue 23)
-TEST="$TEST procps g++"  # pgrep in tests/mpi.sh; g++ for the C++17 check of tests/lib_client.sh (issue 25)
-TEST="$TEST gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user"  # make cross-check (issue 25)
-TEST="$TEST gappa"  # Gappa cross-check of duff_branchless, scripts/gappa.sh (issue 22)
+TEST="$TEST help2man man-db"  # man pages: man/onbstudy.1 from --help (scripts/man.sh), `man` in tests/man_pages.sh
+TEST="$TEST procps g++"  # pgrep in tests/mpi.sh; g++ for the C++17 check of tests/lib_client.sh
+TEST="$TEST gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user"  # make cross-check
+TEST="$TEST gappa"  # Gappa cross-check of duff_branchless, scripts/gappa.sh
 case "${1:-}" in
 "") ;;
 --plots) PKGS="$PKGS $PLOTS" ;;

@@ -1,5 +1,5 @@
 #!/bin/sh
-# mpi-scaling.sh - the MPI driver's scaling figures (issue 13), written to
+# mpi-scaling.sh - the MPI driver's scaling figures, written to
 # results/mpi-scaling/ with provenance:
 #   scaling.csv     strong scaling of one exhaustive float sweep (every
 #                   method, 16 azimuths) on 1 and 2 ranks x 1 thread,

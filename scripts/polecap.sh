@@ -1,6 +1,6 @@
 #!/bin/sh
 # polecap.sh [DIR] - the southern cap near n = -z on a fine grid in
-# (log10(1 + n.z), azimuth), for the pole-cap map (issue 24): the whole-
+# (log10(1 + n.z), azimuth), for the pole-cap map: the whole-
 # sphere grid of a sweep never comes near 1 + n.z ~ 1e-7, where Frisvad's
 # formula fails, and a bin of by_nz.csv keeps no azimuth.
 #   DIR/polecap.csv   one_plus_nz,azimuth_deg, then one error column per

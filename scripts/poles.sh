@@ -1,6 +1,6 @@
 #!/bin/sh
 # poles.sh [DIR] - charts and the worst-input table of the exhaustive float
-# run near both poles (issue 14; default DIR results/poles, holding south/
+# run near both poles (default DIR results/poles, holding south/
 # and north/ from `onbstudy sweep --dists exhaustive --precision float
 # --exhaustive-range -1:-0.9` and `0.9:1`):
 #   DIR/south_pole_float.{png,svg}  max and RMS per-input error against 1 + n.z

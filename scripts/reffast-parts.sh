@@ -1,5 +1,5 @@
 #!/bin/sh
-# reffast-parts.sh [REPS] [float|double] - where the fast reference's time goes (issue 14):
+# reffast-parts.sh [REPS] [float|double] - where the fast reference's time goes:
 # each part of reffast_eval is run twice on the same data in a copy of
 # src/reference/reffast.c (the second result is discarded, so the data and every
 # decision stay the same), and the extra time per evaluation is that part's

@@ -1,5 +1,5 @@
 # series.awk - one method's series of a line chart from by_nz.csv, with the
-# non-finite outputs each bin dropped (issue 24: the study's bins keep only
+# non-finite outputs each bin dropped (the study's bins keep only
 # finite errors, so a bin's non-finite count is the largest count any
 # method has in that bin, on the same inputs, minus this method's).
 # awk -F, -v m=METHOD -v p=PREC -v ds="DIST ..." -v ax=AXIS -v sc=lin|log

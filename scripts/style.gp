@@ -1,4 +1,4 @@
-# style.gp - the one style of every chart (issue 24), loaded by every
+# style.gp - the one style of every chart, loaded by every
 # scripts/*.gp: canvas sizes, font sizes, the sequential colour map, the
 # eps levels and the wording of the axes.  Colours of the methods come from
 # scripts/styles.sh (Okabe-Ito hues, one per family, shades within it).

@@ -1,5 +1,5 @@
 #!/bin/sh
-# certify.sh - `onbstudy certify` (issue 22) end to end, at a reduced size:
+# certify.sh - `onbstudy certify` end to end, at a reduced size:
 # the bracket found <= bound in every region, every measured defect of the
 # committed runs below its region's bound (tests/certify_check.c), the same
 # file with 1 and 2 threads, found inputs that `eval` replays to the same

@@ -1,6 +1,6 @@
 /*
  * certify_check.c - soundness of `onbstudy certify` against every defect
- * the study has measured (issue 22): for each input of the given worst-case
+ * the study has measured: for each input of the given worst-case
  * files (results/reference/worst.csv, results/poles/.../worst.csv) that is
  * in the certified domain, the bound of the certify.csv region holding it
  * must not be below its measured defect.

@@ -1,5 +1,5 @@
 #!/bin/sh
-# cli_getopt.sh - the command lines of issue 13/15: every command parses with
+# cli_getopt.sh - the command lines: every command parses with
 # getopt_long ('--opt value' and '--opt=value' alike, --help and -h), the
 # same mistake gets the same message in every command, unknown names list
 # the valid ones, --shard says it is 0-based, --dry-run counts what the run

@@ -3,7 +3,7 @@
 # results/*/README.md names a file that exists, and every #anchor a heading
 # of its page (GitHub's slugs: lower case, punctuation dropped, spaces to
 # '-').  Links inside ``` blocks are not links.  PENDING names the pages
-# that other branches of issue 23 write: a link to one of them is reported
+# that other branches being written at the same time write: a link to one of them is reported
 # as pending while the page does not exist, checked once it does.
 . "$(dirname "$0")/lib.sh"
 PENDING="docs/library.md docs/charts.md docs/certify.md"

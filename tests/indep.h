@@ -218,7 +218,7 @@ static void ind_duff_bld(Vec3d n, Vec3d *b1, Vec3d *b2)
 	*b2 = vd(b, sign + n.y * n.y * a, -n.y);
 }
 
-/* ---- this project's float-only methods (issue 16; README "The methods"),
+/* ---- this project's float-only methods (README "The methods"),
    written from their description, not from onb.h ---- */
 /* duff_wide: Listing 3 on the float input in double, rounded once. */
 static void ind_duff_widef(Vec3f n, Vec3f *b1, Vec3f *b2)

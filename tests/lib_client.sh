@@ -13,7 +13,7 @@
 #     changes bits, which shows these comparisons can fail;
 #  3. contraction changes bits when the kernels follow the client
 #     (ONB_INLINE_FOLLOWS_CLIENT_FP); by the object's symbols, the six
-#     client builds of issue 25 and the defines inline exactly where the
+#     client builds (inline and out-of-line) and the defines inline exactly where the
 #     flags cannot change the bits, call libonb.a elsewhere, and give the
 #     studied bits in every case; ONB_INLINE_ACTIVE agrees with the
 #     symbols, and ONB_WARN_OUTLINE gives its message exactly where the

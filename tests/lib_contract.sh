@@ -86,7 +86,7 @@ done
 [ ! -e onb.pc ] && ok || bad "make install left onb.pc in the tree"
 
 # 4. -ffast-math compiles with no define, and the method names then call
-# libonb.a's out-of-line copies (issue 25; the bits: tests/lib_client.sh)
+# libonb.a's out-of-line copies (the bits: tests/lib_client.sh)
 printf '#include "libonb/onb.h"\nvoid f(onb_vec3 n, onb_vec3 *a, onb_vec3 *b) { onb_duff(n, a, b); }\n' > "$tmp/fm.c"
 if cc -std=c99 -ffast-math -O2 -Wall -Wextra -Werror -Iinclude -c "$tmp/fm.c" -o "$tmp/fm.o" 2>"$tmp/fm.err"; then
 	nm "$tmp/fm.o" | grep -q ' U onb_duff_outline$' && ok || bad "-ffast-math: onb_duff does not call onb_duff_outline"

@@ -1,5 +1,5 @@
 #!/bin/sh
-# onbstudy list --axes (issue 25): each method's b1 and b2 at +-x, +-y and
+# onbstudy list --axes: each method's b1 and b2 at +-x, +-y and
 # +-z, the migration table of docs/library.md.
 #  1. six rows per registry method, in both formats;
 #  2. every finite frame is orthogonal to n (each dot product exactly 0:

@@ -1,5 +1,5 @@
 #!/bin/sh
-# man_pages.sh - the man pages (issue 23): man/onbstudy.1 is what help2man
+# man_pages.sh - the man pages: man/onbstudy.1 is what help2man
 # makes of this build's --help texts (scripts/man.sh --check); man/onb.3,
 # written by hand, names every method of the registry and every public
 # function and type of include/libonb/onb.h; `make install` puts both where

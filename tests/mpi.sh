@@ -1,5 +1,5 @@
 #!/bin/sh
-# mpi.sh - the MPI driver (issue 13): `mpirun -n N onbstudy-mpi sweep` writes
+# mpi.sh - the MPI driver: `mpirun -n N onbstudy-mpi sweep` writes
 # the same data as `onbstudy sweep` for N = 1, 2, 3 ranks with 1 and 2
 # threads; a rank killed with SIGKILL mid-run, then --resume, gives the same
 # files and redoes at most the batches in flight; a cancelled run (SIGTERM)
@@ -57,7 +57,7 @@ for n in 1 2 3; do
 		grep -q "^# mpi: $n ranks x $t threads" "$d/summary.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
 	done
 done
-# the fast reference path (issue 14) through the same engine: the same data,
+# the fast reference path through the same engine: the same data,
 # and the same evaluation and fallback counts in reference.csv (the count of
 # MPFR calls for worst rows depends on the chunking, so only the log has it)
 ./onbstudy sweep $A --ref fast --threads 2 --out "$tmp/fref" > "$tmp/fref.out" 2> /dev/null || bad "sweep --ref fast failed"

@@ -1,5 +1,5 @@
 #!/bin/sh
-# plots_cli.sh - every chart script on a small fixture run (issue 24):
+# plots_cli.sh - every chart script on a small fixture run:
 # `make plots` (with a tiny pole-cap run) and scripts/poles.sh, every chart
 # as PNG and SVG, gnuplot without a warning (plots.sh fails on one), and
 # scripts/chart-check.awk on every SVG, gnuplot's own output:

@@ -1,5 +1,5 @@
 #!/bin/sh
-# reffast_identity.sh - issue 14: the fast reference (--ref fast) and MPFR
+# reffast_identity.sh - the fast reference (--ref fast) and MPFR
 # alone (--ref mpfr) write byte-identical data, on the default sweep at a
 # reduced size (every distribution, both precisions, every method, the FMA
 # copies when the CPU has them) and on an exhaustive float run at the south

@@ -134,7 +134,7 @@ expect2 "directory" --obj "$tmp" --method duff
 expect2 "bad --up" --obj "$tmp/cube.obj" --up w --method duff
 expect2 "unknown method" --obj "$tmp/cube.obj" --method nosuch
 
-# every format the scene reader reads (issue 12): a PLY octahedron without
+# every format the scene reader reads: a PLY octahedron without
 # normals (a binary-free ascii file) and the glTF test file (object space)
 {
 	printf 'ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n'

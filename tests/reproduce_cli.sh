@@ -1,6 +1,6 @@
 #!/bin/sh
 # reproduce_cli.sh - `onbstudy reproduce`: the published figures it must
-# reproduce (issue 11's targets), its bad input, and docs/findings.md's section
+# reproduce (its published targets), its bad input, and docs/findings.md's section
 # generated from the reference run's reproduce.csv.
 . "$(dirname "$0")/lib.sh"
 

@@ -1,5 +1,5 @@
 #!/bin/sh
-# onbstudy scene on glTF 2.0 (issue 12): every .gltf and .glb file of
+# onbstudy scene on glTF 2.0: every .gltf and .glb file of
 # Debian's assimp-testmodels, with and without --world, in float; each must
 # give a recommendation (exit 0) or one clear line on stderr (exit 2),
 # never anything else (a crash, a hang, a partial result).  Files known to

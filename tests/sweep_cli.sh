@@ -16,7 +16,7 @@ for f in summary.csv by_nz.csv worst.csv grid.csv reference.csv; do
 	data "$tmp/t1/$f" > "$tmp/a"; data "$tmp/t2/$f" > "$tmp/b"
 	if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then ok; else bad "$f differs between 1 and 2 threads"; fi
 done
-# the accuracy floor (issue 16): columns by name; duff_wide (the exact formula
+# the accuracy floor: columns by name; duff_wide (the exact formula
 # rounded once, through double) sits on it everywhere, duff_comp within 1%,
 # float duff_branchless above it on uniform; float-only methods have no double rows
 col() { data "$1" | awk -F, -v m="$2" -v p="$3" -v d="$4" -v c="$5" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
@@ -111,7 +111,7 @@ echo "garbage" > "$tmp/g.bin"
 [ $rc -eq 3 ] && grep -q "disagrees" "$tmp/err" && ok || bad "--ref-bits 64 must fail the two-precision check (exit $rc)"
 [ ! -e "$tmp/rb/summary.csv" ] && ok || bad "a failed precision check wrote summary.csv"
 
-# 95% intervals (issue 11): two seeds at a reduced size agree within their
+# 95% intervals: two seeds at a reduced size agree within their
 # intervals (they overlap) for frisvad, whose uniform error is heavy-tailed
 # near -z, and duff; the interval holds its estimate
 for s in 1 2; do

@@ -1,5 +1,5 @@
 /*
- * test_certify.c - the rounding models are the kernels (issue 22, item 4).
+ * test_certify.c - the rounding models are the kernels.
  *
  * Every method's model (its family's, src/families/), executed in its format with
  * every rounding performed, must give libonb's bits: the out-of-line

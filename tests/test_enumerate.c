@@ -1,6 +1,6 @@
 /*
  * test_enumerate.c - no certified bound below a defect measured on every
- * float input of a small box (issue 22, soundness checks).
+ * float input of a small box.
  *
  * For each box of cert_boxes (src/certify/enumerate.c: near -z on
  * frisvad's float threshold, the float below it, frisvad_max's threshold

@@ -208,7 +208,7 @@ static void test_random_and_axes(void)
 
 /* Value bits, with every NaN as one pattern: IEEE 754 leaves a generated
    NaN's sign and payload open, and arm64's scalar and vector code give
-   different ones where x86-64's agree (issue 25, make cross-check). */
+   different ones where x86-64's agree (make cross-check). */
 static uint64_t bits64(double x)
 {
 	uint64_t u;
@@ -525,7 +525,7 @@ static void test_checked(void)
 	CHECK(onb_find("no_such_method") == NULL && onb_find(NULL) == NULL, "onb_find: unknown names give NULL");
 }
 
-/* The float-only methods of issue 16 (this project's, not published):
+/* The float-only methods (this project's, not published):
    duff_wide is duff_branchless's formula rounded once from double, so on
    random float input it must match the formula evaluated in long double
    and rounded once, except where a component lies within a few 2^-53 of a

@@ -497,7 +497,7 @@ static void test_geom(void)
 }
 
 
-/* ---- issue 12: glTF 2.0, detection by content, PLY aliases, OBJ continuation ---- */
+/* ---- glTF 2.0, detection by content, PLY aliases, OBJ continuation ---- */
 
 static int rdf(const char *path, int world, int fl, mesh_normals *m, char *err)
 {

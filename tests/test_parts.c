@@ -1,5 +1,5 @@
 /*
- * test_parts.c - adding a method is one checked path (issue 23): every
+ * test_parts.c - adding a method is one checked path: every
  * method of ONB_METHOD_LIST and ONB_FLOAT_METHOD_LIST (include/libonb/onb.h),
  * and frisvad_rotate, has each part the study needs, and this test names
  * the part that is missing:

@@ -1,5 +1,5 @@
 /*
- * test_reffast.c - the fast reference (issue 14) against MPFR, input by
+ * test_reffast.c - the fast reference against MPFR, input by
  * input: whenever reffast_eval says a sample is determined, every byte of
  * its sample_metrics equals ref_eval's at 127 bits.  Inputs: every
  * distribution of the sweep (both precisions, every kernel, the FMA

@@ -1,5 +1,5 @@
 /*
- * test_seeds.c - the seeds' error bounds (src/model/seeds.[ch], issue 22).
+ * test_seeds.c - the seeds' error bounds (src/model/seeds.[ch]).
  *
  *   build/tests/test_seeds          make test (seconds): the seeds are the
  *       kernels' own; the float scan over two binades gives the same bound,

@@ -137,7 +137,7 @@ static void test_load(const char *b, const char *s)
 	free(rows);
 }
 
-/* the accuracy floor (issue 16): optional columns, found by name;
+/* the accuracy floor: optional columns, found by name;
    x_floor = max_defect on uniform / max_floor there */
 static void test_floor(const char *b)
 {

@@ -1045,8 +1045,8 @@ static inline void ONB__K(luxcoref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 }
 
 /* ------------------------------------------------------------------ */
-/* This project's own methods (issue 16), not published ones: Duff's   */
-/* branchless formula pushed to the accuracy floor, float only         */
+/* This project's own methods, not published ones: Duff's branchless */
+/* formula pushed to the accuracy floor, float only                  */
 /* ------------------------------------------------------------------ */
 /* The floor: the exact duff_branchless basis of the float input, rounded
    once to float, still has a defect (the output roundings, plus the

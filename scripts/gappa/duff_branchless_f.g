@@ -1,6 +1,6 @@
 # duff_branchless_f.g - Gappa proof of the orthonormality defect of
 # onb_duff_branchlessf (include/libonb/onb.h; float, round to nearest, no FMA)
-# over the region n.z in [0.5, 0.75], every azimuth (issue 22).
+# over the region n.z in [0.5, 0.75], every azimuth.
 #
 # Domain: n = (rnd(ux), rnd(uy), rnd(uz)) for a REAL unit vector u with
 # uz in [0.5, 0.75] (so n.z in [0.5, 0.75]: rounding is monotone and both

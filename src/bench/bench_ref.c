@@ -1,5 +1,5 @@
 /*
- * bench_ref.c - `onbstudy bench --reference` (issue 14): referenced
+ * bench_ref.c - `onbstudy bench --reference`: referenced
  * evaluations per second per core, with the fast reference (reffast.c,
  * MPFR where it cannot decide) and with MPFR alone, on the default
  * sweep's inputs: every method on a slice of each distribution of each

@@ -1,5 +1,5 @@
 /*
- * bench/bench_ref.h - `onbstudy bench --reference` (bench_ref.c, issue 14).
+ * bench/bench_ref.h - `onbstudy bench --reference` (bench_ref.c).
  */
 #ifndef ONB_BENCH_REF_H
 #define ONB_BENCH_REF_H

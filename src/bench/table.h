@@ -21,7 +21,7 @@ typedef struct {
 	double max_threshold;     /* max_defect on threshold                     */
 	double max_worst;         /* max of max_defect over uniform, south, threshold */
 	long   nonfinite;         /* nonfinite over the three                    */
-	/* The accuracy floor on uniform (issue 16; NaN when summary.csv
+	/* The accuracy floor on uniform (NaN when summary.csv
 	   predates it): max_defect, the floor's max, x_floor = their ratio
 	   (how far the method's worst case sits above the best the format can
 	   hold), and the per-input ratio's RMS and max. */

@@ -1,7 +1,7 @@
 /*
  * certify.c - `onbstudy certify`: for every method, precision and region
  * of the sphere, the largest defect found on a real input beside a bound
- * that no input of the region can exceed (issue 22).  Writes certify.csv.
+ * that no input of the region can exceed.  Writes certify.csv.
  */
 #include <math.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /*
- * src/certify/ - proven extremes (issue 22).  For every method, precision
+ * src/certify/ - proven extremes.  For every method, precision
  * and region of the sphere, `onbstudy certify` brackets the largest
  * orthonormality defect between an input found (search.c) and a bound no
  * input can exceed: each kernel's operations written once more as a model

@@ -1,5 +1,5 @@
 /*
- * enumerate.h - soundness data for certify (issue 22): every float input
+ * enumerate.h - soundness data for certify: every float input
  * of the default domain (region.h) inside a small box, and each method's
  * largest defect over them, measured by cert_probe (search.h) as
  * `onbstudy eval` measures it.  A certified bound for a region holding a

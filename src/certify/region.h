@@ -1,5 +1,5 @@
 /*
- * region.h - a region of the sphere for `onbstudy certify` (issue 22).
+ * region.h - a region of the sphere for `onbstudy certify`.
  *
  * A region is a band of n.z and an azimuth sector, both closed-open except
  * at the top: nz_lo <= n.z <= nz_hi and phi_lo <= phi < phi_hi, with

@@ -1,5 +1,5 @@
 /*
- * scene_cert.c - `onbstudy scene --certify` (issue 22, item 7): a proven
+ * scene_cert.c - `onbstudy scene --certify`: a proven
  * bound for the normals a renderer builds its bases from.
  *
  * A renderer interpolates the three vertex normals of a triangle and

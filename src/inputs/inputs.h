@@ -48,7 +48,7 @@ void dist_free(dist_spec *d);
    error (cosine-weighted, rounded), and aux (nonunit: d; grid: cell). */
 void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], double *aux);
 
-/* Strata of the uniform distribution (issue 11): input i lies in stratum
+/* Strata of the uniform distribution: input i lies in stratum
    i mod NSTRAT of u = 1 + n.z, [2^(h-NSTRAT+1), 2^(h-NSTRAT+2)) for h >= 1
    and [0, 2^(2-NSTRAT)) for h = 0, uniform within it: finer towards -z,
    where Frisvad's error lives.  Estimates combine the strata with their

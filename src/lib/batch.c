@@ -143,7 +143,7 @@ static inline void onb__rsqrt_blockf(size_t m, const float *x, float *y)
 #define ONB__BATCH_F_256(m) ONB__BATCH_SIMPLE_F(m)
 #endif
 
-/* The float-only methods of issue 16.  duff_wide converts to double and
+/* The float-only methods (this project's, at the accuracy floor).  duff_wide converts to double and
    back: an ordinary clone loop.  duff_comp calls fmaf(), a libm call
    unless the code is compiled for an FMA target, so it dispatches by hand
    to clones built with FMA (AVX-512F + FMA, AVX2 + FMA) when the CPU has

@@ -106,7 +106,7 @@ static const onb_method onb__table[] = {
 	{ "luxcore", "luxcore", "LuxCoreRender CoordinateSystem: b2 = (-y, x, 0)/len, b1 = n x b2; (1,0,0) when len < 1e-5",
 	  "none; within 1e-5 of +-z b2 = (1,0,0) is off-orthogonal by |n.x| (by design)", "sqrt(n.x^2 + n.y^2) < 1e-5",
 	  -1, 0, NAN, 0, ONB__PTRS(luxcore), &P_LUXCORE },
-	/* This project's own methods (issue 16), float only: Duff's formula at
+	/* This project's own methods, float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, ONB_FLOAT_ONLY, NAN, ONB__EVAL_WIDE, ONB__PTRS_F(duff_wide), NULL },

@@ -1,5 +1,5 @@
 /*
- * split.h - one object per entry point (issue 25).  The Makefile compiles
+ * split.h - one object per entry point.  The Makefile compiles
  * array.c, outline.c and batch.c once per method and precision with
  * -DONB_ONE=NAME and -DONB_ONE_D (double) or -DONB_ONE_F (float), and once
  * with -DONB_COMMON for what is not per method.  ONB__SPLIT(D, F) then

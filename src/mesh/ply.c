@@ -73,8 +73,8 @@ static unsigned long long off(const ply_rd *r) { return (unsigned long long)(r->
 
 /* One binary value of type `type` (pt_size[type] bytes at r->p, in the
    file's byte order): the bytes are assembled into an integer by shifts,
-   so the value is the same on a little- or big-endian host (issue 25:
-   s390x); floats take that integer's bits. */
+   so the value is the same on a little- or big-endian host (s390x,
+   say); floats take that integer's bits. */
 static void ply_binary_value(ply_rd *r, int type, double *dv, long long *iv)
 {
 	size_t n = pt_size[type], i;

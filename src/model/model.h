@@ -1,5 +1,5 @@
 /*
- * model.h - the rounding model of every libonb kernel (issue 22).
+ * model.h - the rounding model of every libonb kernel.
  *
  * Each method is written once more here, as a straight sequence of
  * operations on value handles (cv), in the order and format in which the

@@ -1,6 +1,6 @@
 /*
  * seeds.h - relative error bounds of the approximate reciprocal square
- * roots' seeds (issue 22), as the certify model uses them: a kernel's seed
+ * roots' seeds, as the certify model uses them: a kernel's seed
  * s(x) is s(x) = (1 + e)/sqrt(x) with |e| <= bound, for every x in
  * [x_lo, x_hi].  The later operations (the Newton step of InvSqrt and
  * SSE_rsqrt_1N, the (float) conversion of the double rsqrt variant) are
@@ -17,7 +17,7 @@
  * +0, subnormals and inf are outside [x_lo, x_hi]: the model treats them
  * as singular (what each seed does there: seed_edge_report()).
  *
- * src/certify/ holds the proven extremes of issue 22; these seed bounds
+ * src/certify/ holds the proven extremes; these seed bounds
  * (seeds.c: the float scans and the literature values, seeds_d.c: the
  * double proof, seeds_get.c: the cache, the CPU, the edges) are its first
  * part.  They import only libonb (the kernels' own rsqrt), MPFR and MPFI;

@@ -243,7 +243,7 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
 	*dir_cos = fabs(mpfr_get_d(t[0], R));
 }
 
-/* ---- the accuracy floor (issue 16) ------------------------------------ */
+/* ---- the accuracy floor ------------------------------------ */
 /* The floor of a kernel on an input: the metrics of its family's exact
    formula, on the kernel's branch, with each output component rounded
    ONCE (to nearest, ties to even) to the format: what a perfect

@@ -61,7 +61,7 @@ typedef struct {
 	double out[6];       /* the kernel's outputs b1, b2 (or w), widened          */
 	double ref[6];       /* the exact formula, rounded to double                 */
 	double w[3];         /* the rotated direction (format precision)             */
-	/* The accuracy floor (issue 16): the same metrics for the exact formula
+	/* The accuracy floor: the same metrics for the exact formula
 	   (the family's, on the kernel's branch) rounded once to the format.
 	   NaN where the exact formula is not finite. */
 	double floor;          /* its defect (max |.| of the five)                   */

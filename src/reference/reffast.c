@@ -26,7 +26,7 @@
  * with error-free transformations (TwoProd, then repeated VecSum), and
  * their bound is MPFR's exact_sum error, derived in exact_dot.
  *
- * Speed (issue 14; each step measured, none changes a stored bit):
+ * Speed (each step measured, none changes a stored bit):
  *  - one formula per input and family: the kernels of a family (naive's
  *    four normalizations, frisvad and frisvad_max, duff_branchless and the
  *    float-only duff_wide and duff_comp...) share the formula's value, its
@@ -889,7 +889,7 @@ static int shape(const reffast_ctx *c, int has_basis, const double b[6], const d
 	return 1;
 }
 
-/* The accuracy floor (issue 16; reference.c floor_eval and
+/* The accuracy floor (reference.c floor_eval and
    the README's "The accuracy floor"): the exact formula r1, r2 rounded once to
    the format (Ziv's test decides RN of the exact value, as floor_round
    does in MPFR), the defects and direction error of that basis by the

@@ -1,5 +1,5 @@
 /*
- * reffast.h - the certified fast reference (issue 14).
+ * reffast.h - the certified fast reference.
  *
  * reffast_eval fills the same sample_metrics as ref_eval (reference.h),
  * bit for bit, without MPFR: the defect and direction terms are sums of

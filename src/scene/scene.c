@@ -1,7 +1,7 @@
 /*
  * scene.c - `onbstudy scene FILE`: every method on a scene's own normals,
  * and a recommendation for that scene that does not change between
- * identical runs (issue 12).
+ * identical runs.
  *
  * The normals come from meshio.c (OBJ, PLY, glTF 2.0; the format from the
  * content), rounded to the working precision (--precision, default float).

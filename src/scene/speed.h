@@ -1,6 +1,6 @@
 /*
  * speed.h - the batch throughput that `onbstudy scene` ranks methods by
- * (issue 12).  The scene never times itself: a few hundred normals timed
+ *.  The scene never times itself: a few hundred normals timed
  * on a shared machine gave a different "fastest" method run after run.
  * Speed comes instead from one of, in this order:
  *   1. a file named with --speed FILE: a bench.csv of `onbstudy bench`;

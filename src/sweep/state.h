@@ -29,7 +29,7 @@ typedef struct {
 	uint64_t count;
 	fx sumsq;
 	double max;
-	uint64_t fcount;     /* the floor of the same inputs (issue 16) */
+	uint64_t fcount;     /* the floor of the same inputs */
 	fx fsumsq;
 	double fmax;
 } bin_t;
@@ -53,7 +53,7 @@ typedef struct {
 	fx bx, bx2, bxy;      /* bits: sum of x, x^2, x y                      */
 } stratum_t;
 
-/* Per stratum sums of the floor's estimates (issue 16): inputs with a
+/* Per stratum sums of the floor's estimates: inputs with a
    finite floor (fn, sum of floor^2), and of those with the kernel's output
    finite too (rn, sum of ratio^2, rat: ratio <= 1). */
 typedef struct {
@@ -70,7 +70,7 @@ typedef struct {
 	stratum_t st[NSTRAT];
 	worst_t worst[NWORST];
 	bin_t bins[NBINS];
-	/* The accuracy floor (issue 16; reference.c floor_eval): the per-input
+	/* The accuracy floor (reference.c floor_eval): the per-input
 	   error of the exact formula rounded once (defect; direction error for
 	   frisvad_rotate), over the inputs where it is finite, and the ratio
 	   max(error, u^2) / max(floor, u^2) over the inputs where the kernel's
@@ -96,7 +96,7 @@ typedef struct {
 	int shard_k, shard_n;
 	uint64_t counts[2][NDIST];    /* inputs per distribution (before the walk) */
 	uint64_t evals, checked;      /* referenced evaluations; two-precision checks */
-	/* the reference path (issue 14): 0 the certified fast path (reffast.c)
+	/* the reference path: 0 the certified fast path (reffast.c)
 	   with MPFR where it cannot decide, 1 MPFR only (--ref mpfr); per
 	   precision and kernel, the evaluations, those that fell back to MPFR,
 	   and those whose ref[] MPFR filled in for the worst rows */

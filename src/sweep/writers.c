@@ -179,7 +179,7 @@ static double st_rmse(const cell_t *c, int d)
 	return st_root(c, d, Q_SQ, &lo, &hi);
 }
 
-/* The floor's columns of a summary row (issue 16): the floor's max and
+/* The floor's columns of a summary row: the floor's max and
    RMS, its direction error's max, and the ratio of the method's per-input
    error to it (reference.c floor_eval): max, RMS, the share of inputs at
    or below the floor (ratio <= 1), and the input of the largest ratio as

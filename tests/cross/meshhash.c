@@ -1,5 +1,5 @@
 /*
- * meshhash.c - make cross-check (issue 25): what the mesh readers read, on
+ * meshhash.c - make cross-check: what the mesh readers read, on
  * any machine, as one line per file:
  *   file count format ply_binary stored_type hash(x, y, z bits)
  *   meshhash --write DIR   writes {le,be}_{float,double}.ply: the same

@@ -1,5 +1,5 @@
 /*
- * onbhash.c - make cross-check (issue 25): every method of libonb on the
+ * onbhash.c - make cross-check: every method of libonb on the
  * same inputs, on any machine, reduced to one hash per method, precision
  * and path (scalar method->basis[f], batch method->batch[f]).  Equal hashes
  * on two machines mean bit-identical outputs.

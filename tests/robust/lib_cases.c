@@ -1,5 +1,5 @@
 /*
- * lib_cases.c - every registry method on the bad inputs of issue 7, in
+ * lib_cases.c - every registry method on the bad inputs (zero, non-finite, non-unit), in
  * double and float, through the scalar function, the batch kernel and
  * onb_basis_checked[f].  Built by scripts/robustness.sh with the library
  * sources and -fsanitize=address,undefined, so any memory error or

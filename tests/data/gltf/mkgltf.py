@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the small glTF 2.0 test files of this directory (issue 12).
+"""Writes the small glTF 2.0 test files of this directory.
 
 Not needed to run the tests: its outputs are committed.  Rerun it
 (python3 tests/data/gltf/mkgltf.py) after changing it.  Each file holds

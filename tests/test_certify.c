@@ -18,15 +18,9 @@
 #include "libonb/onb.h"
 #include "certify/models.h"
 #include "model/model_int.h"
+#include "inputs/rng.h"
 
-static uint64_t mix(uint64_t x)
-{
-	x += 0x9e3779b97f4a7c15u;
-	x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
-	x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
-	return x ^ (x >> 31);
-}
-static double unif(uint64_t i, int k) { return (double)(mix(i * 8 + (uint64_t)k) >> 11) * 0x1p-53; }
+static double unif(uint64_t i, int k) { return (double)(rng_mix64(i * 8 + (uint64_t)k) >> 11) * 0x1p-53; }
 
 /* A unit vector (in double) with z and the azimuth given. */
 static void from_z(double z, double phi, double u[3])
@@ -65,10 +59,10 @@ static void input(uint64_t i, double u[3])
 	}
 	case 5: tie(i, (int)(i / 9 % 3), (int)(i / 9 % 3 + 1) % 3, u); break;
 	case 6: { /* an axis, with signed zeros */
-		int k = (int)(mix(i) % 3), j;
+		int k = (int)(rng_mix64(i) % 3), j;
 		for (j = 0; j < 3; j++)
-			u[j] = (mix(i + (uint64_t)j) & 1) ? -0.0 : 0.0;
-		u[k] = (mix(i) & 8) ? -1.0 : 1.0;
+			u[j] = (rng_mix64(i + (uint64_t)j) & 1) ? -0.0 : 0.0;
+		u[k] = (rng_mix64(i) & 8) ? -1.0 : 1.0;
 		break;
 	}
 	case 7: u[0] = cos(phi); u[1] = sin(phi); u[2] = (i & 16) ? -0.0 : 0.0; break;

@@ -35,17 +35,11 @@
 #include "certify/models.h"
 #include "model/model.h"
 #include "certify/regions.h"
+#include "inputs/rng.h"
 
 #define MAXK 64
 
-static uint64_t mix(uint64_t v)
-{
-	v += 0x9e3779b97f4a7c15u;
-	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
-	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
-	return v ^ (v >> 31);
-}
-static double unif(uint64_t i, int k) { return (double)(mix(i * 4 + (uint64_t)k) >> 11) * 0x1p-53; }
+static double unif(uint64_t i, int k) { return (double)(rng_mix64(i * 4 + (uint64_t)k) >> 11) * 0x1p-53; }
 
 /* The fast side test against the exact one: float roundings of unit
    vectors (uniform, and within 1e-6 of either pole), each component then
@@ -65,7 +59,7 @@ static void side_crosscheck(long count)
 		n[1] = r * sin(phi);
 		n[2] = z;
 		for (j = 0; j < 3; j++)
-			n[j] = fmt_step(fmt_round(n[j], PREC_FLOAT), (int64_t)(mix((uint64_t)i * 3 + (uint64_t)j) % 3) - 1,
+			n[j] = fmt_step(fmt_round(n[j], PREC_FLOAT), (int64_t)(rng_mix64((uint64_t)i * 3 + (uint64_t)j) % 3) - 1,
 			                PREC_FLOAT);
 		s = cert_f32_side(n);
 		in += s == 0;

@@ -5,14 +5,14 @@
 
 #define R MPFR_RNDN
 
-static void vinit(mpfr_t *v, int k, mpfr_prec_t p)
+void kit_vinit(mpfr_t *v, int k, mpfr_prec_t p)
 {
 	int i;
 	for (i = 0; i < k; i++)
 		mpfr_init2(v[i], p);
 }
 
-static void vclear(mpfr_t *v, int k)
+void kit_vclear(mpfr_t *v, int k)
 {
 	int i;
 	for (i = 0; i < k; i++)
@@ -21,20 +21,20 @@ static void vclear(mpfr_t *v, int k)
 
 void kit_init(mpfr_kit *c, mpfr_prec_t prec)
 {
-	vinit(c->t, KIT_NT, prec);
+	kit_vinit(c->t, KIT_NT, prec);
 	mpfr_init2(c->p0, prec);
 	mpfr_init2(c->p1, prec);
-	vinit(c->u, 3, prec);
-	vinit(c->w, 3, prec);
+	kit_vinit(c->u, 3, prec);
+	kit_vinit(c->w, 3, prec);
 }
 
 void kit_clear(mpfr_kit *c)
 {
-	vclear(c->t, KIT_NT);
+	kit_vclear(c->t, KIT_NT);
 	mpfr_clear(c->p0);
 	mpfr_clear(c->p1);
-	vclear(c->u, 3);
-	vclear(c->w, 3);
+	kit_vclear(c->u, 3);
+	kit_vclear(c->w, 3);
 }
 
 void kit_dot(mpfr_kit *c, mpfr_t out, mpfr_t *a, mpfr_t *b)

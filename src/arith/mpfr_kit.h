@@ -20,6 +20,9 @@ typedef struct mpfr_kit {
 	mpfr_t u[3], w[3];
 } mpfr_kit;
 
+/* k values at precision p; and their release */
+void kit_vinit(mpfr_t *v, int k, mpfr_prec_t p);
+void kit_vclear(mpfr_t *v, int k);
 void kit_init(mpfr_kit *c, mpfr_prec_t prec);
 void kit_clear(mpfr_kit *c);
 

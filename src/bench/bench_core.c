@@ -16,6 +16,7 @@
 #define BENCH_HAVE_TSC 0
 #endif
 #include "bench/bench_core.h"
+#include "inputs/rng.h"
 
 double bench_now(void)
 {
@@ -242,21 +243,14 @@ double bench_soa_checksum(const bench_soa *s)
 
 /* ---- inputs ----------------------------------------------------------- */
 
-static uint64_t splitmix64(uint64_t x)
-{
-	x += UINT64_C(0x9e3779b97f4a7c15); /* golden-ratio increment */
-	x = (x ^ (x >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-	x = (x ^ (x >> 27)) * UINT64_C(0x94d049bb133111eb);
-	return x ^ (x >> 31);
-}
 
 void bench_fill_uniform(size_t n, uint64_t seed, double *x, double *y, double *z)
 {
 	const double two_pi = 6.283185307179586476925286766559;
 	size_t i;
 	for (i = 0; i < n; i++) {
-		const uint64_t a = splitmix64(seed ^ splitmix64(2 * (uint64_t)i));
-		const uint64_t b = splitmix64(seed ^ splitmix64(2 * (uint64_t)i + 1));
+		const uint64_t a = rng_mix64(seed ^ rng_mix64(2 * (uint64_t)i));
+		const uint64_t b = rng_mix64(seed ^ rng_mix64(2 * (uint64_t)i + 1));
 		const double u = (double)(a >> 11) * 0x1p-53, v = (double)(b >> 11) * 0x1p-53;
 		const double zz = 2.0 * u - 1.0, r = sqrt(fmax(0.0, 1.0 - zz * zz)), ph = two_pi * v;
 		x[i] = r * cos(ph);

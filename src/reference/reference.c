@@ -34,20 +34,6 @@ struct ref_ctx {
 };
 
 
-static void vinit(mpfr_t *v, int k, mpfr_prec_t p)
-{
-	int i;
-	for (i = 0; i < k; i++)
-		mpfr_init2(v[i], p);
-}
-
-static void vclear(mpfr_t *v, int k)
-{
-	int i;
-	for (i = 0; i < k; i++)
-		mpfr_clear(v[i]);
-}
-
 ref_ctx *ref_new(mpfr_prec_t prec)
 {
 	ref_ctx *c = malloc(sizeof *c);
@@ -56,9 +42,9 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 	c->prec = prec;
 	c->have_last = 0;
 	kit_init(&c->k, prec);
-	vinit(c->n, 3, prec); vinit(c->nn, 3, prec); vinit(c->b1, 3, prec);
-	vinit(c->b2, 3, prec); vinit(c->r1, 3, prec); vinit(c->r2, 3, prec);
-	vinit(c->q, 4, prec < 106 ? 106 : prec);
+	kit_vinit(c->n, 3, prec); kit_vinit(c->nn, 3, prec); kit_vinit(c->b1, 3, prec);
+	kit_vinit(c->b2, 3, prec); kit_vinit(c->r1, 3, prec); kit_vinit(c->r2, 3, prec);
+	kit_vinit(c->q, 4, prec < 106 ? 106 : prec);
 	mpfr_init2(c->inv_n, prec);
 	mpfr_init2(c->mid, prec);
 	c->hi = NULL;
@@ -70,9 +56,9 @@ void ref_free(ref_ctx *c)
 	if (!c)
 		return;
 	kit_clear(&c->k);
-	vclear(c->n, 3); vclear(c->nn, 3); vclear(c->b1, 3); vclear(c->b2, 3);
-	vclear(c->r1, 3); vclear(c->r2, 3);
-	vclear(c->q, 4);
+	kit_vclear(c->n, 3); kit_vclear(c->nn, 3); kit_vclear(c->b1, 3); kit_vclear(c->b2, 3);
+	kit_vclear(c->r1, 3); kit_vclear(c->r2, 3);
+	kit_vclear(c->q, 4);
 	mpfr_clear(c->inv_n);
 	mpfr_clear(c->mid);
 	ref_free(c->hi);

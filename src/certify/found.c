@@ -29,16 +29,10 @@
 #include "enumerate.h"
 #include "inputs/inputs.h"
 #include "model/model.h"
+#include "inputs/rng.h"
 
-static uint64_t mix(uint64_t v)
-{
-	v += 0x9e3779b97f4a7c15u;
-	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
-	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
-	return v ^ (v >> 31);
-}
 
-static uint64_t rnd(probe_env *e) { return mix(e->rng++); }
+static uint64_t rnd(probe_env *e) { return rng_mix64(e->rng++); }
 static double rnd01(probe_env *e) { return (double)(rnd(e) >> 11) * 0x1p-53; }
 
 /* a b as an unevaluated sum hi + lo (exact), and s += v kept as a

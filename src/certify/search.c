@@ -24,6 +24,7 @@
 #include "inputs/inputs.h"
 #include "model/model_int.h"
 #include "found.h"
+#include "inputs/rng.h"
 
 cert_ctx *cert_ctx_new(void)
 {
@@ -62,13 +63,6 @@ double cert_probe(cert_ctx *x, const study_kernel *k, int prec, const double n[3
 	return m.nonfinite ? INFINITY : m.defect;
 }
 
-static uint64_t mix(uint64_t v)
-{
-	v += 0x9e3779b97f4a7c15u;
-	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
-	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
-	return v ^ (v >> 31);
-}
 
 /* How wide a box is, in a measure that splits where the error varies:
    near the poles log2 of the ratio of 1 -+ z across it (a quarter per
@@ -223,8 +217,8 @@ static void probe_worst_leaves(probe_env *e, leaf *l, int nl, int top, int per)
 		tmp = l[t]; l[t] = l[imax]; l[imax] = tmp;
 		for (j = 0; j < per; j++) {
 			const mvf_box *b = &l[t].b;
-			double z = b->z_lo + (b->z_hi - b->z_lo) * (double)(mix(e->rng++) >> 11) * 0x1p-53;
-			found_try_u(e, z, b->phi_lo + (b->phi_hi - b->phi_lo) * (double)(mix(e->rng++) >> 11) * 0x1p-53);
+			double z = b->z_lo + (b->z_hi - b->z_lo) * (double)(rng_mix64(e->rng++) >> 11) * 0x1p-53;
+			found_try_u(e, z, b->phi_lo + (b->phi_hi - b->phi_lo) * (double)(rng_mix64(e->rng++) >> 11) * 0x1p-53);
 		}
 	}
 }
@@ -315,11 +309,11 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 static uint64_t region_seed(uint64_t seed, const cert_region *r)
 {
 	const double v[4] = { r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi };
-	uint64_t h = mix(seed), b;
+	uint64_t h = rng_mix64(seed), b;
 	int i;
 	for (i = 0; i < 4; i++) {
 		memcpy(&b, &v[i], sizeof b);
-		h = mix(h ^ b);
+		h = rng_mix64(h ^ b);
 	}
 	return h;
 }

@@ -361,6 +361,7 @@ static const indep_alias IA[] = {
 	{ "cycles_duff", "duff", IW_CYCLES_DUFF, 1, 0 },
 	{ "falcor", "duff", IW_FALCOR, 1, 0 },
 	{ "pasvulkan", "duff", IW_PASVULKAN, 1, 0 },
+	{ "ode", "bullet", IW_ODE, 1, 1 },  /* tests/indep_wild_b.h */
 };
 #define NIA (sizeof IA / sizeof IA[0])
 

@@ -37,7 +37,7 @@
 #include "certify/regions.h"
 #include "inputs/rng.h"
 
-#define MAXK 64
+#define MAXK 256
 
 static double unif(uint64_t i, int k) { return (double)(rng_mix64(i * 4 + (uint64_t)k) >> 11) * 0x1p-53; }
 

@@ -25,7 +25,7 @@
 
 #include "check.h"
 
-static study_kernel ks[64];
+static study_kernel ks[256];
 static int nk;
 static unsigned long long decided[2], total[2], noref[2], mismatches, undetermined;
 static reffast_ctx *fc2; /* a second context: decisions must not depend on stack garbage */
@@ -156,7 +156,7 @@ int main(int argc, char **argv)
 		printf("SKIP test_reffast: %s\n", why);
 		return 0;
 	}
-	nk = kernels_select(NULL, fma_available(), ks, 64);
+	nk = kernels_select(NULL, fma_available(), ks, 256);
 	fc2 = reffast_new(127);
 	CHECK(nk > 0 && rc && fc && fc2, "setup");
 	special(rc, fc);

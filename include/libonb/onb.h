@@ -32,6 +32,16 @@
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
  *     onb_embree           onb_embreef            Embree frame(N) (rsqrtss + Newton)
  *     onb_luxcore          onb_luxcoref           LuxCoreRender CoordinateSystem
+ *     onb_jolt             onb_joltf              Jolt GetNormalizedPerpendicular
+ *     onb_jolt_fma         onb_jolt_fmaf            its default x86 build (fma)
+ *     onb_bullet           onb_bulletf            Bullet btPlaneSpace1 (= ODE)
+ *     onb_mujoco           onb_mujocof            MuJoCo mju_makeFrame
+ *     onb_eigen            onb_eigenf             Eigen unitOrthogonal + cross
+ *     onb_physx            onb_physxf             PhysX PxComputeBasisVectors
+ *     onb_rp3d             onb_rp3df              ReactPhysics3D
+ *     onb_open3d           onb_open3df            Open3D ConstructOrthogonalBasis
+ *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
+ *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
  *     (float only)         onb_duff_widef         this project: Duff in double
  *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
@@ -302,6 +312,10 @@ enum {
 /* The float-only evaluations of duff_branchless's formula (onb_method.norm
    of duff_wide and duff_comp): one exact formula, other roundings. */
 enum { ONB__EVAL_WIDE = 16, ONB__EVAL_COMP, ONB__EVAL_MITSUBA3, ONB__EVAL_FMSUB };
+/* Variants of the engines' families (onb_method.norm): jolt_fma, the
+   build that fuses the cross product; physx_fixed and open3d_fixed, this
+   project's one-line fixes of the engines' code. */
+enum { ONB__WILD_FMA = 32, ONB__WILD_FIXED };
 
 static inline double onb__rsq(double x, int norm)
 {
@@ -1208,6 +1222,506 @@ typedef enum {
 	ONB_BAD_METHOD       /* method was NULL, or has no double (float only) */
 } onb_status;
 
+/* ================================================================== */
+/* Methods found in shipping code ("in the wild"): physics engines,    */
+/* geometry and math libraries.  Each is the engine's own arithmetic,  */
+/* flaws included; the registry row gives the repository, commit,      */
+/* path:lines, license, the source's precision and the build reading.  */
+/* Where the source is float only, the double variant is the same      */
+/* arithmetic in double (the study pairs both precisions).             */
+/* ================================================================== */
+
+/* ------------------------------------------------------------------ */
+/* jolt, jolt_fma (Jolt Physics Vec3::GetNormalizedPerpendicular and   */
+/* the contact tangents b2 = n.Cross(b1))                              */
+/* ------------------------------------------------------------------ */
+/* xx, yy, zz = the squares; if xx > yy (the rounded squares compared):
+   b1 = (z, 0, 0 - x) / sqrt(xx + zz), else (0, z, 0 - y) / sqrt(yy + zz),
+   each lane divided (no reciprocal); negation is 0 - v, as the SSE code
+   subtracts from +0, so -(+0) is +0.  b2 = n x b1.  jolt: every product
+   and difference rounded (-ffp-contract=off); jolt_fma: Jolt's default
+   x86 build (-mfma -ffp-contract=fast), where GCC and clang fuse each
+   component of the cross product as fma(b1[i+2], n[i+1], -(n[i+2]*b1[i+1]))
+   with the indices of Cross's shuffles.  Handedness +1.  Threshold:
+   x^2 = y^2.  No singular unit direction (the squared length is
+   >= 1/2 - O(eps)).
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline onb_vec3 onb__jolt_perp(onb_vec3 n)
+{
+	const double xx = n.x * n.x, yy = n.y * n.y, zz = n.z * n.z;
+	onb_vec3 p;
+	if (xx > yy) {
+		const double len = sqrt(xx + zz);
+		p.x = n.z / len; p.y = 0.0 / len; p.z = (0.0 - n.x) / len;
+	} else {
+		const double len = sqrt(yy + zz);
+		p.x = 0.0 / len; p.y = n.z / len; p.z = (0.0 - n.y) / len;
+	}
+	return p;
+}
+static inline onb_vec3f onb__jolt_perpf(onb_vec3f n)
+{
+	const float xx = n.x * n.x, yy = n.y * n.y, zz = n.z * n.z;
+	onb_vec3f p;
+	if (xx > yy) {
+		const float len = sqrtf(xx + zz);
+		p.x = n.z / len; p.y = 0.0f / len; p.z = (0.0f - n.x) / len;
+	} else {
+		const float len = sqrtf(yy + zz);
+		p.x = 0.0f / len; p.y = n.z / len; p.z = (0.0f - n.y) / len;
+	}
+	return p;
+}
+static inline void ONB__K(jolt)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const onb_vec3 p = onb__jolt_perp(n);
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(joltf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const onb_vec3f p = onb__jolt_perpf(n);
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(jolt_fma)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const onb_vec3 p = onb__jolt_perp(n);
+	*b1 = p;
+	b2->x = fma(p.z, n.y, -(n.z * p.y));
+	b2->y = fma(p.x, n.z, -(n.x * p.z));
+	b2->z = fma(p.y, n.x, -(n.y * p.x));
+}
+static inline void ONB__K(jolt_fmaf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const onb_vec3f p = onb__jolt_perpf(n);
+	*b1 = p;
+	b2->x = fmaf(p.z, n.y, -(n.z * p.y));
+	b2->y = fmaf(p.x, n.z, -(n.x * p.z));
+	b2->z = fmaf(p.y, n.x, -(n.y * p.x));
+}
+
+/* ------------------------------------------------------------------ */
+/* bullet (Bullet Physics btPlaneSpace1; ODE's dPlaneSpace is the same  */
+/* arithmetic bit for bit: the alias `ode`)                            */
+/* ------------------------------------------------------------------ */
+/* If |z| > t (t = SIMDSQRT12, 1/sqrt(2) rounded to the format):
+   a = y*y + z*z, k = 1/sqrt(a), b1 = (0, (-z)*k, y*k),
+   b2 = (a*k, (-x)*b1.z, x*b1.y);
+   else a = x*x + y*y, k = 1/sqrt(a), b1 = ((-y)*k, x*k, 0),
+   b2 = ((-z)*b1.y, z*b1.x, a*k).  b2 is n x b1 written out, its one
+   long component simplified to a*k, the others from the rounded b1.
+   Handedness +1.  Threshold: |z| = 1/sqrt(2).  No singular unit
+   direction (a >= 1/2 - O(eps)).
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline void ONB__K(bullet)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	if (fabs(n.z) > 0x1.6a09e667f3bcdp-1 /* SIMDSQRT12 */) {
+		const double a = n.y * n.y + n.z * n.z, k = 1.0 / sqrt(a);
+		b1->x = 0.0; b1->y = -n.z * k; b1->z = n.y * k;
+		b2->x = a * k; b2->y = -n.x * b1->z; b2->z = n.x * b1->y;
+	} else {
+		const double a = n.x * n.x + n.y * n.y, k = 1.0 / sqrt(a);
+		b1->x = -n.y * k; b1->y = n.x * k; b1->z = 0.0;
+		b2->x = -n.z * b1->y; b2->y = n.z * b1->x; b2->z = a * k;
+	}
+}
+static inline void ONB__K(bulletf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	if (fabsf(n.z) > 0x1.6a09e6p-1f /* SIMDSQRT12 as a float */) {
+		const float a = n.y * n.y + n.z * n.z, k = 1.0f / sqrtf(a);
+		b1->x = 0.0f; b1->y = -n.z * k; b1->z = n.y * k;
+		b2->x = a * k; b2->y = -n.x * b1->z; b2->z = n.x * b1->y;
+	} else {
+		const float a = n.x * n.x + n.y * n.y, k = 1.0f / sqrtf(a);
+		b1->x = -n.y * k; b1->y = n.x * k; b1->z = 0.0f;
+		b2->x = -n.z * b1->y; b2->y = n.z * b1->x; b2->z = a * k;
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* mujoco (MuJoCo mju_makeFrame, the contact frame)                    */
+/* ------------------------------------------------------------------ */
+/* m = n normalized as mju_normalize3 does (s = sqrt(x*x + y*y + z*z);
+   s < 1e-15 gives (1, 0, 0), else each component times 1/s); e = (0,1,0)
+   if -1/2 < m.y < 1/2, else (0,0,1); d = m.e (all three products, left to
+   right); e = e - m*d; b1 = e normalized the same way; b2 = m x b1.
+   Handedness +1 (against m).  Threshold: |m.y| = 1/2.  No singular unit
+   direction (|e - m d| >= 1/2).  MuJoCo reports an error when |n| < 1/2;
+   the kernel goes on (garbage in, garbage out).
+   Tested bound (tests/test_lib.c): D <= 12u, measured against n. */
+static inline void onb__mj_normalize(onb_vec3 *v)
+{
+	const double s = sqrt(v->x * v->x + v->y * v->y + v->z * v->z);
+	if (s < 1e-15) {
+		v->x = 1.0; v->y = 0.0; v->z = 0.0;
+	} else {
+		const double inv = 1.0 / s;
+		v->x *= inv; v->y *= inv; v->z *= inv;
+	}
+}
+static inline void onb__mj_normalizef(onb_vec3f *v)
+{
+	const float s = sqrtf(v->x * v->x + v->y * v->y + v->z * v->z);
+	if (s < 1e-15f) {
+		v->x = 1.0f; v->y = 0.0f; v->z = 0.0f;
+	} else {
+		const float inv = 1.0f / s;
+		v->x *= inv; v->y *= inv; v->z *= inv;
+	}
+}
+static inline void ONB__K(mujoco)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 m = n, e;
+	double d;
+	onb__mj_normalize(&m);
+	e.x = 0.0; e.y = 0.0; e.z = 0.0;
+	if (m.y < 0.5 && m.y > -0.5) e.y = 1.0; else e.z = 1.0;
+	d = m.x * e.x + m.y * e.y + m.z * e.z;
+	e.x -= m.x * d; e.y -= m.y * d; e.z -= m.z * d;
+	onb__mj_normalize(&e);
+	*b1 = e;
+	b2->x = m.y * e.z - m.z * e.y;
+	b2->y = m.z * e.x - m.x * e.z;
+	b2->z = m.x * e.y - m.y * e.x;
+}
+static inline void ONB__K(mujocof)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f m = n, e;
+	float d;
+	onb__mj_normalizef(&m);
+	e.x = 0.0f; e.y = 0.0f; e.z = 0.0f;
+	if (m.y < 0.5f && m.y > -0.5f) e.y = 1.0f; else e.z = 1.0f;
+	d = m.x * e.x + m.y * e.y + m.z * e.z;
+	e.x -= m.x * d; e.y -= m.y * d; e.z -= m.z * d;
+	onb__mj_normalizef(&e);
+	*b1 = e;
+	b2->x = m.y * e.z - m.z * e.y;
+	b2->y = m.z * e.x - m.x * e.z;
+	b2->z = m.x * e.y - m.y * e.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* eigen (Eigen MatrixBase::unitOrthogonal, size 3; b2 = n.cross(b1))  */
+/* ------------------------------------------------------------------ */
+/* Unless |x| <= |z| p and |y| <= |z| p (Eigen's isMuchSmallerThan, p =
+   dummy_precision: 1e-12 for double, 1e-5f for float):
+   r = 1/sqrt(x*x + y*y), b1 = ((-y)*r, x*r, 0); else r = 1/sqrt(y*y + z*z),
+   b1 = (0, (-z)*r, y*r).  Eigen returns b1 only; b2 = n x b1 by Eigen's
+   cross (our reading).  Handedness +1.  Thresholds: |x| = p|z|, |y| = p|z|.
+   No singular unit direction.
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline void ONB__K(eigen)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double zp = fabs(n.z) * 1e-12;
+	onb_vec3 p;
+	if (!(fabs(n.x) <= zp) || !(fabs(n.y) <= zp)) {
+		const double r = 1.0 / sqrt(n.x * n.x + n.y * n.y);
+		p.x = -n.y * r; p.y = n.x * r; p.z = 0.0;
+	} else {
+		const double r = 1.0 / sqrt(n.y * n.y + n.z * n.z);
+		p.x = 0.0; p.y = -n.z * r; p.z = n.y * r;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(eigenf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float zp = fabsf(n.z) * 1e-5f;
+	onb_vec3f p;
+	if (!(fabsf(n.x) <= zp) || !(fabsf(n.y) <= zp)) {
+		const float r = 1.0f / sqrtf(n.x * n.x + n.y * n.y);
+		p.x = -n.y * r; p.y = n.x * r; p.z = 0.0f;
+	} else {
+		const float r = 1.0f / sqrtf(n.y * n.y + n.z * n.z);
+		p.x = 0.0f; p.y = -n.z * r; p.z = n.y * r;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* physx (NVIDIA PhysX PxComputeBasisVectors)                          */
+/* ------------------------------------------------------------------ */
+/* If |y| <= 0.9999f: r = (z, 0, -x), m = sqrt(r.r) (in component order),
+   if m > 0: r = r * (1/m); b1 = r, b2 = (y*r.z, z*r.x - x*r.z, (-y)*r.x)
+   (n x r with r.y = 0 dropped; not normalized).  Else b1 = (1, 0, 0)
+   whatever n is, b2 = (0, z, -y) normalized the same way.  Handedness +1.
+   Threshold: |y| = 0.9999f (the float constant in double too).
+   Flaw, as shipped: on the second branch b1.n = x, up to
+   sqrt(1 - 0.9999^2) = 0.0141; no non-finite output on unit input.
+   Tested bound (tests/test_lib.c): D <= 12u, and sqrt(1 - n.y^2) + 12u
+   on the fallback. */
+static inline void ONB__K(physx)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 r, u;
+	double m;
+	if (fabs(n.y) <= ONB__CAST(double, 0.9999f)) {
+		r.x = n.z; r.y = 0.0; r.z = -n.x;
+		m = sqrt(r.x * r.x + r.y * r.y + r.z * r.z);
+		if (m > 0.0) {
+			const double f = 1.0 / m;
+			r.x *= f; r.y *= f; r.z *= f;
+		}
+		u.x = n.y * r.z; u.y = n.z * r.x - n.x * r.z; u.z = -n.y * r.x;
+	} else {
+		r.x = 1.0; r.y = 0.0; r.z = 0.0;
+		u.x = 0.0; u.y = n.z; u.z = -n.y;
+		m = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+		if (m > 0.0) {
+			const double f = 1.0 / m;
+			u.x *= f; u.y *= f; u.z *= f;
+		}
+	}
+	*b1 = r;
+	*b2 = u;
+}
+static inline void ONB__K(physxf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f r, u;
+	float m;
+	if (fabsf(n.y) <= 0.9999f) {
+		r.x = n.z; r.y = 0.0f; r.z = -n.x;
+		m = sqrtf(r.x * r.x + r.y * r.y + r.z * r.z);
+		if (m > 0.0f) {
+			const float f = 1.0f / m;
+			r.x *= f; r.y *= f; r.z *= f;
+		}
+		u.x = n.y * r.z; u.y = n.z * r.x - n.x * r.z; u.z = -n.y * r.x;
+	} else {
+		r.x = 1.0f; r.y = 0.0f; r.z = 0.0f;
+		u.x = 0.0f; u.y = n.z; u.z = -n.y;
+		m = sqrtf(u.x * u.x + u.y * u.y + u.z * u.z);
+		if (m > 0.0f) {
+			const float f = 1.0f / m;
+			u.x *= f; u.y *= f; u.z *= f;
+		}
+	}
+	*b1 = r;
+	*b2 = u;
+}
+
+/* physx_fixed (this project's fix of physx, not shipped code): PhysX's
+   lines with one change in the fallback branch, right = up.cross(dir)
+   after up.normalize() in place of (1, 0, 0), so right is perpendicular
+   to dir there too; the frame at +-x, +-y, +-z is PhysX's.  Handedness +1.
+   Threshold: |y| = 0.9999f.  No singular unit direction.
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline void ONB__K(physx_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	if (fabs(n.y) <= ONB__CAST(double, 0.9999f)) {
+		ONB__K(physx)(n, b1, b2);
+		return;
+	} else {
+		onb_vec3 u;
+		double m;
+		u.x = 0.0; u.y = n.z; u.z = -n.y;
+		m = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+		if (m > 0.0) {
+			const double f = 1.0 / m;
+			u.x *= f; u.y *= f; u.z *= f;
+		}
+		b1->x = u.y * n.z - u.z * n.y;
+		b1->y = u.z * n.x - u.x * n.z;
+		b1->z = u.x * n.y - u.y * n.x;
+		*b2 = u;
+	}
+}
+static inline void ONB__K(physx_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	if (fabsf(n.y) <= 0.9999f) {
+		ONB__K(physxf)(n, b1, b2);
+		return;
+	} else {
+		onb_vec3f u;
+		float m;
+		u.x = 0.0f; u.y = n.z; u.z = -n.y;
+		m = sqrtf(u.x * u.x + u.y * u.y + u.z * u.z);
+		if (m > 0.0f) {
+			const float f = 1.0f / m;
+			u.x *= f; u.y *= f; u.z *= f;
+		}
+		b1->x = u.y * n.z - u.z * n.y;
+		b1->y = u.z * n.x - u.x * n.z;
+		b1->z = u.x * n.y - u.y * n.x;
+		*b2 = u;
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* rp3d (ReactPhysics3D Vector3::getOneUnitOrthogonalVector and the    */
+/* friction vectors b2 = normal.cross(b1))                             */
+/* ------------------------------------------------------------------ */
+/* k = the axis of the smallest |n_i| (ax < ay ? (ax < az ? 0 : 2) :
+   (ay < az ? 1 : 2): ties go to the later axis); b1 = e_k x n divided
+   component by component by its length: k = 0: (0, -z, y) / sqrt(y*y + z*z),
+   k = 1: (-z, 0, x) / sqrt(x*x + z*z), k = 2: (-y, x, 0) / sqrt(x*x + y*y).
+   b2 = n x b1.  Handedness +1.  Thresholds: |x| = |y|, |x| = |z|,
+   |y| = |z|.  No singular unit direction (squared length >= 2/3 - O(eps)).
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline void ONB__K(rp3d)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double ax = fabs(n.x), ay = fabs(n.y), az = fabs(n.z);
+	const int k = ax < ay ? (ax < az ? 0 : 2) : (ay < az ? 1 : 2);
+	onb_vec3 p;
+	double l;
+	if (k == 0) {
+		l = sqrt(n.y * n.y + n.z * n.z);
+		p.x = 0.0 / l; p.y = -n.z / l; p.z = n.y / l;
+	} else if (k == 1) {
+		l = sqrt(n.x * n.x + n.z * n.z);
+		p.x = -n.z / l; p.y = 0.0 / l; p.z = n.x / l;
+	} else {
+		l = sqrt(n.x * n.x + n.y * n.y);
+		p.x = -n.y / l; p.y = n.x / l; p.z = 0.0 / l;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(rp3df)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float ax = fabsf(n.x), ay = fabsf(n.y), az = fabsf(n.z);
+	const int k = ax < ay ? (ax < az ? 0 : 2) : (ay < az ? 1 : 2);
+	onb_vec3f p;
+	float l;
+	if (k == 0) {
+		l = sqrtf(n.y * n.y + n.z * n.z);
+		p.x = 0.0f / l; p.y = -n.z / l; p.z = n.y / l;
+	} else if (k == 1) {
+		l = sqrtf(n.x * n.x + n.z * n.z);
+		p.x = -n.z / l; p.y = 0.0f / l; p.z = n.x / l;
+	} else {
+		l = sqrtf(n.x * n.x + n.y * n.y);
+		p.x = -n.y / l; p.y = n.x / l; p.z = 0.0f / l;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* open3d (Open3D PlaneDetector::ConstructOrthogonalBasis, with Eigen) */
+/* ------------------------------------------------------------------ */
+/* If |(0,1,1) - n|^2 > 1e-3 (always, for a unit n): p = n x (0,1,1) =
+   (y - z, -x, x), else p = n x (1,0,1) = (y, z - x, -y); b1 = p
+   normalized as Eigen's normalized() does (s2 = |p|^2; if s2 > 0, each
+   component divided by sqrt(s2), else p unchanged); b2 = n x b1,
+   normalized the same way.  Eigen sums a Vector3d's squares as
+   (v0^2 + v1^2) + v2^2 (vectorized) and a Vector3f's as
+   v0^2 + (v1^2 + v2^2) (its scalar unroller): each variant keeps the
+   order of its type.  Handedness +1.  Singular: n parallel to (0,1,1),
+   where p = 0 and b1 = b2 = 0 (the guard compares n with the non-unit
+   (0,1,1), so it never fires); the outputs stay finite.
+   Tested bound (tests/test_lib.c): D <= 12u (random inputs never meet the
+   line). */
+static inline void onb__o3d_normalize(onb_vec3 *v)
+{
+	const double s2 = (v->x * v->x + v->y * v->y) + v->z * v->z;
+	if (s2 > 0.0) {
+		const double s = sqrt(s2);
+		v->x /= s; v->y /= s; v->z /= s;
+	}
+}
+static inline void onb__o3d_normalizef(onb_vec3f *v)
+{
+	const float s2 = v->x * v->x + (v->y * v->y + v->z * v->z);
+	if (s2 > 0.0f) {
+		const float s = sqrtf(s2);
+		v->x /= s; v->y /= s; v->z /= s;
+	}
+}
+static inline void ONB__K(open3d)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 d, p, q;
+	d.x = 0.0 - n.x; d.y = 1.0 - n.y; d.z = 1.0 - n.z;
+	if ((d.x * d.x + d.y * d.y) + d.z * d.z > 1e-3) {
+		p.x = n.y - n.z; p.y = -n.x; p.z = n.x;
+	} else {
+		p.x = n.y; p.y = n.z - n.x; p.z = -n.y;
+	}
+	onb__o3d_normalize(&p);
+	q.x = n.y * p.z - n.z * p.y;
+	q.y = n.z * p.x - n.x * p.z;
+	q.z = n.x * p.y - n.y * p.x;
+	onb__o3d_normalize(&q);
+	*b1 = p;
+	*b2 = q;
+}
+static inline void ONB__K(open3df)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f d, p, q;
+	d.x = 0.0f - n.x; d.y = 1.0f - n.y; d.z = 1.0f - n.z;
+	if (d.x * d.x + (d.y * d.y + d.z * d.z) > 1e-3f) {
+		p.x = n.y - n.z; p.y = -n.x; p.z = n.x;
+	} else {
+		p.x = n.y; p.y = n.z - n.x; p.z = -n.y;
+	}
+	onb__o3d_normalizef(&p);
+	q.x = n.y * p.z - n.z * p.y;
+	q.y = n.z * p.x - n.x * p.z;
+	q.z = n.x * p.y - n.y * p.x;
+	onb__o3d_normalizef(&q);
+	*b1 = p;
+	*b2 = q;
+}
+
+/* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
+   lines with the guard comparing n with the unit diagonal
+   d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
+   (1, 0, 1) is taken when |d - n|^2 <= 1e-3 or |d + n|^2 <= 1e-3, so b1 is
+   never the zero vector.  The frame at +-x, +-y, +-z is Open3D's.
+   Handedness +1.  No singular unit direction.
+   Tested bound (tests/test_lib.c): D <= 12u. */
+static inline void ONB__K(open3d_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double c = 0x1.6a09e667f3bcdp-1; /* 1/sqrt(2) rounded: d = (0, c, c) */
+	onb_vec3 d, e, p, q;
+	d.x = 0.0 - n.x; d.y = c - n.y; d.z = c - n.z;
+	e.x = 0.0 + n.x; e.y = c + n.y; e.z = c + n.z;
+	if ((d.x * d.x + d.y * d.y) + d.z * d.z > 1e-3 && (e.x * e.x + e.y * e.y) + e.z * e.z > 1e-3) {
+		p.x = n.y - n.z; p.y = -n.x; p.z = n.x;
+	} else {
+		p.x = n.y; p.y = n.z - n.x; p.z = -n.y;
+	}
+	onb__o3d_normalize(&p);
+	q.x = n.y * p.z - n.z * p.y;
+	q.y = n.z * p.x - n.x * p.z;
+	q.z = n.x * p.y - n.y * p.x;
+	onb__o3d_normalize(&q);
+	*b1 = p;
+	*b2 = q;
+}
+static inline void ONB__K(open3d_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float c = 0x1.6a09e6p-1f; /* 1/sqrt(2) rounded: d = (0, c, c) */
+	onb_vec3f d, e, p, q;
+	d.x = 0.0f - n.x; d.y = c - n.y; d.z = c - n.z;
+	e.x = 0.0f + n.x; e.y = c + n.y; e.z = c + n.z;
+	if (d.x * d.x + (d.y * d.y + d.z * d.z) > 1e-3f && e.x * e.x + (e.y * e.y + e.z * e.z) > 1e-3f) {
+		p.x = n.y - n.z; p.y = -n.x; p.z = n.x;
+	} else {
+		p.x = n.y; p.y = n.z - n.x; p.z = -n.y;
+	}
+	onb__o3d_normalizef(&p);
+	q.x = n.y * p.z - n.z * p.y;
+	q.y = n.z * p.x - n.x * p.z;
+	q.z = n.x * p.y - n.y * p.x;
+	onb__o3d_normalizef(&q);
+	*b1 = p;
+	*b2 = q;
+}
+
 /* Relative tolerance on |n|^2 - 1 under which n is used unchanged. */
 #define ONB_CHECK_TOL  1e-12
 #define ONB_CHECK_TOLF 1e-6f
@@ -1229,7 +1743,9 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
-	X(q2rtx) X(filament) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore)
+	X(q2rtx) X(filament) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
+	X(physx_fixed) X(open3d_fixed)
 
 #define ONB__DECLARE(m) \
 	void onb_##m##_outline (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2); \

@@ -26,7 +26,7 @@
 #include "reference/reffast.h"
 
 #define BR_MAX_INPUTS (1 << 15)
-#define BR_MAX_KERNELS 64
+#define BR_MAX_KERNELS 256
 
 typedef struct {
 	double n[3], loc[3];

@@ -19,7 +19,7 @@
 #include "model/seeds.h"
 
 #define MAXREG 1024
-#define MAXK 64
+#define MAXK 256
 
 typedef struct {
 	const char *methods;

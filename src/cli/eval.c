@@ -144,7 +144,7 @@ int cmd_eval(int argc, char **argv)
 	int prec_on[2], fma, i, p, k, nk;
 	long bits;
 	double in[3], loc[3];
-	study_kernel ks[64];
+	study_kernel ks[256];
 	if ((i = eval_parse(argc, argv, &o)) != 0)
 		return i == 1 ? 0 : i;
 	methods = o.methods; fma = o.fma; bits = o.bits;
@@ -152,7 +152,7 @@ int cmd_eval(int argc, char **argv)
 	memcpy(in, o.in, sizeof in);
 	memcpy(loc, o.loc, sizeof loc);
 	if (fma && !fma_available()) { study_error("--fma: this CPU (or build) has no FMA"); return ONB_EXIT_USAGE; }
-	nk = kernels_select(methods, fma, ks, 64);
+	nk = kernels_select(methods, fma, ks, 256);
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
 	{

@@ -9,7 +9,8 @@
 #define STUDY_FAMILY_LIST(X) \
 	X(naive) X(hughes_moeller) X(frisvad) X(duff) X(duff_branchless) X(stark) X(stark_fixed) \
 	X(pbrt_v3) X(rtow) X(tangent_cross_z) X(frisvad_rotate) \
-	X(filament) X(cycles_cross111) X(embree) X(luxcore)
+	X(filament) X(cycles_cross111) X(embree) X(luxcore) \
+	X(jolt) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d)
 
 #define FAMILY_EXTERN(f) extern const study_family family_##f;
 STUDY_FAMILY_LIST(FAMILY_EXTERN)

@@ -151,6 +151,30 @@ static int diagonal(list *l, int i, int j, int na)
 	return 0;
 }
 
+/* The engines' own thresholds (the registry's wild rows): PhysX's
+   |n.y| = 0.9999f, Bullet's |n.z| = 1/sqrt 2, MuJoCo's |n.y| = 1/2, each
+   +-8 steps; and Open3D's singular points n = +-(0, c, c), c = 1/sqrt 2,
+   exactly and with n.x tiny or n.z a few steps off. */
+static int engines(list *l, const double tiny[4])
+{
+	const int P = l->prec, NA = 8;
+	const double c = fmt_round(0.70710678118654752440, P);
+	int k, s, a, rc = 0;
+	for (k = -8; k <= 8; k++)
+		for (s = -1; s <= 1; s += 2) {
+			rc |= ring(l, 1, fmt_step(s * (double)0.9999f, k, P), NA);
+			rc |= ring(l, 2, fmt_step(s * c, k, P), NA);
+			rc |= ring(l, 1, fmt_step(s * 0.5, k, P), NA);
+		}
+	for (s = -1; s <= 1; s += 2)
+		for (a = 0; a < 4; a++)
+			for (k = -2; k <= 2; k++) {
+				rc |= push(l, tiny[a], s * c, fmt_step(s * c, k, P));
+				rc |= push(l, -tiny[a], s * c, fmt_step(s * c, k, P));
+			}
+	return rc;
+}
+
 static int build_threshold(dist_spec *d)
 {
 	list l = { NULL, 0, 0, d->prec, d->seed };
@@ -188,6 +212,7 @@ static int build_threshold(dist_spec *d)
 			rc |= ring(&l, 0, fmt_step(fmt_round(s * 0.9, P), k, P), NA);
 	for (k = 0; k <= 32; k++)
 		rc |= ring(&l, 0, fmt_step(-1.0, k, P), NA);
+	rc |= engines(&l, tiny);
 	/* |x| = |z|, |x| = |y|, |y| = |z| */
 	rc |= diagonal(&l, 0, 2, NA);
 	rc |= diagonal(&l, 0, 1, NA);

@@ -172,6 +172,36 @@ void onb_duff_comp_batchf(ONB__ARGS_F)                                         \
 #define ONB__BATCH_DUFF_COMP_F ONB__BATCH_SIMPLE_F(duff_comp)
 #endif
 
+/* Methods whose kernels call fma() or fmaf() (jolt_fma: the fused cross
+   product of Jolt's default x86 build): dispatched as duff_comp is, to
+   clones built for an FMA target when the CPU has one, else to the
+   baseline loop (libm fma).  fma is correctly rounded, so every clone
+   gives the scalar bits. */
+#if ONB__HAVE_CLONES
+#define ONB__FMA_DISPATCH(m, suf, ARGS, LOOP)                                  \
+__attribute__((target("avx512f,fma"), noinline))                               \
+static void onb__##m##_batch##suf##_avx512f(ARGS) LOOP(m)                      \
+__attribute__((target("avx2,fma"), noinline))                                  \
+static void onb__##m##_batch##suf##_avx2(ARGS) LOOP(m)                         \
+__attribute__((noinline))                                                      \
+static void onb__##m##_batch##suf##_default(ARGS) LOOP(m)                      \
+void onb_##m##_batch##suf(ARGS)                                                \
+{                                                                              \
+	__builtin_cpu_init();                                                         \
+	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))       \
+		onb__##m##_batch##suf##_avx512f(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
+	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))     \
+		onb__##m##_batch##suf##_avx2(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
+	else                                                                          \
+		onb__##m##_batch##suf##_default(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
+}
+#define ONB__BATCH_FMA_D(m) ONB__FMA_DISPATCH(m, , ONB__ARGS_D, ONB__LOOP_D)
+#define ONB__BATCH_FMA_F(m) ONB__FMA_DISPATCH(m, f, ONB__ARGS_F, ONB__LOOP_F)
+#else
+#define ONB__BATCH_FMA_D(m) ONB__BATCH_SIMPLE_D(m)
+#define ONB__BATCH_FMA_F(m) ONB__BATCH_SIMPLE_F(m)
+#endif
+
 /* Methods with the hardware rsqrt: three passes per block, because GCC
    cannot vectorize a loop around the scalar rsqrtss intrinsic.  Pass 1
    builds the unnormalized vector and its squared length, pass 2 runs
@@ -296,6 +326,26 @@ void onb_duff_comp_batchf(ONB__ARGS_F)                                         \
 #define ONB__BF_luxcore                 ONB__BATCH_SIMPLE_F(luxcore)
 #define ONB__BF_duff_wide               ONB__BATCH_SIMPLE_F(duff_wide)
 #define ONB__BF_duff_comp               ONB__BATCH_DUFF_COMP_F
+#define ONB__BD_jolt                   ONB__BATCH_SIMPLE_D(jolt)
+#define ONB__BF_jolt                   ONB__BATCH_SIMPLE_F(jolt)
+#define ONB__BD_bullet                 ONB__BATCH_SIMPLE_D(bullet)
+#define ONB__BF_bullet                 ONB__BATCH_SIMPLE_F(bullet)
+#define ONB__BD_mujoco                 ONB__BATCH_SIMPLE_D(mujoco)
+#define ONB__BF_mujoco                 ONB__BATCH_SIMPLE_F(mujoco)
+#define ONB__BD_eigen                  ONB__BATCH_SIMPLE_D(eigen)
+#define ONB__BF_eigen                  ONB__BATCH_SIMPLE_F(eigen)
+#define ONB__BD_physx                  ONB__BATCH_SIMPLE_D(physx)
+#define ONB__BF_physx                  ONB__BATCH_SIMPLE_F(physx)
+#define ONB__BD_rp3d                   ONB__BATCH_SIMPLE_D(rp3d)
+#define ONB__BF_rp3d                   ONB__BATCH_SIMPLE_F(rp3d)
+#define ONB__BD_open3d                 ONB__BATCH_SIMPLE_D(open3d)
+#define ONB__BF_open3d                 ONB__BATCH_SIMPLE_F(open3d)
+#define ONB__BD_physx_fixed            ONB__BATCH_SIMPLE_D(physx_fixed)
+#define ONB__BF_physx_fixed            ONB__BATCH_SIMPLE_F(physx_fixed)
+#define ONB__BD_open3d_fixed           ONB__BATCH_SIMPLE_D(open3d_fixed)
+#define ONB__BF_open3d_fixed           ONB__BATCH_SIMPLE_F(open3d_fixed)
+#define ONB__BD_jolt_fma               ONB__BATCH_FMA_D(jolt_fma)
+#define ONB__BF_jolt_fma               ONB__BATCH_FMA_F(jolt_fma)
 #define ONB__BD(m) ONB__BD_##m
 #define ONB__BF(m) ONB__BF_##m
 ONB__SPLIT(ONB__BD, ONB__BF)

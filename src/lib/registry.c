@@ -24,6 +24,31 @@
 
 /* Where the engines' methods come from (onb_method.prov); each kernel's
    comment in include/libonb/onb.h gives the arithmetic. */
+/* The physics engines' and math libraries' provenance (read at these commits). */
+static const onb_provenance P_JOLT = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
+	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (SSE)", "float",
+	"source-level IEEE (-ffp-contract=off: CROSS_PLATFORM_DETERMINISTIC or non-x86); b2 = n.Cross(b1), Vec3.inl:855-891" };
+static const onb_provenance P_JOLT_FMA = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
+	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (SSE)", "float",
+	"the default x86 build: USE_FMADD, -mfma -ffp-contract=fast (Build/CMakeLists.txt:263-272): Cross's t1 - t2 fused" };
+static const onb_provenance P_BULLET = { "github.com/bulletphysics/bullet3", "6c888f4abd7b46f572587360cc214985f02e5c6b",
+	"src/LinearMath/btVector3.h:1250-1279", "Zlib", "C++", "btScalar: float, double with BT_USE_DOUBLE_PRECISION",
+	"source-level IEEE (no -ffp-contract, no -mfma in Bullet's CMake)" };
+static const onb_provenance P_MUJOCO = { "github.com/google-deepmind/mujoco", "a7255075b003506ff5f34b512d88e02df12a73c6",
+	"src/engine/engine_util_spatial.c:512-538", "Apache-2.0", "C", "mjtNum: double, float with mjUSESINGLE",
+	"source-level IEEE (-mavx, no -mfma, no contraction)" };
+static const onb_provenance P_EIGEN = { "github.com/eigen-mirror/eigen", "12c9c14bc5d4c4ba28cf41102ea99b7f83f30d04",
+	"Eigen/src/Geometry/OrthoMethods.h:196-229", "MPL-2.0", "C++ template", "the scalar: float (prec 1e-5) and double (prec 1e-12)",
+	"header-only: the user's flags; modelled as source-level IEEE; b2 = n.cross(b1), OrthoMethods.h:24-43" };
+static const onb_provenance P_PHYSX = { "github.com/NVIDIA-Omniverse/PhysX", "a3d8a641de4c3014fd56704af0f50b8be7e9778b",
+	"physx/include/foundation/PxMathUtils.h:297-316", "BSD-3-Clause", "C++", "float",
+	"source-level IEEE (no -ffast-math, no -mfma in the Linux CMake)" };
+static const onb_provenance P_RP3D = { "github.com/DanielChappuis/reactphysics3d", "7000610a244ea85377e4f4c9bcdf68af0159b595",
+	"src/mathematics/Vector3.cpp:46-64", "Zlib", "C++", "decimal: float, double with IS_RP3D_DOUBLE_PRECISION_ENABLED",
+	"source-level IEEE" };
+static const onb_provenance P_OPEN3D = { "github.com/isl-org/Open3D", "22a6a307b9b7d88604895f79c0ceeecef2fc6538",
+	"cpp/open3d/geometry/PointCloudPlanarPatchDetection.cpp:697-717", "MIT", "C++ (Eigen)", "double",
+	"source-level IEEE (no -ffast-math, no FMA target by default on x86-64)" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -106,6 +131,31 @@ static const onb_method onb__table[] = {
 	{ "luxcore", "luxcore", "LuxCoreRender CoordinateSystem: b2 = (-y, x, 0)/len, b1 = n x b2; (1,0,0) when len < 1e-5",
 	  "none; within 1e-5 of +-z b2 = (1,0,0) is off-orthogonal by |n.x| (by design)", "sqrt(n.x^2 + n.y^2) < 1e-5",
 	  -1, 0, NAN, 0, ONB__PTRS(luxcore), &P_LUXCORE },
+	/* Engines' shipped code ("in the wild"): physics engines, geometry and
+	   math libraries, read at the commits their provenance names; the
+	   double variants of float-only sources are the same code in double. */
+	{ "jolt", "jolt", "Jolt Physics Vec3::GetNormalizedPerpendicular (SSE path) + contact tangents b2 = n.Cross(b1)",
+	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, 0, ONB__PTRS(jolt), &P_JOLT },
+	{ "jolt_fma", "jolt", "Jolt Physics, as jolt, in its default x86 build (-mfma -ffp-contract=fast: the cross product fused)",
+	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, ONB__WILD_FMA, ONB__PTRS(jolt_fma), &P_JOLT_FMA },
+	{ "bullet", "bullet", "Bullet Physics btPlaneSpace1 (ODE's dPlaneSpace is the same, bit for bit)",
+	  "none", "|n.z| > SIMDSQRT12 (1/sqrt 2 in the format)", +1, 0, NAN, 0, ONB__PTRS(bullet), &P_BULLET },
+	{ "mujoco", "mujoco", "MuJoCo mju_makeFrame, a contact's frame (y-axis undefined)",
+	  "none (n = 0 gives the x-axis as n)", "|n.y| < 1/2 after normalizing n", +1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(mujoco), &P_MUJOCO },
+	{ "eigen", "eigen", "Eigen MatrixBase::unitOrthogonal (size 3), b2 = n.cross(b1)",
+	  "none", "|n.x|, |n.y| <= p |n.z| (p = 1e-5 float, 1e-12 double)", +1, 0, NAN, 0, ONB__PTRS(eigen), &P_EIGEN },
+	{ "physx", "physx", "NVIDIA PhysX PxComputeBasisVectors",
+	  "none (b1 = (1,0,0) is off by |n.x| <= 0.0141 where |n.y| > 0.9999f)", "|n.y| <= 0.9999f", +1, 0, NAN, 0, ONB__PTRS(physx), &P_PHYSX },
+	{ "rp3d", "rp3d", "ReactPhysics3D Vector3::getOneUnitOrthogonalVector, b2 = normal.cross(b1)",
+	  "none", "the smallest |n_i| (ties to the later axis)", +1, 0, NAN, 0, ONB__PTRS(rp3d), &P_RP3D },
+	{ "open3d", "open3d", "Open3D PlaneDetector::ConstructOrthogonalBasis (Eigen)",
+	  "n parallel to (0,1,1): b1 = b2 = 0", "|(0,1,1) - n|^2 > 1e-3 (always on the unit sphere)", +1, 0, NAN, 0, ONB__PTRS(open3d), &P_OPEN3D },
+	/* This project's fixes of two of them, not shipped code: one change each
+	   to the engine's lines, keeping its frame at +-x, +-y, +-z. */
+	{ "physx_fixed", "physx", "onbstudy, not shipped: PhysX PxComputeBasisVectors with right = up.cross(dir) in the |y| > 0.9999f branch",
+	  "none", "|n.y| <= 0.9999f", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(physx_fixed), NULL },
+	{ "open3d_fixed", "open3d", "onbstudy, not shipped: Open3D ConstructOrthogonalBasis with the guard against +-(0,1,1)/sqrt 2",
+	  "none", "|d - n|^2 > 1e-3 and |d + n|^2 > 1e-3, d = (0,1,1)/sqrt 2", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(open3d_fixed), NULL },
 	/* This project's own methods, float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",
@@ -129,6 +179,11 @@ typedef char onb__one_row_per_listed_method[
    signed zeros, subnormals, the axes).  The notes under each row say why
    the arithmetic agrees; docs/wild.md has the rest. */
 static const onb_alias onb__aliases[] = {
+	/* dxPlaneSpace: Bullet's btPlaneSpace1 operation for operation (both descend from the same code) */
+	{ "ode", "bullet", "float and double", "ODE dPlaneSpace (dxPlaneSpace)", "",
+	  { "github.com/odedevs/ode", "624b1c174f41f8f52a92478e929c7e3ff50fb062", "ode/src/odemath.cpp:224-251",
+	    "BSD-3-Clause or LGPL-2.1+", "C++ (C style)", "dReal: double (CMake default), float (autotools default)",
+	    "source-level IEEE" } },
 	/* copysign(1, z) as Listing 3; Sqr(x) = x*x then times sign: exact for sign = +-1 */
 	{ "pbrt_v4", "duff_branchless", "float and double", "pbrt-v4 CoordinateSystem (Vector3 and Normal3 overloads)", "",
 	  { "github.com/mmp/pbrt-v4", "5f7a606806a4ac7b939131ded9d7a30ebd02416e", "src/pbrt/util/vecmath.h:1006-1022",

@@ -13,7 +13,7 @@
 #include "methods/kernels.h"
 #include "reference/reference.h"
 
-#define SWEEP_MAX_KERNELS 64
+#define SWEEP_MAX_KERNELS 256
 /* grid cells: the maps keep per-cell arrays for every method (about 40
    bytes per cell, method and precision) */
 #define SWEEP_MAX_GRID_CELLS (1u << 20)

@@ -1,0 +1,86 @@
+/*
+ * eigen.c - Eigen's unitOrthogonal (size 3) completed by Eigen's cross:
+ * b1 = (-y, x, 0)/|.| unless |x| and |y| are both <= p|z| (p = Eigen's
+ * dummy_precision: 1e-5 float, 1e-12 double), then (0, -z, y)/|.|;
+ * b2 = n x b1.
+ */
+#include <math.h>
+#include "families/family.h"
+
+#define R MPFR_RNDN
+
+#if FAMILY_RULE_PASS
+/* 1 unless |x| <= |z| p and |y| <= |z| p (|z| p rounded in the format) */
+int FAMILY_BRANCH(eigen)(const onb_method *m, int prec, const double n[3])
+{
+	(void)m;
+	if (prec == PREC_FLOAT) {
+		const float zp = fabsf((float)n[2]) * 1e-5f;
+		return !(fabsf((float)n[0]) <= zp) || !(fabsf((float)n[1]) <= zp);
+	} else {
+		const double zp = fabs(n[2]) * 1e-12;
+		return !(fabs(n[0]) <= zp) || !(fabs(n[1]) <= zp);
+	}
+}
+#endif
+
+#if FAMILY_PAIR_PASS
+void FAMILY_PAIR(eigen)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
+{
+	(void)m; (void)loc;
+	if (br) {
+		r1[0] = xneg(n[1]); r1[1] = n[0]; r1[2] = xc(0.0);
+	} else {
+		r1[0] = xc(0.0); r1[1] = xneg(n[2]); r1[2] = n[1];
+	}
+	xnormalize(r1, bad);
+	xcross(r2, n, r1, bad);
+}
+#endif
+
+#if FAMILY_MAIN_PASS
+#include "model/model_kit.h"
+
+static const char *names(const onb_method *m, int b, char *buf, size_t n)
+{
+	(void)m; (void)buf; (void)n;
+	return b ? "x or y not much smaller than z: b1 = (-y, x, 0) / len" : "x, y << z: b1 = (0, -z, y) / len";
+}
+
+static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
+{
+	(void)m; (void)loc;
+	if (br) {
+		mpfr_neg(r1[0], n[1], R); mpfr_set(r1[1], n[0], R); mpfr_set_zero(r1[2], 1);
+	} else {
+		mpfr_set_zero(r1[0], 1); mpfr_neg(r1[1], n[2], R); mpfr_set(r1[2], n[1], R);
+	}
+	kit_normalize(c, r1);
+	kit_cross(c, r2, n, r1);
+}
+
+/* Two branch points as the kernel's || evaluates them: |x| > |z| p, and
+   only when it fails, |y| > |z| p. */
+static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	const cv zp = MUL(n[2], K(P == CM_F32 ? 1e-5 : 1e-12)); /* |RN(z p)| = RN(|z| p) */
+	cv r;
+	(void)m;
+	if (cm_branch_abs(c, 0, CM_GT, n[0], zp) || cm_branch_abs(c, 1, CM_GT, n[1], zp)) {
+		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[1], n[1]))));
+		out[0] = MUL(cm_neg(c, n[1]), r); out[1] = MUL(n[0], r); out[2] = K(0.0);
+	} else {
+		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
+		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
+	}
+	mk_cross(c, P, n, out, out + 3);
+}
+
+static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
+
+FAMILY_DECLARE(eigen);
+const study_family family_eigen = {
+	"eigen", FAMILY_PASSES(eigen), names, mpfr, FAMILY_PAIRS(eigen), family_no_variant,
+	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+};
+#endif

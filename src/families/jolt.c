@@ -1,0 +1,93 @@
+/*
+ * jolt.c - Jolt Physics' Vec3::GetNormalizedPerpendicular and contact
+ * tangents: b1 = (z, 0, -x)/|.| when x^2 > y^2 (the squares rounded in
+ * the format), else (0, z, -y)/|.|; b2 = n x b1.  jolt_fma (variant
+ * ONB__WILD_FMA) is the same formula with the cross product fused as
+ * Jolt's default x86 build compiles it.
+ */
+#include <math.h>
+#include "families/family.h"
+
+#define R MPFR_RNDN
+
+#if FAMILY_RULE_PASS
+/* 1 when x*x > y*y, the squares rounded in the format */
+int FAMILY_BRANCH(jolt)(const onb_method *m, int prec, const double n[3])
+{
+	(void)m;
+	if (prec == PREC_FLOAT) {
+		const float x = (float)n[0], y = (float)n[1];
+		return x * x > y * y;
+	}
+	return n[0] * n[0] > n[1] * n[1];
+}
+#endif
+
+#if FAMILY_PAIR_PASS
+void FAMILY_PAIR(jolt)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
+{
+	(void)m; (void)loc;
+	if (br) {
+		r1[0] = n[2]; r1[1] = xc(0.0); r1[2] = xneg(n[0]);
+	} else {
+		r1[0] = xc(0.0); r1[1] = n[2]; r1[2] = xneg(n[1]);
+	}
+	xnormalize(r1, bad);
+	xcross(r2, n, r1, bad);
+}
+#endif
+
+#if FAMILY_MAIN_PASS
+#include "model/model_kit.h"
+
+static const char *names(const onb_method *m, int b, char *buf, size_t n)
+{
+	(void)m; (void)buf; (void)n;
+	return b ? "x^2 > y^2: b1 = (z, 0, -x) / len" : "x^2 <= y^2: b1 = (0, z, -y) / len";
+}
+
+static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
+{
+	(void)m; (void)loc;
+	if (br) {
+		mpfr_set(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_neg(r1[2], n[0], R);
+	} else {
+		mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
+	}
+	kit_normalize(c, r1);
+	kit_cross(c, r2, n, r1);
+}
+
+/* The squares, the compare of the rounded squares, one sqrt, three
+   divisions (0 - v negates: exact); then Cross, fused as
+   fma(b1[i+2], n[i+1], -(n[i+2] b1[i+1])) in the FMA build. */
+static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	const cv xx = MUL(n[0], n[0]), yy = MUL(n[1], n[1]), zz = MUL(n[2], n[2]);
+	cv len;
+	int i;
+	if (cm_branch(c, 0, CM_GT, xx, yy)) {
+		len = cm_sqrt(c, P, ADD(xx, zz));
+		out[0] = DIV(n[2], len); out[1] = DIV(K(0.0), len); out[2] = DIV(SUB(K(0.0), n[0]), len);
+	} else {
+		len = cm_sqrt(c, P, ADD(yy, zz));
+		out[0] = DIV(K(0.0), len); out[1] = DIV(n[2], len); out[2] = DIV(SUB(K(0.0), n[1]), len);
+	}
+	if (m->norm != ONB__WILD_FMA) {
+		mk_cross(c, P, n, out, out + 3);
+		return;
+	}
+	for (i = 0; i < 3; i++) {
+		const int j = (i + 1) % 3, k = (i + 2) % 3;
+		out[3 + i] = cm_fma(c, P, out[k], n[j], cm_neg(c, MUL(n[k], out[j])));
+	}
+}
+
+static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
+
+FAMILY_DECLARE(jolt);
+const study_family family_jolt = {
+	"jolt", FAMILY_PASSES(jolt), names, mpfr, FAMILY_PAIRS(jolt), family_no_variant,
+	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+};
+#endif

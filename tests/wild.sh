@@ -1,0 +1,66 @@
+#!/bin/sh
+# wild.sh - docs/wild.md and the README's engines line against the
+# committed runs and the registry (scripts/wild.sh --check), and the table
+# itself: at least 12 engine rows, each with a 40-hex commit, a path with
+# its line range and a replay command that `onbstudy eval` runs and that
+# gives the defect the row reports; the generator refuses an engine that
+# fails in float without a maintainer paragraph.  Run from the top
+# directory after `make`.
+set -u
+pass=0; fail=0
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+
+if sh scripts/wild.sh --check docs/wild.md > "$T/out" 2>&1; then ok; else cat "$T/out"; bad "docs/wild.md is not what scripts/wild.sh generates"; fi
+if sh scripts/wild.sh --readme --check README.md > "$T/out" 2>&1; then ok; else cat "$T/out"; bad "README.md's engines line is not what scripts/wild.sh --readme generates"; fi
+
+# the engine rows: "| `name`..." lines of the table (the findings use ### headings)
+grep '^| `' docs/wild.md > "$T/rows" || true
+n=$(wc -l < "$T/rows")
+if [ "$n" -ge 12 ]; then ok; else bad "docs/wild.md has $n engine rows, fewer than 12"; fi
+m=$(./onbstudy list --format csv | grep -cE ',[0-9a-f]{40},')
+a=$(./onbstudy list --aliases --format csv | awk 'NR > 1' | wc -l)
+if [ "$n" -eq $((m + a)) ]; then ok; else bad "docs/wild.md has $n engine rows, the registry $m engines' methods and $a aliases"; fi
+while IFS= read -r row; do
+	name=$(printf '%s\n' "$row" | sed 's/^| `\([a-z0-9_]*\)`.*/\1/')
+	printf '%s\n' "$row" | grep -Eq '`[0-9a-f]{40}`' || bad "$name: no 40-hex commit"
+	printf '%s\n' "$row" | grep -Eq ':[0-9]+-[0-9]+' || bad "$name: no path with a line range"
+	cmd=$(printf '%s\n' "$row" | sed -n 's/.*`onbstudy \(eval [^`]*\)`.*/\1/p')
+	if [ -z "$cmd" ]; then
+		# only a method the committed run predates may lack its input
+		tgt=$(printf '%s\n' "$row" | sed -n 's/^| `[a-z0-9_]*` = `\([a-z0-9_]*\)`.*/\1/p'); [ -n "$tgt" ] || tgt=$name
+		if printf '%s\n' "$row" | grep -q 'not in the committed run' && ! grep -q "^$tgt," "${REF:-results/reference}/summary.csv"; then
+			echo "note: $name is not in the committed run yet"; ok
+		else bad "$name: no replayable input"; fi
+		continue
+	fi
+	prec=$(printf '%s\n' "$cmd" | sed 's/.*--precision \([a-z]*\).*/\1/')
+	# shellcheck disable=SC2086 # the command's words
+	if ! ./onbstudy $cmd > "$T/eval" 2>&1; then bad "$name: '$cmd' failed"; continue; fi
+	got=$(sed -n 's/.*(max \([^)]*\)).*/\1/p' "$T/eval" | head -1)
+	grep -q 'NON-FINITE output' "$T/eval" && got=nan
+	# the row's figure for that precision: found column, "float / double"
+	want=$(printf '%s\n' "$row" | awk -F' [|] ' -v p="$prec" '{ split($5, f, " / "); v = (p == "float") ? f[1] : f[2]; sub(/ \(.*/, "", v); print v }')
+	if awk -v g="$got" -v w="$want" -v p="$prec" 'BEGIN {
+		u = (p == "float") ? 2^-24 : 2^-53
+		if (w ~ /u$/) { sub(/u$/, "", w); w *= u }
+		if (w == "non-finite") exit !(g ~ /nan|inf/)
+		exit !(g + 0 > 0 && (g - w) / w < 0.006 && (w - g) / w < 0.006) }'; then ok
+	else bad "$name: '$cmd' gives defect $got, the row says $want"; fi
+done < "$T/rows"
+
+# a missing maintainer paragraph stops the generator
+awk '/^<!-- para / { skip = 1; next } skip && /^<!-- end -->$/ { skip = 0; next } !skip' scripts/wild.md.in > "$T/nopara.md.in"
+if grep -q '^### ' docs/wild.md; then
+	if WILD_TPL="$T/nopara.md.in" sh scripts/wild.sh > /dev/null 2> "$T/err"; then
+		bad "scripts/wild.sh accepted a template without the findings' paragraphs"
+	elif grep -q 'has no <!-- para' "$T/err"; then ok
+	else cat "$T/err"; bad "scripts/wild.sh failed without naming the missing paragraph"; fi
+fi
+# --check notices a changed figure
+sed '0,/^| `/{s/^| `\([a-z0-9_]*\)` /| `\1` X/}' docs/wild.md > "$T/wild.md"
+if sh scripts/wild.sh --check "$T/wild.md" > /dev/null 2>&1; then bad "--check accepted a changed row"; else ok; fi
+
+echo "wild: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

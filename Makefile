@@ -238,8 +238,11 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/libonb/onb.h $(wildcard te
 	$(CC) $(BASE) $(WARN) $(OMP) $(PROV) -D_POSIX_C_SOURCE=200809L -Isrc -o $@ $< $(STUDY_LIB) libonb.a $(STUDY_LIBS)
 
 test: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX)
-	@fail=0; for t in $(TEST_BIN); do echo "== $$t"; $$t || fail=1; done; \
-	for t in tests/*.sh; do [ -f "$$t" ] && [ "$$t" != tests/lib.sh ] || continue; echo "== $$t"; ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1; done; \
+	@fail=0; : > $(B)/test-times.tsv; \
+	for t in $(TEST_BIN) $(filter-out tests/lib.sh,$(wildcard tests/*.sh)); do echo "== $$t"; s=$$(date +%s); \
+	  case $$t in *.sh) ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1;; *) $$t || fail=1;; esac; \
+	  printf '%s\t%s\n' "$$t" $$(( $$(date +%s) - s )) >> $(B)/test-times.tsv; done; \
+	echo "make test: seconds per test (the slowest five; all in $(B)/test-times.tsv):"; sort -k2,2nr $(B)/test-times.tsv | head -5; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
 
 # make check-method M=NAME: what a new method needs, in about a minute:

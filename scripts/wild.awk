@@ -148,15 +148,21 @@ function load_runs(   n, r, m, p, d, e, v, k, kk) {
 	}
 	n = load(TR)
 	for (r = 1; r <= n; r++) speed[get(TR, r, "method"), get(TR, r, "precision")] = get(TR, r, "batch_mbases_1t")
-	n = load(C)
+	# C: one or more certify.csv files, space-separated; a later file's
+	# whole-sphere row of a method and precision replaces an earlier one's
+	nc = split(C, cf, " ")
+	for (i = 1; i <= nc; i++) load_cert(cf[i])
+}
+function load_cert(F,   n, r, m, p, v) {
+	n = load(F)
 	for (r = 1; r <= n; r++) {
-		if (get(C, r, "nz_lo") + 0 != -1 || get(C, r, "nz_hi") + 0 != 1 || get(C, r, "phi_lo") + 0 != 0 || get(C, r, "phi_hi") + 0 != 360) continue
-		m = get(C, r, "method"); p = get(C, r, "precision")
-		cbound[m, p] = get(C, r, "bound"); cstatus[m, p] = get(C, r, "status")
-		v = get(C, r, "found")
+		if (get(F, r, "nz_lo") + 0 != -1 || get(F, r, "nz_hi") + 0 != 1 || get(F, r, "phi_lo") + 0 != 0 || get(F, r, "phi_hi") + 0 != 360) continue
+		m = get(F, r, "method"); p = get(F, r, "precision")
+		cbound[m, p] = get(F, r, "bound"); cstatus[m, p] = get(F, r, "status")
+		v = get(F, r, "found")
 		if (!((m, p) in found) || num(v) > num(found[m, p])) {
 			found[m, p] = v
-			input[m, p] = get(C, r, "found_nx") " " get(C, r, "found_ny") " " get(C, r, "found_nz")
+			input[m, p] = get(F, r, "found_nx") " " get(F, r, "found_ny") " " get(F, r, "found_nz")
 		}
 	}
 }

@@ -26,6 +26,12 @@ fi
 FIGS=${FIGS:-$RUN/figures}
 PCDIR=${PCDIR:-$RUN}
 W=$(mktemp -d)
+# frisvad_rotate's rows are its direction error, not the defect: say so in
+# the titles of a run that has it
+FRD=''; FRP=''
+if grep -q '^frisvad_rotate,' "$RUN/summary.csv"; then
+	FRD='; frisvad\_rotate: its direction error'; FRP='(frisvad\_rotate: its direction error)'
+fi
 trap 'rm -rf "$W"' EXIT
 LOG="$W/gnuplot.log"
 : > "$LOG"
@@ -167,15 +173,15 @@ for P in float double; do
 	if [ -n "$n" ]; then
 		titles "$files1" 2 "$C1" > "$W/t1.txt"; titles "$files1" 3 "$C1" > "$W/t1r.txt"
 		set -- $(range "$files1" 2 0)
-		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs, $n per method (the defect$FRD)'"
 		set -- $(range "$files1" 3 0)
-		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs, $n per method (the defect; frisvad\\_rotate: its direction error)'"
+		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs, $n per method (the defect$FRD)'"
 	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
 	fi
 	n=$(samples "$first" "$P" south)
 	titles "$files2" 2 "$C2" > "$W/t2.txt"
 	set -- $(range "$files2" 2 1)
-	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (distance from the south pole; -z: n.z = -1 exactly)'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs (frisvad\\_rotate: its direction error)'"
+	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (distance from the south pole; -z: n.z = -1 exactly)'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs $FRP'"
 	# the README's figure (float): frisvad, frisvad_max and duff alone, one panel
 	sel=$(for m in frisvad frisvad_max duff; do echo "$pmethods" | grep -qx "$m" && printf '%s ' "$m"; done)
 	if [ "$P" = float ] && [ -n "$sel" ]; then
@@ -191,7 +197,7 @@ for P in float double; do
 		n=$(samples "$first" "$P" nonunit)
 		titles "$files6" 2 "$C6" > "$W/t6.txt"
 		set -- $(range "$files6" 2 1)
-		gp lines.gp "$b6 $common; files='$files6'; titles='$W/t6.txt'; ceil=$C6; nf=$(nonfinite "$files6" "$C6"); out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input (unitless)'; yl='largest error per bin, against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method (frisvad\\_rotate: its direction error)'"
+		gp lines.gp "$b6 $common; files='$files6'; titles='$W/t6.txt'; ceil=$C6; nf=$(nonfinite "$files6" "$C6"); out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input (unitless)'; yl='largest error per bin, against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method $FRP'"
 	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
 	fi
 
@@ -219,7 +225,7 @@ for P in float double; do
 			ncols=6; [ $k -lt 6 ] && ncols=$k
 			nrows=$(( (k + ncols - 1) / ncols ))
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z; frisvad\\_rotate: its direction error)'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them); blank: no rows in $P'"
+			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }'), so it cannot show the failures within 1e-4 of -z (the pole-cap map shows them); blank: no rows in $P'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

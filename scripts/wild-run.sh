@@ -7,13 +7,15 @@
 # be an engine's drop-in fix.
 #   sh scripts/wild-run.sh            (about 30 min on 2 quiet cores)
 #   BUDGET=N sh scripts/wild-run.sh   certify's --budget (default 6000)
-# Then docs/wild.md and the README's engines line are regenerated.
+# Then the charts (PNG, scripts/plots.sh), docs/wild.md and the README's
+# engines line are regenerated.
 set -eu
 cd "$(dirname "$0")/.."
 OUT=results/wild
 make
 mkdir -p "$OUT"
-rm -f "$OUT"/*.csv "$OUT"/*.txt "$OUT"/*.log
+rm -f "$OUT"/*.csv "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.png
+rm -rf "$OUT/figures"
 eng=$(./onbstudy list --format csv | grep -E ',[0-9a-f]{40},' | cut -d, -f1)
 tgt=$(./onbstudy list --aliases --format csv | awk -F, 'NR > 1 { print $2 }')
 fix=$(./onbstudy list --format csv | cut -d, -f1 | grep '_fixed$' | grep -v '^stark_fixed$' || true)
@@ -29,11 +31,13 @@ t0=$(date +%s)
 ./onbstudy certify --methods "$M" --budget "${BUDGET:-6000}" --starts "$OUT/worst.csv" --quiet --out "$OUT" \
 	> "$OUT/certify.txt" 2> "$OUT/certify.log"
 t1=$(date +%s)
-rm -f "$OUT/grid.csv" "$OUT/by_nz.csv"   # the table quotes summary, worst, tradeoff and certify
+echo "wild: plots"
+make build/plot-deps.stamp
+FIGS=$OUT/figures PCDIR=$OUT NOSVG=1 sh scripts/plots.sh "$OUT" > "$OUT/plots.log" 2>&1
 {
 	echo "# results/wild: the machine and build of the committed run of the engines' code"
 	echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-	echo "revision: $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo -dirty)"
+	echo "revision: $(sed -n "s/^# revision: //p" "$OUT/summary.csv" | head -1) (the binary's, from summary.csv)"
 	echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')"
 	echo "cores: $(nproc)"
 	echo "compiler: $(cc --version | head -1)"
@@ -42,7 +46,7 @@ rm -f "$OUT/grid.csv" "$OUT/by_nz.csv"   # the table quotes summary, worst, trad
 	echo "methods: $M"
 	echo "certify: budget ${BUDGET:-6000}, $((t1 - t0)) s wall"
 	echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
-	echo "commands: scripts/wild-run.sh (sweep --grid 16x32; bench; table; certify --budget ${BUDGET:-6000} --starts worst.csv)"
+	echo "commands: scripts/wild-run.sh (sweep --grid 16x32; bench; table; certify --budget ${BUDGET:-6000} --starts worst.csv; plots.sh, PNG only)"
 } > "$OUT/machine.txt"
 sh scripts/wild.sh --update docs/wild.md
 sh scripts/wild.sh --readme --update README.md

@@ -94,7 +94,8 @@ function load_axes(   r, i, n, k, s) {
 	n = load(X)
 	for (r = 1; r <= n; r++) {
 		s = ""
-		for (i = 3; i <= 8; i++) s = s " " (rows[X, r, i] + 0)
+		# a signed zero is the same axis: -0 and +0 compare equal
+		for (i = 3; i <= 8; i++) s = s " " (rows[X, r, i] + 0 == 0 ? 0 : rows[X, r, i] + 0)
 		fr[rows[X, r, 1], rows[X, r, 2]] = s
 	}
 }
@@ -311,6 +312,26 @@ function findings(   i, e, s, t) {
 	}
 	return s == "" ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
 }
+# The findings as a short table for the README, the largest float defect first.
+function findlist(   i, j, e, n, o, v, s, tmp) {
+	n = 0
+	for (i = 1; i <= neng; i++) {
+		e = eng[i]
+		if (!fails(e)) continue
+		o[++n] = e; v[n] = num(found[target[e], "float"]); if (nonfin[target[e], "float"] > 0) v[n] = 1e308 * 10
+	}
+	for (i = 2; i <= n; i++)
+		for (j = i; j > 1 && v[j] > v[j - 1]; j--) {
+			tmp = v[j]; v[j] = v[j - 1]; v[j - 1] = tmp; tmp = o[j]; o[j] = o[j - 1]; o[j - 1] = tmp
+		}
+	s = "| engine | defect in float | replay | drop-in fix |\n|---|---|---|---|\n"
+	for (i = 1; i <= n; i++) {
+		e = o[i]
+		s = s "| `" e "` (" src[e] ") | " W(e, "float", "found") " | `" evalcmd(e, "float") "` | " \
+		    (fixm[e] == "" ? "the change to its own lines in [docs/wild.md](docs/wild.md)" : "`" fixm[e] "`, proven " fixbound(e, "float")) " |\n"
+	}
+	return n == 0 ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
+}
 function singtext(t) { return "the kernel returns NaN, inf or a zero vector on some unit input" }
 
 function worst(k,   i, e, b, v) {
@@ -342,6 +363,7 @@ function expand(line,   rs, rl, tok, a, nt, rep) {
 		nt = split(tok, a, " ")
 		if (a[1] == "TABLE" && a[2] == "wild") rep = table()
 		else if (a[1] == "FINDINGS") rep = findings()
+		else if (a[1] == "FINDLIST") rep = findlist()
 		else if (a[1] == "COUNT" && nt == 2) rep = count(a[2])
 		else if (a[1] == "W" && nt == 4) rep = W(a[2], a[3], a[4])
 		else if (a[1] == "WORST" && nt == 2) rep = worst(a[2])

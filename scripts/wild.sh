@@ -24,6 +24,8 @@
 #                         the paragraph between <!-- para NAME --> and
 #                         <!-- end --> in wild.md.in (generation fails when
 #                         one is missing)
+#     {{FINDLIST}}        the same engines as a short table (the README's),
+#                         the largest float defect first
 #     {{COUNT key}}       engines, methods, aliases, findings
 #     {{W name precision key}}  one engine's figure: found, bound, input,
 #                         eval, speed, fix, fixbound, hand, frame, commit,
@@ -37,9 +39,9 @@
 set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$HERE/..
-REF=${REF:-$ROOT/results/wild}
+REF=${REF:-$ROOT/results/reference}
 # the paper methods' proven bounds, then the engines' run (its rows win)
-CERT=${CERT:-$ROOT/results/certify/certify.csv $ROOT/results/wild/certify.csv}
+CERT=${CERT:-$ROOT/results/certify/certify.csv}
 ONBSTUDY=${ONBSTUDY:-$ROOT/onbstudy}
 TPL=${WILD_TPL:-$HERE/wild.md.in}
 BODY=$TPL

@@ -153,6 +153,43 @@ static void ind_filamentd(Vec3d n, Vec3d *t, Vec3d *b)
 	}
 }
 
+/* filament_fixed (this project's fix, not shipped): Duff et al.'s
+   revisedONB (Listing 2 of their paper) on Filament's relabelled vector
+   p = (n.z, n.x, n.y); on its lower branch the pair is turned to keep
+   Filament's frame at -y, (u, v) -> (v, -u); then back to x, y, z as
+   Filament does: (r.y, r.z, r.x). */
+#define IND_REVISED_ONB(T, ONE)                                                   \
+	static void ind_revised_##T(const T p[3], T u[3], T v[3])                 \
+	{                                                                          \
+		if (p[2] < (T)0) {                                                 \
+			const T a = ONE / (ONE - p[2]);                            \
+			const T b = p[0] * p[1] * a;                               \
+			u[0] = ONE - p[0] * p[0] * a; u[1] = -b; u[2] = p[0];      \
+			v[0] = b; v[1] = p[1] * p[1] * a - ONE; v[2] = -p[1];      \
+		} else {                                                           \
+			const T a = ONE / (ONE + p[2]);                            \
+			const T b = -p[0] * p[1] * a;                              \
+			u[0] = ONE - p[0] * p[0] * a; u[1] = b; u[2] = -p[0];      \
+			v[0] = b; v[1] = ONE - p[1] * p[1] * a; v[2] = -p[1];      \
+		}                                                                  \
+	}
+IND_REVISED_ONB(float, 1.0f)
+IND_REVISED_ONB(double, 1.0)
+#define IND_FILAMENT_FIXED(SFX, T, V, MK)                                         \
+	static void ind_filament_fixed##SFX(V n, V *b1, V *b2)                     \
+	{                                                                          \
+		const T p[3] = { n.z, n.x, n.y };                                  \
+		T u[3], v[3], w[3];                                                \
+		int i;                                                             \
+		ind_revised_##T(p, u, v);                                          \
+		if (p[2] < (T)0)                                                   \
+			for (i = 0; i < 3; i++) { w[i] = v[i]; v[i] = -u[i]; u[i] = w[i]; } \
+		*b1 = MK(u[1], u[2], u[0]);                                        \
+		*b2 = MK(v[1], v[2], v[0]);                                        \
+	}
+IND_FILAMENT_FIXED(f, float, Vec3f, vf)
+IND_FILAMENT_FIXED(d, double, Vec3d, vd)
+
 /* Mitsuba 3 coordinate_system(n) with Dr.Jit's scalar helpers (no FMA):
    sign = copysign(1, v); rcp(a) = 1 / a; square(v) = v * v; mulsign(v, s)
    = v xor (s & sign bit); mulsign_neg(v, s) = v xor (~s & sign bit);
@@ -315,7 +352,8 @@ static void ind_luxcored(Vec3d v1, Vec3d *v2, Vec3d *v3)
 
 /* Ids of this file's transliterations, after indep.h's own. */
 enum { IW_PBRT4 = 100, IW_NVPRO, IW_CYCLES_DUFF, IW_FALCOR, IW_PASVULKAN,
-       IW_Q2RTX, IW_FILAMENT, IW_MITSUBA3, IW_CYCLES111, IW_EMBREE, IW_LUXCORE, IW_CYCLES111_AVX2 };
+       IW_Q2RTX, IW_FILAMENT, IW_MITSUBA3, IW_CYCLES111, IW_EMBREE, IW_LUXCORE, IW_CYCLES111_AVX2,
+       IW_FILAMENT_FIXED };
 
 /* 1 when id is one of this file's (outputs written), else 0; a double
    variant that the source does not have gives 0 too. */
@@ -334,6 +372,7 @@ static int indep_wild_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IW_CYCLES111_AVX2: ind_cycles111_avx2f(n, b1, b2); return 1;
 	case IW_EMBREE:      ind_embreef(n, b1, b2); return 1;
 	case IW_LUXCORE:     ind_luxcoref(n, b1, b2); return 1;
+	case IW_FILAMENT_FIXED: ind_filament_fixedf(n, b1, b2); return 1;
 	default:             return 0;
 	}
 }
@@ -348,6 +387,7 @@ static int indep_wild_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 	case IW_CYCLES111_AVX2: ind_cycles111_avx2d(n, b1, b2); return 1;
 	case IW_EMBREE:    ind_embreed(n, b1, b2); return 1;
 	case IW_LUXCORE:   ind_luxcored(n, b1, b2); return 1;
+	case IW_FILAMENT_FIXED: ind_filament_fixedd(n, b1, b2); return 1;
 	default:           return 0;
 	}
 }

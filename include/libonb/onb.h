@@ -41,6 +41,7 @@
  *     onb_rp3d             onb_rp3df              ReactPhysics3D
  *     onb_open3d           onb_open3df            Open3D ConstructOrthogonalBasis
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
+ *     onb_filament_fixed   onb_filament_fixedf    this project: Filament fixed
  *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
  *     (float only)         onb_duff_widef         this project: Duff in double
  *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
@@ -899,6 +900,46 @@ static inline void ONB__K(filamentf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b2->x = 1.0f - n.x * n.x * va; b2->y = -n.x; b2->z = vb;
 }
 
+/* filament_fixed (this project's fix of filament, not shipped code):
+   Filament's formula for n.y >= 0 (-0 included), and below it Duff et
+   al.'s lower-hemisphere formula on the same relabelled (n.z, n.x, n.y),
+   its pair turned a quarter (b1, b2) -> (b2, -b1) so that n = -y keeps
+   Filament's fallback frame ((-1, 0, 0), (0, 0, -1)): a = 1/(1 - n.y),
+   b = n.z*n.x*a, b1 = (n.x*n.x*a - 1, -n.x, b), b2 = (b, -n.z,
+   -(1 - n.z*n.z*a)).  A branch on the sign instead of the threshold, as
+   Duff et al. revised Frisvad's; the same frame at the six axes (up to
+   the sign of a zero).  Handedness +1. */
+static inline void ONB__K(filament_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	double a, b;
+	if (n.y < 0.0) {
+		a = 1.0 / (1.0 - n.y);
+		b = n.z * n.x * a;
+		b1->x = n.x * n.x * a - 1.0; b1->y = -n.x; b1->z = b;
+		b2->x = b; b2->y = -n.z; b2->z = -(1.0 - n.z * n.z * a);
+		return;
+	}
+	a = 1.0 / (1.0 + n.y);
+	b = -n.z * n.x * a;
+	b1->x = b; b1->y = -n.z; b1->z = 1.0 - n.z * n.z * a;
+	b2->x = 1.0 - n.x * n.x * a; b2->y = -n.x; b2->z = b;
+}
+static inline void ONB__K(filament_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	float a, b;
+	if (n.y < 0.0f) {
+		a = 1.0f / (1.0f - n.y);
+		b = n.z * n.x * a;
+		b1->x = n.x * n.x * a - 1.0f; b1->y = -n.x; b1->z = b;
+		b2->x = b; b2->y = -n.z; b2->z = -(1.0f - n.z * n.z * a);
+		return;
+	}
+	a = 1.0f / (1.0f + n.y);
+	b = -n.z * n.x * a;
+	b1->x = b; b1->y = -n.z; b1->z = 1.0f - n.z * n.z * a;
+	b2->x = 1.0f - n.x * n.x * a; b2->y = -n.x; b2->z = b;
+}
+
 /* mitsuba3 (Mitsuba 3 include/mitsuba/core/vector.h, coordinate_system,
    scalar variants, Dr.Jit without FMA): Duff's Listing 3 with Dr.Jit's
    helpers: a = -(1/(s + n.z)), b1.x = mulsign(x*x*a, z) + 1 (the sign
@@ -1745,7 +1786,7 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	X(rtow) X(tangent_cross_z) \
 	X(q2rtx) X(filament) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(physx_fixed) X(open3d_fixed)
+	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
 
 #define ONB__DECLARE(m) \
 	void onb_##m##_outline (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2); \

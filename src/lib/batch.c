@@ -342,6 +342,8 @@ void onb_##m##_batch##suf(ARGS)                                                \
 #define ONB__BF_open3d                 ONB__BATCH_SIMPLE_F(open3d)
 #define ONB__BD_physx_fixed            ONB__BATCH_SIMPLE_D(physx_fixed)
 #define ONB__BF_physx_fixed            ONB__BATCH_SIMPLE_F(physx_fixed)
+#define ONB__BD_filament_fixed         ONB__BATCH_SIMPLE_D(filament_fixed)
+#define ONB__BF_filament_fixed         ONB__BATCH_SIMPLE_F(filament_fixed)
 #define ONB__BD_open3d_fixed           ONB__BATCH_SIMPLE_D(open3d_fixed)
 #define ONB__BF_open3d_fixed           ONB__BATCH_SIMPLE_F(open3d_fixed)
 #define ONB__BD_jolt_fma               ONB__BATCH_FMA_D(jolt_fma)

@@ -150,12 +150,14 @@ static const onb_method onb__table[] = {
 	  "none", "the smallest |n_i| (ties to the later axis)", +1, 0, NAN, 0, ONB__PTRS(rp3d), &P_RP3D },
 	{ "open3d", "open3d", "Open3D PlaneDetector::ConstructOrthogonalBasis (Eigen)",
 	  "n parallel to (0,1,1): b1 = b2 = 0", "|(0,1,1) - n|^2 > 1e-3 (always on the unit sphere)", +1, 0, NAN, 0, ONB__PTRS(open3d), &P_OPEN3D },
-	/* This project's fixes of two of them, not shipped code: one change each
+	/* This project's fixes of three of them, not shipped code: one change each
 	   to the engine's lines, keeping its frame at +-x, +-y, +-z. */
 	{ "physx_fixed", "physx", "onbstudy, not shipped: PhysX PxComputeBasisVectors with right = up.cross(dir) in the |y| > 0.9999f branch",
 	  "none", "|n.y| <= 0.9999f", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(physx_fixed), NULL },
 	{ "open3d_fixed", "open3d", "onbstudy, not shipped: Open3D ConstructOrthogonalBasis with the guard against +-(0,1,1)/sqrt 2",
 	  "none", "|d - n|^2 > 1e-3 and |d + n|^2 > 1e-3, d = (0,1,1)/sqrt 2", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(open3d_fixed), NULL },
+	{ "filament_fixed", "filament", "onbstudy, not shipped: Filament frisvadKernel with Duff et al.'s branch on the sign of n.y (lower formula turned to keep the -y frame)",
+	  "none", "n.y < 0 (-0 takes the upper branch)", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(filament_fixed), NULL },
 	/* This project's own methods, float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",

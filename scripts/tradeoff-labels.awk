@@ -40,10 +40,14 @@ END {
 	for (a = 1; a <= m; a++) {
 		i = ord[a]; w = length(text[i]) * CW + 0.01
 		placed = 0
-		for (k = 0; k <= 24 && !placed; k++) {
-			dy = (k % 2 ? 1 : -1) * int((k + 1) / 2) * 2.2 * H
-			for (side = 0; side < 2 && !placed; side++) {
-				x0 = side ? px[i] - MX - 0.004 - w : px[i] + MX + 0.004
+		# up and down in steps of a label's height, right then left of the
+		# point; in a crowd (a second pass), further up and down and further
+		# right or left, behind a leader line
+		for (k = 0; k <= 24 + 60 && !placed; k++) {
+			dy = (k % 2 ? 1 : -1) * int(((k > 24 ? k - 25 : k) + 1) / 2) * 2.2 * H
+			for (side = 0; side < (k > 24 ? 4 : 2) && !placed; side++) {
+				x0 = side % 2 ? px[i] - MX - 0.004 - w : px[i] + MX + 0.004
+				if (side >= 2) x0 += (side == 2 ? 1 : -1) * 0.08
 				y0 = py[i] + dy
 				if (free(x0, y0, w)) placed = 1
 			}
@@ -51,7 +55,7 @@ END {
 		if (!placed) { x0 = px[i] + 0.012; y0 = py[i] } # give up: right of the point
 		nl++; lx[nl] = x0; ly[nl] = y0; lw[nl] = w
 		printf "set label %d \"%s\" at graph %.4f, graph %.4f left font \",10\" noenhanced front\n", nl, text[i], x0, y0
-		if (k > 1 || (k == 1 && dy != 0) || x0 < px[i])
+		if (k > 1 || (k == 1 && dy != 0) || x0 < px[i] || side > 2)
 			printf "set arrow %d from first %g, first %g to graph %.4f, graph %.4f nohead lc rgb \"#777777\" lw 0.8 back\n", nl, X[i], Y[i], (x0 < px[i] ? x0 + w - 0.004 : x0 - 0.002), y0
 	}
 }

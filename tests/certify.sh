@@ -63,6 +63,16 @@ grep -q '^  frisvad  .*[0-9]  proven within E$' "$T/sd.out" && ok || bad "frisva
 ./onbstudy scene "$T/south.obj" --certify --repeats 1 --out "$T/ss" > "$T/ss.out" 2>&1 || bad "scene --certify south cap failed: $(tail -2 "$T/ss.out")"
 grep -q '^  frisvad  .* not proven within E$' "$T/ss.out" && ok || bad "frisvad proven near -z: $(grep '^  frisvad ' "$T/ss.out")"
 grep -q '^  duff  .*[0-9]  proven within E$' "$T/ss.out" && ok || bad "duff not proven near -z: $(grep '^  duff ' "$T/ss.out")"
+# the bounds in scene.csv's proven_max: on the renormalized z rows of object
+# space only, equal to the printed ones; empty on every other row
+awk -F, '!/^#/ && !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next }
+	!/^#/ && h { k = $c["method"] "," $c["up"] "," $c["variant"]; p[k] = $c["proven_max"]; n++ }
+	END { exit !(n > 0 && p["duff,z,renormalized"] != "" && p["duff,z,as_read"] == "") }' "$T/ss/scene.csv" && ok ||
+	bad "scene.csv's proven_max: not on the renormalized z rows alone"
+want=$(awk '$1 == "duff" && / proven within E$/ { print $2; exit }' "$T/ss.out")
+got=$(awk -F, '!/^#/ && $5 == "duff" && $3 == "z" && $4 == "renormalized" { print $NF }' "$T/ss/scene.csv")
+awk -v a="$want" -v b="$got" 'BEGIN { exit !(a + 0 > 0 && (a - b) / a < 1e-3 && (b - a) / a < 1e-3) }' && ok ||
+	bad "scene.csv's proven_max for duff is '$got', the report says '$want'"
 
 # 6. --band: only that band, the first row is the band itself
 ./onbstudy certify --quick --quiet --methods duff --precision float --band -1,-0.9999 --out "$T/band" >/dev/null 2>&1 || bad "certify --band failed"

@@ -32,6 +32,9 @@ head -1 "$csv" | grep -q '^# onbstudy' && ok || bad "scene.csv has no provenance
 nm=$(./onbstudy list --format csv | tail -n +2 | wc -l)
 rows=$(grep -c '^"' "$csv")
 [ "$rows" -eq $((4 * nm)) ] && ok || bad "scene.csv has $rows rows, expected $((4 * nm))"
+# without --certify the last column, proven_max, is named and empty on every row
+grep -q ',space,proven_max$' "$csv" && [ "$(grep '^"' "$csv" | grep -vc ',$')" -eq 0 ] && ok ||
+	bad "scene.csv without --certify: proven_max missing or not empty"
 # field 11 nonfinite, 16 within_tolerance, 17 rank; up is field 3
 f() { awk -F, -v up="$1" -v var="$2" -v m="$3" -v c="$4" '$3 == up && $4 == var && $5 == m { print $c }' "$csv"; }
 # tangent_cross_z is singular at n = -z exactly: non-finite under up y, not under up z

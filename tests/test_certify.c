@@ -95,27 +95,43 @@ static void kernel(const onb_method *m, int prec, const double n[3], double o[6]
 	}
 }
 
-/* Mismatches of method m's model in precision prec over count inputs. */
-static long check(cm *c, const onb_method *m, const cm_method *cmm, int prec, long count)
+/* Mismatches of method m's model in precision prec over count inputs,
+   two or more threads at a time (each its own model context); -1 when a
+   context cannot be made. */
+static long check(const onb_method *m, const cm_method *cmm, int prec, long count)
 {
-	long i, bad = 0;
-	for (i = 0; i < count; i++) {
-		double u[3], n[3], ko[6];
-		cv in[3], out[6];
-		int k, ok = 1;
-		input((uint64_t)i, u);
-		for (k = 0; k < 3; k++)
-			n[k] = prec == CM_F32 ? (double)(float)u[k] : u[k];
-		kernel(m, prec, n, ko);
-		cm_exec_begin(c, prec, n, in);
-		cm_run(c, cmm, prec, in, out);
-		for (k = 0; k < 6; k++)
-			ok &= same_bits(ko[k], cm_value(c, out[k]), prec);
-		if (!ok && bad++ < 3)
-			printf("  %s %s: n = (%a, %a, %a): kernel b1.x %a model %a\n", m->name,
-			       prec == CM_F32 ? "float" : "double", n[0], n[1], n[2], ko[0], cm_value(c, out[0]));
+	long bad = 0;
+	int fail = 0;
+#pragma omp parallel reduction(+ : bad)
+	{
+		cm *c = cm_new(CM_EXEC);
+		long i;
+#pragma omp for schedule(static)
+		for (i = 0; i < count; i++) {
+			double u[3], n[3], ko[6];
+			cv in[3], out[6];
+			int k, ok = 1;
+			if (!c) {
+#pragma omp atomic write
+				fail = 1;
+				continue;
+			}
+			input((uint64_t)i, u);
+			for (k = 0; k < 3; k++)
+				n[k] = prec == CM_F32 ? (double)(float)u[k] : u[k];
+			kernel(m, prec, n, ko);
+			cm_exec_begin(c, prec, n, in);
+			cm_run(c, cmm, prec, in, out);
+			for (k = 0; k < 6; k++)
+				ok &= same_bits(ko[k], cm_value(c, out[k]), prec);
+			if (!ok && bad++ < 3)
+#pragma omp critical(test_certify_print)
+				printf("  %s %s: n = (%a, %a, %a): kernel b1.x %a model %a\n", m->name,
+				       prec == CM_F32 ? "float" : "double", n[0], n[1], n[2], ko[0], cm_value(c, out[0]));
+		}
+		cm_free(c);
 	}
-	return bad;
+	return fail ? -1 : bad;
 }
 
 /* argv[1]: inputs per method and precision; argv[2]: one method alone. */
@@ -125,9 +141,8 @@ int main(int argc, char **argv)
 	const char *only = argc > 2 ? argv[2] : NULL;
 	size_t nm, i;
 	const onb_method *ms = onb_methods(&nm);
-	cm *c = cm_new(CM_EXEC);
 	int fail = 0, checked = 0;
-	if (!c || count <= 0)
+	if (count <= 0)
 		return 2;
 	for (i = 0; i < nm; i++) {
 		const cm_method *cmm = cm_find(ms[i].name);
@@ -143,14 +158,13 @@ int main(int argc, char **argv)
 			long bad;
 			if (prec == CM_F64 && !ms[i].basis)
 				continue;
-			bad = check(c, &ms[i], cmm, prec, count);
+			bad = check(&ms[i], cmm, prec, count);
 			checked++;
 			printf("%s %-24s %-6s %ld inputs, %ld not bit-identical\n", bad ? "FAIL" : "ok  ",
 			       ms[i].name, prec == CM_F32 ? "float" : "double", count, bad);
 			fail |= bad != 0;
 		}
 	}
-	cm_free(c);
 	printf("%s: %d method-precision pairs, the models %s the kernels' bits\n",
 	       fail ? "FAIL" : "ok", checked, fail ? "do not reproduce" : "reproduce");
 	return fail;

@@ -97,40 +97,60 @@ static long long find_input(const double *in, long long count, const double n[3]
 	return -1;
 }
 
-/* One method on one box: the box's maximum against certify's bracket. */
-static void one_method(cert_ctx *x, const study_kernel *k, const cm_method *m, const cert_box *b,
-                       const double *in, long long count, double *d, const cert_region *r)
-{
-	const cert_opts o = { 120, 100, 1.25, -1.0, 22, NULL, NULL, NULL, 0 };
+/* One method on one box, measured (in parallel, one context each). */
+typedef struct {
+	int run;             /* 0: skipped; 1: measured; -1: cert_enumerate failed */
+	int meets_singular;
 	cert_result res;
 	cert_enum e;
-	long long at;
-	if (cert_enumerate(x, k, in, count, d, &e)) {
+	long long at;        /* the found input's index in the box, or -1 */
+	double at_d;         /* the box's defect there */
+	double again;        /* the found input outside the box, measured again */
+} one_out;
+
+static void measure(cert_ctx *x, const study_kernel *k, const cm_method *m, const double *in, long long count,
+                    double *d, const cert_region *r, one_out *o)
+{
+	const cert_opts opt = { 120, 100, 1.25, -1.0, 22, NULL, NULL, NULL, 0 };
+	int nf = 0;
+	if (cert_enumerate(x, k, in, count, d, &o->e)) {
+		o->run = -1;
+		return;
+	}
+	cert_region_run(x, k, m, PREC_FLOAT, r, &opt, &o->res);
+	o->at = find_input(in, count, o->res.found_n);
+	o->at_d = o->at >= 0 ? d[o->at] : 0.0;
+	if (o->at < 0 && o->res.found > 0.0)   /* an input of the region outside the box */
+		o->again = cert_probe(x, k, PREC_FLOAT, o->res.found_n, &nf);
+	o->run = 1;
+}
+
+/* The box's maximum against certify's bracket, in the methods' order. */
+static void report(const study_kernel *k, const cert_box *b, const one_out *o)
+{
+	const cert_result *res = &o->res;
+	const cert_enum *e = &o->e;
+	if (o->run < 0) {
 		CHECK(0, "%s: cert_enumerate failed on %s", b->name, k->name);
 		return;
 	}
-	cert_region_run(x, k, m, PREC_FLOAT, r, &o, &res);
-	CHECK(e.nonfinite == 0 || res.status == CERT_SINGULAR,
+	CHECK(e->nonfinite == 0 || res->status == CERT_SINGULAR,
 	      "%s %s: %lld non-finite outputs in the box, certify's status is not singular", b->name, k->name,
-	      e.nonfinite);
-	CHECK(res.bound >= e.max, "%s %s: bound %a below the box's maximum %a at (%a, %a, %a)", b->name, k->name,
-	      res.bound, e.max, e.n[0], e.n[1], e.n[2]);
-	at = find_input(in, count, res.found_n);
-	if (at >= 0) {
-		CHECK(memcmp(&d[at], &res.found, sizeof res.found) == 0 && res.found <= e.max,
+	      e->nonfinite);
+	CHECK(res->bound >= e->max, "%s %s: bound %a below the box's maximum %a at (%a, %a, %a)", b->name, k->name,
+	      res->bound, e->max, e->n[0], e->n[1], e->n[2]);
+	if (o->at >= 0)
+		CHECK(memcmp(&o->at_d, &res->found, sizeof res->found) == 0 && res->found <= e->max,
 		      "%s %s: found %a at (%a, %a, %a), the box measured %a there (max %a)", b->name, k->name,
-		      res.found, res.found_n[0], res.found_n[1], res.found_n[2], d[at], e.max);
-	} else if (res.found > 0.0) {   /* an input of the region outside the box */
-		int nf = 0;
-		double again = cert_probe(x, k, PREC_FLOAT, res.found_n, &nf);
-		CHECK(memcmp(&again, &res.found, sizeof again) == 0, "%s %s: found %a, measured again %a", b->name,
-		      k->name, res.found, again);
-	}
+		      res->found, res->found_n[0], res->found_n[1], res->found_n[2], o->at_d, e->max);
+	else if (res->found > 0.0)
+		CHECK(memcmp(&o->again, &res->found, sizeof o->again) == 0, "%s %s: found %a, measured again %a", b->name,
+		      k->name, res->found, o->again);
 	printf("  %-23s %5lld  max %-22a %9.4g u  bound %-22a %9.4g u  ratio %8.6g  found %8.4g u%s%s\n",
-	       k->name, e.inputs, e.max, e.max / 0x1p-24, res.bound, res.bound / 0x1p-24,
-	       e.max > 0 ? res.bound / e.max : NAN,
-	       res.found / 0x1p-24, at >= 0 ? " (in box)" : " (outside box)",
-	       res.status == CERT_SINGULAR ? " singular" : "");
+	       k->name, e->inputs, e->max, e->max / 0x1p-24, res->bound, res->bound / 0x1p-24,
+	       e->max > 0 ? res->bound / e->max : NAN,
+	       res->found / 0x1p-24, o->at >= 0 ? " (in box)" : " (outside box)",
+	       res->status == CERT_SINGULAR ? " singular" : "");
 }
 
 /* The methods with an approximate reciprocal square root: their model
@@ -138,10 +158,43 @@ static void one_method(cert_ctx *x, const study_kernel *k, const cm_method *m, c
    ~20 s once per process (seeds.h). */
 static int uses_seed(const char *name) { return strstr(name, "rsqrt") || strstr(name, "invsqrt"); }
 
-static void one_box(cert_ctx *x, const cert_box *b, const study_kernel *ks, int nk, int seeds)
+/* The methods of one box, measured two or more at a time (each thread its
+   own context and defect buffer), then checked and printed in order. */
+static void measure_all(const study_kernel *ks, int nk, int seeds, const double *in, long long count,
+                        const cert_region *r, one_out *out)
 {
-	double *in = NULL, *d;
+	int k, fail = 0;
+#pragma omp parallel
+	{
+		cert_ctx *x = cert_ctx_new();
+		double *d = malloc((size_t)count * sizeof *d);
+#pragma omp for schedule(dynamic, 1)
+		for (k = 0; k < nk; k++) {
+			const cm_method *m = ks[k].m ? cm_find(ks[k].m->name) : NULL;
+			if (!m || !kernel_runs(&ks[k], PREC_FLOAT) || (!seeds && uses_seed(ks[k].name)))
+				continue;
+			if (region_meets_singular(&ks[k], r)) {
+				out[k].meets_singular = 1;
+				continue;
+			}
+			if (!x || !d) {
+#pragma omp atomic write
+				fail = 1;
+				continue;
+			}
+			measure(x, &ks[k], m, in, count, d, r, &out[k]);
+		}
+		free(d);
+		cert_ctx_free(x);
+	}
+	CHECK(!fail, "out of memory");
+}
+
+static void one_box(const cert_box *b, const study_kernel *ks, int nk, int seeds)
+{
+	double *in = NULL;
 	long long count = cert_box_inputs(b, &in), i, outside = 0;
+	one_out *out;
 	cert_region r;
 	int k;
 	CHECK(count > 0, "box %s: %lld inputs", b->name, count);
@@ -153,22 +206,19 @@ static void one_box(cert_ctx *x, const cert_box *b, const study_kernel *ks, int 
 	CHECK(outside == 0, "box %s: %lld inputs outside their own region", b->name, outside);
 	printf("%s: %lld inputs, n.z %a .. %a, phi %.9g .. %.9g deg\n  (%s)\n", b->name, count, r.nz_lo, r.nz_hi,
 	       r.phi_lo, r.phi_hi, b->why);
-	if (!(d = malloc((size_t)count * sizeof *d))) {
+	if (!(out = calloc((size_t)nk, sizeof *out))) {
 		CHECK(0, "out of memory");
 		free(in);
 		return;
 	}
+	measure_all(ks, nk, seeds, in, count, &r, out);
 	for (k = 0; k < nk; k++) {
-		const cm_method *m = ks[k].m ? cm_find(ks[k].m->name) : NULL;
-		if (!m || !kernel_runs(&ks[k], PREC_FLOAT) || (!seeds && uses_seed(ks[k].name)))
-			continue;
-		if (region_meets_singular(&ks[k], &r)) {
+		if (out[k].meets_singular)
 			printf("  %-22s skipped: the region meets its singular set\n", ks[k].name);
-			continue;
-		}
-		one_method(x, &ks[k], m, b, in, count, d, &r);
+		else if (out[k].run)
+			report(&ks[k], b, &out[k]);
 	}
-	free(d);
+	free(out);
 	free(in);
 }
 
@@ -178,9 +228,8 @@ int main(int argc, char **argv)
 	static study_kernel ks[MAXK];
 	int nk = kernels_select(NULL, 0, ks, MAXK), nb, i;
 	const cert_box *b = cert_boxes(&nb);
-	cert_ctx *x = cert_ctx_new();
-	CHECK(nk > 0 && x != NULL, "setup: %d kernels, context %p", nk, (void *)x);
-	if (nk <= 0 || !x)
+	CHECK(nk > 0, "setup: %d kernels", nk);
+	if (nk <= 0)
 		return check_finish("test_enumerate");
 	if (argc > 1 && !seeds) {
 		fprintf(stderr, "usage: test_enumerate [--seeds]\n");
@@ -190,7 +239,6 @@ int main(int argc, char **argv)
 		printf("the rsqrt and invsqrt variants are left out (their seed bounds take ~20 s): --seeds adds them\n");
 	side_crosscheck(20000);
 	for (i = 0; i < nb; i++)
-		one_box(x, &b[i], ks, nk, seeds);
-	cert_ctx_free(x);
+		one_box(&b[i], ks, nk, seeds);
 	return check_finish("test_enumerate");
 }

@@ -217,7 +217,7 @@ static int certify_hits(const onb_method *ms, size_t nm, int prec, const cert_re
 }
 
 int scene_certify(const char *path, char up, int fl, double E, const onb_method *ms, size_t nm,
-                  const double *measured, const char *recommended)
+                  const double *measured, const char *recommended, double *proven)
 {
 	static cert_region reg[MAXREG];
 	unsigned char hit[MAXREG];
@@ -252,7 +252,8 @@ int scene_certify(const char *path, char up, int fl, double E, const onb_method 
 		              : sb[i].bound <= E ? "proven within E" : "not proven within E";
 		if (!cm_find(ms[i].name))
 			continue;
-		printf("  %-24s %12.4g %12.4g  %s\n", ms[i].name, sb[i].singular ? INFINITY : sb[i].bound, measured[i], v);
+		proven[i] = sb[i].singular ? INFINITY : sb[i].bound;
+		printf("  %-24s %12.4g %12.4g  %s\n", ms[i].name, proven[i], measured[i], v);
 		if (recommended && strcmp(recommended, ms[i].name) == 0)
 			nhit = (size_t)-1 - (sb[i].singular || !(sb[i].bound <= E));
 	}

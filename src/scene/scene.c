@@ -700,7 +700,8 @@ static void print_variant(const mesh_normals *mn, const scene_opts *o, const onb
 /* ------------------------------------------------------------------ */
 
 static void csv_rows(FILE *f, const scene_opts *o, const char *space, const onb_method *ms, size_t nm,
-                     const speed_row *const *sp, const speed_table *t, const scene_eval *e, const double *udef)
+                     const speed_row *const *sp, const speed_table *t, const scene_eval *e, const double *udef,
+                     const double *proven)
 {
 	static const char *kind[] = { "", "file", "cache", "reference" };
 	int a, v;
@@ -717,14 +718,20 @@ static void csv_rows(FILE *f, const scene_opts *o, const char *space, const onb_
 					fprintf(f, "%.6g,%.6g,", sp[i]->med, sp[i]->lo);
 				else
 					fprintf(f, "nan,nan,");
-				fprintf(f, "%d,%s,%.6g,%d,%.6e,%s,%s\n", r->ok, rk, sp[i] ? sp[i]->hi : NAN, e->tied[a][v][i], udef[i],
+				fprintf(f, "%d,%s,%.6g,%d,%.6e,%s,%s,", r->ok, rk, sp[i] ? sp[i]->hi : NAN, e->tied[a][v][i], udef[i],
 				        kind[t->kind], space);
+				/* the proof covers the renormalized normals of the file's
+				   own space and up axis */
+				if (proven && !isnan(proven[i]) && a == 0 && v == 1 && strcmp(space, "object") == 0)
+					fprintf(f, "%.6e\n", proven[i]);
+				else
+					fputc('\n', f);
 			}
 }
 
 static int write_csv(const scene_opts *o, const mesh_normals *mn, const mesh_stats *st, const onb_method *ms, size_t nm,
                      const speed_row *const *sp, const speed_table *t, const scene_eval *e, const scene_eval *obj,
-                     const double *udef)
+                     const double *udef, const double *proven)
 {
 	study_out out;
 	if (study_out_open(&out, o->outdir, "scene.csv") != 0)
@@ -740,12 +747,15 @@ static int write_csv(const scene_opts *o, const mesh_normals *mn, const mesh_sta
 	fprintf(out.f, "# rank: among methods within E, those whose speed interval reaches the fastest one's are tied "
 	        "(tied_with_fastest); the most accurate on the scene wins (max_defect, rms_defect), then the registry's order\n");
 	fprintf(out.f, "# uniform_max_defect: max defect on 4096 uniform directions (seed 1) in this precision (inf: non-finite or wrong-handed)\n");
+	fprintf(out.f, "# proven_max: with --certify, the proven bound on the defect over every normal a renderer can interpolate "
+	        "on the file's triangles, on the renormalized rows of the file's own space and up axis (inf: singular there); "
+	        "empty elsewhere\n");
 	fprintf(out.f, "file,precision,up,variant,method,normals,max_defect,rms_defect,max_norm_err,max_dot_err,nonfinite,"
 	        "wrong_handedness,scalar_batch_mismatch,batch_mbases_s,speed_lo,within_tolerance,rank,speed_hi,tied_with_fastest,"
-	        "uniform_max_defect,speed_source,space\n");
-	csv_rows(out.f, o, mn->world ? "world" : "object", ms, nm, sp, t, e, udef);
+	        "uniform_max_defect,speed_source,space,proven_max\n");
+	csv_rows(out.f, o, mn->world ? "world" : "object", ms, nm, sp, t, e, udef, proven);
 	if (obj)
-		csv_rows(out.f, o, "object", ms, nm, sp, t, obj, udef);
+		csv_rows(out.f, o, "object", ms, nm, sp, t, obj, udef, proven);
 	if (study_out_commit(&out) != 0)
 		return -1;
 	printf("wrote %s\n", out.path);
@@ -763,6 +773,28 @@ static int refresh_only(const scene_opts *o)
 		printf("  %-24s %9.1f M/s [%.1f, %.1f]\n", t.rows[i].method, t.rows[i].med, t.rows[i].lo, t.rows[i].hi);
 	speed_free(&t);
 	return 0;
+}
+
+/* --certify: the proven bounds over the scene's patches into proven[]
+   (NaN for a method without a model), printed beside the measured maxima
+   of variant v. */
+static int certify(const scene_opts *o, const onb_method *ms, size_t nm, const scene_eval *e, int v, double *proven)
+{
+	double *measured = malloc((nm ? nm : 1) * sizeof *measured);
+	size_t i;
+	int rc;
+	if (!measured) {
+		study_error("scene: out of memory");
+		return -1;
+	}
+	for (i = 0; i < nm; i++) {
+		measured[i] = e->r[0][v][i].max_defect;
+		proven[i] = NAN;
+	}
+	rc = scene_certify(o->file, o->up, o->fl, o->tol, ms, nm, measured,
+	                   e->best[0][v] >= 0 ? ms[e->best[0][v]].name : NULL, proven);
+	free(measured);
+	return rc;
 }
 
 /* With --world: the object-space recommendation too, from a second read. */
@@ -819,7 +851,7 @@ int cmd_scene(int argc, char **argv)
 	size_t nm, i;
 	const onb_method *ms;
 	const speed_row **sp = NULL;
-	double *udef = NULL;
+	double *udef = NULL, *proven = NULL;
 	int rc = ONB_EXIT_USAGE, v;
 
 	memset(&o, 0, sizeof o);
@@ -854,7 +886,8 @@ int cmd_scene(int argc, char **argv)
 	rc = 1;
 	sp = calloc(nm ? nm : 1, sizeof *sp);
 	udef = calloc(nm ? nm : 1, sizeof *udef);
-	if (!sp || !udef || mesh_classify(&mn, o.fl, 0, &st) != 0 || shape_of(&mn, o.fl, &sh) != 0
+	proven = calloc(nm ? nm : 1, sizeof *proven);
+	if (!sp || !udef || !proven || mesh_classify(&mn, o.fl, 0, &st) != 0 || shape_of(&mn, o.fl, &sh) != 0
 	    || uniform_defects(ms, nm, o.fl, udef) != 0) {
 		study_error("scene: out of memory for %zu normals", mn.count);
 		goto out;
@@ -880,14 +913,10 @@ int cmd_scene(int argc, char **argv)
 	       o.world ? ", world space" : "", o.fl ? "float" : "double", o.up, o.tol,
 	       t.kind == SPEED_CACHE ? "this machine's cache" : t.kind == SPEED_FILE ? "--speed" : "the reference run",
 	       e.best[0][v] >= 0 ? ms[e.best[0][v]].name : "none");
-	if (write_csv(&o, &mn, &st, ms, nm, sp, &t, &e, o.world ? &obj : NULL, udef) != 0)
+	if (o.certify && certify(&o, ms, nm, &e, v, proven) != 0)
 		goto out;
-	if (o.certify) {
-		for (i = 0; i < nm; i++)
-			udef[i] = e.r[0][v][i].max_defect;   /* the measured maxima, beside the proofs */
-		if (scene_certify(o.file, o.up, o.fl, o.tol, ms, nm, udef, e.best[0][v] >= 0 ? ms[e.best[0][v]].name : NULL) != 0)
-			goto out;
-	}
+	if (write_csv(&o, &mn, &st, ms, nm, sp, &t, &e, o.world ? &obj : NULL, udef, o.certify ? proven : NULL) != 0)
+		goto out;
 	rc = 0;
 out:
 	eval_free(&e);
@@ -895,6 +924,7 @@ out:
 	speed_free(&t);
 	free(sp);
 	free(udef);
+	free(proven);
 	mesh_free(&mn);
 	return rc;
 }

@@ -48,6 +48,7 @@ FIGS=$OUT/figures PCDIR=$OUT NOSVG=1 sh scripts/plots.sh "$OUT" > "$OUT/plots.lo
 	echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 	echo "commands: scripts/wild-run.sh (sweep --grid 16x32; bench; table; certify --budget ${BUDGET:-6000} --starts worst.csv; plots.sh, PNG only)"
 } > "$OUT/machine.txt"
+export REF="$PWD/$OUT" CERT="$PWD/results/certify/certify.csv $PWD/$OUT/certify.csv"
 sh scripts/wild.sh --update docs/wild.md
 sh scripts/wild.sh --readme --update README.md
 echo "wild: $(du -sh "$OUT" | cut -f1) in $OUT"

@@ -593,10 +593,18 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	} else {
 		mpfi_interv_d(m->t1, b->z_lo, b->z_hi);             /* z             */
 	}
+	/* 1 - z^2 two ways, both enclosures: (1 - z)(1 + z) keeps its relative
+	   accuracy near the poles, 1 - z^2 (one use of z) is tight near the
+	   equator, where the product's two factors move against each other */
 	mpfi_d_sub(m->s1, 1.0, m->t1);
 	mpfi_add_d(m->s2, m->t1, 1.0);
 	mpfi_mul(m->s1, m->s1, m->s2);
-	if (!mpfi_is_nonneg(m->s1))
+	mpfi_sqr(m->s2, m->t1);
+	mpfi_d_sub(m->s2, 1.0, m->s2);
+	mpfi_intersect(m->s1, m->s1, m->s2);
+	mpfi_interv_d(m->s2, 0.0, 1.0);                         /* |z| <= 1      */
+	mpfi_intersect(m->s1, m->s1, m->s2);
+	if (mpfi_is_empty(m->s1))
 		mpfi_interv_d(m->s1, 0.0, 1.0);
 	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
 	if (b->has_zpoint)

@@ -51,6 +51,7 @@ typedef struct {
 	   within the band) and the branches taken so far (has_br: it is set);
 	   input, which input (0..2, or -1). */
 	int has_br, input;
+	double in_h;     /* inputs: |n_i - u_i| <= in_h (0: not yet set)    */
 	mpfi_t br;
 } mval;
 
@@ -154,6 +155,7 @@ static cv fresh(mvf *m, int fmt)
 	x->rsqrt_of = x->cvt_of = -1;
 	x->has_br = 0;
 	x->input = -1;
+	x->in_h = 0.0;
 	return m->n++;
 }
 
@@ -669,14 +671,24 @@ static void band_constraint(mvf *m, const mvf_box *b, cv iz)
 }
 
 /* An input's value for the arithmetic after a constraint: the mean value
-   form evaluates the model at n_i(theta e) = u_i (1 + theta d_i), between
-   u_i and the actual n_i, and the actual n_i lies in br; so hull(U_i, br)
-   encloses every point the form needs. */
+   form evaluates the model at n_i(theta e) = u_i + theta w_i, between u_i
+   and the actual n_i; the actual n_i lies in br, and |w_i| <= in_h, so
+   u_i lies in U_i and within in_h of br: the hull of that and br encloses
+   every point the form needs (a branch on n.y near -1 then keeps the u.y
+   below the threshold out of the formula's side). */
 static void refine_input(mvf *m, mval *x)
 {
 	if (x->input < 0 || !x->has_br || mpfi_is_empty(x->br))
 		return;
-	mpfi_union(m->t2, m->u[x->input], x->br);
+	mpfi_set(m->t2, m->u[x->input]);
+	if (x->in_h > 0.0) {
+		mpfi_interv_d(m->t3, -x->in_h, x->in_h);
+		mpfi_add(m->t3, m->t3, x->br);
+		mpfi_intersect(m->t3, m->t3, m->t2);
+		if (!mpfi_is_empty(m->t3))
+			mpfi_set(m->t2, m->t3);
+	}
+	mpfi_union(m->t2, m->t2, x->br);
 	mpfi_intersect(x->v, x->v, m->t2);
 }
 
@@ -729,6 +741,9 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 		mval *x = &m->val[in[i]];
 		mpfi_set(m->s2, x->v);                              /* u_i           */
 		if (b->tolerance >= 0) {
+			mpfi_mag(m->f1, m->s2);
+			x->in_h = mpfr_get_d(m->f1, MPFR_RNDU) * b->tolerance;
+			x->in_h = x->in_h > 0.0 ? nextafter(x->in_h, INFINITY) : 0.0;
 			set_grad(x, t_var, m->s2);
 			mpfi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
 			mpfi_mul(x->v, x->v, m->t1);
@@ -739,6 +754,7 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 			double h = half_ulp_of(m, x->v, b->prec);
 			(void)u;
 			if (h > 0.0) {
+				x->in_h = h;
 				set_grad(x, new_var(m, h), m->one);
 				add_sym(m, x, h);
 			}

@@ -112,6 +112,8 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	c->seen = 0;
 	c->infeasible = 0;
 	c->nonzero = 0;
+	c->zero_n = c->norm_n = c->zero_late = 0;
+	c->late_var = 0;
 	c->failed = 0;
 	mvf_begin(c->m, x, mode, n);
 	cm_run(c, m, x->prec, n, out);
@@ -180,16 +182,23 @@ static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
 {
 	cv q[NCQ];
-	span direct[NCQ], centre[NCQ];
-	double lin[NCQ], best = 0.0;
-	unsigned nonzero;
+	span direct[NCQ], centre[NCQ], nn;
+	double lin[NCQ], lin_e[NCQ], best = 0.0;
+	unsigned nonzero, zero_n, norm_n;
 	int k, known = 0, r = run_path(c, m, x, path, MVF_FULL, q);
 	if (r == 0)
 		return -1.0;
 	if (r < 0)
 		return values_bound(c, m, x, path);
-	for (k = 0; k < NCQ; k++)
+	for (k = 0; k < NCQ; k++) {
 		mvf_bounds(c->m, q[k], &direct[k].lo, &direct[k].hi, &lin[k]);
+		lin_e[k] = mvf_lin_arith(c->m, q[k]);
+		if (!mvf_input_grad_ok(c->m))
+			lin[k] = INFINITY;
+	}
+	mvf_norm_n(c->m, &nn.lo, &nn.hi);
+	zero_n = (m->zero_any_n | c->zero_n) & ~c->nonzero;
+	norm_n = c->norm_n & ~c->nonzero & ~zero_n;
 	nonzero = c->nonzero;   /* n.z given: n is not unit at e = 0 */
 	if (x->has_zpoint)
 		nonzero |= CQ_ALL & ~m->zero_any_n;
@@ -203,6 +212,18 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 			s = meet(s, widen(zero, lin[k]));
 		} else if (known) {
 			s = meet(s, widen(centre[k], lin[k]));
+		}
+		/* exact in n: Q(n, e) = Q(n, 0) + sum over the arithmetic's terms,
+		   with Q(n, 0) = 0 or |n|^2 - 1 */
+		if (c->zero_late & ~c->nonzero & (1u << k)) {
+			span zero = { 0.0, 0.0 };
+			s = meet(s, widen(zero, mvf_lin_from(c->m, q[k], c->late_var)));
+		}
+		if (zero_n & (1u << k)) {
+			span zero = { 0.0, 0.0 };
+			s = meet(s, widen(zero, lin_e[k]));
+		} else if (norm_n & (1u << k)) {
+			s = meet(s, widen(nn, lin_e[k]));
 		}
 		v = quantity_bound(k, s);
 		if (!(v <= best))

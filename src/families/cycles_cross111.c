@@ -75,6 +75,8 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	const int lt_y = cm_branch(c, 0, CM_LT, n[0], n[1]), gt_y = cm_branch(c, 1, CM_GT, n[0], n[1]);
 	const int lt_z = cm_branch(c, 2, CM_LT, n[0], n[2]), gt_z = cm_branch(c, 3, CM_GT, n[0], n[2]);
 	cv a[3], l;
+	/* b1 = a/|a| with a orthogonal to n, b2 = n x b1: |b2| = |n| */
+	cm_formula_exact_n(c, 0, 1u << CQ_N2);
 	a[0] = SUB(n[2], n[1]);
 	if (lt_y || gt_y || lt_z || gt_z) {
 		a[1] = SUB(n[0], n[2]); a[2] = SUB(n[1], n[0]);
@@ -83,6 +85,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	l = cm_sqrt(c, P, mk_dot3(c, P, a, a));
 	out[0] = DIV(a[0], l); out[1] = DIV(a[1], l); out[2] = DIV(a[2], l);
+	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
 	if (m->norm != ONB__EVAL_FMSUB) {
 		mk_cross(c, P, n, out, out + 3);
 		return;

@@ -66,6 +66,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	const cv zp = MUL(n[2], K(P == CM_F32 ? 1e-5 : 1e-12)); /* |RN(z p)| = RN(|z| p) */
 	cv r;
 	(void)m;
+	cm_formula_exact_n(c, 0, 1u << CQ_N2);   /* b1 unit and orthogonal to n, b2 = n x b1 */
 	if (cm_branch_abs(c, 0, CM_GT, n[0], zp) || cm_branch_abs(c, 1, CM_GT, n[1], zp)) {
 		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[1], n[1]))));
 		out[0] = MUL(cm_neg(c, n[1]), r); out[1] = MUL(n[0], r); out[2] = K(0.0);
@@ -73,6 +74,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
 		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
 	}
+	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
 	mk_cross(c, P, n, out, out + 3);
 }
 

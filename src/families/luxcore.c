@@ -67,10 +67,12 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	if (cm_branch(c, 0, CM_LT, len, cm_cst(c, 1e-5))) {
 		cm_formula_nonzero(c, CQ_ALL);
 		v[0] = K(1.0); v[1] = K(0.0); v[2] = K(0.0);
-	} else {
+	} else {   /* b2 = (-y, x, 0)/|.|, b1 = n x b2: only |b1| depends on |n| */
+		cm_formula_exact_n(c, ZN_UNIT_B2, 1u << CQ_N1);
 		v[0] = DIV(cm_neg(c, n[1]), len); v[1] = DIV(n[0], len); v[2] = K(0.0);
 	}
 	out[3] = MUL(v[0], K(1.0)); out[4] = MUL(v[1], K(1.0)); out[5] = MUL(v[2], K(1.0));
+	cm_formula_zero_after(c, (1u << CQ_D1N) | (1u << CQ_D12));   /* b1 = n x b2 */
 	mk_cross(c, P, n, out + 3, out);
 }
 

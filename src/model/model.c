@@ -177,6 +177,7 @@ int cm_branch(cm *c, int id, int op, cv a, cv b)
 	mvf_compare(c->m, op, 0, a, b, &t, &f);
 	t = take(c, id, 0, f, t);
 	mvf_constrain(c->m, op, 0, a, b, t);
+	mvf_note_strict(c->m, op, 0, a, b, t);
 	return t;
 }
 
@@ -186,7 +187,9 @@ int cm_branch_abs(cm *c, int id, int op, cv a, cv b)
 	if (c->backend == CM_EXEC)
 		return op == CM_LT ? fabs(c->x[a]) < fabs(c->x[b]) : fabs(c->x[a]) > fabs(c->x[b]);
 	mvf_compare(c->m, op, 1, a, b, &t, &f);
-	return take(c, id, 0, f, t);
+	t = take(c, id, 0, f, t);
+	mvf_note_strict(c->m, op, 1, a, b, t);
+	return t;
 }
 
 int cm_branch_sign(cm *c, int id, cv a)
@@ -203,4 +206,18 @@ int cm_branch_sign(cm *c, int id, cv a)
 void cm_formula_nonzero(cm *c, unsigned mask)
 {
 	c->nonzero |= mask;
+}
+
+void cm_formula_zero_after(cm *c, unsigned zero)
+{
+	if (c->backend != CM_MVF)
+		return;
+	c->zero_late = zero;
+	c->late_var = mvf_nvar(c->m);
+}
+
+void cm_formula_exact_n(cm *c, unsigned zero, unsigned norm)
+{
+	c->zero_n |= zero;
+	c->norm_n |= norm & CQ_LENGTHS;
 }

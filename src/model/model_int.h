@@ -27,6 +27,14 @@ struct cm {
 	int infeasible;        /* CM_MVF: the path takes a side no point can */
 	unsigned nonzero;      /* quantities not zero in exact arithmetic on
 	                          the unit sphere along this path (CQ_ bits)  */
+	unsigned zero_n;       /* zero in exact arithmetic for every n, unit
+	                          or not, along this path                     */
+	unsigned norm_n;       /* lengths |b|^2 - 1 equal to |n|^2 - 1 in exact
+	                          arithmetic for every n, along this path     */
+	unsigned zero_late;    /* zero for every n and every value computed
+	                          before the error term late_var, given exact
+	                          arithmetic from there on                    */
+	int late_var;
 };
 
 /* CM_EXEC: start a run on input n (rounded to format f); in[] receives the
@@ -37,6 +45,18 @@ void cm_exec_begin(cm *c, int f, const double n[3], cv in[3]);
    not identically zero in exact arithmetic on unit input (e.g. the
    lengths of an unnormalized basis, everything in Frisvad's fallback). */
 void cm_formula_nonzero(cm *c, unsigned mask);
+/* Along the current path, in exact arithmetic and for every n (unit or
+   not): the quantities in `zero` are 0, and the lengths in `norm` have
+   |b|^2 - 1 = |n|^2 - 1 (b = n x b1 with b1 a unit vector orthogonal to
+   n).  Their bound then needs no expansion in the input's own rounding:
+   Q(n, e) = Q(n, 0) + sum over the arithmetic's e_k alone. */
+void cm_formula_exact_n(cm *c, unsigned zero, unsigned norm);
+/* From here on, the quantities in `zero` are 0 in exact arithmetic
+   whatever n and the values computed so far are (b2 = n x b1 is orthogonal
+   to n and to b1 for any b1): only the error terms of the operations that
+   follow enter their bound. */
+void cm_formula_zero_after(cm *c, unsigned zero);
+int  mvf_nvar(const mvf *m);
 
 /* mvf.c */
 enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG };
@@ -52,5 +72,6 @@ void mvf_compare(mvf *m, int op, int absolute, cv a, cv b, int *can_true, int *c
 void mvf_sign_possible(mvf *m, cv a, int *can_set, int *can_clear);
 void mvf_constrain(mvf *m, int op, int absolute, cv a, cv b, int side);
 void mvf_constrain_sign(mvf *m, cv a, int set);
+void mvf_note_strict(mvf *m, int op, int absolute, cv a, cv b, int side);
 
 #endif

@@ -53,13 +53,36 @@ typedef struct {
 	int has_br, input;
 	double in_h;     /* inputs: |n_i - u_i| <= in_h (0: not yet set)    */
 	mpfi_t br;
+	/* Scale-free normalization (norm_tag, norm_out): base, the value with
+	   negations and widenings stripped (itself for others); theta_free: no
+	   gradient in the arithmetic's error terms (a function of n alone).
+	   What the actual value is known to be (not the points between u and
+	   n): nonzero, an integer multiple of quantum (0: unknown), at least
+	   act_lo in magnitude; sub_a, sub_b: an exact a - b (-1: not one). */
+	int base, bsign, theta_free, nonzero, opaque;
+	double quantum, act_lo;
+	cv sub_a, sub_b;
+	/* A norm tag (tg_p != 0): the value is (S (1 + eps + rho))^(p/2) (1 + o),
+	   S = sum of the squares of the tg_nb base values tg_b (theta-free),
+	   eps in [tg_lo, tg_hi], |rho S| <= tg_abs (roundings that may
+	   underflow), o in [tg_olo, tg_ohi]; p = 2, 1 or -1.  tg_var: the
+	   error term of the common factor of its outputs (-1: none yet). */
+	int tg_p, tg_nb, tg_var;
+	cv tg_b[3];
+	double tg_lo, tg_hi, tg_abs, tg_olo, tg_ohi, tg_glo, tg_ghi;
 } mval;
 
 struct mvf {
 	mval val[CM_MAXV];
 	int n;
 	double r[MV_MAXVAR];   /* the range of each error term */
+	unsigned char in_var[MV_MAXVAR]; /* a term of the input (or its offset) */
 	int nvar;
+	int grad_lost;         /* the input terms' gradients are unbounded */
+	double nh[3];          /* |n_i - u_i| <= nh[i] */
+	double tol;            /* the box's tolerance (< 0: roundings) */
+	cv st_a[16], st_b[16]; /* a != b for the actual values (branches) */
+	int nst;
 	int failed;
 	int zero_e;            /* every e is 0: values only, no gradients */
 	int nograd;            /* values over the whole box, no gradients */
@@ -156,6 +179,15 @@ static cv fresh(mvf *m, int fmt)
 	x->has_br = 0;
 	x->input = -1;
 	x->in_h = 0.0;
+	x->base = m->n;
+	x->bsign = 1;
+	x->theta_free = 0;
+	x->nonzero = 0;
+	x->opaque = 0;
+	x->quantum = x->act_lo = 0.0;
+	x->sub_a = x->sub_b = -1;
+	x->tg_p = 0;
+	x->tg_var = -1;
 	return m->n++;
 }
 
@@ -168,6 +200,7 @@ static int new_var(mvf *m, double range)
 		return MV_MAXVAR - 1;
 	}
 	m->r[m->nvar] = range;
+	m->in_var[m->nvar] = 0;
 	return m->nvar++;
 }
 
@@ -211,6 +244,9 @@ cv mvf_cst(mvf *m, double v)
 	mpfi_set_d(m->val[i].v, v);
 	m->val[i].is_cst = 1;
 	m->val[i].cval = v;
+	m->val[i].theta_free = 1;
+	m->val[i].nonzero = v != 0.0;
+	m->val[i].act_lo = fabs(v);
 	return i;
 }
 
@@ -444,13 +480,591 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 	}
 }
 
+/* ---- Scale-free normalization ----
+   A kernel that normalizes a vector a computed exactly from n (a function
+   of n alone: differences Sterbenz proves exact, negations, the inputs
+   themselves) divides a_i by l = |a| (1 + g) or multiplies it by
+   f = (1 + g)/|a|, g the relative error of the sum of squares, the square
+   root and the reciprocal.  Then b_i = (a_i/|a|)(1 + g)(1 + d_i): the unit
+   vector a/|a| times relative errors whose size does not depend on |a|.
+   Intervals of a_i and of l over a box apart cannot see that when the
+   box's |a| ranges over orders of magnitude or reaches 0 (a normalization
+   of (1,1,1) x n next to the diagonal): there a_i/l is a wide or unbounded
+   interval.  So the operations carry a norm tag (mval.tg_*): a sum of the
+   squares of theta-free values is S (1 + eps) + alpha, its square root
+   and reciprocal powers of that, and the product or quotient of a tagged
+   value's base component by it becomes (a_i/|a|) (1 + g), a_i/|a| in
+   [-1, 1] from the squares of the components (norm_out), g one error term
+   shared by the three components. */
+
+static double round_up_d(double x) { return nextafter(x, INFINITY); }
+static double tiny_of(int f) { return f == CM_F32 ? 0x1p-150 : 0x1p-1074; }
+
+/* (1 + a)(1 + b) - 1 and (1 + a)/(1 + b) - 1, rounded up or down */
+static double rel_mul(mvf *m, double a, double b, int up)
+{
+	const mpfr_rnd_t d = up ? MPFR_RNDU : MPFR_RNDD;
+	mpfr_set_d(m->f1, a, MPFR_RNDN);
+	mpfr_add_ui(m->f1, m->f1, 1, d);
+	mpfr_set_d(m->f2, b, MPFR_RNDN);
+	mpfr_add_ui(m->f2, m->f2, 1, d);
+	mpfr_mul(m->f1, m->f1, m->f2, d);
+	mpfr_sub_ui(m->f1, m->f1, 1, d);
+	return mpfr_get_d(m->f1, d);
+}
+
+static double rel_div(mvf *m, double a, double b, int up)
+{
+	const mpfr_rnd_t d = up ? MPFR_RNDU : MPFR_RNDD;
+	mpfr_set_d(m->f1, a, MPFR_RNDN);
+	mpfr_add_ui(m->f1, m->f1, 1, d);
+	mpfr_set_d(m->f2, b, MPFR_RNDN);
+	mpfr_add_ui(m->f2, m->f2, 1, up ? MPFR_RNDD : MPFR_RNDU);
+	mpfr_div(m->f1, m->f1, m->f2, d);
+	mpfr_sub_ui(m->f1, m->f1, 1, d);
+	return mpfr_get_d(m->f1, d);
+}
+
+/* a != b is known for the actual values (a branch took a strict side) */
+static int strict_pair(const mvf *m, cv a, cv b)
+{
+	int i;
+	for (i = 0; i < m->nst; i++)
+		if ((m->st_a[i] == a && m->st_b[i] == b) || (m->st_a[i] == b && m->st_b[i] == a))
+			return 1;
+	return 0;
+}
+
+static void note_lo(mvf *m, cv i, double lo)
+{
+	mval *x = &m->val[i], *y = &m->val[x->base];
+	if (!(lo > 0.0))
+		return;
+	x->nonzero = y->nonzero = 1;
+	if (lo > x->act_lo)
+		x->act_lo = lo;
+	if (lo > y->act_lo)
+		y->act_lo = lo;
+}
+
+/* What a branch's side says about the actual values: a strict a < b or
+   a > b (a != b), |a| > |b| (|a| >= mig |b|, a != 0), a >= c > 0. */
+void mvf_note_strict(mvf *m, int op, int absolute, cv ia, cv ib, int side)
+{
+	cv lo = op == CM_LT ? ia : ib, hi = op == CM_LT ? ib : ia;   /* side 1: lo < hi */
+	mval *a = &m->val[lo], *b = &m->val[hi];
+	if (!side) {   /* hi <= lo: lo >= c > 0 or hi <= c < 0 with c a constant */
+		if (absolute)
+			return;
+		if (b->is_cst && b->cval > 0.0)
+			note_lo(m, lo, b->cval);
+		if (a->is_cst && a->cval < 0.0)
+			note_lo(m, hi, -a->cval);
+		return;
+	}
+	if (absolute) {   /* |lo| < |hi| */
+		mpfi_mig(m->f1, a->v);
+		note_lo(m, hi, mpfr_get_d(m->f1, MPFR_RNDD));
+		m->val[hi].nonzero = m->val[m->val[hi].base].nonzero = 1;
+		return;
+	}
+	if (b->is_cst && b->cval <= 0.0)
+		note_lo(m, lo, -b->cval);
+	if (a->is_cst && a->cval >= 0.0)
+		note_lo(m, hi, a->cval);
+	if (b->is_cst && b->cval == 0.0)
+		m->val[lo].nonzero = m->val[a->base].nonzero = 1;
+	if (a->is_cst && a->cval == 0.0)
+		m->val[hi].nonzero = m->val[b->base].nonzero = 1;
+	if (m->nst < 16) {
+		m->st_a[m->nst] = a->base;
+		m->st_b[m->nst++] = b->base;
+	}
+}
+
+/* The smallest |v| of an actual nonzero value v (0: unknown), and 1 in
+   *nz when v != 0 is known. */
+static double actual_lo(const mvf *m, const mval *x, int *nz)
+{
+	double lo = x->act_lo;
+	*nz = x->nonzero || x->act_lo > 0.0 ||
+	      (x->sub_a >= 0 && strict_pair(m, m->val[x->sub_a].base, m->val[x->sub_b].base));
+	if (*nz && x->quantum > lo)
+		lo = x->quantum;
+	return lo;
+}
+
+/* Bookkeeping after r = op(a, b): theta-freeness, bases and signs, what
+   the actual value is known to be, and the norm tags. */
+static void track(mvf *m, int op, int f, int exact, cv ir, cv ia, cv ib)
+{
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia], *b = ib >= 0 ? &m->val[ib] : NULL;
+	const double u = m->zero_e ? 0.0 : unit_round(f), eta = m->zero_e ? 0.0 : tiny_of(f);
+	exact = exact || m->zero_e;
+	r->theta_free = exact && a->theta_free && (!b || b->theta_free);
+	if (op == MVF_NEG || op == MVF_CVT || ((op == MVF_ADD || op == MVF_SUB) && b && is_zero(b))) {
+		if (op == MVF_CVT && !exact)
+			return;
+		r->base = a->base;
+		r->bsign = op == MVF_NEG ? -a->bsign : a->bsign;
+		r->nonzero = a->nonzero;
+		r->quantum = a->quantum;
+		r->act_lo = a->act_lo;
+		r->sub_a = a->sub_a;
+		r->sub_b = a->sub_b;
+		if (op == MVF_CVT && a->tg_p) {   /* an exact widening keeps the tag */
+			memcpy(r->tg_b, a->tg_b, sizeof r->tg_b);
+			r->tg_p = a->tg_p; r->tg_nb = a->tg_nb;
+			r->tg_lo = a->tg_lo; r->tg_hi = a->tg_hi; r->tg_abs = a->tg_abs;
+			r->tg_olo = a->tg_olo; r->tg_ohi = a->tg_ohi;
+		}
+		return;
+	}
+	if ((op == MVF_ADD || op == MVF_SUB) && b && is_zero(a) && exact) {
+		r->base = b->base;
+		r->bsign = op == MVF_SUB ? -b->bsign : b->bsign;
+		r->nonzero = b->nonzero;
+		r->quantum = b->quantum;
+		r->act_lo = b->act_lo;
+		return;
+	}
+	if (op == MVF_SUB && exact && r->theta_free) {   /* Sterbenz: on the grid of both */
+		if (a->quantum > 0.0 && b->quantum > 0.0)
+			r->quantum = a->quantum < b->quantum ? a->quantum : b->quantum;
+		r->sub_a = ia;
+		r->sub_b = ib;
+		return;
+	}
+	if (op == MVF_MUL && ia == ib && a->theta_free) {   /* a^2 (1 + d) + eta */
+		r->tg_p = 2; r->tg_nb = 1; r->tg_b[0] = a->base;
+		r->tg_lo = exact ? 0.0 : -u; r->tg_hi = exact ? 0.0 : u;
+		r->tg_abs = exact ? 0.0 : eta;
+		r->tg_olo = r->tg_ohi = 0.0;
+		return;
+	}
+	if (op == MVF_ADD && b && a->tg_p == 2 && b->tg_p == 2 && a->tg_nb + b->tg_nb <= 3) {
+		int i, j;
+		for (i = 0; i < a->tg_nb; i++)
+			for (j = 0; j < b->tg_nb; j++)
+				if (a->tg_b[i] == b->tg_b[j])
+					return;
+		r->tg_p = 2;
+		r->tg_nb = a->tg_nb + b->tg_nb;
+		memcpy(r->tg_b, a->tg_b, (size_t)a->tg_nb * sizeof *r->tg_b);
+		memcpy(r->tg_b + a->tg_nb, b->tg_b, (size_t)b->tg_nb * sizeof *r->tg_b);
+		/* S1 (1 + e1) + S2 (1 + e2) = (S1 + S2)(1 + e), e in hull(e1, e2) */
+		r->tg_lo = rel_mul(m, fmin(a->tg_lo, b->tg_lo), exact ? 0.0 : -u, 0);
+		r->tg_hi = rel_mul(m, fmax(a->tg_hi, b->tg_hi), exact ? 0.0 : u, 1);
+		r->tg_abs = round_up_d(round_up_d(a->tg_abs + b->tg_abs) * (1.0 + 2 * u));
+		if (!exact)
+			r->tg_abs = round_up_d(r->tg_abs + eta);
+		r->tg_olo = r->tg_ohi = 0.0;
+		return;
+	}
+	if ((op == MVF_SQRT && a->tg_p == 2) || (op == MVF_DIV && is_cst(a, 1.0) && b && b->tg_p == 1)) {
+		const mval *t = op == MVF_SQRT ? a : b;
+		memcpy(r->tg_b, t->tg_b, sizeof r->tg_b);
+		r->tg_nb = t->tg_nb;
+		r->tg_lo = t->tg_lo; r->tg_hi = t->tg_hi; r->tg_abs = t->tg_abs;
+		if (op == MVF_SQRT) {   /* a square root is normal or 0: relative */
+			r->tg_p = 1;
+			r->tg_olo = exact ? 0.0 : -u; r->tg_ohi = exact ? 0.0 : u;
+		} else {                /* 1/l: the reciprocal of (1 + o), rounded */
+			r->tg_p = -1;
+			r->tg_olo = rel_div(m, exact ? 0.0 : -u, t->tg_ohi, 0);
+			r->tg_ohi = rel_div(m, exact ? 0.0 : u, t->tg_olo, 1);
+		}
+	}
+}
+
+/* A lower bound on S = |a|^2 for the actual a of tag t (0: none known):
+   each component's square at least mig^2 of its interval, or the square of
+   what the branches and its grid say; and a length l >= act_lo > 0 known
+   from a branch on it gives S (1 + eps) + alpha >= (act_lo / (1 + o))^2. */
+static double norm_lact(mvf *m, const mval *t)
+{
+	int j, nz;
+	mpfr_set_zero(m->f2, 1);
+	for (j = 0; j < t->tg_nb; j++) {
+		const mval *b = &m->val[t->tg_b[j]];
+		double lo = actual_lo(m, b, &nz);
+		mpfi_mig(m->f1, b->v);
+		if (mpfr_cmp_d(m->f1, lo) < 0)
+			mpfr_set_d(m->f1, lo, MPFR_RNDD);
+		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
+		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDD);
+	}
+	if (t->tg_p == 1 && t->act_lo > 0.0) {
+		mpfr_set_d(m->f1, t->act_lo, MPFR_RNDD);
+		mpfr_div_d(m->f1, m->f1, nextafter(1.0 + t->tg_ohi, INFINITY), MPFR_RNDD);
+		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
+		mpfr_sub_d(m->f1, m->f1, t->tg_abs, MPFR_RNDD);
+		mpfr_div_d(m->f1, m->f1, nextafter(1.0 + t->tg_hi, INFINITY), MPFR_RNDD);
+		if (mpfr_cmp(m->f1, m->f2) > 0)
+			mpfr_set(m->f2, m->f1, MPFR_RNDD);
+	}
+	return mpfr_get_d(m->f2, MPFR_RNDD);
+}
+
+/* The common factor C of tag t's outputs, into m->s1: (1 + o)/sqrt(1 + e)
+   for a reciprocal length (p = -1), 1/((1 + o) sqrt(1 + e)) for a length,
+   e in [eps_lo - rho, eps_hi + rho], rho = alpha/S <= tg_abs/L.  0 when no
+   bound (an absolute term and no lower bound on S). */
+static int norm_factor(mvf *m, const mval *t)
+{
+	double rho = 0.0, L;
+	if (t->tg_abs > 0.0) {
+		L = norm_lact(m, t);
+		if (!(L > 0.0))
+			return 0;
+		mpfr_set_d(m->f1, t->tg_abs, MPFR_RNDU);
+		mpfr_div_d(m->f1, m->f1, L, MPFR_RNDU);
+		rho = mpfr_get_d(m->f1, MPFR_RNDU);
+	}
+	mpfr_set_d(m->f1, t->tg_lo, MPFR_RNDD);
+	mpfr_sub_d(m->f1, m->f1, rho, MPFR_RNDD);
+	mpfr_add_ui(m->f1, m->f1, 1, MPFR_RNDD);
+	mpfr_set_d(m->f2, t->tg_hi, MPFR_RNDU);
+	mpfr_add_d(m->f2, m->f2, rho, MPFR_RNDU);
+	mpfr_add_ui(m->f2, m->f2, 1, MPFR_RNDU);
+	if (mpfr_sgn(m->f1) <= 0)
+		return 0;
+	mpfi_interv_fr(m->s1, m->f1, m->f2);
+	mpfi_sqrt(m->s1, m->s1);                          /* sqrt(1 + e)      */
+	mpfi_interv_d(m->s2, t->tg_olo, t->tg_ohi);
+	mpfi_add_d(m->s2, m->s2, 1.0);                    /* 1 + o            */
+	if (t->tg_p == -1) {
+		mpfi_div(m->s1, m->s2, m->s1);
+	} else {
+		mpfi_mul(m->s1, m->s1, m->s2);
+		mpfi_inv(m->s1, m->s1);
+	}
+	return 1;
+}
+
+/* b_j / |a| over the box into out: its square from the squares of the
+   components, P/(P + Q) (increasing in P, decreasing in Q), its sign from
+   b_j's; sign flips it. */
+static void norm_unit(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
+{
+	int k;
+	mpfr_t plo, phi;
+	mpfi_sqr(m->t1, m->val[t->tg_b[j]].v);            /* P */
+	mpfi_set_d(m->t2, 0.0);
+	for (k = 0; k < t->tg_nb; k++)
+		if (k != j) {
+			mpfi_sqr(m->t3, m->val[t->tg_b[k]].v);
+			mpfi_add(m->t2, m->t2, m->t3);          /* Q */
+		}
+	mpfr_inits2(MV_PREC, plo, phi, (mpfr_ptr)0);
+	mpfi_get_left(plo, m->t1);
+	mpfi_get_right(m->f1, m->t2);
+	mpfr_add(m->f1, m->f1, plo, MPFR_RNDU);
+	if (mpfr_zero_p(plo) || !mpfr_number_p(m->f1))
+		mpfr_set_zero(plo, 1);
+	else
+		mpfr_div(plo, plo, m->f1, MPFR_RNDD);
+	mpfi_get_right(phi, m->t1);
+	mpfi_get_left(m->f1, m->t2);
+	mpfr_add(m->f1, m->f1, phi, MPFR_RNDD);
+	if (mpfr_sgn(m->f1) <= 0)
+		mpfr_set_ui(phi, 1, MPFR_RNDU);
+	else
+		mpfr_div(phi, phi, m->f1, MPFR_RNDU);
+	if (mpfr_cmp_ui(phi, 1) > 0)
+		mpfr_set_ui(phi, 1, MPFR_RNDU);
+	mpfr_sqrt(plo, plo, MPFR_RNDD);
+	mpfr_sqrt(phi, phi, MPFR_RNDU);
+	{
+		const int pos = mpfi_is_nonneg(m->val[t->tg_b[j]].v), neg = mpfi_is_nonpos(m->val[t->tg_b[j]].v);
+		if ((pos && sign > 0) || (neg && !pos && sign < 0)) {
+			mpfi_interv_fr(out, plo, phi);
+		} else if (pos || neg) {
+			mpfr_neg(plo, plo, MPFR_RNDN);
+			mpfr_neg(phi, phi, MPFR_RNDN);
+			mpfi_interv_fr(out, phi, plo);
+		} else {
+			mpfr_neg(plo, phi, MPFR_RNDN);
+			mpfi_interv_fr(out, plo, phi);
+		}
+	}
+	mpfr_clears(plo, phi, (mpfr_ptr)0);
+}
+
+/* The input terms' gradient of x = sign b_j / |a| (b_j the base of x),
+   times the common factor's range cf, into r: (1/|a|)(dx - x sum_j'
+   (b_j'/|a|) db_j').  Needs |a| > 0 over the whole box (the points between
+   u and n too), from the intervals alone; else the input terms are lost
+   (the full mean value form is then not used) or, in a centred run, the
+   run fails. */
+static void norm_in_grad(mvf *m, const mval *t, const mval *x, mpfi_srcptr ahat, mpfi_srcptr cf, mval *r)
+{
+	int j, k, ng = x->ng, any = 0;
+	mpfi_t inv, g, h, bh[3];
+	for (j = 0; j < t->tg_nb; j++)
+		if (m->val[t->tg_b[j]].ng > ng)
+			ng = m->val[t->tg_b[j]].ng;
+	for (k = 0; k < ng && !any; k++) {
+		any = k < x->ng && x->nz[k];
+		for (j = 0; j < t->tg_nb && !any; j++)
+			any = k < m->val[t->tg_b[j]].ng && m->val[t->tg_b[j]].nz[k];
+	}
+	if (!any)
+		return;
+	mpfi_init2(inv, MV_PREC); mpfi_init2(g, MV_PREC); mpfi_init2(h, MV_PREC);
+	for (j = 0; j < 3; j++)
+		mpfi_init2(bh[j], MV_PREC);
+	mpfi_set_d(inv, 0.0);
+	for (j = 0; j < t->tg_nb; j++) {
+		mpfi_sqr(g, m->val[t->tg_b[j]].v);
+		mpfi_add(inv, inv, g);
+		norm_unit(m, t, j, 1, bh[j]);
+	}
+	if (!mpfi_is_strictly_pos(inv)) {
+		if (m->centred)
+			m->failed = 1;
+		else
+			m->grad_lost = 1;
+	} else {
+		mpfi_sqrt(inv, inv);
+		mpfi_inv(inv, inv);                          /* 1/|a| */
+		for (k = 0; k < ng; k++) {
+			int used = k < x->ng && x->nz[k];
+			mpfi_set_d(h, 0.0);
+			for (j = 0; j < t->tg_nb; j++) {
+				const mval *b = &m->val[t->tg_b[j]];
+				if (k < b->ng && b->nz[k]) {
+					mpfi_mul(g, bh[j], b->g[k]);
+					mpfi_add(h, h, g);
+					used = 1;
+				}
+			}
+			if (!used)
+				continue;
+			mpfi_mul(h, h, ahat);
+			if (k < x->ng && x->nz[k])
+				mpfi_sub(h, x->g[k], h);
+			else
+				mpfi_neg(h, h);
+			mpfi_mul(h, h, inv);
+			mpfi_mul(h, h, cf);
+			set_grad(r, k, h);
+		}
+	}
+	mpfi_clear(inv); mpfi_clear(g); mpfi_clear(h);
+	for (j = 0; j < 3; j++)
+		mpfi_clear(bh[j]);
+}
+
+/* 1 when |a|^2 varies by less than a factor 4 over the box (the plain
+   interval operations keep a_i / l tight there). */
+static int norm_narrow(mvf *m, const mval *t)
+{
+	int j;
+	mpfi_set_d(m->t2, 0.0);
+	for (j = 0; j < t->tg_nb; j++) {
+		mpfi_sqr(m->t3, m->val[t->tg_b[j]].v);
+		mpfi_add(m->t2, m->t2, m->t3);
+	}
+	mpfi_get_left(m->f1, m->t2);
+	mpfi_get_right(m->f2, m->t2);
+	mpfr_div_2ui(m->f2, m->f2, 2, MPFR_RNDU);
+	return mpfr_sgn(m->f1) > 0 && mpfr_cmp(m->f2, m->f1) < 0;
+}
+
+/* b = x / l or x * f with l, f a length or reciprocal length of a vector
+   whose component x is (its base): b = (x/|a|) C, C the common factor;
+   rounded once.  Returns 0 when the pattern does not apply. */
+static int norm_out(mvf *m, int op, int f, cv ir, cv ia, cv ib)
+{
+	mval *r = &m->val[ir], *t, *x;
+	mpfi_t ahat, cf;
+	double gr;
+	int j;
+	if (op == MVF_DIV && m->val[ib].tg_p == 1) {
+		x = &m->val[ia]; t = &m->val[ib];
+	} else if (op == MVF_MUL && m->val[ib].tg_p == -1) {
+		x = &m->val[ia]; t = &m->val[ib];
+	} else if (op == MVF_MUL && m->val[ia].tg_p == -1) {
+		x = &m->val[ib]; t = &m->val[ia];
+	} else {
+		return 0;
+	}
+	if (!x->theta_free || x->is_cst || is_zero(x) || x->opaque)
+		return 0;
+	if (!t->opaque && norm_narrow(m, t))
+		return 0;   /* |a| nearly constant over the box: the plain operations do as well */
+	for (j = 0; j < t->tg_nb && t->tg_b[j] != x->base; j++)
+		;
+	if (j == t->tg_nb || !norm_factor(m, t))
+		return 0;
+	mpfi_init2(ahat, MV_PREC);
+	mpfi_init2(cf, MV_PREC);
+	mpfi_set(cf, m->s1);                              /* C              */
+	mpfi_sub_d(m->s2, cf, 1.0);
+	mpfi_mag(m->f1, m->s2);
+	gr = mpfr_get_d(m->f1, MPFR_RNDU);                /* |C - 1| <= gr  */
+	norm_unit(m, t, j, x->bsign, ahat);
+	if (!m->zero_e) {
+		mpfi_interv_d(cf, -gr, gr);
+		mpfi_add_d(cf, cf, 1.0);
+	}
+	mpfi_mul(r->v, ahat, cf);
+	r->fmt = f;
+	r->theta_free = m->zero_e;
+	if (!no_grad(m)) {
+		if (!m->zero_e && gr > 0.0) {
+			if (t->tg_var < 0)
+				t->tg_var = new_var(m, gr);
+			set_grad(r, t->tg_var, ahat);
+		}
+		norm_in_grad(m, t, x, ahat, cf, r);
+	}
+	mpfi_clear(ahat);
+	mpfi_clear(cf);
+	if (!m->failed)
+		round_to(m, ir, f);
+	return 1;
+}
+
+/* 1/l for a length l whose interval reaches 0 over the box: bounded by the
+   lower bound on the actual |a|; its value only serves norm_out (opaque to
+   every other operation: no gradient is kept). */
+static int norm_recip(mvf *m, int f, cv ir, cv ia, cv ib)
+{
+	mval *r = &m->val[ir];
+	const mval *l = &m->val[ib];
+	double L;
+	if (!is_cst(&m->val[ia], 1.0) || l->tg_p != 1 || !mpfi_has_zero(l->v))
+		return 0;
+	L = norm_lact(m, l);
+	mpfr_set_d(m->f1, L, MPFR_RNDD);
+	mpfr_set_d(m->f2, nextafter(1.0 + l->tg_lo, 0.0), MPFR_RNDD);   /* S (1 + e) + alpha */
+	mpfr_mul(m->f1, m->f1, m->f2, MPFR_RNDD);
+	mpfr_sub_d(m->f1, m->f1, l->tg_abs, MPFR_RNDD);
+	if (mpfr_sgn(m->f1) <= 0)
+		return 0;
+	mpfr_sqrt(m->f1, m->f1, MPFR_RNDD);
+	mpfr_mul_d(m->f1, m->f1, nextafter(1.0 + l->tg_olo, 0.0), MPFR_RNDD);
+	mpfr_ui_div(m->f1, 1, m->f1, MPFR_RNDU);
+	mpfr_mul_d(m->f1, m->f1, 1.0 + 2 * unit_round(f), MPFR_RNDU);
+	mpfi_get_right(m->f2, l->v);
+	mpfr_ui_div(m->f2, 1, m->f2, MPFR_RNDD);
+	mpfr_mul_d(m->f2, m->f2, 1.0 - 2 * unit_round(f), MPFR_RNDD);
+	mpfi_interv_fr(r->v, m->f2, m->f1);
+	r->fmt = f;
+	r->opaque = 1;
+	track(m, MVF_DIV, f, 0, ir, ia, ib);
+	return 1;
+}
+
+int mvf_nvar(const mvf *m) { return m->nvar; }
+
+/* The input's own rounding terms are in_var; the arithmetic's the rest. */
+double mvf_lin_arith(mvf *m, cv iq) { return mvf_lin_from(m, iq, 0); }
+
+double mvf_lin_from(mvf *m, cv iq, int from)
+{
+	const mval *q = &m->val[iq];
+	int k;
+	if (m->failed)
+		return INFINITY;
+	mpfr_set_zero(m->f2, 1);
+	for (k = from > 0 ? from : 0; k < q->ng; k++) {
+		if (!q->nz[k] || m->in_var[k])
+			continue;
+		mpfi_mag(m->f1, q->g[k]);
+		mpfr_mul_d(m->f1, m->f1, m->r[k], MPFR_RNDU);
+		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDU);
+	}
+	return mpfr_get_d(m->f2, MPFR_RNDU);
+}
+
+int mvf_input_grad_ok(const mvf *m) { return !m->grad_lost; }
+
+/* |n|^2 - 1 = 2 u.w + |w|^2 with |u| = 1 and |w_i| <= nh[i]: |2 u.w| is at
+   most 2 sum max|U_i| nh[i] and 2 |w|; with a tolerance, |n| in [1 - T, 1 + T]. */
+void mvf_norm_n(mvf *m, double *lo, double *hi)
+{
+	int i;
+	if (m->tol >= 0.0) {
+		mpfr_set_d(m->f1, 1.0 - m->tol, MPFR_RNDD);
+		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
+		mpfr_sub_ui(m->f1, m->f1, 1, MPFR_RNDD);
+		*lo = mpfr_get_d(m->f1, MPFR_RNDD);
+		mpfr_set_d(m->f1, m->tol, MPFR_RNDU);
+		mpfr_add_ui(m->f1, m->f1, 1, MPFR_RNDU);
+		mpfr_sqr(m->f1, m->f1, MPFR_RNDU);
+		mpfr_sub_ui(m->f1, m->f1, 1, MPFR_RNDU);
+		*hi = mpfr_get_d(m->f1, MPFR_RNDU);
+		return;
+	}
+	mpfr_set_zero(m->f2, 1);                       /* sum max|U_i| nh[i] */
+	for (i = 0; i < 3; i++) {
+		mpfi_mag(m->f1, m->u[i]);
+		mpfr_mul_d(m->f1, m->f1, m->nh[i], MPFR_RNDU);
+		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDU);
+	}
+	mpfr_set_zero(m->f1, 1);                       /* |w|^2 */
+	for (i = 0; i < 3; i++) {
+		mpfr_t t;
+		mpfr_init2(t, MV_PREC);
+		mpfr_set_d(t, m->nh[i], MPFR_RNDU);
+		mpfr_sqr(t, t, MPFR_RNDU);
+		mpfr_add(m->f1, m->f1, t, MPFR_RNDU);
+		mpfr_clear(t);
+	}
+	*hi = mpfr_get_d(m->f1, MPFR_RNDU);            /* |w|^2, for now */
+	mpfr_sqrt(m->f1, m->f1, MPFR_RNDU);
+	if (mpfr_cmp(m->f1, m->f2) < 0)
+		mpfr_set(m->f2, m->f1, MPFR_RNDU);
+	mpfr_mul_2ui(m->f2, m->f2, 1, MPFR_RNDU);      /* |2 u.w| */
+	*lo = -mpfr_get_d(m->f2, MPFR_RNDU);
+	mpfr_add_d(m->f2, m->f2, *hi, MPFR_RNDU);
+	*hi = mpfr_get_d(m->f2, MPFR_RNDU);
+}
+
+/* The length of a tagged sum of squares that reaches 0 over the box: its
+   value (the square root's rounding included), without a gradient (the
+   square root's is unbounded at 0); only norm_out and norm_recip use it. */
+static int norm_sqrt(mvf *m, int f, cv ir, cv ia)
+{
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia];
+	const double u = m->zero_e ? 0.0 : unit_round(f);
+	if (a->tg_p != 2 || mpfi_is_strictly_pos(a->v))
+		return 0;
+	mpfi_interv_d(m->t1, 0.0, INFINITY);
+	mpfi_intersect(r->v, a->v, m->t1);
+	if (mpfi_is_empty(r->v) || !mpfi_bounded_p(r->v))
+		return 0;
+	mpfi_sqrt(r->v, r->v);
+	mpfi_interv_d(m->t1, -u, u);
+	mpfi_add_d(m->t1, m->t1, 1.0);
+	mpfi_mul(r->v, r->v, m->t1);
+	r->fmt = f;
+	r->opaque = 1;
+	track(m, MVF_SQRT, f, 0, ir, ia, -1);
+	return 1;
+}
+
 cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 {
 	cv ir = fresh(m, f);
 	mval *r = &m->val[ir];
 	const mval *a = &m->val[ia], *b = ib >= 0 ? &m->val[ib] : NULL, *d = id >= 0 ? &m->val[id] : NULL;
+	int exact = 1;
 	if (m->failed)
 		return ir;
+	if ((op == MVF_MUL || op == MVF_DIV) && (norm_out(m, op, f, ir, ia, ib) || (op == MVF_DIV && norm_recip(m, f, ir, ia, ib))))
+		return ir;
+	if (op == MVF_SQRT && norm_sqrt(m, f, ir, ia))
+		return ir;
+	if (a->opaque || (b && b->opaque) || (d && d->opaque)) {
+		m->failed = 1;   /* a value bounded without its gradient */
+		return ir;
+	}
 	if (!exact_eval(m, op, r, a, b, d) || mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)) {
 		m->failed = 1;
 		return ir;
@@ -458,6 +1072,7 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 	if (op == MVF_NEG) {
 		r->fmt = a->fmt;
 	} else if (!exact_op(m, op, f, a, b, r)) {
+		exact = 0;
 		round_to(m, ir, f);
 	} else if ((op == MVF_ADD || op == MVF_SUB) && (is_zero(a) || is_zero(b))) {
 		r->fmt = is_zero(a) ? b->fmt : a->fmt;   /* +-v itself */
@@ -477,6 +1092,7 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 			r->cvt_u = unit_round(CM_F32);
 		}
 	}
+	track(m, op, f, exact, ir, ia, ib);
 	return ir;
 }
 
@@ -574,6 +1190,7 @@ static void band_constraint(mvf *m, const mvf_box *b, cv iz);
 static void refine_input(mvf *m, mval *x);
 static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
 static void centre_inputs(mvf *m, int mode, const cv in[3]);
+static void input_grid(mvf *m, const mvf_box *b, const cv in[3]);
 
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 {
@@ -581,11 +1198,17 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->n = 0;
 	m->nvar = 0;
 	m->failed = 0;
+	m->grad_lost = 0;
+	m->nst = 0;
+	m->tol = b->tolerance;
+	m->nh[0] = m->nh[1] = m->nh[2] = 0.0;
 	m->zero_e = mode == MVF_AT_ZERO || mode == MVF_AT_MID || mode == MVF_CENTRED;
 	m->centred = mode == MVF_CENTRED;
 	m->nograd = mode == MVF_VALUES;
-	for (i = 0; i < 3; i++)
+	for (i = 0; i < 3; i++) {
 		in[i] = fresh(m, b->prec);
+		m->val[in[i]].theta_free = 1;
+	}
 	if (b->has_zpoint) {   /* zpoint + [dz_lo, dz_hi], rounded outward */
 		mpfr_set_d(m->f1, b->zpoint, MPFR_RNDN);
 		mpfr_add_d(m->f1, m->f1, b->dz_lo, MPFR_RNDD);
@@ -629,6 +1252,26 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 		return;   /* Q(U, 0) along a given path: no decision is made */
 	input_errors(m, b, in);
 	band_constraint(m, b, in[2]);
+	input_grid(m, b, in);
+}
+
+/* What the actual inputs are: format values (multiples of the ulp of the
+   smallest binade their interval reaches), functions of n alone; and for
+   n.z given, |n.z - u.z| <= max(-dz_lo, dz_hi). */
+static void input_grid(mvf *m, const mvf_box *b, const cv in[3])
+{
+	const int p = b->prec == CM_F32 ? 24 : 53;
+	int i;
+	for (i = 0; i < 3; i++) {
+		mval *x = &m->val[in[i]];
+		mpfi_mig(m->f1, x->v);
+		if (mpfr_cmp_d(m->f1, normal_min(b->prec)) < 0)
+			x->quantum = b->prec == CM_F32 ? 0x1p-149 : 0x1p-1074;
+		else
+			x->quantum = ldexp(1.0, (int)mpfr_get_exp(m->f1) - p);
+	}
+	if (b->has_zpoint)
+		m->nh[2] = fmax(-b->dz_lo, b->dz_hi);
 }
 
 /* The inputs for the centred form of Q(U, 0) (bound.c): u = c + t with c
@@ -657,6 +1300,8 @@ static void centre_inputs(mvf *m, int mode, const cv in[3])
 		mpfr_sub(m->f2, m->f1, m->f2, MPFR_RNDU);
 		r = fmax(r, mpfr_get_d(m->f2, MPFR_RNDU));
 		set_grad(x, new_var(m, r), m->one);
+		if (x->ng > 0)
+			m->in_var[x->ng - 1] = 1;
 	}
 }
 
@@ -735,8 +1380,8 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 {
 	double u = unit_round(b->prec);
 	int i, t_var = -1;
-	if (b->tolerance >= 0)
-		t_var = new_var(m, b->tolerance);
+	if (b->tolerance >= 0 && (t_var = new_var(m, b->tolerance)) >= 0)
+		m->in_var[t_var] = 1;
 	for (i = 0; i < (b->has_zpoint ? 2 : 3); i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_set(m->s2, x->v);                              /* u_i           */
@@ -744,6 +1389,7 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 			mpfi_mag(m->f1, m->s2);
 			x->in_h = mpfr_get_d(m->f1, MPFR_RNDU) * b->tolerance;
 			x->in_h = x->in_h > 0.0 ? nextafter(x->in_h, INFINITY) : 0.0;
+			m->nh[i] = x->in_h;
 			set_grad(x, t_var, m->s2);
 			mpfi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
 			mpfi_mul(x->v, x->v, m->t1);
@@ -754,8 +1400,11 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 			double h = half_ulp_of(m, x->v, b->prec);
 			(void)u;
 			if (h > 0.0) {
-				x->in_h = h;
-				set_grad(x, new_var(m, h), m->one);
+				int k = new_var(m, h);
+				x->in_h = m->nh[i] = h;
+				if (k >= 0)
+					m->in_var[k] = 1;
+				set_grad(x, k, m->one);
 				add_sym(m, x, h);
 			}
 		}
@@ -767,6 +1416,8 @@ static cv ex(mvf *m, int op, cv a, cv b)
 {
 	cv ir = fresh(m, CM_F64);
 	mval *r = &m->val[ir];
+	if (m->val[a].opaque || (b >= 0 && m->val[b].opaque))
+		m->failed = 1;
 	if (!m->failed && (!exact_eval(m, op, r, &m->val[a], b >= 0 ? &m->val[b] : NULL, NULL) ||
 	                   mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)))
 		m->failed = 1;

@@ -38,6 +38,16 @@ enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES, MVF_AT_MID, MVF_CENTRED };
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3]);
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5]);
 void mvf_bounds(mvf *m, cv q, double *lo, double *hi, double *lin);
+/* sum_k r_k max|dQ/de_k| over the arithmetic's error terms alone (not the
+   input's own rounding), and whether the full sum mvf_bounds gives is
+   valid (0 when a normalization of a vector whose length can reach 0 over
+   the box left the input terms' gradients unbounded). */
+double mvf_lin_arith(mvf *m, cv q);
+/* The same over the error terms from number `from` on (cm_formula_zero_after). */
+double mvf_lin_from(mvf *m, cv q, int from);
+int  mvf_input_grad_ok(const mvf *m);
+/* An enclosure of |n|^2 - 1 over the box's domain: n = u + w, |u| = 1. */
+void mvf_norm_n(mvf *m, double *lo, double *hi);
 int  mvf_ratio_within_2(mvf *m, mpfi_srcptr x, mpfi_srcptr y);
 
 #endif

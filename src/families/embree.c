@@ -72,7 +72,7 @@ static cv embree_rsqrt(cm *c, int P, cv x)
 	r = cm_div(c, CM_F32, cm_cst(c, 1.0), cm_sqrt(c, CM_F32, xf));
 #endif
 	r = cm_cvt(c, P, r);
-	return ADD(MUL(K(1.5), r), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r)));
+	return cm_newton_embree(c, P, x, r);   /* ADD(MUL(K(1.5), r), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r))) */
 }
 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])

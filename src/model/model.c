@@ -156,6 +156,15 @@ cv cm_newton(cm *c, int f, cv x, cv y)
 	return put(c, fmt(f, c->x[y] * fmt(f, 1.5 - t)));
 }
 
+cv cm_newton_embree(cm *c, int f, cv x, cv y)
+{
+	cv r;
+	if (c->backend == CM_MVF && (r = mvf_newton_embree(c->m, f, x, y)) >= 0)
+		return r;
+	return cm_add(c, f, cm_mul(c, f, cm_cst(c, 1.5), y),
+	              cm_mul(c, f, cm_mul(c, f, cm_mul(c, f, x, cm_cst(c, -0.5)), y), cm_mul(c, f, y, y)));
+}
+
 /* Branches: CM_EXEC compares the values; CM_MVF takes the path's side. */
 static int take(cm *c, int id, int exec_side, int lo_possible, int hi_possible)
 {

@@ -67,6 +67,10 @@ cv cm_seed(cm *c, seed_kind k, cv a);
    rounded in f.  CM_MVF bounds the result's relative error as a whole
    (mvf.c), where x cancels. */
 cv cm_newton(cm *c, int f, cv x, cv y);
+/* Embree's form of the step: 1.5 y + ((x (-0.5)) y)(y y), each operation
+   rounded in f; CM_MVF bounds its relative error as a whole where y is a
+   seed of x, else runs the operations one by one. */
+cv cm_newton_embree(cm *c, int f, cv x, cv y);
 
 /* Branch point number `id` of the model: a OP b on the values as computed,
    and |a| OP |b| for cm_branch_abs.  Returns the side taken (0 or 1). */

@@ -68,6 +68,7 @@ cv   mvf_cst(mvf *m, double v);
 cv   mvf_op(mvf *m, int op, int f, cv a, cv b, cv d);
 cv   mvf_seed(mvf *m, seed_kind k, cv a);
 cv   mvf_newton(mvf *m, int f, cv x, cv y);
+cv   mvf_newton_embree(mvf *m, int f, cv x, cv y);
 void mvf_compare(mvf *m, int op, int absolute, cv a, cv b, int *can_true, int *can_false);
 void mvf_sign_possible(mvf *m, cv a, int *can_set, int *can_clear);
 void mvf_constrain(mvf *m, int op, int absolute, cv a, cv b, int side);

@@ -1492,7 +1492,7 @@ static void newton_poly(mvf *m, double r, mpfi_srcptr p, mpfi_ptr out)
    concave in r > 0 and decreasing in p, so its range over the box is at
    the corners and at its peak r = 1/sqrt(p), f = 1/sqrt(p).  Returns the
    bound of |y1 sqrt(x) - 1|, or -1 when y is no seed of x. */
-static double newton_rel(mvf *m, int f, cv ix, cv iy)
+static double newton_rel(mvf *m, int f, cv ix, cv iy, int embree)
 {
 	const mval *y = &m->val[iy];
 	double u = unit_round(f), rlo = y->rel_lo, rhi = y->rel_hi, lo, hi;
@@ -1506,7 +1506,13 @@ static double newton_rel(mvf *m, int f, cv ix, cv iy)
 		rhi = rhi / sqrt(1.0 - a->cvt_u) * (1.0 + 0x1p-50);
 	}
 	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
-	mpfi_sqr(m->s1, m->s1);                         /* p              */
+	if (embree) {   /* p = (1 + da)(1 + db)(1 + dc)/(1 + dd): see mvf_newton_embree */
+		mpfi_sqr(m->t1, m->s1);
+		mpfi_mul(m->t1, m->t1, m->s1);
+		mpfi_div(m->s1, m->t1, m->s1);
+	} else {
+		mpfi_sqr(m->s1, m->s1);                 /* p              */
+	}
 	mpfi_get_left(m->f1, m->s1);
 	mpfi_set_fr(m->s2, m->f1);                      /* p_lo: the max  */
 	newton_poly(m, rlo, m->s2, m->t1);
@@ -1538,12 +1544,44 @@ static double newton_rel(mvf *m, int f, cv ix, cv iy)
 
 /* Listing 3's Newton step, as y1 = (1 + e)/sqrt(x) with |e| <= newton_rel.
    Needs h, h y and (h y) y normal: x >= 2^-100 (float) or 2^-1000. */
-cv mvf_newton(mvf *m, int f, cv ix, cv iy)
+static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree);
+cv mvf_newton(mvf *m, int f, cv ix, cv iy) { return newton_common(m, f, ix, iy, 0); }
+
+/* Embree's step 1.5 y + ((x (-0.5)) y)(y y) on a seed y = r/sqrt(x): with
+   the roundings dd of 1.5 y, da, db, dc of the three products and dy of the
+   sum (x (-0.5) exact), y1 sqrt(x) = (1 + dd)(1 + dy) f(r), f(r) =
+   r (1.5 - 0.5 r^2 p), p = (1 + da)(1 + db)(1 + dc)/(1 + dd): Listing 3's
+   form with another p.  Returns -1 when y is no seed of x (then the model
+   runs the operations one by one).  The result carries a norm tag when x
+   does: y1 = (1 + o)/sqrt(S (1 + eps + rho)). */
+cv mvf_newton_embree(mvf *m, int f, cv ix, cv iy)
+{
+	cv ir;
+	const mval *x = &m->val[ix];
+	mval *r;
+	double e;
+	if (m->failed || newton_rel(m, f, ix, iy, 1) < 0.0)
+		return -1;
+	ir = newton_common(m, f, ix, iy, 1);
+	r = &m->val[ir];
+	e = m->zero_e ? 0.0 : newton_rel(m, f, ix, iy, 1);
+	if (!m->failed && x->tg_p == 2) {
+		memcpy(r->tg_b, x->tg_b, sizeof r->tg_b);
+		r->tg_nb = x->tg_nb;
+		r->tg_lo = x->tg_lo; r->tg_hi = x->tg_hi; r->tg_abs = x->tg_abs;
+		r->tg_p = -1;
+		r->tg_olo = -e;
+		r->tg_ohi = e;
+	}
+	return ir;
+}
+
+static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree)
 {
 	cv ir = fresh(m, f);
 	mval *r = &m->val[ir];
 	const mval *x = &m->val[ix];
-	double e = newton_rel(m, f, ix, iy);
+	double e = newton_rel(m, f, ix, iy, embree);
 	mpfi_get_left(m->f1, x->v);
 	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == CM_F32 ? 0x1p-100 : 0x1p-1000) < 0) {
 		m->failed = 1;

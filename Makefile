@@ -195,6 +195,10 @@ $(B)/reference/reffast_f.o: src/reference/reffast.c
 # copy of the kernels (FAMILY_PASS=1), and its fast-reference formula in
 # pairs of doubles (2) and of long doubles (3), with reffast.c's flags.
 FAMILY_SRC  = $(filter-out src/families/families.c,$(wildcard src/families/*.c))
+# families.c's list of every family comes from the family files themselves
+# (scripts/family-list.sh), so a new family is listed by being defined.
+$(B)/families/families.o: XFLAGS = '-DSTUDY_FAMILY_LIST(X)=$(shell sh scripts/family-list.sh)'
+$(B)/families/families.o: $(FAMILY_SRC) scripts/family-list.sh
 FAMILY_PASS_OBJ = $(foreach p,fma pair_d pair_l,$(FAMILY_SRC:src/families/%.c=$(B)/families/$(p)/%.o))
 ifeq ($(shell uname -m),x86_64)
 FAMILY_FMA_FLAGS  = -mfma -ffp-contract=fast

@@ -8,9 +8,8 @@
 #if defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wunused-function" /* indep.h: only its table is used here */
 #endif
-#include "indep.h"
 #define INDEP_TABLE_DEFINE
-#include "indep_table.h"
+#include "indep.h"
 
 const indep_row *indep_rows(size_t *n);
 const indep_row *indep_rows(size_t *n)

@@ -396,7 +396,7 @@ static void ind_open3dd(Vec3d n, Vec3d *b1, Vec3d *b2, int fixed)
 	*b1 = vd(p[0], p[1], p[2]); *b2 = vd(q[0], q[1], q[2]);
 }
 
-/* ids 200 and up (tests/indep_table.h rows) */
+/* ids 200 and up (the rows of the table in tests/indep.h) */
 enum { IW_JOLT = 200, IW_JOLT_FMA, IW_BULLET, IW_ODE, IW_MUJOCO, IW_EIGEN, IW_PHYSX, IW_RP3D, IW_OPEN3D,
        IW_PHYSX_FIXED, IW_OPEN3D_FIXED };
 static int indep_wild_b_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)

@@ -24,19 +24,18 @@
 #include <stdlib.h>
 #include <string.h>
 #include "libonb/onb.h"
+/* scripts/mutate.sh (INDEP_SPLIT): the table comes from tests/indep_lib.c,
+   built against the mutated header, and this file is compiled once */
+#ifndef INDEP_SPLIT
+#define INDEP_TABLE_DEFINE
+#endif
 #include "indep.h"
 
 #define IND_PI 3.14159265358979323846
 #ifdef INDEP_SPLIT
-/* scripts/mutate.sh: the table comes from tests/indep_lib.c, built against
-   the mutated header, and this file is compiled once */
-#include "indep_table.h"
 const indep_row *indep_rows(size_t *n);
 static const indep_row *T;
 static size_t NT;
-#else
-#define INDEP_TABLE_DEFINE
-#include "indep_table.h"
 #endif
 
 /* ---- inputs ---- */

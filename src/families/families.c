@@ -1,16 +1,17 @@
 /*
  * families.c - the one list of the study's formula families (family.h),
- * and the lookups through it.  A new family is one file in src/families/
- * and one entry here.
+ * and the lookups through it.  The list, STUDY_FAMILY_LIST(X), is given on
+ * the compiler's command line by scripts/family-list.sh (the Makefile,
+ * scripts/fuzz.sh): X(NAME) for each `const study_family family_NAME`
+ * that a file in src/families/ defines.  A new family is its definition,
+ * with no entry to add here.
  */
 #include <string.h>
 #include "families/family.h"
 
-#define STUDY_FAMILY_LIST(X) \
-	X(naive) X(hughes_moeller) X(frisvad) X(duff) X(duff_branchless) X(stark) X(stark_fixed) \
-	X(pbrt_v3) X(rtow) X(tangent_cross_z) X(frisvad_rotate) \
-	X(filament) X(cycles_cross111) X(embree) X(luxcore) \
-	X(jolt) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d)
+#ifndef STUDY_FAMILY_LIST
+#error "families.c: compile with -DSTUDY_FAMILY_LIST(X)=\"$(sh scripts/family-list.sh)\" (the Makefile does)"
+#endif
 
 #define FAMILY_EXTERN(f) extern const study_family family_##f;
 STUDY_FAMILY_LIST(FAMILY_EXTERN)

@@ -2,7 +2,8 @@
  * family.h - what the study knows about one formula family: everything
  * but the kernel (include/libonb/onb.h) and the method's parameters (its
  * registry row, src/lib/registry.c).  One file per family in
- * src/families/ fills one study_family; families.c names them all.
+ * src/families/ fills one study_family (or more: stark.c has two);
+ * families.c lists them all, from the files (scripts/family-list.sh).
  *
  * A family file is compiled four times (the Makefile, FAMILY_PASS):
  *   0  the study's build: the branch rule, the MPFR formula, the rounding
@@ -80,7 +81,7 @@ typedef struct study_family {
    family file knows it; family_rotate() is frisvad_rotate's. */
 const study_family *family_of(const onb_method *m);
 const study_family *family_rotate(void);
-/* Every family, in families.c's list order. */
+/* Every family, in the order of scripts/family-list.sh's list. */
 const study_family *const *family_all(size_t *count);
 
 /* ---- what a family file uses ---- */

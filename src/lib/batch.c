@@ -19,8 +19,9 @@
  * Two float kernels (naive, hughes_moeller) dispatch by hand instead, to
  * run 256-bit code on AVX-512 CPUs: see ONB__BATCH_F_256 below.
  *
- * One object per batch function (split.h): the table at the end names the
- * macro that defines each; onb_batch_isa is in the common object.
+ * One object per batch function (split.h): every method gets the plain
+ * loop over its inline kernel, and the table at the end names the few that
+ * need another; onb_batch_isa is in the common object.
  */
 #include "split.h"
 #if ONB_HAVE_HW_RSQRT
@@ -271,83 +272,33 @@ void onb_##m##_batch##suf(ARGS)                                                \
 		}                                                                      \
 	}
 
-/* Which macro defines each batch function. */
-#define ONB__BD_naive                   ONB__BATCH_SIMPLE_D(naive)
-#define ONB__BF_naive                   ONB__BATCH_F_256(naive)
-#define ONB__BD_naive_invsqrt           ONB__BATCH_SIMPLE_D(naive_invsqrt)
-#define ONB__BF_naive_invsqrt           ONB__BATCH_SIMPLE_F(naive_invsqrt)
-#define ONB__BD_naive_rsqrt             ONB__BATCH_RSQRT_D(naive, _rsqrt, 0)
-#define ONB__BF_naive_rsqrt             ONB__BATCH_RSQRT_F(naive, _rsqrt, 0)
-#define ONB__BD_naive_rsqrt_nr          ONB__BATCH_RSQRT_D(naive, _rsqrt_nr, 1)
-#define ONB__BF_naive_rsqrt_nr          ONB__BATCH_RSQRT_F(naive, _rsqrt_nr, 1)
-#define ONB__BD_naive_nonorm            ONB__BATCH_SIMPLE_D(naive_nonorm)
-#define ONB__BF_naive_nonorm            ONB__BATCH_SIMPLE_F(naive_nonorm)
-#define ONB__BD_hughes_moeller          ONB__BATCH_SIMPLE_D(hughes_moeller)
-#define ONB__BF_hughes_moeller          ONB__BATCH_F_256(hughes_moeller)
-#define ONB__BD_hughes_moeller_invsqrt  ONB__BATCH_SIMPLE_D(hughes_moeller_invsqrt)
-#define ONB__BF_hughes_moeller_invsqrt  ONB__BATCH_SIMPLE_F(hughes_moeller_invsqrt)
-#define ONB__BD_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt, 0)
-#define ONB__BF_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt, 0)
-#define ONB__BD_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt_nr, 1)
-#define ONB__BF_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt_nr, 1)
-#define ONB__BD_hughes_moeller_nonorm   ONB__BATCH_SIMPLE_D(hughes_moeller_nonorm)
-#define ONB__BF_hughes_moeller_nonorm   ONB__BATCH_SIMPLE_F(hughes_moeller_nonorm)
-#define ONB__BD_frisvad                 ONB__BATCH_SIMPLE_D(frisvad)
-#define ONB__BF_frisvad                 ONB__BATCH_SIMPLE_F(frisvad)
-#define ONB__BD_frisvad_max             ONB__BATCH_SIMPLE_D(frisvad_max)
-#define ONB__BF_frisvad_max             ONB__BATCH_SIMPLE_F(frisvad_max)
-#define ONB__BD_duff                    ONB__BATCH_SIMPLE_D(duff)
-#define ONB__BF_duff                    ONB__BATCH_SIMPLE_F(duff)
-#define ONB__BD_duff_branchless         ONB__BATCH_SIMPLE_D(duff_branchless)
-#define ONB__BF_duff_branchless         ONB__BATCH_SIMPLE_F(duff_branchless)
-#define ONB__BD_stark                   ONB__BATCH_SIMPLE_D(stark)
-#define ONB__BF_stark                   ONB__BATCH_SIMPLE_F(stark)
-#define ONB__BD_stark_fixed             ONB__BATCH_SIMPLE_D(stark_fixed)
-#define ONB__BF_stark_fixed             ONB__BATCH_SIMPLE_F(stark_fixed)
-#define ONB__BD_pbrt_v3                 ONB__BATCH_SIMPLE_D(pbrt_v3)
-#define ONB__BF_pbrt_v3                 ONB__BATCH_SIMPLE_F(pbrt_v3)
-#define ONB__BD_rtow                    ONB__BATCH_SIMPLE_D(rtow)
-#define ONB__BF_rtow                    ONB__BATCH_SIMPLE_F(rtow)
-#define ONB__BD_tangent_cross_z         ONB__BATCH_SIMPLE_D(tangent_cross_z)
-#define ONB__BF_tangent_cross_z         ONB__BATCH_SIMPLE_F(tangent_cross_z)
-#define ONB__BD_q2rtx                   ONB__BATCH_SIMPLE_D(q2rtx)
-#define ONB__BF_q2rtx                   ONB__BATCH_SIMPLE_F(q2rtx)
-#define ONB__BD_filament                ONB__BATCH_SIMPLE_D(filament)
-#define ONB__BF_filament                ONB__BATCH_SIMPLE_F(filament)
-#define ONB__BD_mitsuba3                ONB__BATCH_SIMPLE_D(mitsuba3)
-#define ONB__BF_mitsuba3                ONB__BATCH_SIMPLE_F(mitsuba3)
-#define ONB__BD_cycles_cross111         ONB__BATCH_SIMPLE_D(cycles_cross111)
-#define ONB__BF_cycles_cross111         ONB__BATCH_SIMPLE_F(cycles_cross111)
-#define ONB__BD_cycles_cross111_avx2    ONB__BATCH_SIMPLE_D(cycles_cross111_avx2)
-#define ONB__BF_cycles_cross111_avx2    ONB__BATCH_SIMPLE_F(cycles_cross111_avx2)
-#define ONB__BD_embree                  ONB__BATCH_SIMPLE_D(embree)
-#define ONB__BF_embree                  ONB__BATCH_SIMPLE_F(embree)
-#define ONB__BD_luxcore                 ONB__BATCH_SIMPLE_D(luxcore)
-#define ONB__BF_luxcore                 ONB__BATCH_SIMPLE_F(luxcore)
-#define ONB__BF_duff_wide               ONB__BATCH_SIMPLE_F(duff_wide)
-#define ONB__BF_duff_comp               ONB__BATCH_DUFF_COMP_F
-#define ONB__BD_jolt                   ONB__BATCH_SIMPLE_D(jolt)
-#define ONB__BF_jolt                   ONB__BATCH_SIMPLE_F(jolt)
-#define ONB__BD_bullet                 ONB__BATCH_SIMPLE_D(bullet)
-#define ONB__BF_bullet                 ONB__BATCH_SIMPLE_F(bullet)
-#define ONB__BD_mujoco                 ONB__BATCH_SIMPLE_D(mujoco)
-#define ONB__BF_mujoco                 ONB__BATCH_SIMPLE_F(mujoco)
-#define ONB__BD_eigen                  ONB__BATCH_SIMPLE_D(eigen)
-#define ONB__BF_eigen                  ONB__BATCH_SIMPLE_F(eigen)
-#define ONB__BD_physx                  ONB__BATCH_SIMPLE_D(physx)
-#define ONB__BF_physx                  ONB__BATCH_SIMPLE_F(physx)
-#define ONB__BD_rp3d                   ONB__BATCH_SIMPLE_D(rp3d)
-#define ONB__BF_rp3d                   ONB__BATCH_SIMPLE_F(rp3d)
-#define ONB__BD_open3d                 ONB__BATCH_SIMPLE_D(open3d)
-#define ONB__BF_open3d                 ONB__BATCH_SIMPLE_F(open3d)
-#define ONB__BD_physx_fixed            ONB__BATCH_SIMPLE_D(physx_fixed)
-#define ONB__BF_physx_fixed            ONB__BATCH_SIMPLE_F(physx_fixed)
-#define ONB__BD_filament_fixed         ONB__BATCH_SIMPLE_D(filament_fixed)
-#define ONB__BF_filament_fixed         ONB__BATCH_SIMPLE_F(filament_fixed)
-#define ONB__BD_open3d_fixed           ONB__BATCH_SIMPLE_D(open3d_fixed)
-#define ONB__BF_open3d_fixed           ONB__BATCH_SIMPLE_F(open3d_fixed)
-#define ONB__BD_jolt_fma               ONB__BATCH_FMA_D(jolt_fma)
-#define ONB__BF_jolt_fma               ONB__BATCH_FMA_F(jolt_fma)
-#define ONB__BD(m) ONB__BD_##m
-#define ONB__BF(m) ONB__BF_##m
+/* Which macro defines each batch function.  Every method of onb.h's lists
+   gets the plain loop over its inline kernel (ONB__BATCH_SIMPLE_D/_F) with
+   no line here; the few that need another kernel name it below, as
+   `#define ONB__BD_NAME ~, (MACRO)` (double) or ONB__BF_NAME (float).
+   ONB__BD(m) picks the override when ONB__BD_m is defined (it then
+   expands to two arguments, `~` and the kernel, so ONB__SECOND takes the
+   kernel) and the plain loop otherwise (ONB__BD_m stays one token).  The
+   kernels are in parentheses until picked, so their commas do not split
+   the arguments; ONB__ID removes them, once ONB__PICK's rescan has put
+   it before them. */
+#define ONB__BF_naive                   ~, (ONB__BATCH_F_256(naive))
+#define ONB__BD_naive_rsqrt             ~, (ONB__BATCH_RSQRT_D(naive, _rsqrt, 0))
+#define ONB__BF_naive_rsqrt             ~, (ONB__BATCH_RSQRT_F(naive, _rsqrt, 0))
+#define ONB__BD_naive_rsqrt_nr          ~, (ONB__BATCH_RSQRT_D(naive, _rsqrt_nr, 1))
+#define ONB__BF_naive_rsqrt_nr          ~, (ONB__BATCH_RSQRT_F(naive, _rsqrt_nr, 1))
+#define ONB__BF_hughes_moeller          ~, (ONB__BATCH_F_256(hughes_moeller))
+#define ONB__BD_hughes_moeller_rsqrt    ~, (ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt, 0))
+#define ONB__BF_hughes_moeller_rsqrt    ~, (ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt, 0))
+#define ONB__BD_hughes_moeller_rsqrt_nr ~, (ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt_nr, 1))
+#define ONB__BF_hughes_moeller_rsqrt_nr ~, (ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt_nr, 1))
+#define ONB__BF_duff_comp               ~, (ONB__BATCH_DUFF_COMP_F)
+#define ONB__BD_jolt_fma                ~, (ONB__BATCH_FMA_D(jolt_fma))
+#define ONB__BF_jolt_fma                ~, (ONB__BATCH_FMA_F(jolt_fma))
+#define ONB__ID(...) __VA_ARGS__
+#define ONB__SECOND_(a, b, ...) b
+#define ONB__SECOND(...) ONB__SECOND_(__VA_ARGS__)
+#define ONB__PICK(x) x
+#define ONB__BD(m) ONB__PICK(ONB__ID ONB__SECOND(ONB__BD_##m, (ONB__BATCH_SIMPLE_D(m)), ~))
+#define ONB__BF(m) ONB__PICK(ONB__ID ONB__SECOND(ONB__BF_##m, (ONB__BATCH_SIMPLE_F(m)), ~))
 ONB__SPLIT(ONB__BD, ONB__BF)

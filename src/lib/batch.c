@@ -179,25 +179,25 @@ void onb_duff_comp_batchf(ONB__ARGS_F)                                         \
    baseline loop (libm fma).  fma is correctly rounded, so every clone
    gives the scalar bits. */
 #if ONB__HAVE_CLONES
-#define ONB__FMA_DISPATCH(m, suf, ARGS, LOOP)                                  \
+#define ONB__FMA_DISPATCH(m, suf, P)                                           \
 __attribute__((target("avx512f,fma"), noinline))                               \
-static void onb__##m##_batch##suf##_avx512f(ARGS) LOOP(m)                      \
+static void onb__##m##_batch##suf##_avx512f(ONB__ARGS_##P) ONB__LOOP_##P(m)    \
 __attribute__((target("avx2,fma"), noinline))                                  \
-static void onb__##m##_batch##suf##_avx2(ARGS) LOOP(m)                         \
+static void onb__##m##_batch##suf##_avx2(ONB__ARGS_##P) ONB__LOOP_##P(m)       \
 __attribute__((noinline))                                                      \
-static void onb__##m##_batch##suf##_default(ARGS) LOOP(m)                      \
-void onb_##m##_batch##suf(ARGS)                                                \
+static void onb__##m##_batch##suf##_default(ONB__ARGS_##P) ONB__LOOP_##P(m)    \
+void onb_##m##_batch##suf(ONB__ARGS_##P)                                       \
 {                                                                              \
-	__builtin_cpu_init();                                                         \
-	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))       \
+	__builtin_cpu_init();                                                  \
+	if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma")) \
 		onb__##m##_batch##suf##_avx512f(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
-	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))     \
+	else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) \
 		onb__##m##_batch##suf##_avx2(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
-	else                                                                          \
+	else                                                                   \
 		onb__##m##_batch##suf##_default(count, nx, ny, nz, b1x, b1y, b1z, b2x, b2y, b2z); \
 }
-#define ONB__BATCH_FMA_D(m) ONB__FMA_DISPATCH(m, , ONB__ARGS_D, ONB__LOOP_D)
-#define ONB__BATCH_FMA_F(m) ONB__FMA_DISPATCH(m, f, ONB__ARGS_F, ONB__LOOP_F)
+#define ONB__BATCH_FMA_D(m) ONB__FMA_DISPATCH(m, , D)
+#define ONB__BATCH_FMA_F(m) ONB__FMA_DISPATCH(m, f, F)
 #else
 #define ONB__BATCH_FMA_D(m) ONB__BATCH_SIMPLE_D(m)
 #define ONB__BATCH_FMA_F(m) ONB__BATCH_SIMPLE_F(m)
@@ -274,31 +274,41 @@ void onb_##m##_batch##suf(ARGS)                                                \
 
 /* Which macro defines each batch function.  Every method of onb.h's lists
    gets the plain loop over its inline kernel (ONB__BATCH_SIMPLE_D/_F) with
-   no line here; the few that need another kernel name it below, as
-   `#define ONB__BD_NAME ~, (MACRO)` (double) or ONB__BF_NAME (float).
-   ONB__BD(m) picks the override when ONB__BD_m is defined (it then
-   expands to two arguments, `~` and the kernel, so ONB__SECOND takes the
-   kernel) and the plain loop otherwise (ONB__BD_m stays one token).  The
-   kernels are in parentheses until picked, so their commas do not split
-   the arguments; ONB__ID removes them, once ONB__PICK's rescan has put
-   it before them. */
-#define ONB__BF_naive                   ~, (ONB__BATCH_F_256(naive))
-#define ONB__BD_naive_rsqrt             ~, (ONB__BATCH_RSQRT_D(naive, _rsqrt, 0))
-#define ONB__BF_naive_rsqrt             ~, (ONB__BATCH_RSQRT_F(naive, _rsqrt, 0))
-#define ONB__BD_naive_rsqrt_nr          ~, (ONB__BATCH_RSQRT_D(naive, _rsqrt_nr, 1))
-#define ONB__BF_naive_rsqrt_nr          ~, (ONB__BATCH_RSQRT_F(naive, _rsqrt_nr, 1))
-#define ONB__BF_hughes_moeller          ~, (ONB__BATCH_F_256(hughes_moeller))
-#define ONB__BD_hughes_moeller_rsqrt    ~, (ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt, 0))
-#define ONB__BF_hughes_moeller_rsqrt    ~, (ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt, 0))
-#define ONB__BD_hughes_moeller_rsqrt_nr ~, (ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt_nr, 1))
-#define ONB__BF_hughes_moeller_rsqrt_nr ~, (ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt_nr, 1))
-#define ONB__BF_duff_comp               ~, (ONB__BATCH_DUFF_COMP_F)
-#define ONB__BD_jolt_fma                ~, (ONB__BATCH_FMA_D(jolt_fma))
-#define ONB__BF_jolt_fma                ~, (ONB__BATCH_FMA_F(jolt_fma))
-#define ONB__ID(...) __VA_ARGS__
+   no line here.  The few that need another kernel have their own: listed
+   as `#define ONB__OWN_NAME ~,`, with both of their kernels (one, float
+   only) named by ONB__BD_NAME (double) and ONB__BF_NAME (float).
+   ONB__BD(m) reads the list: for a listed m, ONB__OWN_m puts `~,` before
+   ONB__OWN_D, which ONB__SECOND then picks, and ONB__OWN_D(m) is
+   ONB__BD_m; for any other m the first argument is one run of tokens and
+   ONB__SECOND picks the plain loop.  (A form cppcheck's preprocessor
+   follows too: scripts/harden.sh runs it on this file.) */
+#define ONB__OWN_naive                  ~,
+#define ONB__OWN_naive_rsqrt            ~,
+#define ONB__OWN_naive_rsqrt_nr         ~,
+#define ONB__OWN_hughes_moeller         ~,
+#define ONB__OWN_hughes_moeller_rsqrt   ~,
+#define ONB__OWN_hughes_moeller_rsqrt_nr ~,
+#define ONB__OWN_duff_comp              ~,
+#define ONB__OWN_jolt_fma               ~,
+#define ONB__BD_naive                   ONB__BATCH_SIMPLE_D(naive)
+#define ONB__BF_naive                   ONB__BATCH_F_256(naive)
+#define ONB__BD_naive_rsqrt             ONB__BATCH_RSQRT_D(naive, _rsqrt, 0)
+#define ONB__BF_naive_rsqrt             ONB__BATCH_RSQRT_F(naive, _rsqrt, 0)
+#define ONB__BD_naive_rsqrt_nr          ONB__BATCH_RSQRT_D(naive, _rsqrt_nr, 1)
+#define ONB__BF_naive_rsqrt_nr          ONB__BATCH_RSQRT_F(naive, _rsqrt_nr, 1)
+#define ONB__BD_hughes_moeller          ONB__BATCH_SIMPLE_D(hughes_moeller)
+#define ONB__BF_hughes_moeller          ONB__BATCH_F_256(hughes_moeller)
+#define ONB__BD_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt, 0)
+#define ONB__BF_hughes_moeller_rsqrt    ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt, 0)
+#define ONB__BD_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_D(hughes_moeller, _rsqrt_nr, 1)
+#define ONB__BF_hughes_moeller_rsqrt_nr ONB__BATCH_RSQRT_F(hughes_moeller, _rsqrt_nr, 1)
+#define ONB__BF_duff_comp               ONB__BATCH_DUFF_COMP_F
+#define ONB__BD_jolt_fma                ONB__BATCH_FMA_D(jolt_fma)
+#define ONB__BF_jolt_fma                ONB__BATCH_FMA_F(jolt_fma)
+#define ONB__OWN_D(m) ONB__BD_##m
+#define ONB__OWN_F(m) ONB__BF_##m
 #define ONB__SECOND_(a, b, ...) b
 #define ONB__SECOND(...) ONB__SECOND_(__VA_ARGS__)
-#define ONB__PICK(x) x
-#define ONB__BD(m) ONB__PICK(ONB__ID ONB__SECOND(ONB__BD_##m, (ONB__BATCH_SIMPLE_D(m)), ~))
-#define ONB__BF(m) ONB__PICK(ONB__ID ONB__SECOND(ONB__BF_##m, (ONB__BATCH_SIMPLE_F(m)), ~))
+#define ONB__BD(m) ONB__SECOND(ONB__OWN_##m ONB__OWN_D, ONB__BATCH_SIMPLE_D, ~)(m)
+#define ONB__BF(m) ONB__SECOND(ONB__OWN_##m ONB__OWN_F, ONB__BATCH_SIMPLE_F, ~)(m)
 ONB__SPLIT(ONB__BD, ONB__BF)

@@ -108,7 +108,7 @@ static int check_one(const char *method, int prec, const double n[3], double err
 		   it may read up to 5e-6 relative above the value measured */
 		if (!c->singular && !(c->bound >= err * (1.0 - 5e-6))) {
 			printf("VIOLATION %s %s n = (%a, %a, %a): measured %.17g > bound %.17g (region n.z [%g, %g], phi [%g, %g])\n",
-			       method, prec ? "double" : "float", n[0], n[1], n[2], err, c->bound,
+			       method, prec_name(prec), n[0], n[1], n[2], err, c->bound,
 			       c->r.nz_lo, c->r.nz_hi, c->r.phi_lo, c->r.phi_hi);
 			return -1;
 		}

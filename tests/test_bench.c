@@ -13,6 +13,7 @@
 #include "bench/yardstick.h"
 
 #include "check.h"
+#include "common/prec.h"
 
 typedef struct {
 	size_t n;
@@ -95,7 +96,7 @@ static void test_soa_checksum(void)
 			s.batchf = m->batchf;
 			CHECK(bench_run(bench_soa_kernel, &s, n, &cfg, &r) == 0, "run");
 			CHECK(bench_soa_checksum(&s) == 2.0 * (double)n, "%s %d threads: checksum %.17g, want %zu",
-			      dbl ? "double" : "float", thr, bench_soa_checksum(&s), 2 * n);
+			      prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT), thr, bench_soa_checksum(&s), 2 * n);
 			bench_soa_free(&s);
 		}
 }

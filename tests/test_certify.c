@@ -75,7 +75,7 @@ static void input(uint64_t i, double u[3])
 
 static int same_bits(double a, double b, int prec)
 {
-	if (prec == CM_F32) {
+	if (prec == PREC_FLOAT) {
 		float fa = (float)a, fb = (float)b;
 		return memcmp(&fa, &fb, sizeof fa) == 0;
 	}
@@ -84,7 +84,7 @@ static int same_bits(double a, double b, int prec)
 
 static void kernel(const onb_method *m, int prec, const double n[3], double o[6])
 {
-	if (prec == CM_F32) {
+	if (prec == PREC_FLOAT) {
 		onb_vec3f v = { (float)n[0], (float)n[1], (float)n[2] }, b1, b2;
 		m->basisf(v, &b1, &b2);
 		o[0] = b1.x; o[1] = b1.y; o[2] = b1.z; o[3] = b2.x; o[4] = b2.y; o[5] = b2.z;
@@ -118,7 +118,7 @@ static long check(const onb_method *m, const cm_method *cmm, int prec, long coun
 			}
 			input((uint64_t)i, u);
 			for (k = 0; k < 3; k++)
-				n[k] = prec == CM_F32 ? (double)(float)u[k] : u[k];
+				n[k] = prec == PREC_FLOAT ? (double)(float)u[k] : u[k];
 			kernel(m, prec, n, ko);
 			cm_exec_begin(c, prec, n, in);
 			cm_run(c, cmm, prec, in, out);
@@ -127,7 +127,7 @@ static long check(const onb_method *m, const cm_method *cmm, int prec, long coun
 			if (!ok && bad++ < 3)
 #pragma omp critical(test_certify_print)
 				printf("  %s %s: n = (%a, %a, %a): kernel b1.x %a model %a\n", m->name,
-				       prec == CM_F32 ? "float" : "double", n[0], n[1], n[2], ko[0], cm_value(c, out[0]));
+				       prec_name(prec), n[0], n[1], n[2], ko[0], cm_value(c, out[0]));
 		}
 		cm_free(c);
 	}
@@ -154,14 +154,14 @@ int main(int argc, char **argv)
 			fail = 1;
 			continue;
 		}
-		for (prec = CM_F32; prec <= CM_F64; prec++) {
+		for (prec = PREC_FLOAT; prec <= PREC_DOUBLE; prec++) {
 			long bad;
-			if (prec == CM_F64 && !ms[i].basis)
+			if (prec == PREC_DOUBLE && !ms[i].basis)
 				continue;
 			bad = check(&ms[i], cmm, prec, count);
 			checked++;
 			printf("%s %-24s %-6s %ld inputs, %ld not bit-identical\n", bad ? "FAIL" : "ok  ",
-			       ms[i].name, prec == CM_F32 ? "float" : "double", count, bad);
+			       ms[i].name, prec_name(prec), count, bad);
 			fail |= bad != 0;
 		}
 	}

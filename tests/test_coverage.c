@@ -104,7 +104,7 @@ typedef struct {
 static void check_input(env *e, mpfr_srcptr z, mpfr_srcptr phi, const double n[3])
 {
 	int i;
-	if (!cert_in_domain(n, CM_F64, -1.0)) {
+	if (!cert_in_domain(n, PREC_DOUBLE, -1.0)) {
 		CHECK(0, "(%a, %a, %a): not in the domain", n[0], n[1], n[2]);
 		return;
 	}
@@ -156,7 +156,7 @@ static void env_regions(env *e, double lo, double hi)
 	for (i = 0; i < e->nreg; i++)
 		free(e->lv[i]);
 	memset(e->lv, 0, sizeof e->lv);
-	e->nreg = (int)regions_band(CM_F64, 8, lo, hi, e->reg, 1024);
+	e->nreg = (int)regions_band(PREC_DOUBLE, 8, lo, hi, e->reg, 1024);
 }
 
 /* Next to the pole sg (+1 or -1): n.z = sg (1 - k 2^-53), k = 0..6. */

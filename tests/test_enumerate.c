@@ -63,7 +63,7 @@ static void side_crosscheck(long count)
 			                PREC_FLOAT);
 		s = cert_f32_side(n);
 		in += s == 0;
-		if ((s == 0) != cert_in_domain(n, CM_F32, -1.0) || s == 2)
+		if ((s == 0) != cert_in_domain(n, PREC_FLOAT, -1.0) || s == 2)
 			bad++;
 	}
 	/* n = (1, y, 0), y within 64 floats of 2^-12, and its rotations: the
@@ -78,7 +78,7 @@ static void side_crosscheck(long count)
 			n[(a + 1) % 3] = fmt_step(0x1p-12, i, PREC_FLOAT);
 			s = cert_f32_side(n);
 			in += s == 0;
-			bad += (s == 0) != cert_in_domain(n, CM_F32, -1.0) || s == 2;
+			bad += (s == 0) != cert_in_domain(n, PREC_FLOAT, -1.0) || s == 2;
 		}
 	}
 	count += 129 * 3;

@@ -15,6 +15,7 @@
 #include "mesh/meshio.h"
 
 #include "check.h"
+#include "common/prec.h"
 
 static int rd(const char *name, const void *buf, size_t len, mesh_normals *m, char *err)
 {
@@ -537,7 +538,7 @@ static void test_gltf_files(void)
 		if (m.count == 8)
 			CHECK(m.x[0] == (double)(float)0.6 * 0.5 && m.y[0] == (double)(float)0.8 * 0.25 && m.z[1] == 1 && m.where[0] >> 40 == 0
 			      && m.x[4] == (double)(float)0.6 * 0.5 && m.z[5] == 0.125 && m.y[6] == -0.25 && m.x[7] == 0.5 && m.where[4] >> 40 == 1,
-			      "strided --world values (%s): %a %a %a %a", fl ? "float" : "double", m.x[0], m.y[0], m.z[5], m.y[6]);
+			      "strided --world values (%s): %a %a %a %a", prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), m.x[0], m.y[0], m.z[5], m.y[6]);
 		mesh_free(&m);
 	}
 	/* .glb, default scene 1: its node rotates 90 degrees about z, so x -> y;

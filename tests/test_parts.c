@@ -242,7 +242,7 @@ static void check_family(const study_kernel *k, int p, ref_ctx *rc)
 	q = m ? e[m - 1 - m / 10] : INFINITY;
 	if (!approx && q > worst_q90) {
 		worst_q90 = q;
-		snprintf(worst_name, sizeof worst_name, "%s %s", k->name, p == PREC_FLOAT ? "float" : "double");
+		snprintf(worst_name, sizeof worst_name, "%s %s", k->name, prec_name(p));
 	}
 	if (!(approx ? q < 1e-2 : q < 1e3)) {
 		char why[160];

@@ -65,7 +65,7 @@ static int one(ref_ctx *rc, reffast_ctx *fc, int p, const double n[3], const dou
 			if (reffast_eval(fc2, &ks[k], p, n, loc, nonunit, &c2) != f ||
 			    (f != REFFAST_MPFR && memcmp(&b, &c2, sizeof b) != 0)) {
 				if (undetermined++ < 5)
-					printf("NONDETERMINISTIC %s %s n = (%a, %a, %a)\n", ks[k].name, p ? "double" : "float",
+					printf("NONDETERMINISTIC %s %s n = (%a, %a, %a)\n", ks[k].name, prec_name(p),
 					       n[0], n[1], n[2]);
 				good = 0;
 			}
@@ -83,7 +83,7 @@ static int one(ref_ctx *rc, reffast_ctx *fc, int p, const double n[3], const dou
 		}
 		if (memcmp(&a, &b, sizeof a) != 0) {
 			if (mismatches++ < 10) {
-				printf("MISMATCH %s %s n = (%a, %a, %a) loc (%a, %a, %a)%s\n", ks[k].name, p ? "double" : "float",
+				printf("MISMATCH %s %s n = (%a, %a, %a) loc (%a, %a, %a)%s\n", ks[k].name, prec_name(p),
 				       n[0], n[1], n[2], loc[0], loc[1], loc[2], nonunit ? " nonunit" : "");
 				show("mpfr", &a);
 				show("fast", &b);
@@ -114,9 +114,9 @@ static void dist(ref_ctx *rc, reffast_ctx *fc, int d, int p, uint64_t count, uin
 		dist_sample(&ds, i, n, lv, &aux);
 		bad += !one(rc, fc, p, n, lv, d == DIST_NONUNIT);
 	}
-	CHECK(bad == 0, "%s %s: %llu inputs where the fast path disagrees with MPFR", dist_name(d), p ? "double" : "float",
+	CHECK(bad == 0, "%s %s: %llu inputs where the fast path disagrees with MPFR", dist_name(d), prec_name(p),
 	      (unsigned long long)bad);
-	printf("  %-10s %-6s %6llu inputs: fast path decided %.3f%% of %llu samples\n", dist_name(d), p ? "double" : "float",
+	printf("  %-10s %-6s %6llu inputs: fast path decided %.3f%% of %llu samples\n", dist_name(d), prec_name(p),
 	       (unsigned long long)(ds.count - from),
 	       100.0 * (double)(decided[p] - d0) / (double)(total[p] - t0 ? total[p] - t0 : 1), total[p] - t0);
 	dist_free(&ds);
@@ -171,10 +171,10 @@ int main(int argc, char **argv)
 	for (p = 0; p < 2; p++) {
 		const double rate = 1.0 - (double)decided[p] / (double)total[p];
 		printf("  %s: fast path decided %llu of %llu samples (fallback %.4f%%; %llu with ref[] left to MPFR)\n",
-		       p ? "double" : "float", decided[p], total[p], 100.0 * rate, noref[p]);
+		       prec_name(p), decided[p], total[p], 100.0 * rate, noref[p]);
 		/* the mix is heavy in special inputs (threshold, axes); a path
 		   that gave up more often than this would not be a fast path */
-		CHECK(rate < 0.05, "%s: fallback rate %.4f%% is above 5%%", p ? "double" : "float", 100.0 * rate);
+		CHECK(rate < 0.05, "%s: fallback rate %.4f%% is above 5%%", prec_name(p), 100.0 * rate);
 	}
 	ref_free(rc);
 	reffast_free(fc);

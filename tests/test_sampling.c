@@ -120,6 +120,7 @@
 #define MPFR_BITS 256
 
 #include "check.h"
+#include "common/prec.h"
 
 /* ---- regularized upper incomplete gamma Q(a, x) ---- */
 static double gamma_q(double a, double x)
@@ -524,22 +525,22 @@ int main(int argc, char **argv)
 				if (r.ok) npass++; else nfail++;
 				if ((e == EXP_PASS && !r.ok) || (e == EXP_FAIL && r.ok)) { note = "  UNEXPECTED"; nunexp++; }
 				printf("%-23s %-6s %-8s %8.1f %9.3g %8.1f %9.3g %5lu %6lu %5lu %6.4f %6.4f  %-7s %s%s\n", ms[j].name,
-				       fl ? "float" : "double", set_name[set], r.chi2, r.p, r.schi2, r.sp, r.below, r.nonfinite,
+				       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p, r.schi2, r.sp, r.below, r.nonfinite,
 				       r.moved, (double)r.big / NS, (double)r.huge / NS, r.ok ? "pass" : e == EXP_FAIL ? "fail" : "FAIL", exp_name[e], note);
 				CHECK(r.spot_bad == 0, "%s %s %s: %lu spot checks disagree with MPFR", ms[j].name,
-				      fl ? "float" : "double", set_name[set], r.spot_bad);
+				      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.spot_bad);
 				if (e == EXP_PASS) {
 					CHECK(r.ok, "%s %s %s must pass: chi2 %.1f p %g below %lu nonfinite %lu", ms[j].name,
-					      fl ? "float" : "double", set_name[set], r.chi2, r.p, r.below, r.nonfinite);
+					      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p, r.below, r.nonfinite);
 					CHECK((double)r.big / NS <= F_SMALL && r.sbig == 0,
 					      "%s %s %s: premise of must-pass broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > %g",
-					      ms[j].name, fl ? "float" : "double", set_name[set], r.big, NS, r.sbig, NG, D_SMALL);
+					      ms[j].name, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.big, NS, r.sbig, NG, D_SMALL);
 				} else if (e == EXP_FAIL) {
 					CHECK(!r.ok, "%s %s %s must fail but passed: chi2 %.1f p %g", ms[j].name,
-					      fl ? "float" : "double", set_name[set], r.chi2, r.p);
+					      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p);
 					CHECK((double)r.huge / NS >= 1e-2 || r.shuge > 0,
 					      "%s %s %s: premise of must-fail broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > 0.1",
-					      ms[j].name, fl ? "float" : "double", set_name[set], r.huge, NS, r.shuge, NG);
+					      ms[j].name, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.huge, NS, r.shuge, NG);
 				}
 			}
 		}

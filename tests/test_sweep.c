@@ -327,7 +327,7 @@ static void test_distributions(void)
 				if (dd == DIST_NORTH && !(n1[2] >= 0.9 - 1e-7)) bad++;
 				if (dd == DIST_EXHAUSTIVE && n1[2] != fmt_step(-1.0, (int64_t)(k / 5), p)) bad++;
 				if (bad != b0 && bad < 5)
-					printf("  %s %s input %llu: (%a, %a, %a)\n", dist_name(dd), p ? "double" : "float",
+					printf("  %s %s input %llu: (%a, %a, %a)\n", dist_name(dd), prec_name(p),
 					       (unsigned long long)k, n1[0], n1[1], n1[2]);
 			}
 			dist_free(&d);

@@ -23,6 +23,7 @@
 #include "bench/bench_calls.h"
 #include "bench/yardstick.h"
 #include "bench/bench_ref.h"
+#include "common/prec.h"
 
 typedef struct {
 	const char *method;   /* registry name, or "copy" for the roofline */
@@ -62,7 +63,7 @@ static bench_row *rows_add(bench_rows *rs)
 }
 
 typedef struct {
-	int quick, threads, csv, nmeth, prec_mask; /* prec_mask: 1 float, 2 double */
+	int quick, threads, csv, nmeth, prec_on[2];
 	int reference;                              /* --reference: that mode only */
 	const onb_method *meth[64];
 	const char *out;
@@ -109,12 +110,11 @@ static int bench_methods(const char *v, bench_opts *o)
 static int bench_option(int v, const char *a, bench_opts *o)
 {
 	long t;
-	int on[2] = { 0, 0 };
 	switch (v) {
 	case 'q': o->quick = 1; return 0;
 	case 'R': o->reference = 1; return 0;
 	case 'm': return bench_methods(a, o);
-	case 'p': if (cli_precision("--precision", a, on)) return -1; o->prec_mask = on[0] | on[1] << 1; return 0;
+	case 'p': return cli_precision("--precision", a, o->prec_on);
 	case 't': /* 0: OpenMP's maximum, as the default */
 		if (parse_int("--threads", a, 0, 1024, &t) != 0) return -1;
 		o->threads = t ? (int)t : omp_get_max_threads();
@@ -155,7 +155,7 @@ static int parse_opts(int argc, char **argv, bench_opts *o)
 	cli_args c;
 	int v, rc = 0;
 	memset(o, 0, sizeof *o);
-	o->prec_mask = 3;
+	o->prec_on[PREC_FLOAT] = o->prec_on[PREC_DOUBLE] = 1;
 	o->threads = omp_get_max_threads();
 	o->stream_mib = -1.0;
 	o->seed = 1;
@@ -519,7 +519,7 @@ static const char *row_flag(const bench_row *r)
 static void write_row(FILE *f, const bench_row *r, int tsc)
 {
 	const double n = (double)r->r.n;
-	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, r->dbl ? "double" : "float", r->mode, r->r.threads,
+	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, prec_name(r->dbl ? PREC_DOUBLE : PREC_FLOAT), r->mode, r->r.threads,
 	        r->size_class, r->r.n, r->bytes, (size_t)r->r.reps, r->r.passes);
 	study_csv_num(f, n / r->r.median_s * 1e-6);
 	study_csv_num(f, n / r->r.min_s * 1e-6);
@@ -579,10 +579,10 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 {
 	int p, mi;
 	for (p = 0; p < 2; p++) {
-		if (!(o->prec_mask & (1 << p)))
+		if (!o->prec_on[p])
 			continue;
 		printf("\n%s: batch M bases/s (median), L2-resident and stream, 1 and %d threads; per call ns (inline, 1 thread)\n",
-		       p ? "double" : "float", o->threads);
+		       prec_name(p), o->threads);
 		printf("  roof%% = stream, 1 thread, vs the copy; vsYard = L2, 1 thread, vs the yardstick (both from best times);\n"
 		       "  vec = widest packed register of the kernel that ran; call ns = inline, independent calls; lat ns = dependent\n"
 		       "  chain; lat-ch = lat ns minus the chain alone (%.2f ns)\n",
@@ -709,7 +709,7 @@ int cmd_bench(int argc, char **argv)
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
 	for (p = 0; p < 2; p++)
-		if (o.prec_mask & (1 << p))
+		if (o.prec_on[p])
 			if (bench_precision(&o, p, n_l2, n_stream, &rs) != 0) {
 				free(rs.v);
 				return 1;

@@ -154,14 +154,14 @@ int bench_reference(const char *out, int quick, unsigned long long seed)
 	        reps, per);
 	fprintf(f.f, "precision,evaluations,fast_per_s,mpfr_per_s,speedup,fast_fallback_rate\n");
 	for (p = 0; p < 2; p++)
-		fprintf(f.f, "%s,%llu,%.0f,%.0f,%.3f,%.6f\n", p ? "double" : "float", evs[p], rate[p][0], rate[p][1],
+		fprintf(f.f, "%s,%llu,%.0f,%.0f,%.3f,%.6f\n", prec_name(p), evs[p], rate[p][0], rate[p][1],
 		        rate[p][0] / rate[p][1], evs[p] ? (double)fb[p] / (double)evs[p] : 0.0);
 	if (study_out_commit(&f) != 0)
 		return 1;
 	printf("reference path, referenced evaluations per second on one core (median of %d):\n", reps);
 	for (p = 0; p < 2; p++)
 		printf("  %-6s fast %10.0f  mpfr %10.0f  speedup %.2fx  (fast path fell back to MPFR on %.3f%%)\n",
-		       p ? "double" : "float", rate[p][0], rate[p][1], rate[p][0] / rate[p][1],
+		       prec_name(p), rate[p][0], rate[p][1], rate[p][0] / rate[p][1],
 		       evs[p] ? 100.0 * (double)fb[p] / (double)evs[p] : 0.0);
 	printf("wrote %s/bench-reference.csv%s\n", out, check == 12345.0 ? " " : "");
 	return 0;

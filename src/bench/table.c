@@ -27,6 +27,7 @@
 #include "bench/table.h"
 #include "common/options.h"
 #include "common/output.h"
+#include "common/prec.h"
 
 #define CSV_MAXF 64
 
@@ -510,7 +511,7 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 			const tradeoff_row *r = &rows[i];
 			if (r->dbl != p)
 				continue;
-			fprintf(f->f, "%s,%s", r->method, r->dbl ? "double" : "float");
+			fprintf(f->f, "%s,%s", r->method, prec_name(r->dbl ? PREC_DOUBLE : PREC_FLOAT));
 			study_csv_num(f->f, r->batch1);
 			study_csv_num(f->f, r->batchn);
 			fprintf(f->f, ",%d", r->threads);

@@ -303,7 +303,7 @@ static void whole_sphere(const cert_result *res, const task *t, int nt, int k, i
 
 static void csv_row(FILE *f, const char *name, int p, const cert_region *r, const cert_result *x)
 {
-	fprintf(f, "%s,%s,%.17g,%.17g,%g,%g,", name, p == PREC_FLOAT ? "float" : "double",
+	fprintf(f, "%s,%s,%.17g,%.17g,%g,%g,", name, prec_name(p),
 	        r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
 	if (isinf(x->bound))
 		fprintf(f, "inf,");
@@ -437,7 +437,7 @@ static void print_summary(const study_kernel *ks, int nk, const task *t, int nt,
 			for (i = 0; i < nt; i++)
 				if (t[i].k == k && t[i].prec == p)
 					cnt[res[i].status]++;
-			printf("%-24s %-6s %12.4g %12.4g %7.3g  %s (%d/%d/%d)\n", ks[k].name, p ? "double" : "float",
+			printf("%-24s %-6s %12.4g %12.4g %7.3g  %s (%d/%d/%d)\n", ks[k].name, prec_name(p),
 			       w.bound / unit_of(p), w.found / unit_of(p), w.found > 0 ? w.bound / w.found : NAN,
 			       status_name(w.status), cnt[0], cnt[1], cnt[2]);
 		}
@@ -467,9 +467,9 @@ int cmd_certify(int argc, char **argv)
 	if (c.starts && load_starts(&c))
 		return ONB_EXIT_USAGE;
 	for (p = 0; p < 2; p++)
-		nreg[p] = c.band ? regions_band(p == PREC_FLOAT ? CM_F32 : CM_F64, c.sectors, c.band_lo, c.band_hi,
+		nreg[p] = c.band ? regions_band(p, c.sectors, c.band_lo, c.band_hi,
 		                                reg + p * MAXREG, MAXREG)
-		                 : regions_default(p == PREC_FLOAT ? CM_F32 : CM_F64, c.sectors, reg + p * MAXREG, MAXREG);
+		                 : regions_default(p, c.sectors, reg + p * MAXREG, MAXREG);
 	t = malloc((size_t)nk * (nreg[0] + nreg[1]) * sizeof *t);
 	res = calloc((size_t)nk * (nreg[0] + nreg[1]), sizeof *res);
 	if (!t || !res) {

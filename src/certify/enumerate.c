@@ -81,7 +81,7 @@ int cert_f32_side(const double n[3])
 		return -1;
 	if (lo - 1.0 < -SIDE_TOL && hi - 1.0 > SIDE_TOL)
 		return 0;
-	if (cert_in_domain(n, CM_F32, -1.0))
+	if (cert_in_domain(n, PREC_FLOAT, -1.0))
 		return 0;
 	if (fabs(lo - 1.0) <= SIDE_TOL && fabs(hi - 1.0) <= SIDE_TOL)
 		return 2;
@@ -216,7 +216,7 @@ static int member(const double n[3], int ax, double x)
 	double v[3];
 	memcpy(v, n, sizeof v);
 	v[ax] = x;
-	return cert_in_domain(v, CM_F32, -1.0);
+	return cert_in_domain(v, PREC_FLOAT, -1.0);
 }
 
 /* n with its two fixed components set: every domain value of the third,

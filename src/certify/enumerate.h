@@ -34,7 +34,7 @@ typedef struct {
 const cert_box *cert_boxes(int *count);
 
 /* Which side of the default float domain n lies on: 0 in it (exactly when
-   cert_in_domain(n, CM_F32, -1) is 1), -1 too short (every real that
+   cert_in_domain(n, PREC_FLOAT, -1) is 1), -1 too short (every real that
    rounds to n has |u| <= 1), +1 too long (|u| >= 1), 2 when a component
    is not a finite float or the side cannot be told.  Exact: a double sum
    decides unless it is within 2^-46 of 1, then cert_in_domain does. */

@@ -24,7 +24,7 @@ typedef struct {
    yet: its direction error is not certified). */
 const cm_method *cm_find(const char *name);
 /* The kernel's operations on n, writing b1 (out[0..2]) and b2 (out[3..5])
-   in precision P (CM_F32 or CM_F64). */
+   in precision P (PREC_FLOAT or PREC_DOUBLE). */
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6]);
 
 #endif

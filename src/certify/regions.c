@@ -32,7 +32,7 @@ int cert_in_region(const cert_region *r, const double n[3])
    in 1 - n.z near +1 (whole decades), linear steps of 0.3 in between. */
 static size_t band_edges(int prec, double *e, size_t cap)
 {
-	const int lo_dec = prec == CM_F32 ? 7 : 16;
+	const int lo_dec = prec == PREC_FLOAT ? 7 : 16;
 	size_t n = 0;
 	int k;
 	e[n++] = -1.0;
@@ -82,7 +82,7 @@ size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, 
 
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 {
-	const double u = prec == CM_F32 ? 0x1p-24 : 0x1p-53, eta = prec == CM_F32 ? 0x1p-149 : 0x1p-1074;
+	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-149 : 0x1p-1074;
 	const double w = tolerance >= 0 ? tolerance : u;   /* relative widening */
 	double zmax, rmin, dphi;
 	b->prec = prec;
@@ -125,7 +125,7 @@ int region_meets_singular(const study_kernel *k, const cert_region *r)
 static void rounding_end(double v, int prec, int upper, mpfr_t t)
 {
 	double a = fabs(v), up, down;
-	if (prec == CM_F32) {
+	if (prec == PREC_FLOAT) {
 		float f = (float)a;
 		up = (double)nextafterf(f, INFINITY) - a;
 		down = a > 0.0 ? a - (double)nextafterf(f, 0.0f) : 0.0;
@@ -148,7 +148,7 @@ int cert_in_domain(const double n[3], int prec, double tolerance)
 	mpfr_set_zero(s_lo, 1);
 	mpfr_set_zero(s_hi, 1);
 	for (i = 0; i < 3 && in; i++) {
-		if (!isfinite(n[i]) || (prec == CM_F32 && (double)(float)n[i] != n[i])) {
+		if (!isfinite(n[i]) || (prec == PREC_FLOAT && (double)(float)n[i] != n[i])) {
 			in = 0;
 			break;
 		}

@@ -10,7 +10,7 @@
 #include "model/mvf.h"
 #include "methods/kernels.h"
 
-/* The default regions for precision prec (CM_F32 or CM_F64): bands of n.z
+/* The default regions for precision prec (PREC_FLOAT or PREC_DOUBLE): bands of n.z
    log-spaced in 1 + n.z near -1 (two per decade, down to the pole) and in
    1 - n.z near +1 (one per decade), linear in between, times nsec equal
    azimuth sectors.  Returns the count written to out (capacity cap). */

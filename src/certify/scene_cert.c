@@ -223,7 +223,7 @@ int scene_certify(const char *path, char up, int fl, double E, const onb_method 
 	unsigned char hit[MAXREG];
 	scene_bound *sb = calloc(nm ? nm : 1, sizeof *sb);
 	const int prec = fl ? PREC_FLOAT : PREC_DOUBLE;
-	size_t nreg = regions_default(fl ? CM_F32 : CM_F64, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
+	size_t nreg = regions_default(prec, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
 	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0 };
 	double zmin = 2.0, zmax = -2.0;
 	o.tolerance = fl ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
@@ -245,7 +245,7 @@ int scene_certify(const char *path, char up, int fl, double E, const onb_method 
 		nhit += hit[i];
 	printf("\nproven bounds for this scene (--certify): %zu shading patches (spherical triangles of the vertex normals)\n"
 	       "  touch %zu of the %zu regions; domain: every %s n with | |n| - 1 | <= %.3g (the renderer's normalization)\n",
-	       npatch, nhit, nreg, fl ? "float" : "double", o.tolerance);
+	       npatch, nhit, nreg, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), o.tolerance);
 	printf("  %-24s %12s %12s  %s\n", "method", "proven_max", "measured", "verdict (E = tolerance)");
 	for (i = 0; i < nm; i++) {
 		const char *v = sb[i].singular ? "singular here: not bounded"

@@ -93,14 +93,14 @@ static double z_measure(const mvf_box *b, double *mid)
    most max of them into zs, or 0 when there are more (or none). */
 static int zvalues(const mvf_box *b, double *zs, int max)
 {
-	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	const double u = b->prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53;
 	double lo = fmax(b->nz_lo, b->z_lo - u * fabs(b->z_lo) * 1.01);
 	double hi = fmin(b->nz_hi, b->z_hi + u * fabs(b->z_hi) * 1.01), z;
 	int n = 0;
 	if (b->tolerance >= 0 || b->has_zpoint || !(lo <= hi))
 		return 0;
-	z = b->prec == CM_F32 ? (double)nextafterf((float)lo, -INFINITY) : nextafter(lo, -INFINITY);
-	for (; n <= max; z = b->prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY)) {
+	z = b->prec == PREC_FLOAT ? (double)nextafterf((float)lo, -INFINITY) : nextafter(lo, -INFINITY);
+	for (; n <= max; z = b->prec == PREC_FLOAT ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY)) {
 		if (z < lo)
 			continue;
 		if (z > hi)
@@ -120,8 +120,8 @@ static int zvalues(const mvf_box *b, double *zs, int max)
    (a cell twice as wide), so the offsets are kept apart from z. */
 static void rounding_cell(double z, int prec, double *dlo, double *dhi)
 {
-	double up = prec == CM_F32 ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY);
-	double dn = prec == CM_F32 ? (double)nextafterf((float)z, -INFINITY) : nextafter(z, -INFINITY);
+	double up = prec == PREC_FLOAT ? (double)nextafterf((float)z, INFINITY) : nextafter(z, INFINITY);
+	double dn = prec == PREC_FLOAT ? (double)nextafterf((float)z, -INFINITY) : nextafter(z, -INFINITY);
 	*dlo = fmax(-(z - dn) / 2, -1.0 - z);   /* -1 - z exact near -1 (Sterbenz) */
 	*dhi = fmin((up - z) / 2, 1.0 - z);
 }
@@ -153,7 +153,7 @@ static int split(const mvf_box *b, mvf_box *c)
 	double zm, zs[8], zw = z_measure(b, &zm), zmin = fmin(fabs(b->z_lo), fabs(b->z_hi));
 	double r = b->z_lo <= 0.0 && b->z_hi >= 0.0 ? 1.0 : sqrt(fmax(0.0, 1.0 - zmin * zmin));
 	double pw = (b->phi_hi - b->phi_lo) * r;
-	const double u = b->prec == CM_F32 ? 0x1p-24 : 0x1p-53;
+	const double u = b->prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53;
 	/* only within 32 u of a pole, where n.z's own rounding is a large part
 	   of 1 -+ n.z and the first-order form cannot follow it */
 	int i, k = (1.0 + b->z_hi <= 32 * u || 1.0 - b->z_lo <= 32 * u) ? zvalues(b, zs, 8) : 0;
@@ -161,7 +161,7 @@ static int split(const mvf_box *b, mvf_box *c)
 		c[i] = *b;
 		c[i].has_zpoint = 1;
 		c[i].zpoint = zs[i];
-		rounding_cell(zs[i], b->prec == CM_F32 ? PREC_FLOAT : PREC_DOUBLE, &c[i].dz_lo, &c[i].dz_hi);
+		rounding_cell(zs[i], b->prec, &c[i].dz_lo, &c[i].dz_hi);
 		c[i].z_lo = zs[i] + c[i].dz_lo;   /* the u.z that round to it (nearly) */
 		c[i].z_hi = zs[i] + c[i].dz_hi;
 	}
@@ -334,7 +334,7 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 		res->bound = INFINITY;
 		return;
 	}
-	region_box(r, prec == PREC_FLOAT ? CM_F32 : CM_F64, o->tolerance, &b);
+	region_box(r, prec, o->tolerance, &b);
 	branch_and_bound(&e, m, &b);
 	found_walks(&e, 0);
 	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;

@@ -160,7 +160,7 @@ int cmd_eval(int argc, char **argv)
 		if (!rc || !rc2) { study_error("out of memory"); return 1; }
 		for (p = 0; p < 2; p++) {
 			double n[3], lv[3];
-			const char *pn = p == PREC_FLOAT ? "float" : "double";
+			const char *pn = prec_name(p);
 			if (!prec_on[p])
 				continue;
 			for (i = 0; i < 3; i++) {

@@ -83,8 +83,8 @@ static void model_wide(cm *c, int P, const cv nf[3], cv out[6])
 	cv n[3], d[6];
 	int i;
 	for (i = 0; i < 3; i++)
-		n[i] = cm_cvt(c, CM_F64, nf[i]);
-	model_listing(c, CM_F64, n, d);
+		n[i] = cm_cvt(c, PREC_DOUBLE, nf[i]);
+	model_listing(c, PREC_DOUBLE, n, d);
 	for (i = 0; i < 6; i++)
 		out[i] = cm_cvt(c, P, d[i]);
 }

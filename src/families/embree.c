@@ -65,11 +65,11 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    1.5 r + ((x -0.5) r)(r r), each operation rounded in P. */
 static cv embree_rsqrt(cm *c, int P, cv x)
 {
-	cv xf = P == CM_F32 ? x : cm_cvt(c, CM_F32, x), r;
+	cv xf = P == PREC_FLOAT ? x : cm_cvt(c, PREC_FLOAT, x), r;
 #if ONB_HAVE_HW_RSQRT
 	r = cm_seed(c, SEED_RSQRTSS, xf);
 #else
-	r = cm_div(c, CM_F32, cm_cst(c, 1.0), cm_sqrt(c, CM_F32, xf));
+	r = cm_div(c, PREC_FLOAT, cm_cst(c, 1.0), cm_sqrt(c, PREC_FLOAT, xf));
 #endif
 	r = cm_cvt(c, P, r);
 	return cm_newton_embree(c, P, x, r);   /* ADD(MUL(K(1.5), r), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r))) */

@@ -43,7 +43,7 @@ typedef void (*family_pair_l_fn)(const onb_method *m, int br, const double loc[3
                                  xv_pl *b1, xv_pl *b2, int *bad);
 /* The kernel's operations as a rounding model (src/model/model.h: the
    context cm, value handles cv, which are ints): b1 into out[0..2], b2
-   into out[3..5], in precision P (CM_F32, CM_F64).  Spelled without the
+   into out[3..5], in precision P (PREC_FLOAT, PREC_DOUBLE).  Spelled without the
    model's names, which the rooms that only evaluate need not see. */
 struct cm;
 typedef void (*family_model_fn)(struct cm *c, int P, const onb_method *m, const int n[3], int out[6]);

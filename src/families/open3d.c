@@ -82,7 +82,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    v0^2 + (v1^2 + v2^2) for a Vector3f */
 static cv sqnorm(cm *c, int P, const cv v[3])
 {
-	if (P == CM_F64)
+	if (P == PREC_DOUBLE)
 		return ADD(ADD(MUL(v[0], v[0]), MUL(v[1], v[1])), MUL(v[2], v[2]));
 	return ADD(MUL(v[0], v[0]), ADD(MUL(v[1], v[1]), MUL(v[2], v[2])));
 }

@@ -66,19 +66,19 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		inv = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
 		u[0] = MUL(K(0.0), inv); u[1] = MUL(n[2], inv); u[2] = MUL(cm_neg(c, n[1]), inv);
 	}
-	if (P == CM_F64) {
+	if (P == PREC_DOUBLE) {
 		mk_post_n_cross_u(c, P, n, u, K(1.0), out);
 		return;
 	}
 	for (i = 0; i < 3; i++) {  /* pbrt-v3's Cross: widened to double, then to float */
 		out[i] = u[i];
-		w[i] = cm_cvt(c, CM_F64, n[i]);
+		w[i] = cm_cvt(c, PREC_DOUBLE, n[i]);
 	}
 	for (i = 0; i < 3; i++)
-		uw[i] = cm_cvt(c, CM_F64, u[i]);
-	mk_cross(c, CM_F64, w, uw, b);
+		uw[i] = cm_cvt(c, PREC_DOUBLE, u[i]);
+	mk_cross(c, PREC_DOUBLE, w, uw, b);
 	for (i = 0; i < 3; i++)
-		out[3 + i] = cm_cvt(c, CM_F32, b[i]);
+		out[3 + i] = cm_cvt(c, PREC_FLOAT, b[i]);
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -41,7 +41,7 @@ void cm_exec_begin(cm *c, int f, const double n[3], cv in[3])
 	c->n = 0;
 	c->failed = 0;
 	for (i = 0; i < 3; i++) {
-		c->x[c->n] = f == CM_F32 ? (double)(float)n[i] : n[i];
+		c->x[c->n] = f == PREC_FLOAT ? (double)(float)n[i] : n[i];
 		in[i] = c->n++;
 	}
 }
@@ -63,7 +63,7 @@ static cv put(cm *c, double v)
    fmt_round in src/study/inputs.c). */
 static double fmt(int f, double v)
 {
-	if (f == CM_F32) {
+	if (f == PREC_FLOAT) {
 		volatile float r = (float)v;
 		return r;
 	}
@@ -107,7 +107,7 @@ cv cm_fma(cm *c, int f, cv a, cv b, cv d)
 {
 	if (c->backend == CM_MVF)
 		return mvf_op(c->m, MVF_FMA, f, a, b, d);
-	if (f == CM_F32)
+	if (f == PREC_FLOAT)
 		return put(c, (double)fmaf((float)c->x[a], (float)c->x[b], (float)c->x[d]));
 	return put(c, fma(c->x[a], c->x[b], c->x[d]));
 }
@@ -117,7 +117,7 @@ cv cm_cvt(cm *c, int f, cv a)
 }
 cv cm_neg(cm *c, cv a)
 {
-	return c->backend == CM_MVF ? mvf_op(c->m, MVF_NEG, CM_F64, a, -1, -1) : put(c, -c->x[a]);
+	return c->backend == CM_MVF ? mvf_op(c->m, MVF_NEG, PREC_DOUBLE, a, -1, -1) : put(c, -c->x[a]);
 }
 
 /* The seeds as the kernels compute them (include/libonb/onb.h). */

@@ -28,9 +28,7 @@
 #define ONB_CERTIFY_MODEL_H
 
 #include "seeds.h"
-
-/* Formats of an operation's result. */
-enum { CM_F32 = 0, CM_F64 = 1 };
+#include "common/prec.h"   /* the formats of an operation's result: PREC_FLOAT, PREC_DOUBLE */
 /* Back ends. */
 enum { CM_EXEC = 0, CM_MVF = 1 };
 
@@ -48,7 +46,7 @@ int  cm_backend(const cm *c);
    an interval that is not finite, a path that no point can take). */
 int  cm_failed(const cm *c);
 
-/* Operations.  Each rounds once to format f (CM_F32 or CM_F64). */
+/* Operations.  Each rounds once to format f (PREC_FLOAT or PREC_DOUBLE). */
 cv cm_cst(cm *c, double v);              /* exact constant                  */
 cv cm_add(cm *c, int f, cv a, cv b);
 cv cm_sub(cm *c, int f, cv a, cv b);

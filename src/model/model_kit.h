@@ -3,7 +3,7 @@
  * with (src/families/): a kernel's operations in the model context
  * (model.h), in the same order and format as include/libonb/onb.h performs them.
  * C evaluates a*b*c as (a*b)*c and -a*b as (-a)*b; the models spell that
- * out.  The macros need `c` (the context) and `P` (CM_F32 or CM_F64) in
+ * out.  The macros need `c` (the context) and `P` (PREC_FLOAT or PREC_DOUBLE) in
  * scope.  The kit imports the model context alone.
  */
 #ifndef ONB_CERTIFY_MODEL_KIT_H
@@ -17,7 +17,7 @@
 #define SUB(a, b) cm_sub(c, P, a, b)
 #define MUL(a, b) cm_mul(c, P, a, b)
 #define DIV(a, b) cm_div(c, P, a, b)
-#define K(v)      cm_cst(c, P == CM_F32 ? (double)(float)(v) : (v))
+#define K(v)      cm_cst(c, P == PREC_FLOAT ? (double)(float)(v) : (v))
 
 /* b = cross(p, q) as onb.h writes it: b.x = p.y*q.z - p.z*q.y, ... */
 static inline void mk_cross(cm *c, int P, const cv p[3], const cv q[3], cv b[3])
@@ -40,14 +40,14 @@ static inline cv mk_rsq(cm *c, int P, cv x, int norm)
 {
 	switch (norm) {
 	case ONB__NORM_INVSQRT:
-		return cm_newton(c, P, x, cm_seed(c, P == CM_F32 ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
+		return cm_newton(c, P, x, cm_seed(c, P == PREC_FLOAT ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
 	case ONB__NORM_RSQRT:
 	case ONB__NORM_RSQRT_NR: {
-		cv xf = P == CM_F32 ? x : cm_cvt(c, CM_F32, x), y;
+		cv xf = P == PREC_FLOAT ? x : cm_cvt(c, PREC_FLOAT, x), y;
 #if ONB_HAVE_HW_RSQRT
 		y = cm_seed(c, SEED_RSQRTSS, xf);
 #else
-		y = cm_div(c, CM_F32, cm_cst(c, 1.0), cm_sqrt(c, CM_F32, xf));
+		y = cm_div(c, PREC_FLOAT, cm_cst(c, 1.0), cm_sqrt(c, PREC_FLOAT, xf));
 #endif
 		y = cm_cvt(c, P, y);
 		return norm == ONB__NORM_RSQRT ? y : cm_newton(c, P, x, y);
@@ -56,7 +56,7 @@ static inline cv mk_rsq(cm *c, int P, cv x, int norm)
 		cm_formula_nonzero(c, CQ_LENGTHS);
 		return K(1.0);
 	default: /* (float)(1.0/sqrt((double)x)) in float, 1.0/sqrt(x) in double */
-		return cm_cvt(c, P, cm_div(c, CM_F64, cm_cst(c, 1.0), cm_sqrt(c, CM_F64, cm_cvt(c, CM_F64, x))));
+		return cm_cvt(c, P, cm_div(c, PREC_DOUBLE, cm_cst(c, 1.0), cm_sqrt(c, PREC_DOUBLE, cm_cvt(c, PREC_DOUBLE, x))));
 	}
 }
 

@@ -39,7 +39,7 @@ typedef struct {
 	mpfi_t *g;       /* d v / d e_k, meaningful where nz[k]             */
 	unsigned char *nz;
 	int ng;          /* entries 0..ng-1 may be nonzero                  */
-	int fmt;         /* CM_F32 or CM_F64: the format the value lies in  */
+	int fmt;         /* PREC_FLOAT or PREC_DOUBLE: the format the value lies in  */
 	int is_cst;      /* an exact constant cval                          */
 	double cval;
 	/* A seed y of 1/sqrt(x): y = r/sqrt(x) with r in [rel_lo, rel_hi], x the
@@ -159,8 +159,8 @@ int mvf_failed(const mvf *m) { return m->failed; }
 /* No gradients in this run: MVF_VALUES, MVF_AT_ZERO and MVF_AT_MID. */
 static int no_grad(const mvf *m) { return m->nograd || (m->zero_e && !m->centred); }
 
-static double unit_round(int f) { return f == CM_F32 ? 0x1p-24 : 0x1p-53; }
-static double normal_min(int f) { return f == CM_F32 ? 0x1p-126 : 0x1p-1022; }
+static double unit_round(int f) { return f == PREC_FLOAT ? 0x1p-24 : 0x1p-53; }
+static double normal_min(int f) { return f == PREC_FLOAT ? 0x1p-126 : 0x1p-1022; }
 
 /* A fresh value slot with an empty gradient. */
 static cv fresh(mvf *m, int fmt)
@@ -240,7 +240,7 @@ static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval 
 
 cv mvf_cst(mvf *m, double v)
 {
-	cv i = fresh(m, (double)(float)v == v ? CM_F32 : CM_F64);
+	cv i = fresh(m, (double)(float)v == v ? PREC_FLOAT : PREC_DOUBLE);
 	mpfi_set_d(m->val[i].v, v);
 	m->val[i].is_cst = 1;
 	m->val[i].cval = v;
@@ -259,7 +259,7 @@ cv mvf_cst(mvf *m, double v)
    rounding any value of V to nearest); 0 when V = {0}. */
 static double half_ulp_of(mvf *m, mpfi_srcptr v, int f)
 {
-	const int p = f == CM_F32 ? 24 : 53, emin = f == CM_F32 ? -126 : -1022;
+	const int p = f == PREC_FLOAT ? 24 : 53, emin = f == PREC_FLOAT ? -126 : -1022;
 	long e;
 	double h;
 	mpfi_mag(m->f1, v);
@@ -372,14 +372,14 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 	case MVF_NEG:
 		return 1;
 	case MVF_CVT:
-		return f == CM_F64 || a->fmt == CM_F32;
+		return f == PREC_DOUBLE || a->fmt == PREC_FLOAT;
 	case MVF_MUL:
 		if (is_zero(a) || is_zero(b))
 			return 1;
 		if (((is_cst(a, 1.0) || is_cst(a, -1.0)) && b->fmt <= f) ||
 		    ((is_cst(b, 1.0) || is_cst(b, -1.0)) && a->fmt <= f))
 			return 1;
-		if (f == CM_F64 && a->fmt == CM_F32 && b->fmt == CM_F32)
+		if (f == PREC_DOUBLE && a->fmt == PREC_FLOAT && b->fmt == PREC_FLOAT)
 			return 1; /* 24 + 24 bits fit in 53 */
 		if ((is_pow2(a) && b->fmt <= f) || (is_pow2(b) && a->fmt <= f)) {
 			mpfi_mig(m->f1, r->v);
@@ -498,7 +498,7 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
    shared by the three components. */
 
 static double round_up_d(double x) { return nextafter(x, INFINITY); }
-static double tiny_of(int f) { return f == CM_F32 ? 0x1p-150 : 0x1p-1074; }
+static double tiny_of(int f) { return f == PREC_FLOAT ? 0x1p-150 : 0x1p-1074; }
 
 /* (1 + a)(1 + b) - 1 and (1 + a)/(1 + b) - 1, rounded up or down */
 static double rel_mul(mvf *m, double a, double b, int up)
@@ -1085,11 +1085,11 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		r->rel_lo = a->rel_lo;
 		r->rel_hi = a->rel_hi;
 	}
-	if (op == MVF_CVT && f == CM_F32 && a->fmt == CM_F64) {
+	if (op == MVF_CVT && f == PREC_FLOAT && a->fmt == PREC_DOUBLE) {
 		mpfi_mig(m->f1, a->v);
-		if (mpfr_cmp_d(m->f1, normal_min(CM_F32)) >= 0) {
+		if (mpfr_cmp_d(m->f1, normal_min(PREC_FLOAT)) >= 0) {
 			r->cvt_of = ia;
-			r->cvt_u = unit_round(CM_F32);
+			r->cvt_u = unit_round(PREC_FLOAT);
 		}
 	}
 	track(m, op, f, exact, ir, ia, ib);
@@ -1109,7 +1109,7 @@ static void exact_rsqrt(mvf *m, mval *r, const mval *a)
 
 cv mvf_seed(mvf *m, seed_kind k, cv ia)
 {
-	int f = k == SEED_INVSQRT_D ? CM_F64 : CM_F32;
+	int f = k == SEED_INVSQRT_D ? PREC_DOUBLE : PREC_FLOAT;
 	cv ir = fresh(m, f);
 	mval *r = &m->val[ir];
 	const mval *a = &m->val[ia];
@@ -1260,13 +1260,13 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
    n.z given, |n.z - u.z| <= max(-dz_lo, dz_hi). */
 static void input_grid(mvf *m, const mvf_box *b, const cv in[3])
 {
-	const int p = b->prec == CM_F32 ? 24 : 53;
+	const int p = b->prec == PREC_FLOAT ? 24 : 53;
 	int i;
 	for (i = 0; i < 3; i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_mig(m->f1, x->v);
 		if (mpfr_cmp_d(m->f1, normal_min(b->prec)) < 0)
-			x->quantum = b->prec == CM_F32 ? 0x1p-149 : 0x1p-1074;
+			x->quantum = b->prec == PREC_FLOAT ? 0x1p-149 : 0x1p-1074;
 		else
 			x->quantum = ldexp(1.0, (int)mpfr_get_exp(m->f1) - p);
 	}
@@ -1414,7 +1414,7 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 /* Exact operations on model values, for the defect quantities. */
 static cv ex(mvf *m, int op, cv a, cv b)
 {
-	cv ir = fresh(m, CM_F64);
+	cv ir = fresh(m, PREC_DOUBLE);
 	mval *r = &m->val[ir];
 	if (m->val[a].opaque || (b >= 0 && m->val[b].opaque))
 		m->failed = 1;
@@ -1583,7 +1583,7 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree)
 	const mval *x = &m->val[ix];
 	double e = newton_rel(m, f, ix, iy, embree);
 	mpfi_get_left(m->f1, x->v);
-	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == CM_F32 ? 0x1p-100 : 0x1p-1000) < 0) {
+	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == PREC_FLOAT ? 0x1p-100 : 0x1p-1000) < 0) {
 		m->failed = 1;
 		return ir;
 	}

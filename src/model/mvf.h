@@ -13,7 +13,7 @@ typedef struct {
 	double z_lo, z_hi, phi_lo, phi_hi;
 	double nz_lo, nz_hi; /* the region's band: every input n has n.z in it,
 	                        which branch decisions on n.z may use         */
-	int prec;           /* CM_F32 or CM_F64                           */
+	int prec;           /* PREC_FLOAT or PREC_DOUBLE                           */
 	double tolerance;   /* < 0: roundings of unit vectors; else | |n| - 1 | <= T */
 	/* 1: n.z is the format value zpoint itself (the default domain only):
 	   [z_lo, z_hi] then holds the u.z that round to it, and n is not unit

@@ -532,14 +532,14 @@ static void print_speed_source(const speed_table *t, int fl)
 {
 	if (t->kind == SPEED_CACHE)
 		printf("speed (%s): this machine's cache %s (%s); %d repetitions, interval = confidence interval of the median\n",
-		       fl ? "float" : "double", t->path, t->desc, t->reps);
+		       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), t->path, t->desc, t->reps);
 	else if (t->kind == SPEED_FILE)
-		printf("speed (%s): %s (%s); %d repetitions, interval = median -/+ (best - median)\n", fl ? "float" : "double",
+		printf("speed (%s): %s (%s); %d repetitions, interval = median -/+ (best - median)\n", prec_name(fl ? PREC_FLOAT : PREC_DOUBLE),
 		       t->path, t->desc, t->reps);
 	else
 		printf("speed (%s): the committed reference run %s (%s), NOT measured on this machine; %d repetitions, "
 		       "interval = median -/+ (best - median); 'onbstudy scene --refresh-speed --precision %s' measures and caches this machine's\n",
-		       fl ? "float" : "double", t->path, t->desc, t->reps, fl ? "float" : "double");
+		       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), t->path, t->desc, t->reps, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE));
 }
 
 static void print_input(const char *file, const mesh_normals *mn, const mesh_stats *st, int fl)
@@ -572,7 +572,7 @@ static void print_input(const char *file, const mesh_normals *mn, const mesh_sta
 	if (mn->origin == MESH_STORED && mn->ncomputed)
 		printf("normals: %zu of them computed (area-weighted) for %zu primitive(s) without NORMAL\n", mn->ncomputed, mn->nprims_computed);
 	printf("counts in %s: total %zu, unit %zu (||n|-1| <= %.2g), non-unit %zu, degenerate %zu (zero %zu, non-finite %zu)\n",
-	       fl ? "float" : "double", st->total, st->unit, st->tol, st->nonunit, st->zero + st->nonfinite, st->zero, st->nonfinite);
+	       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), st->total, st->unit, st->tol, st->nonunit, st->zero + st->nonfinite, st->zero, st->nonfinite);
 	if (st->nonunit)
 		printf("non-unit: |n|-1 in [%.3g, %.3g]; ||n|-1| median %.3g, p90 %.3g, p99 %.3g\n", st->dev_min, st->dev_max, st->q50, st->q90, st->q99);
 	if (st->nbad) {
@@ -684,7 +684,7 @@ static void print_variant(const mesh_normals *mn, const scene_opts *o, const onb
                           const scene_shape *sh)
 {
 	const int b = e->best[0][v], ob = e->best[1][v];
-	printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", o->fl ? "float" : "double", e->used[v]);
+	printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE), e->used[v]);
 	print_table(ms, nm, sp, e, v, udef);
 	print_verdict(mn, ms, nm, sp, e, v, o->tol);
 	print_flags(ms, sh, e, v, udef, o->tol);
@@ -711,7 +711,7 @@ static void csv_rows(FILE *f, const scene_opts *o, const char *space, const onb_
 			for (i = 0; i < nm; i++) {
 				const scene_res *r = &e->r[a][v][i];
 				const char *rk = (int)i == e->best[a][v] ? "recommended" : (int)i == e->second[a][v] ? "runner-up" : "";
-				fprintf(f, "\"%s\",%s,%c,%s,%s,%zu,%.6e,%.6e,%.6e,%.6e,%zu,%zu,%zu,", o->file, o->fl ? "float" : "double",
+				fprintf(f, "\"%s\",%s,%c,%s,%s,%zu,%.6e,%.6e,%.6e,%.6e,%zu,%zu,%zu,", o->file, prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE),
 				        a ? o->other : o->up, v ? "renormalized" : "as_read", ms[i].name, e->used[v], r->max_defect,
 				        r->rms_defect, r->max_norm, r->max_dot, r->nonfinite, r->wrong_hand, r->mismatch);
 				if (sp[i])
@@ -740,7 +740,7 @@ static int write_csv(const scene_opts *o, const mesh_normals *mn, const mesh_sta
 	fprintf(out.f, "# file: %s\n# normals: %zu %s%s; unit %zu (tol %.3g), non-unit %zu, zero %zu, non-finite %zu\n", o->file,
 	        mn->count, mn->origin == MESH_STORED ? "stored" : "computed", mn->world ? ", world space (--world)" : "",
 	        st->unit, st->tol, st->nonunit, st->zero, st->nonfinite);
-	fprintf(out.f, "# precision: %s; tolerance E: %.17g\n", o->fl ? "float" : "double", o->tol);
+	fprintf(out.f, "# precision: %s; tolerance E: %.17g\n", prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE), o->tol);
 	fprintf(out.f, "# speed: %s %s (%s), %d repetitions; batch_mbases_s is its median, speed_lo and speed_hi its interval; "
 	        "never timed on the scene\n", t->kind == SPEED_CACHE ? "cache" : t->kind == SPEED_FILE ? "file" : "reference run",
 	        t->path, t->desc, t->reps);
@@ -910,7 +910,7 @@ int cmd_scene(int argc, char **argv)
 		goto out;
 	v = o.renorm_head;
 	printf("\nrecommended for %s (%s normals%s, %s, up %c, E %.3g, speed from %s): %s\n", o.file, variant_name(v),
-	       o.world ? ", world space" : "", o.fl ? "float" : "double", o.up, o.tol,
+	       o.world ? ", world space" : "", prec_name(o.fl ? PREC_FLOAT : PREC_DOUBLE), o.up, o.tol,
 	       t.kind == SPEED_CACHE ? "this machine's cache" : t.kind == SPEED_FILE ? "--speed" : "the reference run",
 	       e.best[0][v] >= 0 ? ms[e.best[0][v]].name : "none");
 	if (o.certify && certify(&o, ms, nm, &e, v, proven) != 0)

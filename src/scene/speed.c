@@ -12,6 +12,7 @@
 #include "common/output.h"
 #include "bench/bench_core.h"
 #include "scene/speed.h"
+#include "common/prec.h"
 
 #define SPEED_N 14336 /* bases per pass: bench's L2-resident size */
 
@@ -153,7 +154,7 @@ static int read_csv(const char *path, int dbl, speed_table *t)
 			double med, lo, hi;
 			for (k = 0; k < 10; k++)
 				if (c[k] > mx) mx = c[k];
-			if (n <= mx || strcmp(fl[c[1]], dbl ? "double" : "float"))
+			if (n <= mx || strcmp(fl[c[1]], prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT)))
 				continue;
 			if ((c[2] >= 0 && strcmp(fl[c[2]], "batch")) || (c[3] >= 0 && strcmp(fl[c[3]], "1"))
 			    || (c[4] >= 0 && strcmp(fl[c[4]], "l2")))
@@ -290,13 +291,13 @@ static int write_cache(const char *path, int dbl, int reps, const speed_table *t
 		return -1;
 	study_provenance(o.f, "scene --refresh-speed", 1, 1);
 	fprintf(o.f, "# what: batch kernel throughput, %s, 1 thread, %d uniform directions (L2-resident), M bases/s\n",
-	        dbl ? "double" : "float", SPEED_N);
+	        prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT), SPEED_N);
 	fprintf(o.f, "# repetitions: %d (round-robin over the methods, each >= 20 ms after a warm-up pass)\n", reps);
 	fprintf(o.f, "# interval: lo, hi = order statistics %d and %d of %d: a distribution-free confidence interval of the median (>= 95%% for 6 or more repetitions)\n",
 	        speed_ci_rank(reps), reps + 1 - speed_ci_rank(reps), reps);
 	fprintf(o.f, "method,precision,mode,threads,size_class,reps,mbases_per_s,lo,hi\n");
 	for (i = 0; i < t->n; i++)
-		fprintf(o.f, "%s,%s,batch,1,l2,%d,%.6g,%.6g,%.6g\n", t->rows[i].method, dbl ? "double" : "float",
+		fprintf(o.f, "%s,%s,batch,1,l2,%d,%.6g,%.6g,%.6g\n", t->rows[i].method, prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT),
 		        reps, t->rows[i].med, t->rows[i].lo, t->rows[i].hi);
 	return study_out_commit(&o);
 }

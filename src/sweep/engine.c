@@ -199,7 +199,7 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 			if (!ref_agree(&m, &m2, why, sizeof why)) {
 #pragma omp critical(engine_why)
 				snprintf(e->why, sizeof e->why, "%s %s %s input %llu (%a, %a, %a): %s", st->kernels[k].name,
-				         p ? "double" : "float", dist_name(d), (unsigned long long)idx, n[0], n[1], n[2], why);
+				         prec_name(p), dist_name(d), (unsigned long long)idx, n[0], n[1], n[2], why);
 #pragma omp atomic write
 				e->fail = ENGINE_DISAGREE;
 			}
@@ -253,7 +253,7 @@ static void report(engine *e, study_progress *pr, unsigned long long n, uint64_t
 	snap.done = pr->done;
 	if (plan_locate(e->pl, g, &p, &d, &c) != 0)
 		return;
-	snprintf(label, sizeof label, "sweep %-6s %-10s", p ? "double" : "float", dist_name(d));
+	snprintf(label, sizeof label, "sweep %-6s %-10s", prec_name(p), dist_name(d));
 	study_progress_line(label, &snap);
 }
 

@@ -376,7 +376,7 @@ void plan_print(const sweep_plan *pl, FILE *f, double per_thread_rate, unsigned 
 	for (p = 0; p < 2; p++)
 		for (d = 0; d < NDIST; d++)
 			if (cfg->prec_on[p] && cfg->dist_on[d])
-				fprintf(f, "plan: %-6s %-10s %12llu inputs %9llu chunks\n", p ? "double" : "float", dist_name(d),
+				fprintf(f, "plan: %-6s %-10s %12llu inputs %9llu chunks\n", prec_name(p), dist_name(d),
 				        (unsigned long long)cfg->counts[p][d], (unsigned long long)pl->nchunks[p][d]);
 	if (cfg->dist_on[DIST_EXHAUSTIVE])
 		fprintf(f, "plan: exhaustive: %llu consecutive n.z from %a, %d azimuths\n",

@@ -197,7 +197,7 @@ static int th_write(th_state *s, const char *out, int threads)
 	for (p = 0; p < 2; p++) {
 		const int n = s->cfg.count[p];
 		double *mN, *mO, *mB;
-		const char *pn = p == PREC_FLOAT ? "float" : "double";
+		const char *pn = prec_name(p);
 		int best[3] = { 0, 0, 0 }, c;
 		const char *crit[3] = { "normality", "orthog.", "both" };
 		if (!s->cfg.prec_on[p])
@@ -373,7 +373,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 						study_error("%d of %d threshold shards missing (0-based K of --shard K/%d): %s", nmiss,
 						            acc.cfg.shard_n, acc.cfg.shard_n, miss);
 					else
-						study_error("shards missing: input %d of %s was computed by none", j, p ? "double" : "float");
+						study_error("shards missing: input %d of %s was computed by none", j, prec_name(p));
 					th_free(&acc);
 					return ONB_EXIT_USAGE;
 				}

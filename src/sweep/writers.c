@@ -17,7 +17,6 @@
 #include "common/options.h"
 #include "common/output.h"
 
-static const char *prec_name(int p) { return p == PREC_FLOAT ? "float" : "double"; }
 
 /* Precision p was run, and kernel k has code in it (not a float-only
    method in double): the (p, k) pairs every file and table lists. */

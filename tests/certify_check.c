@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "common/csv.h"
 #include "methods/kernels.h"
 #include "certify/region.h"
 #include "certify/search.h"
@@ -31,31 +32,6 @@ typedef struct {
 static crow rows[MAXROW];
 static int nrows;
 
-/* Split line s at commas into f (at most MAXCOL); returns the count. */
-static int split_csv(char *s, char **f)
-{
-	int n = 0;
-	char *p = s;
-	s[strcspn(s, "\r\n")] = '\0';
-	while (n < MAXCOL) {
-		f[n++] = p;
-		p = strchr(p, ',');
-		if (!p)
-			break;
-		*p++ = '\0';
-	}
-	return n;
-}
-
-static int col(char **h, int nh, const char *name)
-{
-	int i;
-	for (i = 0; i < nh; i++)
-		if (strcmp(h[i], name) == 0)
-			return i;
-	return -1;
-}
-
 static int load_certify(const char *path)
 {
 	char line[4096], *f[MAXCOL];
@@ -68,7 +44,7 @@ static int load_certify(const char *path)
 		crow *c = &rows[nrows];
 		if (line[0] == '#' || strncmp(line, "method,", 7) == 0)
 			continue;
-		if (split_csv(line, f) < 12)
+		if (csv_split(line, f, MAXCOL, 0) < 12)
 			continue;
 		snprintf(c->method, sizeof c->method, "%s", f[0]);
 		c->prec = strcmp(f[1], "double") == 0 ? PREC_DOUBLE : PREC_FLOAT;
@@ -132,9 +108,9 @@ static int check_file(const char *path, long *checked, long *bad)
 			continue;
 		if (!nh) {
 			memcpy(head, line, sizeof head);
-			nh = split_csv(head, h);
-			cmeth = col(h, nh, "method"); cp = col(h, nh, "precision"); cd = col(h, nh, "distribution");
-			ce = col(h, nh, "error"); cx = col(h, nh, "nx"); cy = col(h, nh, "ny"); cz = col(h, nh, "nz");
+			nh = csv_split(head, h, MAXCOL, 0);
+			cmeth = csv_col(h, nh, "method"); cp = csv_col(h, nh, "precision"); cd = csv_col(h, nh, "distribution");
+			ce = csv_col(h, nh, "error"); cx = csv_col(h, nh, "nx"); cy = csv_col(h, nh, "ny"); cz = csv_col(h, nh, "nz");
 			if (cmeth < 0 || cd < 0 || ce < 0 || cx < 0 || cy < 0 || cz < 0) {
 				fprintf(stderr, "certify_check: %s: no method/distribution/error/nx/ny/nz columns\n", path);
 				fclose(in);
@@ -142,7 +118,7 @@ static int check_file(const char *path, long *checked, long *bad)
 			}
 			continue;
 		}
-		if (split_csv(line, f) < nh || !unit_domain(f[cd]))
+		if (csv_split(line, f, MAXCOL, 0) < nh || !unit_domain(f[cd]))
 			continue;
 		n[0] = strtod(f[cx], NULL); n[1] = strtod(f[cy], NULL); n[2] = strtod(f[cz], NULL);
 		r = check_one(f[cmeth], cp >= 0 && strcmp(f[cp], "double") == 0 ? PREC_DOUBLE : PREC_FLOAT, n, strtod(f[ce], NULL));

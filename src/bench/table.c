@@ -25,50 +25,12 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "bench/table.h"
+#include "common/csv.h"
 #include "common/options.h"
 #include "common/output.h"
 #include "common/prec.h"
 
 #define CSV_MAXF 64
-
-/* Splits line (modified in place) at commas, honouring "quoted" fields;
-   returns the number of fields. */
-static int csv_split(char *line, char **f, int maxf)
-{
-	int n = 0;
-	char *p = line;
-	line[strcspn(line, "\r\n")] = '\0';
-	while (n < maxf) {
-		if (*p == '"') {
-			char *q = ++p;
-			f[n++] = p;
-			while (*q && *q != '"')
-				q++;
-			if (*q == '"')
-				*q++ = '\0';
-			p = q;
-			while (*p && *p != ',')
-				p++;
-		} else {
-			f[n++] = p;
-			while (*p && *p != ',')
-				p++;
-		}
-		if (*p != ',')
-			break;
-		*p++ = '\0';
-	}
-	return n;
-}
-
-static int col(char **hdr, int nh, const char *name)
-{
-	int i;
-	for (i = 0; i < nh; i++)
-		if (strcmp(hdr[i], name) == 0)
-			return i;
-	return -1;
-}
 
 static double num(const char *s)
 {
@@ -102,7 +64,7 @@ static int csv_open(csv_file *c, const char *path)
 		c->lineno++;
 		if (c->hline[0] == '#' || c->hline[0] == '\n')
 			continue;
-		c->nh = csv_split(c->hline, c->hdr, CSV_MAXF);
+		c->nh = csv_split(c->hline, c->hdr, CSV_MAXF, 1);
 		return 0;
 	}
 	study_error("table: '%s' has no header line", path);
@@ -117,7 +79,7 @@ static int csv_next(csv_file *c)
 		c->lineno++;
 		if (c->line[0] == '#' || c->line[0] == '\n')
 			continue;
-		return csv_split(c->line, c->fld, CSV_MAXF);
+		return csv_split(c->line, c->fld, CSV_MAXF, 1);
 	}
 	return 0;
 }
@@ -177,13 +139,13 @@ static int load_speeds(const char *bench_csv, row_set *s)
 
 	if (csv_open(&c, bench_csv) != 0)
 		return -1;
-	cm = col(c.hdr, c.nh, "method");
-	cp = col(c.hdr, c.nh, "precision");
-	cmode = col(c.hdr, c.nh, "mode");
-	ct = col(c.hdr, c.nh, "threads");
-	ccls = col(c.hdr, c.nh, "size_class");
-	cmbs = col(c.hdr, c.nh, "mbases_per_s");
-	cns = col(c.hdr, c.nh, "ns_per_call");
+	cm = csv_col(c.hdr, c.nh, "method");
+	cp = csv_col(c.hdr, c.nh, "precision");
+	cmode = csv_col(c.hdr, c.nh, "mode");
+	ct = csv_col(c.hdr, c.nh, "threads");
+	ccls = csv_col(c.hdr, c.nh, "size_class");
+	cmbs = csv_col(c.hdr, c.nh, "mbases_per_s");
+	cns = csv_col(c.hdr, c.nh, "ns_per_call");
 	if (cm < 0 || cp < 0 || cmode < 0 || ct < 0 || cmbs < 0 || cns < 0) {
 		study_error("table: '%s' lacks one of the columns method,precision,mode,threads,mbases_per_s,ns_per_call", bench_csv);
 		fclose(c.f);
@@ -297,15 +259,15 @@ static int load_accuracy(const char *summary_csv, tradeoff_row *rows, int n)
 
 	if (csv_open(&c, summary_csv) != 0)
 		return -1;
-	k.m = col(c.hdr, c.nh, "method");
-	k.p = col(c.hdr, c.nh, "precision");
-	k.dist = col(c.hdr, c.nh, "distribution");
-	k.rmse = col(c.hdr, c.nh, "rmse");
-	k.max = col(c.hdr, c.nh, "max_defect");
-	k.nf = col(c.hdr, c.nh, "nonfinite");
-	k.fl = col(c.hdr, c.nh, "max_floor");       /* the floor: optional (older runs lack it) */
-	k.rr = col(c.hdr, c.nh, "rms_floor_ratio");
-	k.mr = col(c.hdr, c.nh, "max_floor_ratio");
+	k.m = csv_col(c.hdr, c.nh, "method");
+	k.p = csv_col(c.hdr, c.nh, "precision");
+	k.dist = csv_col(c.hdr, c.nh, "distribution");
+	k.rmse = csv_col(c.hdr, c.nh, "rmse");
+	k.max = csv_col(c.hdr, c.nh, "max_defect");
+	k.nf = csv_col(c.hdr, c.nh, "nonfinite");
+	k.fl = csv_col(c.hdr, c.nh, "max_floor");       /* the floor: optional (older runs lack it) */
+	k.rr = csv_col(c.hdr, c.nh, "rms_floor_ratio");
+	k.mr = csv_col(c.hdr, c.nh, "max_floor_ratio");
 	if (k.m < 0 || k.p < 0 || k.dist < 0 || k.rmse < 0 || k.max < 0) {
 		study_error("table: '%s' lacks one of the columns method,precision,distribution,rmse,max_defect", summary_csv);
 		fclose(c.f);
@@ -585,11 +547,11 @@ static int bench_caveats(const char *path)
 		}
 		if (!line[0])
 			continue;
-		nf = csv_split(line, fld, 64);
+		nf = csv_split(line, fld, 64, 1);
 		if (!header) {
 			header = 1;
-			cflag = col(fld, nf, "flag");
-			cmode = col(fld, nf, "mode");
+			cflag = csv_col(fld, nf, "flag");
+			cmode = csv_col(fld, nf, "mode");
 		} else if (cflag >= 0 && cmode >= 0 && nf > cflag && nf > cmode && strcmp(fld[cflag], "ok") != 0 &&
 		           (!strcmp(fld[cmode], "batch") || !strcmp(fld[cmode], "call_throughput")))
 			flagged++;

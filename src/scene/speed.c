@@ -8,6 +8,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include "common/csv.h"
 #include "common/options.h"
 #include "common/output.h"
 #include "bench/bench_core.h"
@@ -92,29 +93,6 @@ static int add_row(speed_table *t, const char *m, double med, double lo, double 
 	return 0;
 }
 
-/* Splits a CSV line in place (no quoting in these files). */
-static int split(char *line, char **f, int max)
-{
-	int n = 0;
-	line[strcspn(line, "\r\n")] = '\0';
-	f[n++] = line;
-	for (; *line && n < max; line++)
-		if (*line == ',') {
-			*line = '\0';
-			f[n++] = line + 1;
-		}
-	return n;
-}
-
-static int col(char **f, int n, const char *name)
-{
-	int i;
-	for (i = 0; i < n; i++)
-		if (!strcmp(f[i], name))
-			return i;
-	return -1;
-}
-
 /* A bench.csv (kind SPEED_FILE or SPEED_REFERENCE) or a cache file. */
 static int read_csv(const char *path, int dbl, speed_table *t)
 {
@@ -135,13 +113,13 @@ static int read_csv(const char *path, int dbl, speed_table *t)
 			}
 			continue;
 		}
-		n = split(line, fl, 64);
+		n = csv_split(line, fl, 64, 0);   /* no quoting in these files */
 		if (!hdr) {
 			const char *names[10] = { "method", "precision", "mode", "threads", "size_class",
 			                          "mbases_per_s", "mbases_per_s_best", "lo", "hi", "reps" };
 			int k;
 			for (k = 0; k < 10; k++)
-				c[k] = col(fl, n, names[k]);
+				c[k] = csv_col(fl, n, names[k]);
 			hdr = 1;
 			if (c[0] < 0 || c[1] < 0 || c[5] < 0 || (c[6] < 0 && (c[7] < 0 || c[8] < 0)))
 				bad = 1;

@@ -25,6 +25,19 @@ static int on(const sweep_state *s, int p, int k)
 	return s->cfg.prec_on[p] && kernel_runs(&s->kernels[k], p);
 }
 
+/* fn on every cell that ran, in the order of every file's rows:
+   precision, then method, then distribution. */
+typedef void (*cell_fn)(FILE *f, const sweep_state *s, int p, int k, int d, void *arg);
+static void each_cell(FILE *f, const sweep_state *s, cell_fn fn, void *arg)
+{
+	int p, k, d;
+	for (p = 0; p < 2; p++)
+		for (k = 0; k < s->cfg.nk; k++)
+			for (d = 0; d < NDIST; d++)
+				if (on(s, p, k) && s->cfg.dist_on[d])
+					fn(f, s, p, k, d, arg);
+}
+
 static double grid_jump(const sweep_state *s, int p, int k, size_t cell)
 {
 	const size_t rows = (size_t)s->cfg.grid_rows, cols = (size_t)s->cfg.grid_cols;
@@ -263,89 +276,93 @@ static void reference_body(FILE *f, const sweep_state *s, int partial)
 	"max_floor,rms_floor,max_floor_dir,max_floor_ratio,rms_floor_ratio,at_floor,floor_ratio_nx,floor_ratio_ny,floor_ratio_nz," \
 	"rmse_lo,rmse_hi,rms_defect_lo,rms_defect_hi,mean_bits_lo,mean_bits_hi,rms_dir_cos_lo,rms_dir_cos_hi,duff_rms_lo,duff_rms_hi"
 
+/* arg: the writer's partial flag (a partial state's grid has no jumps yet) */
+static void summary_cell(FILE *f, const sweep_state *s, int p, int k, int d, void *arg)
+{
+	const int partial = *(const int *)arg;
+	summary_row(f, s, p, d, k, d == DIST_GRID && !partial ? max_grid_jump(s, p, k) : NAN);
+}
+
 static void summary_body(FILE *f, const sweep_state *s, int partial)
 {
-	int p, d, k;
 	fprintf(f, "# rmse: Frisvad 2012 Table 1, over |b1|-1, |b2|-1, b1.n, b2.n, b1.b2; rms_defect and max_defect: the per-input error max_k |.|; duff_rms, max_duff_rms: Duff et al. 2017 footnote 1, the per-input RMS of |n|-1, |b1|-1, |b2|-1, n.b1, b1.b2, b2.n (root of the mean over inputs; largest)\n");
 	fprintf(f, "# max_ulp: forward error in ulps of the exact value of the method's own formula, components with |exact| >= eps; max_abs_eps: absolute forward error / eps; bits: Herbie's log2(distance in floats + 1)\n");
 	fprintf(f, "# max_dir_norm, max_dir_cos: | |w|-1 | and | w.n - z | for w = x b1 + y b2 + z n (frisvad_rotate: Frisvad 2012 Eq. 3); max_b1_jump: largest |b1 - b1'| between neighbouring grid cells\n");
 	fprintf(f, "# max_floor, rms_floor: the accuracy floor, the per-input error (defect; frisvad_rotate: direction error) of the method's exact formula on its branch rounded once to the format; max_floor_dir: its direction error; max_floor_ratio, rms_floor_ratio: the per-input ratio max(error, u^2) / max(floor, u^2), u = 2^-24 or 2^-53; at_floor: the share of inputs with ratio <= 1; floor_ratio_n*: the input of the largest ratio\n");
 	fprintf(f, "# rmse, rms_defect, mean_bits, rms_dir_cos, duff_rms: estimates over the inputs; uniform is stratified in 1 + n.z (%d strata, finer towards -z, input i in stratum i mod %d) and combined with each stratum's exact probability; *_lo, *_hi: 95%% interval from the strata variances (normal; roots of the interval of the mean square for the RMS columns); rms_floor, rms_floor_ratio, at_floor: estimated the same way (stratified, each over its own inputs: floor finite; for the ratio, the method's output finite too)\n", NSTRAT, NSTRAT);
 	fprintf(f, "%s\n", SUMMARY_COLUMNS);
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < s->cfg.nk; k++)
-			for (d = 0; d < NDIST; d++)
-				if (on(s, p, k) && s->cfg.dist_on[d])
-					summary_row(f, s, p, d, k, d == DIST_GRID && !partial ? max_grid_jump(s, p, k) : NAN);
+	each_cell(f, s, summary_cell, &partial);
+}
+
+static void by_nz_cell(FILE *f, const sweep_state *s, int p, int k, int d, void *arg)
+{
+	const cell_t *c = sweep_cell_at(s, p, d, k);
+	int b;
+	(void)arg;
+	/* threshold and grid are lists, not distributions over n.z: their
+	   errors are in worst.csv and grid.csv */
+	if (d == DIST_THRESHOLD || d == DIST_GRID)
+		return;
+	for (b = 0; b < NBINS; b++) {
+		const bin_t *x = &c->bins[b];
+		const char *axis;
+		double lo, hi;
+		if (!x->count)
+			continue;
+		if (b < NB_NZ) {
+			axis = "nz"; lo = -1.0 + 2.0 * b / NB_NZ; hi = -1.0 + 2.0 * (b + 1) / NB_NZ;
+		} else if (b < NB_NZ + NB_LOG) {
+			axis = "log10_1pnz"; lo = -17.0 + 0.25 * (b - NB_NZ); hi = lo + 0.25;
+		} else if (b < NB_NZ + NB_LOG + NB_NORM) {
+			axis = "log10_absnorm"; lo = -9.0 + 0.25 * (b - NB_NZ - NB_LOG); hi = lo + 0.25;
+		} else {
+			axis = "log10_1mnz"; lo = -17.0 + 0.25 * (b - NB_NZ - NB_LOG - NB_NORM); hi = lo + 0.25;
+		}
+		fprintf(f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
+		        dist_name(d), axis, lo, hi, (unsigned long long)x->count,
+		        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max,
+		        x->fcount ? sqrt(fx_value(&x->fsumsq) / (double)x->fcount) : NAN, x->fcount ? x->fmax : NAN);
+	}
 }
 
 static void by_nz_body(FILE *f, const sweep_state *s, int partial)
 {
-	int p, d, k, b;
 	(void)partial; /* the writers' common signature */
 	fprintf(f, "# the per-input error (max_defect's, or | |w|-1 |, | w.n-z | for frisvad_rotate) binned by n.z, by log10(1 + n.z) for n.z <= 0, by log10| |n| - 1 |, and by log10(1 - n.z) for n.z >= 0 (axis log10_1mnz); empty bins omitted; lo and hi bound the bin; threshold and grid (lists, not distributions) are in worst.csv and grid.csv\n");
 	fprintf(f, "# floor_rms, floor_max: the accuracy floor of the same inputs (the method's exact formula rounded once)\n");
 	fprintf(f, "method,precision,distribution,axis,lo,hi,count,rms,max,floor_rms,floor_max\n");
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < s->cfg.nk; k++)
-			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell_at(s, p, d, k);
-				/* threshold and grid are lists, not distributions over n.z:
-				   their errors are in worst.csv and grid.csv */
-				if (!on(s, p, k) || !s->cfg.dist_on[d] || d == DIST_THRESHOLD || d == DIST_GRID)
-					continue;
-				for (b = 0; b < NBINS; b++) {
-					const bin_t *x = &c->bins[b];
-					const char *axis;
-					double lo, hi;
-					if (!x->count)
-						continue;
-					if (b < NB_NZ) {
-						axis = "nz"; lo = -1.0 + 2.0 * b / NB_NZ; hi = -1.0 + 2.0 * (b + 1) / NB_NZ;
-					} else if (b < NB_NZ + NB_LOG) {
-						axis = "log10_1pnz"; lo = -17.0 + 0.25 * (b - NB_NZ); hi = lo + 0.25;
-					} else if (b < NB_NZ + NB_LOG + NB_NORM) {
-						axis = "log10_absnorm"; lo = -9.0 + 0.25 * (b - NB_NZ - NB_LOG); hi = lo + 0.25;
-					} else {
-						axis = "log10_1mnz"; lo = -17.0 + 0.25 * (b - NB_NZ - NB_LOG - NB_NORM); hi = lo + 0.25;
-					}
-					fprintf(f, "%s,%s,%s,%s,%.6g,%.6g,%llu,%.4g,%.4g,%.4g,%.4g\n", s->kernels[k].name, prec_name(p),
-					        dist_name(d), axis, lo, hi, (unsigned long long)x->count,
-					        sqrt(fx_value(&x->sumsq) / (double)x->count), x->max,
-					        x->fcount ? sqrt(fx_value(&x->fsumsq) / (double)x->fcount) : NAN, x->fcount ? x->fmax : NAN);
-				}
-			}
+	each_cell(f, s, by_nz_cell, NULL);
+}
+
+static void worst_cell(FILE *f, const sweep_state *s, int p, int k, int d, void *arg)
+{
+	const cell_t *c = sweep_cell_at(s, p, d, k);
+	int i, j;
+	(void)arg;
+	for (i = 0; i < NWORST; i++) {
+		const worst_t *w = &c->worst[i];
+		if (w->index == UINT64_MAX)
+			continue;
+		fprintf(f, "%s,%s,%s,%d,%s,%llu,%d,%.6g,%.6g,%.6g", s->kernels[k].name, prec_name(p),
+		        dist_name(d), i + 1, w->source ? "walk" : "sample", (unsigned long long)w->index,
+		        w->branch, w->key, w->ulp, w->bits_max);
+		for (j = 0; j < 3; j++)
+			fprintf(f, ",%a", w->n[j]);
+		for (j = 0; j < 6; j++)
+			fprintf(f, ",%a", w->out[j]);
+		for (j = 0; j < 6; j++)
+			fprintf(f, ",%a", w->ref[j]);
+		fputc('\n', f);
+	}
 }
 
 static void worst_body(FILE *f, const sweep_state *s, int partial)
 {
-	int p, d, k, i, j;
 	(void)partial; /* the writers' common signature */
 	fprintf(f, "# the %d worst inputs per method, precision and distribution; source: sample, or walk (found by walking neighbouring floats from the worst sampled threshold inputs); index: the input's index (for walk: the start's)\n", NWORST);
 	fprintf(f, "# error: the per-input defect (frisvad_rotate: max(| |w|-1 |, | w.n-z |)); inputs and outputs as C99 hex floats; ref: the method's exact formula on the same branch, rounded to double\n");
 	fprintf(f, "method,precision,distribution,rank,source,index,branch,error,max_ulp,max_bits,nx,ny,nz,b1x,b1y,b1z,b2x,b2y,b2z,ref_b1x,ref_b1y,ref_b1z,ref_b2x,ref_b2y,ref_b2z\n");
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < s->cfg.nk; k++)
-			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell_at(s, p, d, k);
-				if (!on(s, p, k) || !s->cfg.dist_on[d])
-					continue;
-				for (i = 0; i < NWORST; i++) {
-					const worst_t *w = &c->worst[i];
-					if (w->index == UINT64_MAX)
-						continue;
-					fprintf(f, "%s,%s,%s,%d,%s,%llu,%d,%.6g,%.6g,%.6g", s->kernels[k].name, prec_name(p),
-					        dist_name(d), i + 1, w->source ? "walk" : "sample", (unsigned long long)w->index,
-					        w->branch, w->key, w->ulp, w->bits_max);
-					for (j = 0; j < 3; j++)
-						fprintf(f, ",%a", w->n[j]);
-					for (j = 0; j < 6; j++)
-						fprintf(f, ",%a", w->out[j]);
-					for (j = 0; j < 6; j++)
-						fprintf(f, ",%a", w->ref[j]);
-					fputc('\n', f);
-				}
-			}
+	each_cell(f, s, worst_cell, NULL);
 }
 
 static void grid_body(FILE *f, const sweep_state *s, int partial)
@@ -419,38 +436,35 @@ static void print_table(const sweep_state *s)
 	printf("max err: the largest per-input orthonormality defect (frisvad_rotate: direction error); NaN/Inf: some output was not finite\n");
 }
 
+/* arg: 1 until the first object is out (the separator goes before the rest) */
+static void json_cell(FILE *f, const sweep_state *s, int p, int k, int d, void *arg)
+{
+	const cell_t *c = sweep_cell_at(s, p, d, k);
+	int *first = arg;
+	const int basis = s->kernels[k].m != NULL;
+	const double rmse = basis ? st_rmse(c, d) : NAN;
+	const double mx = basis ? c->max_defect : NAN;
+	fprintf(f, "%s  {\"method\": \"%s\", \"precision\": \"%s\", \"distribution\": \"%s\", \"samples\": %llu, ",
+	        *first ? "" : ",\n", s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count);
+	if (isfinite(rmse)) fprintf(f, "\"rmse\": %.6g, ", rmse); else fprintf(f, "\"rmse\": null, ");
+	if (isfinite(mx) && c->finite) fprintf(f, "\"max_defect\": %.6g, ", mx); else fprintf(f, "\"max_defect\": null, ");
+	fprintf(f, "\"max_ulp\": %.6g, \"mean_bits\": %.6g, \"wrong_handed\": %llu, \"nonfinite\": %llu}",
+	        c->finite ? c->max_ulp : 0.0, c->comps ? fx_value(&c->bits) / (double)c->comps : 0.0,
+	        (unsigned long long)c->wrong, (unsigned long long)c->nonfinite);
+	*first = 0;
+}
+
 static void print_csv(const sweep_state *s, int json)
 {
-	int p, k, d;
-	int first = 1;
-	if (json)
+	int first = 1, partial = 1;   /* no grid jumps on stdout */
+	if (json) {
 		printf("[\n");
-	else
-		printf("%s\n", SUMMARY_COLUMNS);
-	for (p = 0; p < 2; p++)
-		for (k = 0; k < s->cfg.nk; k++)
-			for (d = 0; d < NDIST; d++) {
-				const cell_t *c = sweep_cell_at(s, p, d, k);
-				if (!on(s, p, k) || !s->cfg.dist_on[d])
-					continue;
-				if (json) {
-					const int basis = s->kernels[k].m != NULL;
-					const double rmse = basis ? st_rmse(c, d) : NAN;
-					const double mx = basis ? c->max_defect : NAN;
-					printf("%s  {\"method\": \"%s\", \"precision\": \"%s\", \"distribution\": \"%s\", \"samples\": %llu, ",
-					       first ? "" : ",\n", s->kernels[k].name, prec_name(p), dist_name(d), (unsigned long long)c->count);
-					if (isfinite(rmse)) printf("\"rmse\": %.6g, ", rmse); else printf("\"rmse\": null, ");
-					if (isfinite(mx) && c->finite) printf("\"max_defect\": %.6g, ", mx); else printf("\"max_defect\": null, ");
-					printf("\"max_ulp\": %.6g, \"mean_bits\": %.6g, \"wrong_handed\": %llu, \"nonfinite\": %llu}",
-					       c->finite ? c->max_ulp : 0.0, c->comps ? fx_value(&c->bits) / (double)c->comps : 0.0,
-					       (unsigned long long)c->wrong, (unsigned long long)c->nonfinite);
-					first = 0;
-				} else {
-					summary_row(stdout, s, p, d, k, NAN);
-				}
-			}
-	if (json)
+		each_cell(stdout, s, json_cell, &first);
 		printf("\n]\n");
+	} else {
+		printf("%s\n", SUMMARY_COLUMNS);
+		each_cell(stdout, s, summary_cell, &partial);
+	}
 }
 
 /* The files: each a header (provenance), then its body; the .partial.csv

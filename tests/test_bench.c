@@ -76,18 +76,18 @@ static void test_stats(void)
    known.  frisvad of n = +z is exactly b1 = +x, b2 = +y: 2 per basis. */
 static void test_soa_checksum(void)
 {
-	int dbl, thr;
+	int prec, thr;
 	const onb_method *m = onb_find("frisvad");
-	for (dbl = 0; dbl < 2; dbl++)
+	for (prec = 0; prec < 2; prec++)
 		for (thr = 1; thr <= 3; thr++) {
 			bench_soa s;
 			bench_cfg cfg = { 0, 1, 3, 2 };
 			bench_result r;
 			size_t i, n = 1003;
 			cfg.threads = thr;
-			CHECK(bench_soa_alloc(&s, n, dbl) == 0, "alloc");
+			CHECK(bench_soa_alloc(&s, n, prec) == 0, "alloc");
 			for (i = 0; i < n; i++) {
-				if (dbl)
+				if (prec == PREC_DOUBLE)
 					((double *)s.in[2])[i] = 1.0;
 				else
 					((float *)s.in[2])[i] = 1.0f;
@@ -96,7 +96,7 @@ static void test_soa_checksum(void)
 			s.batchf = m->batchf;
 			CHECK(bench_run(bench_soa_kernel, &s, n, &cfg, &r) == 0, "run");
 			CHECK(bench_soa_checksum(&s) == 2.0 * (double)n, "%s %d threads: checksum %.17g, want %zu",
-			      prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT), thr, bench_soa_checksum(&s), 2 * n);
+			      prec_name(prec), thr, bench_soa_checksum(&s), 2 * n);
 			bench_soa_free(&s);
 		}
 }

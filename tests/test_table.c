@@ -91,11 +91,11 @@ static const char summary_csv[] =
 	"slow,double,threshold,10,1e-17,1e-16,1,0,0,0\n"
 	"unknown_method,double,uniform,10,1,1,1,0,0,0\n";
 
-static const tradeoff_row *get(const tradeoff_row *r, int n, const char *m, int dbl)
+static const tradeoff_row *get(const tradeoff_row *r, int n, const char *m, int prec)
 {
 	int i;
 	for (i = 0; i < n; i++)
-		if (r[i].dbl == dbl && strcmp(r[i].method, m) == 0)
+		if (r[i].prec == prec && strcmp(r[i].method, m) == 0)
 			return &r[i];
 	return NULL;
 }

@@ -27,7 +27,7 @@
 
 typedef struct {
 	const char *method;   /* registry name, or "copy" for the roofline */
-	int dbl;
+	int prec;
 	const char *mode;     /* batch, yardstick, roofline, call_throughput, call_latency */
 	const char *size_class; /* l2 or stream */
 	size_t bytes;
@@ -185,7 +185,7 @@ static int parse_opts(int argc, char **argv, bench_opts *o)
 
 typedef struct {
 	const bench_call *c;
-	int dbl;
+	int prec;
 	const void *in;
 	void *out;
 	double sum;
@@ -194,7 +194,7 @@ typedef struct {
 static void call_tp_kernel(void *ctx, size_t lo, size_t hi)
 {
 	call_ctx *c = ctx;
-	if (c->dbl)
+	if (c->prec)
 		c->c->tp(hi - lo, (const onb_vec3 *)c->in + lo, (bench_pair *)c->out + lo);
 	else
 		c->c->tpf(hi - lo, (const onb_vec3f *)c->in + lo, (bench_pairf *)c->out + lo);
@@ -203,7 +203,7 @@ static void call_tp_kernel(void *ctx, size_t lo, size_t hi)
 static void call_lat_kernel(void *ctx, size_t lo, size_t hi)
 {
 	call_ctx *c = ctx;
-	if (c->dbl)
+	if (c->prec)
 		c->sum += c->c->lat(hi - lo, (const onb_vec3 *)c->in + lo);
 	else
 		c->sum += c->c->latf(hi - lo, (const onb_vec3f *)c->in + lo);
@@ -226,39 +226,39 @@ static const char *clone_name(void)
 }
 
 /* The vector width of the batch clone that ran. */
-static const char *batch_vec(const char *method, int dbl)
+static const char *batch_vec(const char *method, int prec)
 {
 	char sym[128];
 	const char *w;
-	snprintf(sym, sizeof sym, "onb_%s_batch%s.%s", method, dbl ? "" : "f", clone_name());
+	snprintf(sym, sizeof sym, "onb_%s_batch%s.%s", method, prec == PREC_DOUBLE ? "" : "f", clone_name());
 	w = bench_vector_width(sym);
 	if (strcmp(w, "unknown") == 0) { /* hand-dispatched kernels (batch.c) */
-		snprintf(sym, sizeof sym, "onb__%s_batch%s_%s", method, dbl ? "" : "f", clone_name());
+		snprintf(sym, sizeof sym, "onb__%s_batch%s_%s", method, prec == PREC_DOUBLE ? "" : "f", clone_name());
 		w = bench_vector_width(sym);
 	}
 	if (strcmp(w, "unknown") == 0) {
-		snprintf(sym, sizeof sym, "onb_%s_batch%s", method, dbl ? "" : "f");
+		snprintf(sym, sizeof sym, "onb_%s_batch%s", method, prec == PREC_DOUBLE ? "" : "f");
 		w = bench_vector_width(sym);
 	}
 	return w;
 }
 
-static const char *sym_vec(const char *prefix, const char *method, int dbl)
+static const char *sym_vec(const char *prefix, const char *method, int prec)
 {
 	char sym[128];
-	snprintf(sym, sizeof sym, "%s%s%s", prefix, method, dbl ? "" : "f");
+	snprintf(sym, sizeof sym, "%s%s%s", prefix, method, prec == PREC_DOUBLE ? "" : "f");
 	return bench_vector_width(sym);
 }
 
 /* The generated directions into both SoA sets and the n_l2 AoS inputs. */
-static void fill_inputs(int dbl, const double *gx, const double *gy, const double *gz, bench_soa soa[2], void *aos_in,
+static void fill_inputs(int prec, const double *gx, const double *gy, const double *gz, bench_soa soa[2], void *aos_in,
                         size_t n_l2)
 {
 	size_t i;
 	int s;
 	for (s = 0; s < 2; s++)
 		for (i = 0; i < soa[s].n; i++) {
-			if (dbl) {
+			if (prec == PREC_DOUBLE) {
 				((double *)soa[s].in[0])[i] = gx[i];
 				((double *)soa[s].in[1])[i] = gy[i];
 				((double *)soa[s].in[2])[i] = gz[i];
@@ -269,7 +269,7 @@ static void fill_inputs(int dbl, const double *gx, const double *gy, const doubl
 			}
 		}
 	for (i = 0; i < n_l2; i++) {
-		if (dbl) {
+		if (prec == PREC_DOUBLE) {
 			onb_vec3 *v = (onb_vec3 *)aos_in + i;
 			v->x = gx[i]; v->y = gy[i]; v->z = gz[i];
 		} else {
@@ -294,7 +294,7 @@ static const bench_yardstick *find_yardstick(const bench_opts *o, int mi)
 /* Point b's kernel and r's labels at the copy roofline (mi < 0), the batch
    kernel of method mi (v == 0) or its yardstick y (v == 1). */
 static void set_soa_kind(bench_row *r, bench_soa *b, const bench_opts *o, int mi, int v, const bench_yardstick *y,
-                         int dbl)
+                         int prec)
 {
 	if (mi < 0) {
 		r->method = "copy";
@@ -302,35 +302,35 @@ static void set_soa_kind(bench_row *r, bench_soa *b, const bench_opts *o, int mi
 		b->batch = bench_copy;
 		b->batchf = bench_copyf;
 		snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
-		r->vec = sym_vec("bench_copy", "", dbl);
+		r->vec = sym_vec("bench_copy", "", prec);
 	} else if (v == 0) {
 		r->method = o->meth[mi]->name;
 		r->mode = "batch";
 		b->batch = o->meth[mi]->batch;
 		b->batchf = o->meth[mi]->batchf;
 		snprintf(r->isa, sizeof r->isa, "%s", onb_batch_isa());
-		r->vec = batch_vec(r->method, dbl);
+		r->vec = batch_vec(r->method, prec);
 	} else {
 		r->method = y->name;
 		r->mode = "yardstick";
 		b->batch = y->batch;
 		b->batchf = y->batchf;
 		snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
-		r->vec = sym_vec("bench_yard_", y->name, dbl);
+		r->vec = sym_vec("bench_yard_", y->name, prec);
 	}
 }
 
 /* One SoA row: n items of size class cls on nthreads threads.  0 or -1. */
-static int soa_row(const bench_opts *o, int dbl, bench_soa *b, const char *cls, size_t n, int nthreads, int mi, int v,
+static int soa_row(const bench_opts *o, int prec, bench_soa *b, const char *cls, size_t n, int nthreads, int mi, int v,
                    const bench_yardstick *y, bench_rows *rs)
 {
 	bench_row *r = rows_add(rs);
 	if (!r)
 		return -1;
-	r->dbl = dbl;
+	r->prec = prec;
 	r->size_class = cls;
-	r->bytes = n * 9 * (dbl ? sizeof(double) : sizeof(float));
-	set_soa_kind(r, b, o, mi, v, y, dbl);
+	r->bytes = n * 9 * (prec == PREC_DOUBLE ? sizeof(double) : sizeof(float));
+	set_soa_kind(r, b, o, mi, v, y, prec);
 	if (measure(bench_soa_kernel, b, n, nthreads, o, &r->r) != 0)
 		return -1;
 	/* the outputs of this run, over the items it wrote */
@@ -347,7 +347,7 @@ static int soa_row(const bench_opts *o, int dbl, bench_soa *b, const char *cls, 
 /* Roofline, batch and yardstick: the same SoA arrays, same sizes; a
    method's yardstick runs right after it at each size and thread
    count, so that both see the same machine load.  0 or -1. */
-static int soa_rows(const bench_opts *o, int dbl, bench_soa soa[2], const size_t sz[2][2], bench_rows *rs)
+static int soa_rows(const bench_opts *o, int prec, bench_soa soa[2], const size_t sz[2][2], bench_rows *rs)
 {
 	const int nthr = o->threads > 1 ? 2 : 1;
 	const int thr[2] = { 1, o->threads };
@@ -356,13 +356,13 @@ static int soa_rows(const bench_opts *o, int dbl, bench_soa soa[2], const size_t
 
 	for (mi = -1; mi < o->nmeth; mi++) {
 		const bench_yardstick *y;
-		if (mi >= 0 && dbl && !o->meth[mi]->batch)
+		if (mi >= 0 && prec == PREC_DOUBLE && !o->meth[mi]->batch)
 			continue; /* float only (ONB_FLOAT_ONLY) */
 		y = find_yardstick(o, mi);
 		for (s = 0; s < 2; s++)
 			for (t = 0; t < nthr; t++)
 				for (v = 0; v < (y ? 2 : 1); v++)
-					if (soa_row(o, dbl, &soa[s], cls[s], sz[s][t], thr[t], mi, v, y, rs) != 0)
+					if (soa_row(o, prec, &soa[s], cls[s], sz[s][t], thr[t], mi, v, y, rs) != 0)
 						return -1;
 	}
 	return 0;
@@ -390,15 +390,15 @@ static void link_ratios(bench_rows *rs, size_t roof0)
 static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const bench_opts *o, bench_rows *rs)
 {
 	const bench_call *c = cc->c;
-	const int dbl = cc->dbl;
+	const int prec = cc->prec;
 	bench_row *r = rows_add(rs);
 	if (!r)
 		return -1;
 	r->method = c->name;
-	r->dbl = dbl;
+	r->prec = prec;
 	r->mode = t ? "call_latency" : "call_throughput";
 	r->size_class = "l2";
-	r->bytes = n_l2 * 9 * (dbl ? sizeof(double) : sizeof(float));
+	r->bytes = n_l2 * 9 * (prec == PREC_DOUBLE ? sizeof(double) : sizeof(float));
 	snprintf(r->isa, sizeof r->isa, "%s", bench_calls_isa());
 	cc->sum = 0.0;
 	if (measure(t ? call_lat_kernel : call_tp_kernel, cc, n_l2, 1, o, &r->r) != 0)
@@ -409,10 +409,10 @@ static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const ben
 		call_lat_kernel(cc, 0, n_l2);
 		r->checksum = cc->sum;
 		r->chain_ns = chain_ns;
-		r->vec = sym_vec("bench_lat_", c->name, dbl);
+		r->vec = sym_vec("bench_lat_", c->name, prec);
 	} else {
-		r->checksum = dbl ? bench_pair_checksum(n_l2, cc->out) : bench_pair_checksumf(n_l2, cc->out);
-		r->vec = sym_vec("bench_tp_", c->name, dbl);
+		r->checksum = prec == PREC_DOUBLE ? bench_pair_checksum(n_l2, cc->out) : bench_pair_checksumf(n_l2, cc->out);
+		r->vec = sym_vec("bench_tp_", c->name, prec);
 	}
 	bench_sink = r->checksum;
 	return 0;
@@ -420,14 +420,14 @@ static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const ben
 
 /* Per call: the inline function over an array of structs, 1 thread.
    0, -1 (out of memory or bad run) or -2 (reported). */
-static int call_rows(const bench_opts *o, int dbl, size_t n_l2, const void *aos_in, void *aos_out, bench_rows *rs)
+static int call_rows(const bench_opts *o, int prec, size_t n_l2, const void *aos_in, void *aos_out, bench_rows *rs)
 {
 	call_ctx cc;
 	bench_result cr;
 	double chain_ns;
 	int mi, t;
 
-	cc.dbl = dbl;
+	cc.prec = prec;
 	cc.in = aos_in;
 	cc.out = aos_out;
 	cc.c = bench_call_find("chain");
@@ -438,7 +438,7 @@ static int call_rows(const bench_opts *o, int dbl, size_t n_l2, const void *aos_
 	bench_sink = cc.sum;
 	for (mi = 0; mi < o->nmeth; mi++) {
 		const bench_call *c = bench_call_find(o->meth[mi]->name);
-		if (dbl && !o->meth[mi]->basis)
+		if (prec == PREC_DOUBLE && !o->meth[mi]->basis)
 			continue; /* float only */
 		if (!c) {
 			study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
@@ -453,7 +453,7 @@ static int call_rows(const bench_opts *o, int dbl, size_t n_l2, const void *aos_
 }
 
 /* One precision: every measurement, appended to rs.  0 or -1. */
-static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_stream, bench_rows *rs)
+static int bench_precision(const bench_opts *o, int prec, size_t n_l2, size_t n_stream, bench_rows *rs)
 {
 	const size_t n_l2_all = n_l2 * (size_t)o->threads;
 	const size_t n_gen = n_stream > n_l2_all ? n_stream : n_l2_all;
@@ -465,18 +465,18 @@ static int bench_precision(const bench_opts *o, int dbl, size_t n_l2, size_t n_s
 	int rc = -1, e;
 
 	memset(soa, 0, sizeof soa);
-	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, dbl) || bench_soa_alloc(&soa[1], n_stream, dbl))
+	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, prec) || bench_soa_alloc(&soa[1], n_stream, prec))
 		goto oom;
-	aos_in = malloc(n_l2 * (dbl ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
-	aos_out = malloc(n_l2 * (dbl ? sizeof(bench_pair) : sizeof(bench_pairf)));
+	aos_in = malloc(n_l2 * (prec == PREC_DOUBLE ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
+	aos_out = malloc(n_l2 * (prec == PREC_DOUBLE ? sizeof(bench_pair) : sizeof(bench_pairf)));
 	if (!aos_in || !aos_out)
 		goto oom;
 	bench_fill_uniform(n_gen, o->seed, gx, gy, gz);
-	fill_inputs(dbl, gx, gy, gz, soa, aos_in, n_l2);
-	if (soa_rows(o, dbl, soa, sz, rs) != 0)
+	fill_inputs(prec, gx, gy, gz, soa, aos_in, n_l2);
+	if (soa_rows(o, prec, soa, sz, rs) != 0)
 		goto oom;
 	link_ratios(rs, roof0);
-	e = call_rows(o, dbl, n_l2, aos_in, aos_out, rs);
+	e = call_rows(o, prec, n_l2, aos_in, aos_out, rs);
 	if (e == -1)
 		goto oom;
 	if (e != 0)
@@ -519,7 +519,7 @@ static const char *row_flag(const bench_row *r)
 static void write_row(FILE *f, const bench_row *r, int tsc)
 {
 	const double n = (double)r->r.n;
-	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, prec_name(r->dbl ? PREC_DOUBLE : PREC_FLOAT), r->mode, r->r.threads,
+	fprintf(f, "%s,%s,%s,%d,%s,%zu,%zu,%zu,%zu", r->method, prec_name(r->prec), r->mode, r->r.threads,
 	        r->size_class, r->r.n, r->bytes, (size_t)r->r.reps, r->r.passes);
 	study_csv_num(f, n / r->r.median_s * 1e-6);
 	study_csv_num(f, n / r->r.min_s * 1e-6);
@@ -533,13 +533,13 @@ static void write_row(FILE *f, const bench_row *r, int tsc)
 	fprintf(f, ",%s,%s,%.17g,%s\n", r->isa, r->vec ? r->vec : "unknown", r->checksum, row_flag(r));
 }
 
-static const bench_row *find_row(const bench_rows *rs, const char *method, int dbl, const char *mode,
+static const bench_row *find_row(const bench_rows *rs, const char *method, int prec, const char *mode,
                                  const char *cls, int many)
 {
 	size_t i;
 	for (i = 0; i < rs->n; i++) {
 		const bench_row *r = &rs->v[i];
-		if (r->dbl == dbl && strcmp(r->method, method) == 0 && strcmp(r->mode, mode) == 0 &&
+		if (r->prec == prec && strcmp(r->method, method) == 0 && strcmp(r->mode, mode) == 0 &&
 		    strcmp(r->size_class, cls) == 0 && (r->r.threads > 1) == many)
 			return r;
 	}

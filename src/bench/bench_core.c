@@ -17,6 +17,7 @@
 #endif
 #include "bench/bench_core.h"
 #include "inputs/rng.h"
+#include "common/prec.h"
 
 double bench_now(void)
 {
@@ -176,13 +177,13 @@ size_t bench_calibrate(bench_kernel k, void *ctx, size_t n, int threads, double 
 
 /* ---- SoA buffers ---------------------------------------------------- */
 
-int bench_soa_alloc(bench_soa *s, size_t n, int dbl)
+int bench_soa_alloc(bench_soa *s, size_t n, int prec)
 {
-	const size_t w = dbl ? sizeof(double) : sizeof(float);
+	const size_t w = prec == PREC_DOUBLE ? sizeof(double) : sizeof(float);
 	const size_t bytes = ((n * w + 63) / 64) * 64 + 64;
 	int i;
 	memset(s, 0, sizeof *s);
-	s->dbl = dbl;
+	s->prec = prec;
 	s->n = n;
 	for (i = 0; i < 9; i++) {
 		void *p = NULL;
@@ -214,7 +215,7 @@ void bench_soa_kernel(void *soa, size_t lo, size_t hi)
 	const bench_soa *s = soa;
 	if (hi <= lo)
 		return;
-	if (s->dbl) {
+	if (s->prec) {
 		const double *const *in = (const double *const *)s->in;
 		double *const *o = (double *const *)s->out;
 		s->batch(hi - lo, in[0] + lo, in[1] + lo, in[2] + lo,
@@ -235,7 +236,7 @@ double bench_soa_checksum(const bench_soa *s)
 	for (i = 0; i < s->n; i++) {
 		double b = 0.0;
 		for (k = 0; k < 6; k++)
-			b += s->dbl ? ((const double *)s->out[k])[i] : (double)((const float *)s->out[k])[i];
+			b += s->prec == PREC_DOUBLE ? ((const double *)s->out[k])[i] : (double)((const float *)s->out[k])[i];
 		sum += b;
 	}
 	return sum;

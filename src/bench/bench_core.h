@@ -60,7 +60,7 @@ double bench_min(const double *v, size_t n);
 
 /* ---- structure-of-arrays buffers and the batch kernel adaptor ------- */
 typedef struct {
-	int     dbl;            /* 1: double arrays, 0: float arrays               */
+	int     prec;           /* PREC_DOUBLE: double arrays, PREC_FLOAT: float   */
 	size_t  n;
 	void   *in[3];          /* nx, ny, nz                                      */
 	void   *out[6];         /* b1x, b1y, b1z, b2x, b2y, b2z                    */
@@ -70,7 +70,7 @@ typedef struct {
 
 /* Allocates n items in one precision (64-byte aligned arrays, outputs
    zeroed); 0 or -1. */
-int  bench_soa_alloc(bench_soa *s, size_t n, int dbl);
+int  bench_soa_alloc(bench_soa *s, size_t n, int prec);
 void bench_soa_free(bench_soa *s);
 /* bench_kernel that runs s->batch or s->batchf on [lo, hi). */
 void bench_soa_kernel(void *soa, size_t lo, size_t hi);

@@ -84,11 +84,11 @@ static int csv_next(csv_file *c)
 	return 0;
 }
 
-static int find_row(const tradeoff_row *rows, int n, const char *method, int dbl)
+static int find_row(const tradeoff_row *rows, int n, const char *method, int prec)
 {
 	int i;
 	for (i = 0; i < n; i++)
-		if (rows[i].dbl == dbl && strcmp(rows[i].method, method) == 0)
+		if (rows[i].prec == prec && strcmp(rows[i].method, method) == 0)
 			return i;
 	return -1;
 }
@@ -103,11 +103,11 @@ typedef struct {
 	int n, cap;
 } row_set;
 
-/* The row of method at precision dbl, appended (every figure NaN) when new.
+/* The row of method at precision prec, appended (every figure NaN) when new.
    Its index, or -1 (reported). */
-static int row_of(row_set *s, const char *method, int dbl)
+static int row_of(row_set *s, const char *method, int prec)
 {
-	int r = find_row(s->v, s->n, method, dbl);
+	int r = find_row(s->v, s->n, method, prec);
 	if (r >= 0)
 		return r;
 	if (s->n == s->cap) {
@@ -123,7 +123,7 @@ static int row_of(row_set *s, const char *method, int dbl)
 	r = s->n++;
 	memset(&s->v[r], 0, sizeof s->v[r]);
 	snprintf(s->v[r].method, sizeof s->v[r].method, "%s", method);
-	s->v[r].dbl = dbl;
+	s->v[r].prec = prec;
 	s->v[r].batch1 = s->v[r].batchn = s->v[r].call_ns = NAN;
 	s->v[r].rmse_uniform = s->v[r].max_south = s->v[r].max_threshold = s->v[r].max_worst = NAN;
 	s->v[r].max_uniform = s->v[r].max_floor_uniform = s->v[r].x_floor = NAN;
@@ -153,14 +153,14 @@ static int load_speeds(const char *bench_csv, row_set *s)
 	}
 	while ((nf = csv_next(&c)) > 0) {
 		const char *mode;
-		int dbl, r, thr;
+		int prec, r, thr;
 		if (nf != c.nh) {
 			study_error("table: %s:%ld: %d fields, the header has %d", bench_csv, c.lineno, nf, c.nh);
 			goto fail;
 		}
 		mode = c.fld[cmode];
-		dbl = parse_prec(c.fld[cp]);
-		if (dbl < 0) {
+		prec = parse_prec(c.fld[cp]);
+		if (prec < 0) {
 			study_error("table: %s:%ld: precision '%s' is neither float nor double", bench_csv, c.lineno, c.fld[cp]);
 			goto fail;
 		}
@@ -168,7 +168,7 @@ static int load_speeds(const char *bench_csv, row_set *s)
 			continue;
 		if (ccls >= 0 && strcmp(c.fld[ccls], "l2") != 0)
 			continue;
-		r = row_of(s, c.fld[cm], dbl);
+		r = row_of(s, c.fld[cm], prec);
 		if (r < 0)
 			goto fail;
 		thr = atoi(c.fld[ct]);
@@ -231,13 +231,13 @@ static int read_accuracy(csv_file *c, const char *summary_csv, const sum_cols *k
 	int nf;
 	while ((nf = csv_next(c)) > 0) {
 		const char *d;
-		int dbl, r, bit;
+		int prec, r, bit;
 		if (nf != c->nh) {
 			study_error("table: %s:%ld: %d fields, the header has %d", summary_csv, c->lineno, nf, c->nh);
 			return -1;
 		}
-		dbl = parse_prec(c->fld[k->p]);
-		r = dbl < 0 ? -1 : find_row(rows, n, c->fld[k->m], dbl);
+		prec = parse_prec(c->fld[k->p]);
+		r = prec < 0 ? -1 : find_row(rows, n, c->fld[k->m], prec);
 		if (r < 0)
 			continue;
 		d = c->fld[k->dist];
@@ -317,7 +317,7 @@ void tradeoff_pareto(tradeoff_row *rows, int n, double tol)
 		rows[i].pareto = 1;
 		for (j = 0; j < n; j++) {
 			double sj, ej;
-			if (j == i || rows[j].dbl != rows[i].dbl || !rows[j].has_speed || !rows[j].has_accuracy)
+			if (j == i || rows[j].prec != rows[i].prec || !rows[j].has_speed || !rows[j].has_accuracy)
 				continue;
 			sj = rows[j].batch1;
 			ej = err_of(&rows[j]);
@@ -471,9 +471,9 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 	for (p = 0; p < 2; p++)
 		for (i = 0; i < n; i++) {
 			const tradeoff_row *r = &rows[i];
-			if (r->dbl != p)
+			if (r->prec != p)
 				continue;
-			fprintf(f->f, "%s,%s", r->method, prec_name(r->dbl ? PREC_DOUBLE : PREC_FLOAT));
+			fprintf(f->f, "%s,%s", r->method, prec_name(r->prec));
 			study_csv_num(f->f, r->batch1);
 			study_csv_num(f->f, r->batchn);
 			fprintf(f->f, ",%d", r->threads);
@@ -506,7 +506,7 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 		printf(" %7s %7s %5s %8s %8s %8s %6s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor",
 		       p ? "\n" : " |");
 	for (i = 0; i < n; i++) {
-		if (rows[i].dbl != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
+		if (rows[i].prec != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
 			continue; /* printed with its float row */
 		printf("%-24s |", rows[i].method);
 		for (p = 0; p < 2; p++) {

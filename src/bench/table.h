@@ -11,7 +11,7 @@ int cmd_table(int argc, char **argv);
 /* ---- the trade table (table.c) ---------------------------------------- */
 typedef struct {
 	char   method[64];
-	int    dbl;               /* precision: 1 double, 0 float                */
+	int    prec;              /* PREC_FLOAT or PREC_DOUBLE                   */
 	double batch1;            /* batch M bases/s, 1 thread, L2-resident      */
 	double batchn;            /* batch M bases/s, all threads, L2-resident   */
 	int    threads;           /* threads of batchn                           */

@@ -57,7 +57,7 @@ static uint64_t fnv1a(uint64_t h, const char *s)
 	return h;
 }
 
-int speed_cache_path(int dbl, char *buf, size_t n)
+int speed_cache_path(int prec, char *buf, size_t n)
 {
 	const char *x = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
 	uint64_t h = 14695981039346656037ULL;
@@ -65,7 +65,7 @@ int speed_cache_path(int dbl, char *buf, size_t n)
 	h = fnv1a(h, study_cpu_model());
 	h = fnv1a(h, "|" ONB_GIT_REV "|" ONB_CFLAGS "|");
 	h = fnv1a(h, onb_batch_isa());
-	h = fnv1a(h, dbl ? "|double" : "|float");
+	h = fnv1a(h, prec == PREC_DOUBLE ? "|double" : "|float");
 	if (x && x[0] == '/')
 		w = snprintf(buf, n, "%s/onbstudy/speed-%016llx.csv", x, (unsigned long long)h);
 	else if (home && home[0])
@@ -94,7 +94,7 @@ static int add_row(speed_table *t, const char *m, double med, double lo, double 
 }
 
 /* A bench.csv (kind SPEED_FILE or SPEED_REFERENCE) or a cache file. */
-static int read_csv(const char *path, int dbl, speed_table *t)
+static int read_csv(const char *path, int prec, speed_table *t)
 {
 	FILE *f = fopen(path, "r");
 	char line[4096], *fl[64], desc[3][256] = { "", "", "" };
@@ -132,7 +132,7 @@ static int read_csv(const char *path, int dbl, speed_table *t)
 			double med, lo, hi;
 			for (k = 0; k < 10; k++)
 				if (c[k] > mx) mx = c[k];
-			if (n <= mx || strcmp(fl[c[1]], prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT)))
+			if (n <= mx || strcmp(fl[c[1]], prec_name(prec)))
 				continue;
 			if ((c[2] >= 0 && strcmp(fl[c[2]], "batch")) || (c[3] >= 0 && strcmp(fl[c[3]], "1"))
 			    || (c[4] >= 0 && strcmp(fl[c[4]], "l2")))
@@ -193,7 +193,7 @@ static int cmp_d(const void *a, const void *b)
 /* Times every registry method's batch kernel on 1 thread, SPEED_N uniform
    directions, reps repetitions taken round-robin over the methods (so a
    change of machine load falls on all of them alike). */
-static int measure(int dbl, int reps, speed_table *t)
+static int measure(int prec, int reps, speed_table *t)
 {
 	size_t nm, i, j;
 	const onb_method *ms = onb_methods(&nm);
@@ -203,20 +203,20 @@ static int measure(int dbl, int reps, speed_table *t)
 	bench_soa s;
 	int r, rc = -1, k = speed_ci_rank(reps);
 	memset(&s, 0, sizeof s);
-	if (!gx || !gy || !gz || !mb || !inner || bench_soa_alloc(&s, SPEED_N, dbl) != 0) {
+	if (!gx || !gy || !gz || !mb || !inner || bench_soa_alloc(&s, SPEED_N, prec) != 0) {
 		study_error("scene: out of memory measuring speeds");
 		goto out;
 	}
 	bench_fill_uniform(SPEED_N, 1, gx, gy, gz);
 	for (i = 0; i < SPEED_N; i++) {
-		if (dbl) {
+		if (prec == PREC_DOUBLE) {
 			((double *)s.in[0])[i] = gx[i]; ((double *)s.in[1])[i] = gy[i]; ((double *)s.in[2])[i] = gz[i];
 		} else {
 			((float *)s.in[0])[i] = (float)gx[i]; ((float *)s.in[1])[i] = (float)gy[i]; ((float *)s.in[2])[i] = (float)gz[i];
 		}
 	}
 	for (i = 0; i < nm; i++) {
-		if (dbl ? !ms[i].batch : !ms[i].batchf)
+		if (prec == PREC_DOUBLE ? !ms[i].batch : !ms[i].batchf)
 			continue; /* float-only methods in double */
 		s.batch = ms[i].batch;
 		s.batchf = ms[i].batchf;
@@ -255,7 +255,7 @@ out:
 	return rc;
 }
 
-static int write_cache(const char *path, int dbl, int reps, const speed_table *t)
+static int write_cache(const char *path, int prec, int reps, const speed_table *t)
 {
 	char dir[4096], *s;
 	study_out o;
@@ -269,24 +269,24 @@ static int write_cache(const char *path, int dbl, int reps, const speed_table *t
 		return -1;
 	study_provenance(o.f, "scene --refresh-speed", 1, 1);
 	fprintf(o.f, "# what: batch kernel throughput, %s, 1 thread, %d uniform directions (L2-resident), M bases/s\n",
-	        prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT), SPEED_N);
+	        prec_name(prec), SPEED_N);
 	fprintf(o.f, "# repetitions: %d (round-robin over the methods, each >= 20 ms after a warm-up pass)\n", reps);
 	fprintf(o.f, "# interval: lo, hi = order statistics %d and %d of %d: a distribution-free confidence interval of the median (>= 95%% for 6 or more repetitions)\n",
 	        speed_ci_rank(reps), reps + 1 - speed_ci_rank(reps), reps);
 	fprintf(o.f, "method,precision,mode,threads,size_class,reps,mbases_per_s,lo,hi\n");
 	for (i = 0; i < t->n; i++)
-		fprintf(o.f, "%s,%s,batch,1,l2,%d,%.6g,%.6g,%.6g\n", t->rows[i].method, prec_name(dbl ? PREC_DOUBLE : PREC_FLOAT),
+		fprintf(o.f, "%s,%s,batch,1,l2,%d,%.6g,%.6g,%.6g\n", t->rows[i].method, prec_name(prec),
 		        reps, t->rows[i].med, t->rows[i].lo, t->rows[i].hi);
 	return study_out_commit(&o);
 }
 
-int speed_load(int dbl, const char *file, int refresh, int reps, speed_table *t)
+int speed_load(int prec, const char *file, int refresh, int reps, speed_table *t)
 {
 	char cache[4096], ref[4096];
 	int rc;
 	memset(t, 0, sizeof *t);
 	if (file) {
-		rc = read_csv(file, dbl, t);
+		rc = read_csv(file, prec, t);
 		if (rc != 0) {
 			study_error("scene: --speed %s: %s", file, rc == -1 ? strerror(errno)
 			            : "no batch, 1-thread, l2 rows for this precision (expected a bench.csv of 'onbstudy bench')");
@@ -295,7 +295,7 @@ int speed_load(int dbl, const char *file, int refresh, int reps, speed_table *t)
 		t->kind = SPEED_FILE;
 		return 0;
 	}
-	if (speed_cache_path(dbl, cache, sizeof cache) != 0) {
+	if (speed_cache_path(prec, cache, sizeof cache) != 0) {
 		cache[0] = '\0';
 		if (refresh) {
 			study_error("scene: --refresh-speed: no cache directory (set XDG_CACHE_HOME or HOME)");
@@ -303,20 +303,20 @@ int speed_load(int dbl, const char *file, int refresh, int reps, speed_table *t)
 		}
 	}
 	if (refresh) {
-		if (measure(dbl, reps, t) != 0)
+		if (measure(prec, reps, t) != 0)
 			return -1;
-		if (write_cache(cache, dbl, reps, t) != 0) {
+		if (write_cache(cache, prec, reps, t) != 0) {
 			speed_free(t);
 			return -1;
 		}
 		speed_free(t);
 		memset(t, 0, sizeof *t);
 	}
-	if (cache[0] && read_csv(cache, dbl, t) == 0) {
+	if (cache[0] && read_csv(cache, prec, t) == 0) {
 		t->kind = SPEED_CACHE;
 		return 0;
 	}
-	if (reference_path(ref, sizeof ref) == 0 && read_csv(ref, dbl, t) == 0) {
+	if (reference_path(ref, sizeof ref) == 0 && read_csv(ref, prec, t) == 0) {
 		t->kind = SPEED_REFERENCE;
 		return 0;
 	}

@@ -39,9 +39,9 @@ typedef struct {
 } speed_table;
 
 /* Loads (or, with refresh, measures and caches) the speeds of precision
-   dbl.  file: an explicit bench.csv, or NULL.  reps: repetitions of a
+   prec.  file: an explicit bench.csv, or NULL.  reps: repetitions of a
    refresh (>= 3).  Returns 0, or -1 with a message on stderr. */
-int  speed_load(int dbl, const char *file, int refresh, int reps, speed_table *t);
+int  speed_load(int prec, const char *file, int refresh, int reps, speed_table *t);
 void speed_free(speed_table *t);
 /* The row of method `name`, or NULL. */
 const speed_row *speed_find(const speed_table *t, const char *name);
@@ -49,7 +49,7 @@ const speed_row *speed_find(const speed_table *t, const char *name);
    interval of the median of n samples, at >= 95% where n allows
    (n >= 6); 1 (the minimum) below that. */
 int  speed_ci_rank(int n);
-/* The cache file for precision dbl on this machine and build. */
-int  speed_cache_path(int dbl, char *buf, size_t n);
+/* The cache file for precision prec on this machine and build. */
+int  speed_cache_path(int prec, char *buf, size_t n);
 
 #endif

@@ -245,7 +245,7 @@ int scene_certify(const char *path, char up, int fl, double E, const onb_method 
 		nhit += hit[i];
 	printf("\nproven bounds for this scene (--certify): %zu shading patches (spherical triangles of the vertex normals)\n"
 	       "  touch %zu of the %zu regions; domain: every %s n with | |n| - 1 | <= %.3g (the renderer's normalization)\n",
-	       npatch, nhit, nreg, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), o.tolerance);
+	       npatch, nhit, nreg, prec_name(prec), o.tolerance);
 	printf("  %-24s %12s %12s  %s\n", "method", "proven_max", "measured", "verdict (E = tolerance)");
 	for (i = 0; i < nm; i++) {
 		const char *v = sb[i].singular ? "singular here: not bounded"

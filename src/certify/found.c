@@ -102,15 +102,14 @@ static void keep_top(probe_env *e, const double n[3], double d)
 double found_try(probe_env *e, const double n[3], int in_domain)
 {
 	static const double loc[3] = { 0.0, 0.0, 1.0 };
-	const int fmt = e->prec;
 	sample_metrics s;
 	double nn[3], d;
 	int i;
 	if (!cert_in_region(e->r, n))
 		return -1.0;
 	if (!in_domain) {
-		int side = fmt == PREC_FLOAT && e->o->tolerance < 0 ? cert_f32_side(n) : 2;
-		if (side == 2 ? !cert_in_domain(n, fmt, e->o->tolerance) : side != 0)
+		int side = e->prec == PREC_FLOAT && e->o->tolerance < 0 ? cert_f32_side(n) : 2;
+		if (side == 2 ? !cert_in_domain(n, e->prec, e->o->tolerance) : side != 0)
 			return -1.0;
 	}
 	e->res->probes++;

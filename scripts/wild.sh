@@ -39,9 +39,9 @@
 set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$HERE/..
-REF=${REF:-$ROOT/results/reference}
+REF=${REF:-$ROOT/results/wild}
 # the paper methods' proven bounds, then the engines' run (its rows win)
-CERT=${CERT:-$ROOT/results/certify/certify.csv}
+CERT=${CERT:-$ROOT/results/certify/certify.csv $ROOT/results/wild/certify.csv}
 ONBSTUDY=${ONBSTUDY:-$ROOT/onbstudy}
 TPL=${WILD_TPL:-$HERE/wild.md.in}
 BODY=$TPL

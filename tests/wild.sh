@@ -30,7 +30,7 @@ while IFS= read -r row; do
 	if [ -z "$cmd" ]; then
 		# only a method the committed run predates may lack its input
 		tgt=$(printf '%s\n' "$row" | sed -n 's/^| `[a-z0-9_]*` = `\([a-z0-9_]*\)`.*/\1/p'); [ -n "$tgt" ] || tgt=$name
-		if printf '%s\n' "$row" | grep -q 'not in the committed run' && ! grep -q "^$tgt," "${REF:-results/reference}/summary.csv"; then
+		if printf '%s\n' "$row" | grep -q 'not in the committed run' && ! grep -q "^$tgt," "${REF:-results/wild}/summary.csv"; then
 			echo "note: $name is not in the committed run yet"; ok
 		else bad "$name: no replayable input"; fi
 		continue

@@ -15,11 +15,16 @@
  *   - the input (0x1.595d2b0e703afp-1, -0x1.595d2b0e703b4p-1,
  *     -0x1.3330c465b584p-2) with u = n/|n|, which atan2 put in the sector
  *     [315, 360) while the box of that sector missed it.
- * For each input and each region that claims it (cert_in_region), the
- * region is run (cert_region_run, budget 150) and FAIL unless some leaf
- * holds u exactly: u.z in [z_lo, z_hi] (in zpoint + [dz_lo, dz_hi] when
- * n.z is given, with n.z = zpoint) and phi in [phi_lo, phi_hi] modulo 2 pi,
- * compared in MPFR.
+ *   - the tolerance domain (--tolerance 1e-3) beyond the poles: n = the
+ *     rounding of s u for u next to +-z and s = 1 + 0.999 T, 1 + T / 2,
+ *     1 + T / 8, so that |n.z| > 1, which no band held before the bands
+ *     at the poles were opened beyond them; u = n/|n| (MPFR).
+ * Every input must be claimed by some region.  For each input and each
+ * region that claims it (cert_in_region), the region is run
+ * (cert_region_run, budget 150) and FAIL unless some leaf holds u exactly:
+ * u.z in [z_lo, z_hi] (in zpoint + [dz_lo, dz_hi] when n.z is given, with
+ * n.z = zpoint) and phi in [phi_lo, phi_hi] modulo 2 pi, compared in MPFR,
+ * with n.z in the leaf's band [nz_lo, nz_hi] (which branch decisions use).
  */
 #include <math.h>
 #include <stdio.h>
@@ -75,6 +80,8 @@ static int in_some_leaf(const leaves *l, mpfr_srcptr z, mpfr_srcptr phi, const d
 	mpfr_init2(d, PREC);
 	for (i = 0; i < l->n && !in; i++) {
 		const mvf_box *b = &l->b[i];
+		if (!(n[2] >= b->nz_lo && n[2] <= b->nz_hi))
+			continue;
 		if (b->has_zpoint) {
 			if (b->zpoint != n[2])
 				continue;
@@ -97,14 +104,15 @@ typedef struct {
 	cert_region reg[1024];   /* regions_band writes the default regions first */
 	leaves *lv[1024];
 	int nreg;
+	double tol;   /* the domain's tolerance (< 0: roundings of unit vectors) */
 	long inputs, claims, missed;
 } env;
 
 /* Check input n, the rounding of (z, phi), against every region of e. */
 static void check_input(env *e, mpfr_srcptr z, mpfr_srcptr phi, const double n[3])
 {
-	int i;
-	if (!cert_in_domain(n, PREC_DOUBLE, -1.0)) {
+	int i, claimed = 0;
+	if (!cert_in_domain(n, PREC_DOUBLE, e->tol)) {
 		CHECK(0, "(%a, %a, %a): not in the domain", n[0], n[1], n[2]);
 		return;
 	}
@@ -113,8 +121,10 @@ static void check_input(env *e, mpfr_srcptr z, mpfr_srcptr phi, const double n[3
 		if (!cert_in_region(&e->reg[i], n))
 			continue;
 		e->claims++;
+		claimed = 1;
 		if (!e->lv[i]) {
 			cert_opts o = { 150, 50, 1.25, -1.0, 31, keep_leaf, NULL, NULL, 0 };
+			o.tolerance = e->tol;
 			cert_result res;
 			e->lv[i] = calloc(1, sizeof *e->lv[i]);
 			if (!e->lv[i])
@@ -130,6 +140,7 @@ static void check_input(env *e, mpfr_srcptr z, mpfr_srcptr phi, const double n[3
 			      e->reg[i].phi_hi, e->lv[i]->n);
 		}
 	}
+	CHECK(claimed, "(%a, %a, %a): claimed by no region", n[0], n[1], n[2]);
 }
 
 /* The rounding to double of the unit vector (z, phi). */
@@ -230,6 +241,55 @@ static void sector_inputs(env *e)
 	mpfr_clears(z, phi, t, (mpfr_ptr)0);
 }
 
+/* u = n/|n| of a double vector n, as (z, phi), exact to PREC bits. */
+static void unit_of(const double n[3], mpfr_t z, mpfr_t phi)
+{
+	mpfr_t t, c;
+	int i;
+	mpfr_inits2(PREC, t, c, (mpfr_ptr)0);
+	mpfr_set_zero(t, 1);
+	for (i = 0; i < 3; i++) {
+		mpfr_set_d(c, n[i], MPFR_RNDN);
+		mpfr_fma(t, c, c, t, MPFR_RNDN);
+	}
+	mpfr_sqrt(t, t, MPFR_RNDN);
+	mpfr_set_d(z, n[2], MPFR_RNDN);
+	mpfr_div(z, z, t, MPFR_RNDN);
+	mpfr_set_d(t, n[1], MPFR_RNDN);
+	mpfr_set_d(c, n[0], MPFR_RNDN);
+	mpfr_atan2(phi, t, c, MPFR_RNDN);
+	if (n[0] == 0.0 && n[1] == 0.0)   /* a pole: every azimuth is u, take 0 */
+		mpfr_set_zero(phi, 1);
+	mpfr_clears(t, c, (mpfr_ptr)0);
+}
+
+/* The tolerance domain beyond the pole sg: n = RN(s u), |n.z| > 1. */
+static void tolerance_inputs(env *e, int sg)
+{
+	static const double zs[] = { 1.0, 1.0 - 1e-12, 1.0 - 1e-7, 1.0 - 1e-5 };
+	static const double ss[] = { 0.999, 0.5, 0.125 };
+	static const double phis[] = { 0.0, 1.0, 2.5, 4.0, 5.9 };
+	const double T = 1e-3;
+	mpfr_t z, phi;
+	int i, j, p;
+	mpfr_inits2(PREC, z, phi, (mpfr_ptr)0);
+	e->tol = T;
+	env_regions(e, sg > 0 ? 1.0 - 1e-16 : -1.0, sg > 0 ? 1.0 : -1.0 + 1e-16);
+	for (i = 0; i < 4; i++)
+		for (j = 0; j < 3; j++)
+			for (p = 0; p < 5; p++) {
+				double r = sqrt((1.0 - zs[i]) * (1.0 + zs[i])), s = 1.0 + ss[j] * T, n[3];
+				n[0] = s * r * cos(phis[p]);
+				n[1] = s * r * sin(phis[p]);
+				n[2] = sg * s * zs[i];
+				CHECK(fabs(n[2]) > 1.0, "tolerance input: n.z %a", n[2]);
+				unit_of(n, z, phi);
+				check_input(e, z, phi, n);
+			}
+	e->tol = -1.0;
+	mpfr_clears(z, phi, (mpfr_ptr)0);
+}
+
 int main(void)
 {
 	static const char *names[] = { "hughes_moeller", "frisvad", "rtow" };
@@ -249,11 +309,14 @@ int main(void)
 		}
 		e.k = &ks[i];
 		e.inputs = e.claims = e.missed = 0;
+		e.tol = -1.0;
 		pole_inputs(&e, 1);
 		pole_inputs(&e, -1);
 		sector_inputs(&e);
+		tolerance_inputs(&e, 1);
+		tolerance_inputs(&e, -1);
 		env_regions(&e, 0.0, 0.0);
-		printf("%-16s %ld double inputs, %ld region claims, %ld outside every leaf\n", names[j], e.inputs,
+		printf("%-16s %ld double inputs (%d beyond +-1 with a tolerance), %ld region claims, %ld outside every leaf\n", names[j], e.inputs, 2 * 60,
 		       e.claims, e.missed);
 	}
 	cert_ctx_free(e.x);

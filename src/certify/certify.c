@@ -19,7 +19,7 @@
 #include "model/seeds.h"
 
 #define MAXREG 1024
-#define MAXK 256
+#define MAXK STUDY_MAX_KERNELS
 
 typedef struct {
 	const char *methods;

@@ -4,7 +4,9 @@
  * A region is a band of n.z and an azimuth sector, both closed-open except
  * at the top: nz_lo <= n.z <= nz_hi and phi_lo <= phi < phi_hi, with
  * phi = atan2(n.y, n.x) in degrees mapped to [0, 360) (phi of n.x = n.y = 0
- * is 0).  Membership is decided on the P-format input n itself, the one
+ * is 0).  A band that reaches a pole (nz_lo = -1 or nz_hi = 1) also holds
+ * every n.z beyond it: the tolerance domain has inputs with |n.z| up to
+ * 1 + T, and they belong to the band of their pole.  Membership is decided on the P-format input n itself, the one
  * `onbstudy eval` replays.
  *
  * The domain for precision P (cert_domain):

@@ -25,7 +25,11 @@ double cert_phi_deg(double x, double y)
 int cert_in_region(const cert_region *r, const double n[3])
 {
 	double p = cert_phi_deg(n[0], n[1]);
-	return n[2] >= r->nz_lo && n[2] <= r->nz_hi && p >= r->phi_lo && (p < r->phi_hi || r->phi_hi >= 360.0);
+	/* the bands at the poles are open beyond them: with a tolerance, n.z
+	   can exceed 1 in magnitude (|n| up to 1 + T), and such an n belongs
+	   to the band that holds its pole */
+	return (n[2] >= r->nz_lo || r->nz_lo <= -1.0) && (n[2] <= r->nz_hi || r->nz_hi >= 1.0) &&
+	       p >= r->phi_lo && (p < r->phi_hi || r->phi_hi >= 360.0);
 }
 
 /* The band edges: 1 + n.z = 10^-k/2 near -1 down to 10^-lo_dec, the same
@@ -83,12 +87,17 @@ size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, 
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 {
 	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-149 : 0x1p-1074;
-	const double w = tolerance >= 0 ? tolerance : u;   /* relative widening */
+	/* relative widening: |u.z| <= |n.z| / (1 - T) with a tolerance */
+	const double w = tolerance >= 0 ? tolerance / (1.0 - tolerance) : u;
 	double zmax, rmin, dphi;
 	b->prec = prec;
 	b->tolerance = tolerance;
-	b->nz_lo = r->nz_lo;
-	b->nz_hi = r->nz_hi;
+	/* a pole's band also holds the n.z beyond the pole (cert_in_region),
+	   which only a tolerance admits: n.z = (1 + t) u.z, |t| <= T, lies in
+	   the box's values of n.z (u.z in [z_lo, z_hi] below) whatever the
+	   band says, so the band is left open there */
+	b->nz_lo = r->nz_lo <= -1.0 && tolerance >= 0 ? -INFINITY : r->nz_lo;
+	b->nz_hi = r->nz_hi >= 1.0 && tolerance >= 0 ? INFINITY : r->nz_hi;
 	b->has_zpoint = 0;
 	b->zpoint = b->dz_lo = b->dz_hi = 0.0;
 	b->z_lo = fmax(-1.0, r->nz_lo - w * fabs(r->nz_lo) * 1.01 - eta);

@@ -178,11 +178,11 @@ typedef struct {
 static int certify_hits(const onb_method *ms, size_t nm, int prec, const cert_region *reg, size_t nreg,
                         const unsigned char *hit, const cert_opts *o, scene_bound *sb)
 {
-	study_kernel ks[64];
+	study_kernel ks[STUDY_MAX_KERNELS];
 	int fail = 0;
 	long t, nt = (long)(nm * nreg);
 	size_t i;
-	if (nm > 64)
+	if (nm > STUDY_MAX_KERNELS)
 		return -1;
 	for (i = 0; i < nm; i++)
 		if (kernels_select(ms[i].name, 0, &ks[i], 1) != 1)

@@ -38,6 +38,10 @@ typedef struct study_kernel {
 	int (*branch)(const struct study_kernel *k, int prec, const double n[3]);
 } study_kernel;
 
+/* The most kernels a command selects at once (every registry method,
+   frisvad_rotate and their FMA copies fit): the capacity of its tables. */
+#define STUDY_MAX_KERNELS 256
+
 /* Fill out[] (capacity cap) with the kernels named in the comma-separated
    list `names` (NULL or "all": every registry method and frisvad_rotate),
    plus FMA copies when fma != 0.  Returns the count, or -1 after a

@@ -32,6 +32,7 @@
 #include "methods/kernels.h"
 #include "inputs/inputs.h"
 #include "certify/enumerate.h"
+#include "certify/search.h"
 #include "certify/models.h"
 #include "model/model.h"
 #include "certify/regions.h"

@@ -7,7 +7,7 @@
  *
  * A box fixes float ranges of two components and completes the third
  * (`axis`) with every float that makes n a domain member: for each pair,
- * the runs of domain values of either sign (cert_f32_run), kept when
+ * the runs of domain values of either sign (cert_f32_run, domain32.h), kept when
  * within [lo, hi] of that axis (a filter: a hemisphere, say).  The ranges
  * of the two fixed components are of consecutive floats; a range that
  * holds 0 holds both -0 and +0.
@@ -16,7 +16,9 @@
 #define ONB_CERTIFY_ENUMERATE_H
 
 #include "methods/kernels.h"
-#include "search.h"
+#include "probe.h"
+#include "domain32.h"
+#include "regions.h"
 
 typedef struct {
 	const char *name;
@@ -32,19 +34,6 @@ typedef struct {
    fails; near +z; on hughes_moeller's |x| = |z|; at the n.z = 0 seam;
    near -x for naive; -x itself); their count in *count. */
 const cert_box *cert_boxes(int *count);
-
-/* Which side of the default float domain n lies on: 0 in it (exactly when
-   cert_in_domain(n, PREC_FLOAT, -1) is 1), -1 too short (every real that
-   rounds to n has |u| <= 1), +1 too long (|u| >= 1), 2 when a component
-   is not a finite float or the side cannot be told.  Exact: a double sum
-   decides unless it is within 2^-46 of 1, then cert_in_domain does. */
-int cert_f32_side(const double n[3]);
-
-/* The domain members with n[axis] of the sign of `sign` (+1: +0 and up,
-   -1: -0 and down), the other two components as in n: the run *lo..*hi in
-   magnitude order.  Returns its length (0: none, -1: a side could not be
-   told, after a message). */
-long long cert_f32_run(const double n[3], int axis, int sign, double *lo, double *hi);
 
 /* Every domain input of box b, 3 doubles each, into a new array *out
    (free it); returns the count, or -1 after a message (out of memory,

@@ -26,7 +26,7 @@
 #include <string.h>
 #include <mpfr.h>
 #include "found.h"
-#include "enumerate.h"
+#include "domain32.h"
 #include "inputs/inputs.h"
 #include "model/model.h"
 #include "inputs/rng.h"

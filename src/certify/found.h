@@ -6,15 +6,9 @@
 #ifndef ONB_CERTIFY_FOUND_H
 #define ONB_CERTIFY_FOUND_H
 
-#include <mpfr.h>
-#include "search.h"
-#include "reference/reference.h"
-
-struct cert_ctx {
-	bound_ctx *b;
-	ref_ctx *rc;
-	mpfr_t t, s;   /* scratch of the completion of an input to unit length */
-};
+#include "bracket.h"
+#include "probe.h"
+#include "regions.h"
 
 /* The inputs with the largest defects seen, as screened: where the
    walks start. */

@@ -1,0 +1,46 @@
+/*
+ * bracket.h - what one region's bracket is asked (cert_opts, with the
+ * inputs its found side starts from) and what it answers (cert_result):
+ * shared by the branch and bound (search.c) and the found side (found.c).
+ */
+#ifndef ONB_CERTIFY_BRACKET_H
+#define ONB_CERTIFY_BRACKET_H
+
+#include <stdint.h>
+#include "model/mvf.h"
+
+enum { CERT_PROVEN = 0, CERT_SINGULAR, CERT_BUDGET };
+
+/* An input the found side starts a walk from (--starts): another run's
+   worst input of a method, for one precision (-1: either). */
+typedef struct {
+	char method[48];
+	int prec;
+	double n[3];
+} cert_start;
+
+typedef struct {
+	long budget;        /* boxes bounded per region at most                    */
+	long samples;       /* kernel inputs sampled per region before the boxes   */
+	double target;      /* proven when bound <= target * found (1.25)          */
+	double tolerance;   /* < 0: the default domain                             */
+	uint64_t seed;
+	/* Called with every leaf of the branch and bound and its bound, when
+	   set (tests: every input of the region lies in some leaf). */
+	void (*leaf_fn)(void *arg, const mvf_box *b, double bound);
+	void *leaf_arg;
+	const cert_start *starts;   /* walks also start from these (those of the */
+	long nstarts;               /* kernel, precision and region)            */
+} cert_opts;
+
+typedef struct {
+	double bound;       /* certified: no input of the region exceeds it (+inf: none) */
+	double found;       /* the largest defect measured on an input of the region */
+	double found_n[3];  /* that input (in the format)                          */
+	int status;         /* CERT_*                                              */
+	int nonfinite;      /* a sampled input gave a non-finite output            */
+	long boxes;
+	long probes;        /* inputs of the region the found side evaluated      */
+} cert_result;
+
+#endif

@@ -1,0 +1,29 @@
+/*
+ * probe.h - one input measured: the certify context of a thread (cert_ctx)
+ * and the defect of a kernel on one input as `onbstudy eval` measures it
+ * (probe.c).  Below the found side (found.c), the branch and bound
+ * (search.c) and the enumeration of a box (enumerate.c).
+ */
+#ifndef ONB_CERTIFY_PROBE_H
+#define ONB_CERTIFY_PROBE_H
+
+#include <mpfr.h>
+#include "methods/kernels.h"
+#include "bound.h"
+#include "reference/reference.h"
+
+typedef struct cert_ctx cert_ctx;
+cert_ctx *cert_ctx_new(void);   /* one per thread; NULL on failure */
+void cert_ctx_free(cert_ctx *x);
+
+struct cert_ctx {
+	bound_ctx *b;
+	ref_ctx *rc;
+	mpfr_t t, s;   /* scratch of the completion of an input to unit length */
+};
+
+/* The defect of kernel k on input n as `onbstudy eval` measures it (the
+   exact defect of the rounded outputs); *nonfinite set for NaN/inf. */
+double cert_probe(cert_ctx *x, const study_kernel *k, int prec, const double n[3], int *nonfinite);
+
+#endif

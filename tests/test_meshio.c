@@ -82,7 +82,7 @@ static void test_obj(void)
 	CHECK(near3(&m, find_vertex(&m, 2), 0, 1, 0), "tet vertex 3 normal");
 	CHECK(near3(&m, find_vertex(&m, 3), 0, 0, 1), "tet vertex 4 normal");
 	CHECK(m.where[find_vertex(&m, 3)] == 5, "tet vertex 4 is on line 5, got %llu", (unsigned long long)m.where[3]);
-	CHECK(mesh_classify(&m, 0, 0, &st) == 0 && st.unit == 4 && st.nonunit == 0, "tet classify unit %zu", st.unit);
+	CHECK(mesh_classify(&m, PREC_DOUBLE, 0, &st) == 0 && st.unit == 4 && st.nonunit == 0, "tet classify unit %zu", st.unit);
 	mesh_free(&m);
 
 	/* cube of quads (fan-triangulated): polygon-area weighting gives the
@@ -120,7 +120,7 @@ static void test_obj(void)
 		CHECK(m.count == 5 && m.origin == MESH_STORED, "vn count %zu", m.count);
 		CHECK(m.count == 5 && m.where[0] == 5 && m.where[4] == 9, "vn lines %llu %llu", (unsigned long long)m.where[0], (unsigned long long)m.where[4]);
 		CHECK(m.count == 5 && m.x[4] == 0.6 && m.y[4] == 0.8, "vn values");
-		CHECK(mesh_classify(&m, 0, 0, &st) == 0, "classify");
+		CHECK(mesh_classify(&m, PREC_DOUBLE, 0, &st) == 0, "classify");
 		CHECK(st.zero == 1 && st.nonfinite == 1 && st.nonunit == 1 && st.unit == 2, "vn classes zero %zu nonfinite %zu nonunit %zu unit %zu",
 		      st.zero, st.nonfinite, st.nonunit, st.unit);
 		CHECK(st.dev_max == 1.0 && st.nbad == 2 && st.bad[0] == 1 && st.bad[1] == 2, "vn deviations %g, bad %zu", st.dev_max, st.nbad);
@@ -130,7 +130,7 @@ static void test_obj(void)
 			CHECK(strcmp(w, "line 6") == 0, "where '%s'", w);
 		}
 		/* in float, 0.6 and 0.8 round so that |n| - 1 is about 3e-8: unit at 4 float ulps */
-		CHECK(mesh_classify(&m, 1, 0, &st) == 0 && st.unit == 2, "float unit %zu", st.unit);
+		CHECK(mesh_classify(&m, PREC_FLOAT, 0, &st) == 0 && st.unit == 2, "float unit %zu", st.unit);
 		mesh_free(&m);
 	}
 
@@ -234,7 +234,7 @@ static void test_ply_ascii(void)
 	CHECK(rds("a.ply", asc, &m, err) == 0, "a.ply: %s", err);
 	CHECK(m.count == 3 && m.origin == MESH_STORED && m.stored_type == MESH_T_FLOAT && m.ply_binary == 0, "a.ply counts %zu", m.count);
 	CHECK(m.count == 3 && m.x[1] == (double)(float)0.6 && m.y[1] == (double)(float)0.8, "a.ply values are the float roundings");
-	CHECK(mesh_classify(&m, 1, 0, &st) == 0 && st.zero == 1 && st.nbad == 1 && st.bad[0] == 2, "a.ply zero");
+	CHECK(mesh_classify(&m, PREC_FLOAT, 0, &st) == 0 && st.zero == 1 && st.nbad == 1 && st.bad[0] == 2, "a.ply zero");
 	{
 		char w[160];
 		mesh_where(&m, 2, w, sizeof w);
@@ -500,12 +500,12 @@ static void test_geom(void)
 
 /* ---- glTF 2.0, detection by content, PLY aliases, OBJ continuation ---- */
 
-static int rdf(const char *path, int world, int fl, mesh_normals *m, char *err)
+static int rdf(const char *path, int world, int prec, mesh_normals *m, char *err)
 {
 	mesh_opts o;
 	memset(&o, 0, sizeof o);
 	o.world = world;
-	o.use_float = fl;
+	o.prec = prec;
 	return mesh_read_file_opts(path, &o, m, NULL, err, 512);
 }
 
@@ -517,9 +517,9 @@ static void test_gltf_files(void)
 {
 	mesh_normals m;
 	char err[512];
-	int fl;
+	int prec;
 	/* KHR_mesh_quantization: BYTE and SHORT normalized, strides 4 and 8 */
-	CHECK(rdf("tests/data/gltf/quantized.gltf", 0, 1, &m, err) == 0, "quantized.gltf: %s", err);
+	CHECK(rdf("tests/data/gltf/quantized.gltf", 0, PREC_FLOAT, &m, err) == 0, "quantized.gltf: %s", err);
 	CHECK(m.count == 8 && m.format == MESH_GLTF && m.stored_type == MESH_T_QUANT && m.nprims == 2, "quantized counts %zu %d", m.count, m.stored_type);
 	if (m.count == 8) {
 		CHECK(m.x[0] == -1.0 && m.x[1] == 1.0 && m.x[2] == dq8(64) && m.y[2] == dq8(-64) && m.z[3] == dq8(3), "byte decoding %a %a %a", m.x[0], m.x[2], m.z[3]);
@@ -530,30 +530,30 @@ static void test_gltf_files(void)
 	/* interleaved (byteStride 24) float normals; --world through a matrix
 	   node and a scaled child: world diag(2, 4, 8), inverse transpose
 	   diag(1/2, 1/4, 1/8), exact in both precisions */
-	CHECK(rdf("tests/data/gltf/strided.gltf", 0, 1, &m, err) == 0 && m.count == 4 && m.x[0] == (double)(float)0.6
+	CHECK(rdf("tests/data/gltf/strided.gltf", 0, PREC_FLOAT, &m, err) == 0 && m.count == 4 && m.x[0] == (double)(float)0.6
 	      && m.y[0] == (double)(float)0.8 && m.z[1] == 1 && m.y[2] == -1 && m.x[3] == 1 && m.stored_type == MESH_T_FLOAT, "strided.gltf: %s", err);
 	mesh_free(&m);
-	for (fl = 0; fl < 2; fl++) {
-		CHECK(rdf("tests/data/gltf/strided.gltf", 1, fl, &m, err) == 0 && m.count == 8 && m.world, "strided --world: %s", err);
+	for (prec = PREC_FLOAT; prec <= PREC_DOUBLE; prec++) {
+		CHECK(rdf("tests/data/gltf/strided.gltf", 1, prec, &m, err) == 0 && m.count == 8 && m.world, "strided --world: %s", err);
 		if (m.count == 8)
 			CHECK(m.x[0] == (double)(float)0.6 * 0.5 && m.y[0] == (double)(float)0.8 * 0.25 && m.z[1] == 1 && m.where[0] >> 40 == 0
 			      && m.x[4] == (double)(float)0.6 * 0.5 && m.z[5] == 0.125 && m.y[6] == -0.25 && m.x[7] == 0.5 && m.where[4] >> 40 == 1,
-			      "strided --world values (%s): %a %a %a %a", prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), m.x[0], m.y[0], m.z[5], m.y[6]);
+			      "strided --world values (%s): %a %a %a %a", prec_name(prec), m.x[0], m.y[0], m.z[5], m.y[6]);
 		mesh_free(&m);
 	}
 	/* .glb, default scene 1: its node rotates 90 degrees about z, so x -> y;
 	   float and double give different roundings of the same rotation */
 	{
 		double d[9] = { 0 };
-		CHECK(rdf("tests/data/gltf/rotated.glb", 0, 1, &m, err) == 0 && m.count == 3 && m.gltf_binary && m.x[0] == 1, "rotated.glb: %s", err);
+		CHECK(rdf("tests/data/gltf/rotated.glb", 0, PREC_FLOAT, &m, err) == 0 && m.count == 3 && m.gltf_binary && m.x[0] == 1, "rotated.glb: %s", err);
 		mesh_free(&m);
-		CHECK(rdf("tests/data/gltf/rotated.glb", 1, 0, &m, err) == 0 && m.count == 3 && m.where[0] >> 40 == 1, "rotated.glb --world double: %s", err);
+		CHECK(rdf("tests/data/gltf/rotated.glb", 1, PREC_DOUBLE, &m, err) == 0 && m.count == 3 && m.where[0] >> 40 == 1, "rotated.glb --world double: %s", err);
 		if (m.count == 3) {
 			CHECK(fabs(m.x[0]) < 1e-15 && fabs(m.y[0] - 1) < 1e-15 && fabs(m.x[1] + 1) < 1e-15 && m.z[2] == 1, "rotated double (%a %a)", m.x[0], m.y[0]);
 			d[0] = m.x[0]; d[1] = m.y[0]; d[2] = m.x[1];
 		}
 		mesh_free(&m);
-		CHECK(rdf("tests/data/gltf/rotated.glb", 1, 1, &m, err) == 0 && m.count == 3, "rotated.glb --world float: %s", err);
+		CHECK(rdf("tests/data/gltf/rotated.glb", 1, PREC_FLOAT, &m, err) == 0 && m.count == 3, "rotated.glb --world float: %s", err);
 		if (m.count == 3) {
 			CHECK(fabs(m.x[0]) < 1e-6 && fabs(m.y[0] - 1) < 1e-6 && (double)(float)m.y[0] == m.y[0], "rotated float (%a %a)", m.x[0], m.y[0]);
 			CHECK(m.x[0] != d[0] || m.y[0] != d[1] || m.x[1] != d[2], "float and double world transforms agree bit for bit");
@@ -561,7 +561,7 @@ static void test_gltf_files(void)
 		mesh_free(&m);
 	}
 	/* sparse over a bufferView, sparse over zeros, computed normals */
-	CHECK(rdf("tests/data/gltf/sparse.gltf", 0, 1, &m, err) == 0 && m.count == 12 && m.ncomputed == 4 && m.nprims_computed == 1, "sparse.gltf: %s (%zu, %zu)", err, m.count, m.ncomputed);
+	CHECK(rdf("tests/data/gltf/sparse.gltf", 0, PREC_FLOAT, &m, err) == 0 && m.count == 12 && m.ncomputed == 4 && m.nprims_computed == 1, "sparse.gltf: %s (%zu, %zu)", err, m.count, m.ncomputed);
 	if (m.count == 12) {
 		CHECK(m.z[0] == 1 && m.x[1] == 1 && m.z[2] == 1 && m.y[3] == -1, "sparse over a bufferView");
 		CHECK(m.x[4] == 0 && m.y[4] == 0 && m.z[4] == 0 && m.x[5] == 1 && m.z[6] == 0 && m.y[7] == -1, "sparse over zeros");
@@ -569,7 +569,7 @@ static void test_gltf_files(void)
 	}
 	mesh_free(&m);
 	/* an external buffer, its name percent-encoded: from the file only */
-	CHECK(rdf("tests/data/gltf/external.gltf", 0, 1, &m, err) == 0 && m.count == 3 && m.x[2] == (double)(float)0.6, "external.gltf: %s", err);
+	CHECK(rdf("tests/data/gltf/external.gltf", 0, PREC_FLOAT, &m, err) == 0 && m.count == 3 && m.x[2] == (double)(float)0.6, "external.gltf: %s", err);
 	mesh_free(&m);
 	{
 		FILE *f = fopen("tests/data/gltf/external.gltf", "rb");

@@ -80,14 +80,14 @@ static void part(int ok, const char *method, const char *what, const char *where
 static void check_registry(const char *name)
 {
 	const onb_method *m = onb_find(name);
-	int dbl;
+	int has_double;
 	part(m != NULL, name, "not in the registry", "src/lib/registry.c");
 	if (!m)
 		return;
-	dbl = !(m->flags & ONB_FLOAT_ONLY);
+	has_double = !(m->flags & ONB_FLOAT_ONLY);
 	part(m->basisf && m->batchf, name, "no float out-of-line or batch kernel", "src/lib/batch.c");
-	part(!dbl || (m->basis && m->batch), name, "no double out-of-line or batch kernel", "src/lib/batch.c");
-	part(m->arrayf && (dbl ? m->array != NULL : m->array == NULL), name,
+	part(!has_double || (m->basis && m->batch), name, "no double out-of-line or batch kernel", "src/lib/batch.c");
+	part(m->arrayf && (has_double ? m->array != NULL : m->array == NULL), name,
 	     "no array entry for onb_basis_array[f] (ONB__PTRS)", "src/lib/registry.c");
 	part(bench_call_find(name) != NULL, name, "no inline call loops", "src/bench/bench_calls.c");
 }

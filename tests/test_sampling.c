@@ -188,20 +188,20 @@ static const char *const set_name[NSET] = { "generic", "-z_exact", "-z_ulps", "-
 static double gnx[NS], gny[NS], gnz[NS], glx[NS], gly[NS], glz[NS], gu1[NS];
 static double snx[NG], sny[NG], snz[NG], slx[NG * SG], sly[NG * SG], slz[NG * SG];
 
-static double to_fmt(long double v, int fl) { return fl ? (double)(float)v : (double)v; }
+static double to_fmt(long double v, int prec) { return prec == PREC_FLOAT ? (double)(float)v : (double)v; }
 
 /* Normal number i of a set from two uniforms a, b in [0, 1). */
-static void gen_normal(int set, int fl, long double a, long double b, uint32_t i, double n[3])
+static void gen_normal(int set, int prec, long double a, long double b, uint32_t i, double n[3])
 {
 	const long double pi = 3.14159265358979323846264338327950288L, ph = 2 * pi * b;
-	const long double ulp = fl ? 0x1p-24L : 0x1p-53L; /* spacing just above -1 */
-	const long double eps = fl ? 0x1p-23L : 0x1p-52L;
+	const long double ulp = prec == PREC_FLOAT ? 0x1p-24L : 0x1p-53L; /* spacing just above -1 */
+	const long double eps = prec == PREC_FLOAT ? 0x1p-23L : 0x1p-52L;
 	long double nz, rho, d;
 	switch (set) {
 	case SET_GENERIC:
 		nz = 2 * a - 1;
 		rho = sqrtl(1 - nz * nz);
-		n[0] = to_fmt(rho * cosl(ph), fl); n[1] = to_fmt(rho * sinl(ph), fl); n[2] = to_fmt(nz, fl);
+		n[0] = to_fmt(rho * cosl(ph), prec); n[1] = to_fmt(rho * sinl(ph), prec); n[2] = to_fmt(nz, prec);
 		break;
 	case SET_EXACT:
 		n[0] = i & 1 ? -0.0 : 0.0; n[1] = i & 2 ? -0.0 : 0.0; n[2] = -1.0;
@@ -212,35 +212,35 @@ static void gen_normal(int set, int fl, long double a, long double b, uint32_t i
 	default: /* the true direction, rounded component by component */
 		d = set == SET_ULPS ? ULPS_MAX * a * ulp : expl(logl(eps) + a * (logl(0x1p-10L) - logl(eps)));
 		rho = sqrtl(d * (2 - d));
-		n[0] = to_fmt(rho * cosl(ph), fl); n[1] = to_fmt(rho * sinl(ph), fl); n[2] = to_fmt(-1 + d, fl);
+		n[0] = to_fmt(rho * cosl(ph), prec); n[1] = to_fmt(rho * sinl(ph), prec); n[2] = to_fmt(-1 + d, prec);
 		break;
 	}
 }
 
 /* Malley's method, in double as a renderer would, then the format. */
-static void gen_dir(int fl, double u1, double u2, double *x, double *y, double *z)
+static void gen_dir(int prec, double u1, double u2, double *x, double *y, double *z)
 {
 	double r = sqrt(u1), p2 = 2.0 * 3.14159265358979323846 * u2;
-	*x = to_fmt(r * cos(p2), fl); *y = to_fmt(r * sin(p2), fl); *z = to_fmt(sqrt(1.0 - u1), fl);
+	*x = to_fmt(r * cos(p2), prec); *y = to_fmt(r * sin(p2), prec); *z = to_fmt(sqrt(1.0 - u1), prec);
 }
 
-static void make_set(int set, int fl, uint64_t seed)
+static void make_set(int set, int prec, uint64_t seed)
 {
-	const uint64_t stream = (uint64_t)(set * 2 + fl) << 8;
+	const uint64_t stream = (uint64_t)(set * 2 + (prec == PREC_FLOAT)) << 8;
 	uint32_t i;
 	double n[3];
 	for (i = 0; i < NS; i++) {
-		gen_normal(set, fl, rng_u01(seed, stream + 0, i), rng_u01(seed, stream + 1, i), i, n);
+		gen_normal(set, prec, rng_u01(seed, stream + 0, i), rng_u01(seed, stream + 1, i), i, n);
 		gnx[i] = n[0]; gny[i] = n[1]; gnz[i] = n[2];
 		gu1[i] = rng_u01(seed, stream + 2, i);
-		gen_dir(fl, gu1[i], rng_u01(seed, stream + 3, i), &glx[i], &gly[i], &glz[i]);
+		gen_dir(prec, gu1[i], rng_u01(seed, stream + 3, i), &glx[i], &gly[i], &glz[i]);
 	}
 	for (i = 0; i < NG; i++) {
-		gen_normal(set, fl, rng_u01(seed, stream + 4, i), rng_u01(seed, stream + 5, i), i, n);
+		gen_normal(set, prec, rng_u01(seed, stream + 4, i), rng_u01(seed, stream + 5, i), i, n);
 		snx[i] = n[0]; sny[i] = n[1]; snz[i] = n[2];
 	}
 	for (i = 0; i < NG * SG; i++)
-		gen_dir(fl, rng_u01(seed, stream + 6, i), rng_u01(seed, stream + 7, i), &slx[i], &sly[i], &slz[i]);
+		gen_dir(prec, rng_u01(seed, stream + 6, i), rng_u01(seed, stream + 7, i), &slx[i], &sly[i], &slz[i]);
 }
 
 /* ---- u = cos^2 theta through the exact frame ---- */
@@ -324,7 +324,7 @@ static int classify(const double w[3], const double n[3])
 enum { EXP_ANY, EXP_PASS, EXP_FAIL };
 static const char *const exp_name[] = { "-", "must pass", "expected failure" };
 
-static int expect(const char *name, int fl, int set)
+static int expect(const char *name, int prec, int set)
 {
 	if (set == SET_XEXACT) /* naive's b1 = x - n (n.x) cancels to 0 */
 		return !strncmp(name, "naive", 5) ? EXP_FAIL : EXP_PASS;
@@ -333,9 +333,9 @@ static int expect(const char *name, int fl, int set)
 	if (!strcmp(name, "naive_nonorm") || !strcmp(name, "hughes_moeller_nonorm"))
 		return set == SET_GENERIC ? EXP_FAIL : EXP_PASS;
 	if (!strcmp(name, "frisvad"))
-		return fl && (set == SET_ULPS || set == SET_LOG) ? EXP_FAIL : EXP_PASS;
+		return prec == PREC_FLOAT && (set == SET_ULPS || set == SET_LOG) ? EXP_FAIL : EXP_PASS;
 	if (!strcmp(name, "frisvad_max"))
-		return set == SET_LOG || (fl && set == SET_ULPS) ? EXP_ANY : EXP_PASS;
+		return set == SET_LOG || (prec == PREC_FLOAT && set == SET_ULPS) ? EXP_ANY : EXP_PASS;
 	if (!strcmp(name, "q2rtx")) /* below t = -0.999805696f its fallback tilts by up to 0.0197 */
 		return set == SET_LOG ? EXP_ANY : EXP_PASS;
 	return EXP_PASS;
@@ -368,10 +368,10 @@ static long double defect(const double b1[3], const double b2[3], const double n
 /* The method's basis at n and w = x b1 + y b2 + z n, in the method's
    precision (the test is built with -ffp-contract=off, like a renderer
    following the study's flags). */
-static void rotate(const onb_method *m, int fl, const double n[3], double x, double y, double z,
+static void rotate(const onb_method *m, int prec, const double n[3], double x, double y, double z,
                    double w[3], double b1[3], double b2[3])
 {
-	if (fl) {
+	if (prec == PREC_FLOAT) {
 		onb_vec3f nf, p, q;
 		float xf = (float)x, yf = (float)y, zf = (float)z;
 		nf.x = (float)n[0]; nf.y = (float)n[1]; nf.z = (float)n[2];
@@ -400,7 +400,7 @@ static double chi2_of(const unsigned long *cnt, int nb, unsigned long total)
 	return c;
 }
 
-static void run_row(const onb_method *m, int fl, row *r)
+static void run_row(const onb_method *m, int prec, row *r)
 {
 	uint32_t i, g;
 	unsigned long nok = 0, sdof = 0;
@@ -411,7 +411,7 @@ static void run_row(const onb_method *m, int fl, row *r)
 		long double D;
 		int c;
 		n[0] = gnx[i]; n[1] = gny[i]; n[2] = gnz[i];
-		rotate(m, fl, n, glx[i], gly[i], glz[i], w, b1, b2);
+		rotate(m, prec, n, glx[i], gly[i], glz[i], w, b1, b2);
 		D = defect(b1, b2, n);
 		if (D > D_SMALL) r->big++;
 		if (D > 0.1L) r->huge++;
@@ -436,7 +436,7 @@ static void run_row(const onb_method *m, int fl, row *r)
 		for (i = 0; i < SG; i++) {
 			double w[3], b1[3], b2[3];
 			int c;
-			rotate(m, fl, n, slx[g * SG + i], sly[g * SG + i], slz[g * SG + i], w, b1, b2);
+			rotate(m, prec, n, slx[g * SG + i], sly[g * SG + i], slz[g * SG + i], w, b1, b2);
 			if (i == 0) {
 				long double D = defect(b1, b2, n);
 				if (D > D_SMALL) r->sbig++;
@@ -488,7 +488,7 @@ int main(int argc, char **argv)
 	uint64_t seed = 0x73616d706c696e67u; /* "sampling" */
 	size_t nm, j;
 	const onb_method *ms = onb_methods(&nm);
-	int fl, set, k, npass = 0, nfail = 0, nunexp = 0;
+	int prec, set, k, npass = 0, nfail = 0, nunexp = 0;
 	if (argc > 1) {
 		char *end;
 		seed = strtoull(argv[1], &end, 0);
@@ -513,34 +513,34 @@ int main(int argc, char **argv)
 	printf("%-23s %-6s %-8s %8s %9s %8s %9s %5s %6s %5s %6s %6s  %-7s %s\n", "method", "prec", "normals", "chi2", "p",
 	       "chi2_nrm", "p_nrm", "below", "nonfin", "moved", "D>2e-3", "D>0.1", "verdict", "expected");
 	for (set = 0; set < NSET; set++)
-		for (fl = 1; fl >= 0; fl--) {
-			make_set(set, fl, seed);
+		for (prec = PREC_FLOAT; prec <= PREC_DOUBLE; prec++) {
+			make_set(set, prec, seed);
 			for (j = 0; j < nm; j++) {
 				row r;
-				int e = expect(ms[j].name, fl, set);
+				int e = expect(ms[j].name, prec, set);
 				const char *note = "";
-				if (!fl && !ms[j].basis)
+				if (prec == PREC_DOUBLE && !ms[j].basis)
 					continue; /* float only (ONB_FLOAT_ONLY) */
-				run_row(&ms[j], fl, &r);
+				run_row(&ms[j], prec, &r);
 				if (r.ok) npass++; else nfail++;
 				if ((e == EXP_PASS && !r.ok) || (e == EXP_FAIL && r.ok)) { note = "  UNEXPECTED"; nunexp++; }
 				printf("%-23s %-6s %-8s %8.1f %9.3g %8.1f %9.3g %5lu %6lu %5lu %6.4f %6.4f  %-7s %s%s\n", ms[j].name,
-				       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p, r.schi2, r.sp, r.below, r.nonfinite,
+				       prec_name(prec), set_name[set], r.chi2, r.p, r.schi2, r.sp, r.below, r.nonfinite,
 				       r.moved, (double)r.big / NS, (double)r.huge / NS, r.ok ? "pass" : e == EXP_FAIL ? "fail" : "FAIL", exp_name[e], note);
 				CHECK(r.spot_bad == 0, "%s %s %s: %lu spot checks disagree with MPFR", ms[j].name,
-				      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.spot_bad);
+				      prec_name(prec), set_name[set], r.spot_bad);
 				if (e == EXP_PASS) {
 					CHECK(r.ok, "%s %s %s must pass: chi2 %.1f p %g below %lu nonfinite %lu", ms[j].name,
-					      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p, r.below, r.nonfinite);
+					      prec_name(prec), set_name[set], r.chi2, r.p, r.below, r.nonfinite);
 					CHECK((double)r.big / NS <= F_SMALL && r.sbig == 0,
 					      "%s %s %s: premise of must-pass broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > %g",
-					      ms[j].name, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.big, NS, r.sbig, NG, D_SMALL);
+					      ms[j].name, prec_name(prec), set_name[set], r.big, NS, r.sbig, NG, D_SMALL);
 				} else if (e == EXP_FAIL) {
 					CHECK(!r.ok, "%s %s %s must fail but passed: chi2 %.1f p %g", ms[j].name,
-					      prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.chi2, r.p);
+					      prec_name(prec), set_name[set], r.chi2, r.p);
 					CHECK((double)r.huge / NS >= 1e-2 || r.shuge > 0,
 					      "%s %s %s: premise of must-fail broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > 0.1",
-					      ms[j].name, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), set_name[set], r.huge, NS, r.shuge, NG);
+					      ms[j].name, prec_name(prec), set_name[set], r.huge, NS, r.shuge, NG);
 				}
 			}
 		}

@@ -216,17 +216,16 @@ static int certify_hits(const onb_method *ms, size_t nm, int prec, const cert_re
 	return fail ? -1 : 0;
 }
 
-int scene_certify(const char *path, char up, int fl, double E, const onb_method *ms, size_t nm,
+int scene_certify(const char *path, char up, int prec, double E, const onb_method *ms, size_t nm,
                   const double *measured, const char *recommended, double *proven)
 {
 	static cert_region reg[MAXREG];
 	unsigned char hit[MAXREG];
 	scene_bound *sb = calloc(nm ? nm : 1, sizeof *sb);
-	const int prec = fl ? PREC_FLOAT : PREC_DOUBLE;
 	size_t nreg = regions_default(prec, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
 	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0 };
 	double zmin = 2.0, zmax = -2.0;
-	o.tolerance = fl ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
+	o.tolerance = prec == PREC_FLOAT ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
 	memset(hit, 0, sizeof hit);
 	if (!sb || mark_scene(path, up, reg, nreg, hit, &npatch, &zmin, &zmax) != 0) {
 		free(sb);

@@ -12,11 +12,11 @@
 /* Prints, for each of the nm methods, the proven bound over the patches of
    the scene in `path` (up: 'z', 'y' or 'x' as scene --up) beside its
    measured maximum (measured[i]), and whether `recommended` (may be NULL)
-   is proven within E.  fl: float (1) or double (0).  proven[i] (nm
-   entries) gets the bound, inf where the method is singular on the scene,
-   and is left as it is for a method certify has no model of.  0, or -1
-   after a message. */
-int scene_certify(const char *path, char up, int fl, double E, const onb_method *ms, size_t nm,
+   is proven within E, in precision prec (PREC_FLOAT or PREC_DOUBLE).
+   proven[i] (nm entries) gets the bound, inf where the method is singular
+   on the scene, and is left as it is for a method certify has no model
+   of.  0, or -1 after a message. */
+int scene_certify(const char *path, char up, int prec, double E, const onb_method *ms, size_t nm,
                   const double *measured, const char *recommended, double *proven);
 
 #endif

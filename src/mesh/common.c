@@ -343,19 +343,19 @@ static int cmp_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-int mesh_classify(const mesh_normals *m, int use_float, double tol, mesh_stats *st)
+int mesh_classify(const mesh_normals *m, int prec, double tol, mesh_stats *st)
 {
 	size_t i, k = 0;
 	double *dev;
 	memset(st, 0, sizeof *st);
-	st->tol = tol > 0 ? tol : use_float ? 4.0 * FLT_EPSILON : 4.0 * DBL_EPSILON;
+	st->tol = tol > 0 ? tol : prec == PREC_FLOAT ? 4.0 * FLT_EPSILON : 4.0 * DBL_EPSILON;
 	st->total = m->count;
 	dev = xcalloc(m->count, sizeof *dev);
 	if (!dev)
 		return -1;
 	for (i = 0; i < m->count; i++) {
 		long double x = m->x[i], y = m->y[i], z = m->z[i], l, d;
-		if (use_float) {
+		if (prec == PREC_FLOAT) {
 			x = (float)m->x[i]; y = (float)m->y[i]; z = (float)m->z[i];
 		}
 		if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {

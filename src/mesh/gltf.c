@@ -646,11 +646,11 @@ out:
 
 /* ---- node transforms (in the working precision) ----------------------------- */
 
-static double rd(int fl, double x) { return fl ? (double)(float)x : x; }
+static double rd(int prec, double x) { return prec == PREC_FLOAT ? (double)(float)x : x; }
 
 /* Node ni's 3x3 linear part (row-major), from 'matrix' (column-major) or
    rotation and scale (translation does not act on normals). */
-static int local(gltf *g, long long ni, const cJSON *no, int fl, double *m)
+static int local(gltf *g, long long ni, const cJSON *no, int prec, double *m)
 {
 	const cJSON *mt = item(no, "matrix"), *r = item(no, "rotation"), *s = item(no, "scale");
 	double q[4] = { 0, 0, 0, 1 }, sc[3] = { 1, 1, 1 }, a[16];
@@ -668,7 +668,7 @@ static int local(gltf *g, long long ni, const cJSON *no, int fl, double *m)
 		cJSON_ArrayForEach(e, arrs[k]) {
 			if (!cJSON_IsNumber(e))
 				return mio_fail(g->c, "node %lld: '%s' must hold numbers", ni, k == 0 ? "matrix" : k == 1 ? "rotation" : "scale");
-			dst[k][j++] = rd(fl, e->valuedouble);
+			dst[k][j++] = rd(prec, e->valuedouble);
 		}
 	}
 	if (mt) {
@@ -679,9 +679,9 @@ static int local(gltf *g, long long ni, const cJSON *no, int fl, double *m)
 	}
 	{
 		const double x = q[0], y = q[1], z = q[2], w = q[3];
-#define M(a_, b_) rd(fl, (a_) * (b_))
-#define A(a_, b_) rd(fl, (a_) + (b_))
-#define S(a_, b_) rd(fl, (a_) - (b_))
+#define M(a_, b_) rd(prec, (a_) * (b_))
+#define A(a_, b_) rd(prec, (a_) + (b_))
+#define S(a_, b_) rd(prec, (a_) - (b_))
 		const double xx = M(x, x), yy = M(y, y), zz = M(z, z), xy = M(x, y), xz = M(x, z), yz = M(y, z);
 		const double wx = M(w, x), wy = M(w, y), wz = M(w, z);
 		double rm[9];
@@ -695,7 +695,7 @@ static int local(gltf *g, long long ni, const cJSON *no, int fl, double *m)
 	return 0;
 }
 
-static void mul3(int fl, const double *a, const double *b, double *o)
+static void mul3(int prec, const double *a, const double *b, double *o)
 {
 	int r, c;
 	for (r = 0; r < 3; r++)
@@ -704,7 +704,7 @@ static void mul3(int fl, const double *a, const double *b, double *o)
 }
 
 /* The inverse transpose: cofactors over the determinant. */
-static void inv_t(int fl, const double *m, double *n)
+static void inv_t(int prec, const double *m, double *n)
 {
 	double cf[9], det;
 	int k;
@@ -713,14 +713,14 @@ static void inv_t(int fl, const double *m, double *n)
 	cf[6] = S(M(m[1], m[5]), M(m[2], m[4])); cf[7] = S(M(m[2], m[3]), M(m[0], m[5])); cf[8] = S(M(m[0], m[4]), M(m[1], m[3]));
 	det = A(A(M(m[0], cf[0]), M(m[1], cf[1])), M(m[2], cf[2]));
 	for (k = 0; k < 9; k++)
-		n[k] = rd(fl, cf[k] / det);
+		n[k] = rd(prec, cf[k] / det);
 }
 
-static void apply(int fl, const double *n, double *v, size_t cnt)
+static void apply(int prec, const double *n, double *v, size_t cnt)
 {
 	size_t i;
 	for (i = 0; i < cnt; i++) {
-		double x = rd(fl, v[3 * i]), y = rd(fl, v[3 * i + 1]), z = rd(fl, v[3 * i + 2]);
+		double x = rd(prec, v[3 * i]), y = rd(prec, v[3 * i + 1]), z = rd(prec, v[3 * i + 2]);
 		int r;
 		for (r = 0; r < 3; r++)
 			v[3 * i + r] = A(A(M(n[3 * r], x), M(n[3 * r + 1], y)), M(n[3 * r + 2], z));
@@ -753,7 +753,7 @@ static int mesh_into(gltf *g, long long mi, const double *nt, long long owner)
 		if (primitive(g, mi, pi, pr, &po) != 0)
 			return -1;
 		if (nt)
-			apply(g->o->use_float, nt, po.nrm, po.n);
+			apply(g->o->prec, nt, po.nrm, po.n);
 		rc = append(g, po.nrm, po.n, tag_of(owner, pi), po.vidx);
 		if (po.n) {
 			g->m->nprims++;
@@ -861,7 +861,7 @@ static int world(gltf *g, const cJSON *nodes, int nn, const int *parent, const i
 {
 	int *stk = mio_calloc((size_t)nn, sizeof *stk);
 	double *mat = mio_calloc((size_t)nn, 9 * sizeof *mat);
-	const int fl = g->o->use_float;
+	const int prec = g->o->prec;
 	int r, sp, rc = -1;
 	if (!stk || !mat) {
 		mio_fail(g->c, "out of memory");
@@ -875,16 +875,16 @@ static int world(gltf *g, const cJSON *nodes, int nn, const int *parent, const i
 			const cJSON *no = cJSON_GetArrayItem(nodes, i), *ch = item(no, "children"), *e;
 			double loc[9], nt[9];
 			long long mi;
-			if (local(g, i, no, fl, loc) != 0)
+			if (local(g, i, no, prec, loc) != 0)
 				goto out;
 			if (parent[i] >= 0)
-				mul3(fl, &mat[9 * (size_t)parent[i]], loc, &mat[9 * (size_t)i]);
+				mul3(prec, &mat[9 * (size_t)parent[i]], loc, &mat[9 * (size_t)i]);
 			else
 				memcpy(&mat[9 * (size_t)i], loc, sizeof loc);
 			if (jint(g, no, "node", i, "mesh", -2, -2, 1 << 30, &mi) != 0)
 				goto out;
 			if (mi >= 0) {
-				inv_t(fl, &mat[9 * (size_t)i], nt);
+				inv_t(prec, &mat[9 * (size_t)i], nt);
 				if (mesh_into(g, mi, nt, i) != 0)
 					goto out;
 			}

@@ -37,7 +37,7 @@
  *         per node that instances a mesh, in the default scene (`scene`,
  *         else scene 0; without scenes, every root node), each multiplied
  *         by the inverse transpose of the node's world matrix, computed
- *         in the working precision (mesh_opts.use_float), not renormalized.
+ *         in the working precision (mesh_opts.prec), not renormalized.
  *   Unreferenced vertices get no computed normal; they are counted.
  *
  * Format by content (mesh_read_mem): "ply" + newline is PLY; "glTF" (GLB
@@ -53,6 +53,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "common/prec.h"  /* the working precision of mesh_opts and mesh_classify */
 
 enum { MESH_OBJ = 1, MESH_PLY = 2, MESH_GLTF = 3 };
 enum { MESH_STORED = 1, MESH_COMPUTED = 2 };
@@ -87,7 +88,7 @@ typedef struct {
 
 typedef struct {
 	int world;             /* glTF: node transforms (see above)              */
-	int use_float;         /* glTF --world: the working precision            */
+	int prec;              /* glTF --world: the working precision (PREC_*)   */
 } mesh_opts;
 
 /* Format from the content (see above).  External glTF buffers (a .bin
@@ -144,7 +145,7 @@ int  mesh_read_file_opts(const char *path, const mesh_opts *o, mesh_normals *out
 #define MESH_MAX_ITEMS ((uint64_t)1 << 28)
 
 /* Classification of the normals.  |n| is computed in long double from the
-   values rounded to the working precision (use_float: to float first). */
+   values rounded to the working precision prec (PREC_FLOAT: to float first). */
 typedef struct {
 	size_t total, unit, nonunit, zero, nonfinite;
 	double tol;                    /* unit means ||n| - 1| <= tol            */
@@ -157,7 +158,7 @@ typedef struct {
 /* tol <= 0 selects the default: 4 ulps of 1 in the working precision
    (4 * FLT_EPSILON = 4.8e-7 for float, 4 * DBL_EPSILON = 8.9e-16 for double).
    Returns 0, or -1 when out of memory (quantiles need a sorted copy). */
-int mesh_classify(const mesh_normals *m, int use_float, double tol, mesh_stats *st);
+int mesh_classify(const mesh_normals *m, int prec, double tol, mesh_stats *st);
 /* "line 12" (OBJ) or "vertex 17 at byte 345" (PLY) for normal i. */
 void mesh_where(const mesh_normals *m, size_t i, char *buf, size_t n);
 

@@ -64,7 +64,7 @@ typedef struct {
 
 typedef struct {
 	size_t n;
-	int fl;                 /* 1: float arrays */
+	int prec;               /* PREC_FLOAT: float arrays */
 	void *in[3], *bo[6], *so[6];
 	size_t *src;            /* index into the mesh normals */
 } scene_buf;
@@ -78,13 +78,13 @@ static void buf_free(scene_buf *b)
 	memset(b, 0, sizeof *b);
 }
 
-static int buf_alloc(scene_buf *b, size_t n, int fl)
+static int buf_alloc(scene_buf *b, size_t n, int prec)
 {
-	size_t es = fl ? sizeof(float) : sizeof(double), cnt = n ? n : 1;
+	size_t es = prec == PREC_FLOAT ? sizeof(float) : sizeof(double), cnt = n ? n : 1;
 	int k, bad = 0;
 	memset(b, 0, sizeof *b);
 	b->n = n;
-	b->fl = fl;
+	b->prec = prec;
 	for (k = 0; k < 3; k++) bad |= !(b->in[k] = calloc(cnt, es));
 	for (k = 0; k < 6; k++) { bad |= !(b->bo[k] = calloc(cnt, es)); bad |= !(b->so[k] = calloc(cnt, es)); }
 	bad |= !(b->src = calloc(cnt, sizeof *b->src));
@@ -95,14 +95,14 @@ static int buf_alloc(scene_buf *b, size_t n, int fl)
 	return 0;
 }
 
-static long double getv(const void *a, int fl, size_t i)
+static long double getv(const void *a, int prec, size_t i)
 {
-	return fl ? (long double)((const float *)a)[i] : (long double)((const double *)a)[i];
+	return prec == PREC_FLOAT ? (long double)((const float *)a)[i] : (long double)((const double *)a)[i];
 }
 
 static void run_batch(const onb_method *m, const scene_buf *b)
 {
-	if (b->fl)
+	if (b->prec == PREC_FLOAT)
 		m->batchf(b->n, b->in[0], b->in[1], b->in[2], b->bo[0], b->bo[1], b->bo[2], b->bo[3], b->bo[4], b->bo[5]);
 	else
 		m->batch(b->n, b->in[0], b->in[1], b->in[2], b->bo[0], b->bo[1], b->bo[2], b->bo[3], b->bo[4], b->bo[5]);
@@ -111,7 +111,7 @@ static void run_batch(const onb_method *m, const scene_buf *b)
 static void run_scalar(const onb_method *m, const scene_buf *b)
 {
 	size_t i;
-	if (b->fl) {
+	if (b->prec == PREC_FLOAT) {
 		const float *x = b->in[0], *y = b->in[1], *z = b->in[2];
 		float **o = (float **)b->so;
 		for (i = 0; i < b->n; i++) {
@@ -140,15 +140,15 @@ static void measure(const onb_method *m, const scene_buf *b, scene_res *r)
 	size_t i;
 	long double sum2 = 0;
 	size_t nfin = 0;
-	const size_t es = b->fl ? sizeof(float) : sizeof(double);
+	const size_t es = b->prec == PREC_FLOAT ? sizeof(float) : sizeof(double);
 	memset(r, 0, sizeof *r);
 	for (i = 0; i < b->n; i++) {
 		long double n[3], u[3], v[3], l, e, d, det;
 		int k;
 		for (k = 0; k < 3; k++) {
-			n[k] = getv(b->in[k], b->fl, i);
-			u[k] = getv(b->bo[k], b->fl, i);
-			v[k] = getv(b->bo[k + 3], b->fl, i);
+			n[k] = getv(b->in[k], b->prec, i);
+			u[k] = getv(b->bo[k], b->prec, i);
+			v[k] = getv(b->bo[k + 3], b->prec, i);
 		}
 		for (k = 0; k < 6; k++)
 			if (memcmp((const char *)b->bo[k] + i * es, (const char *)b->so[k] + i * es, es) != 0) {
@@ -189,18 +189,18 @@ static void measure(const onb_method *m, const scene_buf *b, scene_res *r)
 /* Fill b with the non-degenerate normals, permuted for `up`, rounded to
    the working precision, and renormalized when asked.  Returns the number
    dropped because renormalizing under- or overflowed. */
-static size_t fill(const mesh_normals *mn, int fl, char up, int renorm, scene_buf *b)
+static size_t fill(const mesh_normals *mn, int prec, char up, int renorm, scene_buf *b)
 {
 	size_t i, k = 0, dropped = 0;
 	for (i = 0; i < mn->count; i++) {
 		double x = mn->x[i], y = mn->y[i], z = mn->z[i], p[3];
-		if (fl) { x = (float)x; y = (float)y; z = (float)z; }
+		if (prec == PREC_FLOAT) { x = (float)x; y = (float)y; z = (float)z; }
 		if (!isfinite(x) || !isfinite(y) || !isfinite(z) || (x == 0 && y == 0 && z == 0))
 			continue;
 		if (up == 'y') { p[0] = z; p[1] = x; p[2] = y; }
 		else if (up == 'x') { p[0] = y; p[1] = z; p[2] = x; }
 		else { p[0] = x; p[1] = y; p[2] = z; }
-		if (fl) {
+		if (prec == PREC_FLOAT) {
 			float f[3];
 			f[0] = (float)p[0]; f[1] = (float)p[1]; f[2] = (float)p[2];
 			if (renorm) {
@@ -230,7 +230,7 @@ static size_t fill(const mesh_normals *mn, int fl, char up, int renorm, scene_bu
 typedef struct {
 	const char *file, *outdir, *speed_file;
 	double tol;
-	int fl, renorm_head, world, refresh, tol_given, certify;
+	int prec, renorm_head, world, refresh, tol_given, certify;
 	long repeats;
 	char up, other;
 } scene_opts;
@@ -304,7 +304,7 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 		case 'p':
 			if ((v = cli_choice("--precision", c.arg, precs, 2)) < 0)
 				goto out;
-			o->fl = v == 0;
+			o->prec = v;   /* precs[] in PREC_ order */
 			break;
 		case 'u':
 			if ((v = cli_choice("--up", c.arg, ups, 3)) < 0)
@@ -417,13 +417,13 @@ static int evaluate(const mesh_normals *mn, const scene_opts *o, const onb_metho
 				eval_free(e);
 				return -1;
 			}
-	if (buf_alloc(&b, mn->count, o->fl) != 0) {
+	if (buf_alloc(&b, mn->count, o->prec) != 0) {
 		eval_free(e);
 		return -1;
 	}
 	for (v = 0; v < 2; v++)
 		for (a = 0; a < 2; a++) {
-			size_t d = fill(mn, o->fl, a ? o->other : o->up, v, &b);
+			size_t d = fill(mn, o->prec, a ? o->other : o->up, v, &b);
 			if (a == 0) {
 				e->dropped[v] = d;
 				e->used[v] = b.n;
@@ -437,13 +437,13 @@ static int evaluate(const mesh_normals *mn, const scene_opts *o, const onb_metho
 
 /* Each method's max defect on 4096 uniform directions (seed 1) in the
    working precision; INFINITY for a non-finite or wrong-handed output. */
-static int uniform_defects(const onb_method *ms, size_t nm, int fl, double *out)
+static int uniform_defects(const onb_method *ms, size_t nm, int prec, double *out)
 {
 	const size_t n = 4096;
 	scene_buf b;
 	double *x = malloc(3 * n * sizeof *x);
 	size_t i;
-	if (!x || buf_alloc(&b, n, fl) != 0) {
+	if (!x || buf_alloc(&b, n, prec) != 0) {
 		free(x);
 		return -1;
 	}
@@ -451,7 +451,7 @@ static int uniform_defects(const onb_method *ms, size_t nm, int fl, double *out)
 	for (i = 0; i < n; i++) {
 		int k;
 		for (k = 0; k < 3; k++) {
-			if (fl)
+			if (prec == PREC_FLOAT)
 				((float *)b.in[k])[i] = (float)x[k * n + i];
 			else
 				((double *)b.in[k])[i] = x[k * n + i];
@@ -488,7 +488,7 @@ static int cmp3(const void *a, const void *b)
 	return 0;
 }
 
-static int shape_of(const mesh_normals *mn, int fl, scene_shape *s)
+static int shape_of(const mesh_normals *mn, int prec, scene_shape *s)
 {
 	double *v = malloc((mn->count ? mn->count : 1) * 3 * sizeof *v);
 	size_t i, n = 0;
@@ -500,7 +500,7 @@ static int shape_of(const mesh_normals *mn, int fl, scene_shape *s)
 		int k, zeros = 0;
 		p[0] = mn->x[i]; p[1] = mn->y[i]; p[2] = mn->z[i];
 		for (k = 0; k < 3; k++) {
-			if (fl)
+			if (prec == PREC_FLOAT)
 				p[k] = (float)p[k];
 			if (!isfinite(p[k]))
 				break;
@@ -528,21 +528,21 @@ static int shape_of(const mesh_normals *mn, int fl, scene_shape *s)
 
 static const char *variant_name(int v) { return v ? "renormalized" : "as-read"; }
 
-static void print_speed_source(const speed_table *t, int fl)
+static void print_speed_source(const speed_table *t, int prec)
 {
 	if (t->kind == SPEED_CACHE)
 		printf("speed (%s): this machine's cache %s (%s); %d repetitions, interval = confidence interval of the median\n",
-		       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), t->path, t->desc, t->reps);
+		       prec_name(prec), t->path, t->desc, t->reps);
 	else if (t->kind == SPEED_FILE)
-		printf("speed (%s): %s (%s); %d repetitions, interval = median -/+ (best - median)\n", prec_name(fl ? PREC_FLOAT : PREC_DOUBLE),
+		printf("speed (%s): %s (%s); %d repetitions, interval = median -/+ (best - median)\n", prec_name(prec),
 		       t->path, t->desc, t->reps);
 	else
 		printf("speed (%s): the committed reference run %s (%s), NOT measured on this machine; %d repetitions, "
 		       "interval = median -/+ (best - median); 'onbstudy scene --refresh-speed --precision %s' measures and caches this machine's\n",
-		       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), t->path, t->desc, t->reps, prec_name(fl ? PREC_FLOAT : PREC_DOUBLE));
+		       prec_name(prec), t->path, t->desc, t->reps, prec_name(prec));
 }
 
-static void print_input(const char *file, const mesh_normals *mn, const mesh_stats *st, int fl)
+static void print_input(const char *file, const mesh_normals *mn, const mesh_stats *st, int prec)
 {
 	char where[160];
 	size_t i;
@@ -572,7 +572,7 @@ static void print_input(const char *file, const mesh_normals *mn, const mesh_sta
 	if (mn->origin == MESH_STORED && mn->ncomputed)
 		printf("normals: %zu of them computed (area-weighted) for %zu primitive(s) without NORMAL\n", mn->ncomputed, mn->nprims_computed);
 	printf("counts in %s: total %zu, unit %zu (||n|-1| <= %.2g), non-unit %zu, degenerate %zu (zero %zu, non-finite %zu)\n",
-	       prec_name(fl ? PREC_FLOAT : PREC_DOUBLE), st->total, st->unit, st->tol, st->nonunit, st->zero + st->nonfinite, st->zero, st->nonfinite);
+	       prec_name(prec), st->total, st->unit, st->tol, st->nonunit, st->zero + st->nonfinite, st->zero, st->nonfinite);
 	if (st->nonunit)
 		printf("non-unit: |n|-1 in [%.3g, %.3g]; ||n|-1| median %.3g, p90 %.3g, p99 %.3g\n", st->dev_min, st->dev_max, st->q50, st->q90, st->q99);
 	if (st->nbad) {
@@ -684,7 +684,7 @@ static void print_variant(const mesh_normals *mn, const scene_opts *o, const onb
                           const scene_shape *sh)
 {
 	const int b = e->best[0][v], ob = e->best[1][v];
-	printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE), e->used[v]);
+	printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", prec_name(o->prec), e->used[v]);
 	print_table(ms, nm, sp, e, v, udef);
 	print_verdict(mn, ms, nm, sp, e, v, o->tol);
 	print_flags(ms, sh, e, v, udef, o->tol);
@@ -711,7 +711,7 @@ static void csv_rows(FILE *f, const scene_opts *o, const char *space, const onb_
 			for (i = 0; i < nm; i++) {
 				const scene_res *r = &e->r[a][v][i];
 				const char *rk = (int)i == e->best[a][v] ? "recommended" : (int)i == e->second[a][v] ? "runner-up" : "";
-				fprintf(f, "\"%s\",%s,%c,%s,%s,%zu,%.6e,%.6e,%.6e,%.6e,%zu,%zu,%zu,", o->file, prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE),
+				fprintf(f, "\"%s\",%s,%c,%s,%s,%zu,%.6e,%.6e,%.6e,%.6e,%zu,%zu,%zu,", o->file, prec_name(o->prec),
 				        a ? o->other : o->up, v ? "renormalized" : "as_read", ms[i].name, e->used[v], r->max_defect,
 				        r->rms_defect, r->max_norm, r->max_dot, r->nonfinite, r->wrong_hand, r->mismatch);
 				if (sp[i])
@@ -740,7 +740,7 @@ static int write_csv(const scene_opts *o, const mesh_normals *mn, const mesh_sta
 	fprintf(out.f, "# file: %s\n# normals: %zu %s%s; unit %zu (tol %.3g), non-unit %zu, zero %zu, non-finite %zu\n", o->file,
 	        mn->count, mn->origin == MESH_STORED ? "stored" : "computed", mn->world ? ", world space (--world)" : "",
 	        st->unit, st->tol, st->nonunit, st->zero, st->nonfinite);
-	fprintf(out.f, "# precision: %s; tolerance E: %.17g\n", prec_name(o->fl ? PREC_FLOAT : PREC_DOUBLE), o->tol);
+	fprintf(out.f, "# precision: %s; tolerance E: %.17g\n", prec_name(o->prec), o->tol);
 	fprintf(out.f, "# speed: %s %s (%s), %d repetitions; batch_mbases_s is its median, speed_lo and speed_hi its interval; "
 	        "never timed on the scene\n", t->kind == SPEED_CACHE ? "cache" : t->kind == SPEED_FILE ? "file" : "reference run",
 	        t->path, t->desc, t->reps);
@@ -766,9 +766,9 @@ static int refresh_only(const scene_opts *o)
 {
 	speed_table t;
 	size_t i;
-	if (speed_load(!o->fl, NULL, 1, (int)o->repeats, &t) != 0)
+	if (speed_load(o->prec, NULL, 1, (int)o->repeats, &t) != 0)
 		return ONB_EXIT_USAGE;
-	print_speed_source(&t, o->fl);
+	print_speed_source(&t, o->prec);
 	for (i = 0; i < t.n; i++)
 		printf("  %-24s %9.1f M/s [%.1f, %.1f]\n", t.rows[i].method, t.rows[i].med, t.rows[i].lo, t.rows[i].hi);
 	speed_free(&t);
@@ -791,7 +791,7 @@ static int certify(const scene_opts *o, const onb_method *ms, size_t nm, const s
 		measured[i] = e->r[0][v][i].max_defect;
 		proven[i] = NAN;
 	}
-	rc = scene_certify(o->file, o->up, o->fl, o->tol, ms, nm, measured,
+	rc = scene_certify(o->file, o->up, o->prec, o->tol, ms, nm, measured,
 	                   e->best[0][v] >= 0 ? ms[e->best[0][v]].name : NULL, proven);
 	free(measured);
 	return rc;
@@ -805,7 +805,7 @@ static int object_space(const scene_opts *o, const onb_method *ms, size_t nm, co
 	char err[512];
 	int v;
 	memset(&mo, 0, sizeof mo);
-	mo.use_float = o->fl;
+	mo.prec = o->prec;
 	if (mesh_read_file_opts(o->file, &mo, &mn, NULL, err, sizeof err) != 0) {
 		study_error("scene: %s", err);
 		return -1;
@@ -824,12 +824,12 @@ static int object_space(const scene_opts *o, const onb_method *ms, size_t nm, co
 
 /* The registry's methods that have code in this precision: in double, the
    float-only ones (ONB_FLOAT_ONLY) are left out. */
-static const onb_method *methods_for(int fl, size_t *nm)
+static const onb_method *methods_for(int prec, size_t *nm)
 {
 	static onb_method dbl_ms[128];
 	const onb_method *ms = onb_methods(nm);
 	size_t i, j = 0;
-	if (fl)
+	if (prec == PREC_FLOAT)
 		return ms;
 	for (i = 0; i < *nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
 		if (ms[i].basis && ms[i].batch)
@@ -855,20 +855,20 @@ int cmd_scene(int argc, char **argv)
 	int rc = ONB_EXIT_USAGE, v;
 
 	memset(&o, 0, sizeof o);
-	o.fl = 1;
+	o.prec = PREC_FLOAT;
 	o.up = 'z';
 	o.repeats = 15;
 	if ((v = parse_opts(argc, argv, &o)) != 0)
 		return v > 0 ? 0 : ONB_EXIT_USAGE;
 	if (!o.tol_given)
-		o.tol = o.fl ? 1e-6 : 1e-14;
+		o.tol = o.prec == PREC_FLOAT ? 1e-6 : 1e-14;
 	o.other = o.up == 'z' ? 'y' : 'z';
-	ms = methods_for(o.fl, &nm);
+	ms = methods_for(o.prec, &nm);
 	if (!o.file)
 		return refresh_only(&o);
 	memset(&mo, 0, sizeof mo);
 	mo.world = o.world;
-	mo.use_float = o.fl;
+	mo.prec = o.prec;
 	if (mesh_read_file_opts(o.file, &mo, &mn, NULL, err, sizeof err) != 0) {
 		study_error("scene: %s", err);
 		return ONB_EXIT_USAGE;
@@ -881,14 +881,14 @@ int cmd_scene(int argc, char **argv)
 		study_default_run_dir(rundir, sizeof rundir);
 		o.outdir = rundir;
 	}
-	if (study_mkdir_p(o.outdir) != 0 || speed_load(!o.fl, o.speed_file, o.refresh, (int)o.repeats, &t) != 0)
+	if (study_mkdir_p(o.outdir) != 0 || speed_load(o.prec, o.speed_file, o.refresh, (int)o.repeats, &t) != 0)
 		goto out;
 	rc = 1;
 	sp = calloc(nm ? nm : 1, sizeof *sp);
 	udef = calloc(nm ? nm : 1, sizeof *udef);
 	proven = calloc(nm ? nm : 1, sizeof *proven);
-	if (!sp || !udef || !proven || mesh_classify(&mn, o.fl, 0, &st) != 0 || shape_of(&mn, o.fl, &sh) != 0
-	    || uniform_defects(ms, nm, o.fl, udef) != 0) {
+	if (!sp || !udef || !proven || mesh_classify(&mn, o.prec, 0, &st) != 0 || shape_of(&mn, o.prec, &sh) != 0
+	    || uniform_defects(ms, nm, o.prec, udef) != 0) {
 		study_error("scene: out of memory for %zu normals", mn.count);
 		goto out;
 	}
@@ -898,19 +898,19 @@ int cmd_scene(int argc, char **argv)
 		study_error("scene: out of memory for %zu normals", mn.count);
 		goto out;
 	}
-	print_input(o.file, &mn, &st, o.fl);
+	print_input(o.file, &mn, &st, o.prec);
 	if (e.dropped[1])
 		printf("renormalizing under/overflowed for %zu normals (left out of the renormalized row)\n", e.dropped[1]);
 	printf("up axis: %c (%s); tolerance E = %.3g (max orthonormality defect); batch isa %s\n", o.up,
 	       o.up == 'z' ? "(x,y,z) as stored" : o.up == 'y' ? "(x,y,z) -> (z,x,y)" : "(x,y,z) -> (y,z,x)", o.tol, onb_batch_isa());
-	print_speed_source(&t, o.fl);
+	print_speed_source(&t, o.prec);
 	for (v = 0; v < 2; v++)
 		print_variant(&mn, &o, ms, nm, sp, &e, v, udef, &sh);
 	if (o.world && object_space(&o, ms, nm, sp, &obj) != 0)
 		goto out;
 	v = o.renorm_head;
 	printf("\nrecommended for %s (%s normals%s, %s, up %c, E %.3g, speed from %s): %s\n", o.file, variant_name(v),
-	       o.world ? ", world space" : "", prec_name(o.fl ? PREC_FLOAT : PREC_DOUBLE), o.up, o.tol,
+	       o.world ? ", world space" : "", prec_name(o.prec), o.up, o.tol,
 	       t.kind == SPEED_CACHE ? "this machine's cache" : t.kind == SPEED_FILE ? "--speed" : "the reference run",
 	       e.best[0][v] >= 0 ? ms[e.best[0][v]].name : "none");
 	if (o.certify && certify(&o, ms, nm, &e, v, proven) != 0)

@@ -19,7 +19,7 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static void one(const char *name, const uint8_t *data, size_t size, int world, int fl)
+static void one(const char *name, const uint8_t *data, size_t size, int world, int prec)
 {
 	mesh_normals m;
 	mesh_stats st;
@@ -28,7 +28,7 @@ static void one(const char *name, const uint8_t *data, size_t size, int world, i
 	size_t i;
 	memset(&o, 0, sizeof o);
 	o.world = world;
-	o.use_float = fl;
+	o.prec = prec;
 	err[0] = '\0';
 	if (mesh_read_mem_opts(name, data, size, &o, &m, NULL, err, sizeof err) != 0) {
 		if (err[0] == '\0' || strchr(err, '\n') || m.count != 0 || m.x || m.y || m.z || m.where || m.index)
@@ -37,9 +37,9 @@ static void one(const char *name, const uint8_t *data, size_t size, int world, i
 	}
 	if (!m.count || !m.x || !m.y || !m.z || !m.where || !m.index)
 		abort();
-	if (mesh_classify(&m, 1, 0, &st) == 0 && st.total != m.count)
+	if (mesh_classify(&m, PREC_FLOAT, 0, &st) == 0 && st.total != m.count)
 		abort();
-	if (mesh_classify(&m, 0, 0, &st) == 0 && st.total != m.count)
+	if (mesh_classify(&m, PREC_DOUBLE, 0, &st) == 0 && st.total != m.count)
 		abort();
 	for (i = 0; i < m.count && i < 16; i++)
 		mesh_where(&m, i, where, sizeof where);
@@ -55,9 +55,9 @@ static void put32(uint8_t *p, uint32_t v)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	uint8_t *g;
-	one("fuzz.gltf", data, size, 0, 1);
-	one("fuzz.gltf", data, size, 1, 1);
-	one("fuzz.gltf", data, size, 1, 0);
+	one("fuzz.gltf", data, size, 0, PREC_FLOAT);
+	one("fuzz.gltf", data, size, 1, PREC_FLOAT);
+	one("fuzz.gltf", data, size, 1, PREC_DOUBLE);
 	/* the same bytes as the JSON chunk of a .glb without a BIN chunk */
 	if (size < 65536 && (g = malloc(size + 20)) != NULL) {
 		memcpy(g, "glTF", 4);
@@ -66,7 +66,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		put32(g + 12, (uint32_t)size);
 		put32(g + 16, 0x4E4F534Au);
 		memcpy(g + 20, data, size);
-		one("fuzz.glb", g, size + 20, 0, 1);
+		one("fuzz.glb", g, size + 20, 0, PREC_FLOAT);
 		free(g);
 	}
 	return 0;

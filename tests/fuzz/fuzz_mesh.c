@@ -35,9 +35,9 @@ static void one(const char *name, const uint8_t *data, size_t size)
 	}
 	if (m.count && (!m.x || !m.y || !m.z))
 		abort();
-	if (mesh_classify(&m, 1, 0, &st) == 0 && st.total != m.count)
+	if (mesh_classify(&m, PREC_FLOAT, 0, &st) == 0 && st.total != m.count)
 		abort();
-	if (mesh_classify(&m, 0, 0, &st) == 0 && st.total != m.count)
+	if (mesh_classify(&m, PREC_DOUBLE, 0, &st) == 0 && st.total != m.count)
 		abort();
 	for (i = 0; i < m.count && i < 64; i++)
 		mesh_where(&m, i, where, sizeof where);

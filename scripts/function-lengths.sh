@@ -1,10 +1,10 @@
 #!/bin/sh
 # function-lengths.sh [MAX [FILE...]] - the C functions longer than MAX
-# lines (default 100; issues 13 and 23: "no function longer than about 100
-# lines"), counted from a function's opening brace in column 0 to its
-# closing one.  The files: those named, or every .c, .h and .inc file under
-# src/, include/, tests/ and examples/.  Prints the long ones, then exits 1
-# if there is any.  make test runs it (tests/function_lengths.sh).
+# lines (default 100: a function a reader can hold at once), counted from
+# a function's opening brace in column 0 to its closing one.  The files:
+# those named, or every .c, .h and .inc file under src/, include/, tests/
+# and examples/.  Prints the long ones, then exits 1 if there is any.
+# make test runs it (tests/function_lengths.sh).
 max=${1:-100}
 [ $# -gt 0 ] && shift
 if [ $# -gt 0 ]; then

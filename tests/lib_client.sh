@@ -1,5 +1,5 @@
 #!/bin/sh
-# libonb in other people's builds (issues 15 and 25):
+# libonb in other people's builds, whose compilers and flags are not ours:
 #  1. onb.h compiles clean under -Wall -Wextra -Wpedantic -Wshadow
 #     -Wconversion -Wdouble-promotion -Wfloat-equal -Werror in C99, C11 and
 #     C++17 (-Wold-style-cast too), with gcc/g++ and clang/clang++, every

@@ -27,7 +27,7 @@ if [ -n "$base" ]; then
 	# the header's path: include/libonb/onb.h, or include/onb.h before
 	sed 's|"libonb/onb.h"|"onb.h"|' tests/client/entries.c > "$tmp/entries-old.c"
 	hdr="$tmp/base/include"; [ -f "$hdr/libonb/onb.h" ] && cp tests/client/entries.c "$tmp/entries-old.c"
-	cc $LIBFP -Wall -Wextra -I"$hdr" "$tmp/entries-old.c" "$tmp/base/libonb.a" -lm -o "$tmp/base/prog"
+	cc $LIBFP -Wall -Wextra -I"$hdr" -Itests/client "$tmp/entries-old.c" "$tmp/base/libonb.a" -lm -o "$tmp/base/prog"
 	progs="new base"
 fi
 load0=$(cut -d' ' -f1-3 /proc/loadavg)

@@ -38,6 +38,7 @@
 # used only when no proven method keeps the engine's frame.
 set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
+. "$HERE/splice.sh"
 ROOT=$HERE/..
 REF=${REF:-$ROOT/results/wild}
 # the paper methods' proven bounds, then the engines' run (its rows win)
@@ -78,22 +79,9 @@ case "${1:-}" in
 	FILE=${2:?usage: wild.sh [--readme] --update|--check FILE}
 	T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 	{ echo "$BEGIN_MARK"; generate; echo "$END_MARK"; } > "$T/new" || { echo "wild: generation failed" >&2; exit 1; }
-	if ! grep -qF "$BEGIN_MARK" "$FILE" || ! grep -qF "$END_MARK" "$FILE"; then
-		echo "wild: $FILE has no markers for the $WHAT" >&2; exit 1
-	fi
-	awk -v B="$BEGIN_MARK" -v E="$END_MARK" -v NEW="$T/new" '
-		$0 == B { while ((getline l < NEW) > 0) print l; skip = 1; next }
-		$0 == E { skip = 0; next }
-		!skip { print }' "$FILE" > "$T/out"
-	if [ "$1" = --check ]; then
-		if cmp -s "$FILE" "$T/out"; then echo "wild: the $WHAT in $FILE match the committed runs and the registry"; exit 0; fi
-		diff "$FILE" "$T/out" | head -40 >&2
-		opt=""; [ "$WHAT" = "table of engines" ] || opt=" --readme"
-		echo "wild: the $WHAT in $FILE differ from the committed runs (run: sh scripts/wild.sh$opt --update $FILE)" >&2
-		exit 1
-	fi
-	cp "$T/out" "$FILE"
-	echo "wild: updated $FILE" ;;
+	opt=""; [ "$WHAT" = "table of engines" ] || opt=" --readme"
+	splice_marked wild "$1" "$FILE" "$T/new" "$WHAT" "the committed runs and the registry" "the committed runs" \
+		"sh scripts/wild.sh$opt --update $FILE" ;;
 *)
 	echo "usage: wild.sh [--readme] [--update|--check FILE]" >&2; exit 2 ;;
 esac

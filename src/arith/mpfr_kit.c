@@ -76,6 +76,26 @@ void kit_normalize(mpfr_kit *c, mpfr_t *a)
 	mpfr_mul(a[2], a[2], c->t[5], R);
 }
 
+void kit_axis_cross(mpfr_t *o, int axis, int sg, mpfr_t *n)
+{
+	const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+	mpfr_set_zero(o[axis], 1);
+	if (sg > 0) {
+		mpfr_neg(o[i], n[j], R);
+		mpfr_set(o[j], n[i], R);
+	} else {
+		mpfr_set(o[i], n[j], R);
+		mpfr_neg(o[j], n[i], R);
+	}
+}
+
+void kit_perp_cross(mpfr_kit *c, int axis, int sg, mpfr_t *n, mpfr_t *b1, mpfr_t *b2)
+{
+	kit_axis_cross(b1, axis, sg, n);
+	kit_normalize(c, b1);
+	kit_cross(c, b2, n, b1);
+}
+
 /* Round to nearest is symmetric, so -RN(v) = RN(-v): the signs cost no
    rounding, and each sg gives exactly the values (and signed zeros) of
    its own listing. */

@@ -34,6 +34,14 @@ void kit_set3(mpfr_t *o, double x, double y, double z);
 void kit_copy3(mpfr_t *o, mpfr_t *a);
 /* a *= 1/|a| (exactly rounded reciprocal square root; uses t[5]) */
 void kit_normalize(mpfr_kit *c, mpfr_t *a);
+/* o = sg (e_axis x n), sg = +1 or -1: the vector perpendicular to n and
+   to coordinate axis `axis` that the "pick an axis" methods start from:
+   axis 0 gives sg (0, -z, y), 1 gives sg (z, 0, -x), 2 gives sg (-y, x, 0).
+   Exact (copies and negations); o[axis] is +0 whatever sg; o distinct
+   from n. */
+void kit_axis_cross(mpfr_t *o, int axis, int sg, mpfr_t *n);
+/* The body those methods share: b1 = the above normalized, b2 = n x b1. */
+void kit_perp_cross(mpfr_kit *c, int axis, int sg, mpfr_t *n, mpfr_t *b1, mpfr_t *b2);
 /* Frisvad's formula (sg = +1, Equations 4-6) and Duff's lower branch
    (sg = -1), which differ only in signs:
      a = 1/(1 + sg z), b = x y a,

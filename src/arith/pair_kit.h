@@ -511,6 +511,23 @@ HOT void xnormalize(xv *a, int *bad)
 
 static inline void xset3(xv *o, double x, double y, double z) { o[0] = xc(x); o[1] = xc(y); o[2] = xc(z); }
 
+/* kit_axis_cross: o = sg (e_axis x n), exact, o[axis] = +0 */
+HOT void xaxis_cross(xv *o, int axis, int sg, const xv *n)
+{
+	const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+	o[axis] = xc(0.0);
+	o[i] = sg > 0 ? xneg(n[j]) : n[j];
+	o[j] = sg > 0 ? n[i] : xneg(n[i]);
+}
+
+/* kit_perp_cross: b1 = sg (e_axis x n) normalized, b2 = n x b1 */
+HOT void xperp_cross(int axis, int sg, const xv *n, xv *b1, xv *b2, int *bad)
+{
+	xaxis_cross(b1, axis, sg, n);
+	xnormalize(b1, bad);
+	xcross(b2, n, b1, bad);
+}
+
 /* kit_frisvad with sg = +1: a = 1/(1+z), b = -x y a, b1 = (1 - x^2 a, b, -x), b2 = (b, 1 - y^2 a, -y) */
 HOT void xfrisvad(const xv *n, xv *b1, xv *b2, int *bad)
 {

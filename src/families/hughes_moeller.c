@@ -24,11 +24,7 @@ void FAMILY_PAIR(hughes_moeller)(const onb_method *m, int br, const double loc[3
                                  int *bad)
 {
 	(void)loc;
-	if (br) {
-		r2[0] = xneg(n[1]); r2[1] = n[0]; r2[2] = xc(0.0);
-	} else {
-		r2[0] = xc(0.0); r2[1] = xneg(n[2]); r2[2] = n[1];
-	}
+	xaxis_cross(r2, br ? 2 : 0, +1, n);
 	if (m->norm != ONB__NORM_NONE)
 		xnormalize(r2, bad);
 	xcross(r1, r2, n, bad);
@@ -48,11 +44,7 @@ static const char *names(const onb_method *m, int b, char *buf, size_t n)
 static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
 {
 	(void)loc;
-	if (br) {
-		mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
-	} else {
-		mpfr_set_zero(r2[0], 1); mpfr_neg(r2[1], n[2], R); mpfr_set(r2[2], n[1], R);
-	}
+	kit_axis_cross(r2, br ? 2 : 0, +1, n);   /* (-y, x, 0) or (0, -z, y) */
 	if (m->norm != ONB__NORM_NONE)
 		kit_normalize(c, r2);
 	kit_cross(c, r1, r2, n);

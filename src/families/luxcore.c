@@ -30,7 +30,7 @@ void FAMILY_PAIR(luxcore)(const onb_method *m, int br, const double loc[3], cons
 	if (br) {
 		xset3(r2, 1.0, 0.0, 0.0);
 	} else {
-		r2[0] = xneg(n[1]); r2[1] = n[0]; r2[2] = xc(0.0);
+		xaxis_cross(r2, 2, +1, n);
 		xnormalize(r2, bad);
 	}
 	xcross(r1, n, r2, bad);
@@ -52,7 +52,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 	if (br) {
 		kit_set3(r2, 1.0, 0.0, 0.0);
 	} else {
-		mpfr_neg(r2[0], n[1], R); mpfr_set(r2[1], n[0], R); mpfr_set_zero(r2[2], 1);
+		kit_axis_cross(r2, 2, +1, n);   /* (-y, x, 0) */
 		kit_normalize(c, r2);
 	}
 	kit_cross(c, r1, n, r2);

@@ -23,13 +23,7 @@ int FAMILY_BRANCH(pbrt_v3)(const onb_method *m, int prec, const double n[3])
 void FAMILY_PAIR(pbrt_v3)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
 {
 	(void)m; (void)loc;
-	if (br) {
-		r1[0] = xneg(n[2]); r1[1] = xc(0.0); r1[2] = n[0];
-	} else {
-		r1[0] = xc(0.0); r1[1] = n[2]; r1[2] = xneg(n[1]);
-	}
-	xnormalize(r1, bad);
-	xcross(r2, n, r1, bad);
+	xperp_cross(br ? 1 : 0, -1, n, r1, r2, bad);
 }
 #endif
 
@@ -45,13 +39,7 @@ static const char *names(const onb_method *m, int b, char *buf, size_t n)
 static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
 {
 	(void)m; (void)loc;
-	if (br) {
-		mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
-	} else {
-		mpfr_set_zero(r1[0], 1); mpfr_set(r1[1], n[2], R); mpfr_neg(r1[2], n[1], R);
-	}
-	kit_normalize(c, r1);
-	kit_cross(c, r2, n, r1);
+	kit_perp_cross(c, br ? 1 : 0, -1, n, r1, r2);   /* (-z, 0, x) or (0, z, -y) */
 }
 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])

@@ -27,15 +27,7 @@ int FAMILY_BRANCH(rp3d)(const onb_method *m, int prec, const double n[3])
 void FAMILY_PAIR(rp3d)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
 {
 	(void)m; (void)loc;
-	if (br == 0) {
-		r1[0] = xc(0.0); r1[1] = xneg(n[2]); r1[2] = n[1];
-	} else if (br == 1) {
-		r1[0] = xneg(n[2]); r1[1] = xc(0.0); r1[2] = n[0];
-	} else {
-		r1[0] = xneg(n[1]); r1[1] = n[0]; r1[2] = xc(0.0);
-	}
-	xnormalize(r1, bad);
-	xcross(r2, n, r1, bad);
+	xperp_cross(br == 0 ? 0 : br == 1 ? 1 : 2, br == 1 ? -1 : +1, n, r1, r2, bad);
 }
 #endif
 
@@ -52,15 +44,8 @@ static const char *names(const onb_method *m, int b, char *buf, size_t n)
 static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
 {
 	(void)m; (void)loc;
-	if (br == 0) {
-		mpfr_set_zero(r1[0], 1); mpfr_neg(r1[1], n[2], R); mpfr_set(r1[2], n[1], R);
-	} else if (br == 1) {
-		mpfr_neg(r1[0], n[2], R); mpfr_set_zero(r1[1], 1); mpfr_set(r1[2], n[0], R);
-	} else {
-		mpfr_neg(r1[0], n[1], R); mpfr_set(r1[1], n[0], R); mpfr_set_zero(r1[2], 1);
-	}
-	kit_normalize(c, r1);
-	kit_cross(c, r2, n, r1);
+	/* (0, -z, y), (-z, 0, x) or (-y, x, 0) */
+	kit_perp_cross(c, br == 0 ? 0 : br == 1 ? 1 : 2, br == 1 ? -1 : +1, n, r1, r2);
 }
 
 /* getMinAxis's compares as branch points 0 (|x| < |y|), 1 (|x| < |z|),

@@ -20,6 +20,7 @@
 #include <math.h>
 #include <time.h>
 #include "libonb/onb.h"
+#include "clientkit.h"
 
 #define K 4096
 #define RUNS 7
@@ -29,35 +30,13 @@ static onb_vec3f nf[K], f1[K], f2[K];
 static int reps = 100;
 static const char *only; /* one method's rows alone (for perf stat) */
 
-/* The thread's CPU time, not the wall clock: on a shared machine the time
-   this thread spends descheduled is not counted. */
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmpd(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
 /* Unit directions from an LCG. */
 static void inputs(void)
 {
 	uint32_t s = 2025u;
-	int i, c;
+	int i;
 	for (i = 0; i < K; i++) {
-		double v[3], l;
-		do {
-			for (c = 0; c < 3; c++) {
-				s = s * 1664525u + 1013904223u;
-				v[c] = (double)(int32_t)s * 0x1p-31;
-			}
-			l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-		} while (l < 0x1p-4);
+		double v[3], l = lcg_dir(&s, v);
 		nd[i].x = v[0] / l; nd[i].y = v[1] / l; nd[i].z = v[2] / l;
 		nf[i].x = (float)nd[i].x; nf[i].y = (float)nd[i].y; nf[i].z = (float)nd[i].z;
 	}

@@ -14,6 +14,7 @@
 #include <math.h>
 #include <time.h>
 #include "libonb/onb.h"
+#include "clientkit.h"
 #include "percall.h"
 
 #define K 4096
@@ -23,36 +24,14 @@ static onb_vec3 nd[K], d1[K], d2[K], r1[K], r2[K];
 static onb_vec3f nf[K], f1[K], f2[K], s1[K], s2[K];
 static int reps = 200;
 
-/* The thread's CPU time, not the wall clock: on a shared machine the time
-   this thread spends descheduled is not counted. */
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmpd(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
 /* Unit directions from integers (an LCG), the six poles among them. */
 static void inputs(void)
 {
 	uint32_t s = 2025u;
-	int i, c;
+	int i;
 	static const double poles[6][3] = { {1,0,0}, {-1,0,0}, {0,1,0}, {0,-1,0}, {0,0,1}, {0,0,-1} };
 	for (i = 0; i < K; i++) {
-		double v[3], l;
-		do {
-			for (c = 0; c < 3; c++) {
-				s = s * 1664525u + 1013904223u;
-				v[c] = (double)(int32_t)s * 0x1p-31;
-			}
-			l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-		} while (l < 0x1p-4);
+		double v[3], l = lcg_dir(&s, v);
 		if (i < 6) { v[0] = poles[i][0]; v[1] = poles[i][1]; v[2] = poles[i][2]; l = 1.0; }
 		nd[i].x = v[0] / l; nd[i].y = v[1] / l; nd[i].z = v[2] / l;
 		nf[i].x = (float)nd[i].x; nf[i].y = (float)nd[i].y; nf[i].z = (float)nd[i].z;

@@ -24,22 +24,21 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <mpfr.h>
 #include "methods/kernels.h"
 #include "inputs/inputs.h"
 #include "certify/region.h"
 #include "certify/search.h"
+#include "inputs/rng.h"
 
 #define MAXK 128
 #define MAXROW 40000
 
 static uint64_t rng;
-static uint64_t next(void)
+static uint64_t next(void)   /* SplitMix64: the mix of the counter, then the step */
 {
-	uint64_t v = (rng += 0x9e3779b97f4a7c15u);
-	v = (v ^ (v >> 30)) * 0xbf58476d1ce4e5b9u;
-	v = (v ^ (v >> 27)) * 0x94d049bb133111ebu;
-	return v ^ (v >> 31);
+	const uint64_t v = rng_mix64(rng);
+	rng += 0x9e3779b97f4a7c15u;
+	return v;
 }
 static double unit(void) { return (double)(next() >> 11) * 0x1p-53; }
 
@@ -48,31 +47,7 @@ typedef struct {
 	const study_kernel *k;
 	int prec;
 	cert_region r;
-	mpfr_t t, s;
 } walker;
-
-/* |c| with a^2 + b^2 + c^2 = 1, rounded to the format (NaN if none). */
-static double complete(walker *w, double a, double b)
-{
-	mpfr_set_d(w->t, a, MPFR_RNDN);
-	mpfr_sqr(w->t, w->t, MPFR_RNDN);
-	mpfr_set_d(w->s, b, MPFR_RNDN);
-	mpfr_fma(w->t, w->s, w->s, w->t, MPFR_RNDN);
-	mpfr_ui_sub(w->t, 1, w->t, MPFR_RNDN);
-	if (mpfr_sgn(w->t) < 0)
-		return NAN;
-	mpfr_sqrt(w->t, w->t, MPFR_RNDN);
-	return w->prec == PREC_FLOAT ? (double)mpfr_get_flt(w->t, MPFR_RNDN) : mpfr_get_d(w->t, MPFR_RNDN);
-}
-
-static int biggest(const double n[3])
-{
-	int i, b = 0;
-	for (i = 1; i < 3; i++)
-		if (fabs(n[i]) > fabs(n[b]))
-			b = i;
-	return b;
-}
 
 /* The defect at n, or -1 when n is outside the region or the domain. */
 static double defect(walker *w, const double n[3])
@@ -89,7 +64,7 @@ static void start(walker *w, double n[3])
 {
 	const cert_region *r = &w->r;
 	double z, phi, rr, c;
-	int b;
+	int b, sure;
 	if (r->nz_hi <= -0.9 || r->nz_lo >= 0.9) {   /* log-uniform in 1 -+ z */
 		const int south = r->nz_hi <= -0.9;
 		double a = south ? 1.0 + r->nz_lo : 1.0 - r->nz_hi, e = south ? 1.0 + r->nz_hi : 1.0 - r->nz_lo;
@@ -105,8 +80,8 @@ static void start(walker *w, double n[3])
 	n[0] = fmt_round(rr * cos(phi), w->prec);
 	n[1] = fmt_round(rr * sin(phi), w->prec);
 	n[2] = fmt_round(z, w->prec);
-	b = biggest(n);
-	c = complete(w, n[(b + 1) % 3], n[(b + 2) % 3]);
+	b = cert_biggest(n);
+	c = cert_complete(w->x, w->prec, n[(b + 1) % 3], n[(b + 2) % 3], &sure);
 	if (!isnan(c))
 		n[b] = copysign(c, n[b]);
 }
@@ -125,11 +100,11 @@ static double climb(walker *w, double n[3], long steps)
 			for (i = 0; i < 3; i++)
 				m[i] = fmt_step(m[i], (int64_t)(next() % 9) - 4, w->prec);
 		} else {
-			int b = biggest(m);
+			int b = cert_biggest(m), sure;
 			double c;
 			m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], (int64_t)(next() % 9) - 4, w->prec);
 			m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], (int64_t)(next() % 9) - 4, w->prec);
-			c = complete(w, m[(b + 1) % 3], m[(b + 2) % 3]);
+			c = cert_complete(w->x, w->prec, m[(b + 1) % 3], m[(b + 2) % 3], &sure);
 			if (isnan(c))
 				continue;
 			m[b] = copysign(c, m[b]);
@@ -170,7 +145,6 @@ int main(int argc, char **argv)
 	}
 	memset(&w, 0, sizeof w);
 	w.x = cert_ctx_new();
-	mpfr_inits2(320, w.t, w.s, (mpfr_ptr)0);
 	while (fgets(line, sizeof line, in) && nr < MAXROW) {
 		char meth[64], prec[16], status[16], fx[64], fy[64], fz[64];
 		double bound, found, n[3], best;
@@ -214,7 +188,6 @@ int main(int argc, char **argv)
 	qsort(ratios, (size_t)nr, sizeof *ratios, cmp_d);
 	printf("found_walk: %d regions, %ld restarts x %ld steps: walk beats found by > 5%% in %d; largest walk/found %.4f, median %.4f\n",
 	       nr, restarts, steps, beaten, worst, nr ? ratios[nr / 2] : NAN);
-	mpfr_clears(w.t, w.s, (mpfr_ptr)0);
 	cert_ctx_free(w.x);
 	return 0;
 }

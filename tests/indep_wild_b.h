@@ -399,39 +399,26 @@ static void ind_open3dd(Vec3d n, Vec3d *b1, Vec3d *b2, int fixed)
 /* ids 200 and up (the rows of the table in tests/indep.h) */
 enum { IW_JOLT = 200, IW_JOLT_FMA, IW_BULLET, IW_ODE, IW_MUJOCO, IW_EIGEN, IW_PHYSX, IW_RP3D, IW_OPEN3D,
        IW_PHYSX_FIXED, IW_OPEN3D_FIXED };
-static int indep_wild_b_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
-{
-	switch (id) {
-	case IW_JOLT:         ind_joltf(n, b1, b2, 0); return 1;
-	case IW_JOLT_FMA:     ind_joltf(n, b1, b2, 1); return 1;
-	case IW_BULLET:       ind_bulletf(n, b1, b2); return 1;
-	case IW_ODE:          ind_odef(n, b1, b2); return 1;
-	case IW_MUJOCO:       ind_mujocof(n, b1, b2); return 1;
-	case IW_EIGEN:        ind_eigenf(n, b1, b2); return 1;
-	case IW_PHYSX:        ind_physxf(n, b1, b2, 0); return 1;
-	case IW_RP3D:         ind_rp3df(n, b1, b2); return 1;
-	case IW_OPEN3D:       ind_open3df(n, b1, b2, 0); return 1;
-	case IW_PHYSX_FIXED:  ind_physxf(n, b1, b2, 1); return 1;
-	case IW_OPEN3D_FIXED: ind_open3df(n, b1, b2, 1); return 1;
-	default:              return 0;
-	}
+/* The switch from id to transliteration, once per precision (S: f or d). */
+#define INDEP_WILD_B_SWITCH(S, V) \
+static int indep_wild_b_##S(int id, V n, V *b1, V *b2) \
+{ \
+	switch (id) { \
+	case IW_JOLT:         ind_jolt##S(n, b1, b2, 0); return 1; \
+	case IW_JOLT_FMA:     ind_jolt##S(n, b1, b2, 1); return 1; \
+	case IW_BULLET:       ind_bullet##S(n, b1, b2); return 1; \
+	case IW_ODE:          ind_ode##S(n, b1, b2); return 1; \
+	case IW_MUJOCO:       ind_mujoco##S(n, b1, b2); return 1; \
+	case IW_EIGEN:        ind_eigen##S(n, b1, b2); return 1; \
+	case IW_PHYSX:        ind_physx##S(n, b1, b2, 0); return 1; \
+	case IW_RP3D:         ind_rp3d##S(n, b1, b2); return 1; \
+	case IW_OPEN3D:       ind_open3d##S(n, b1, b2, 0); return 1; \
+	case IW_PHYSX_FIXED:  ind_physx##S(n, b1, b2, 1); return 1; \
+	case IW_OPEN3D_FIXED: ind_open3d##S(n, b1, b2, 1); return 1; \
+	default:              return 0; \
+	} \
 }
-static int indep_wild_b_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
-{
-	switch (id) {
-	case IW_JOLT:         ind_joltd(n, b1, b2, 0); return 1;
-	case IW_JOLT_FMA:     ind_joltd(n, b1, b2, 1); return 1;
-	case IW_BULLET:       ind_bulletd(n, b1, b2); return 1;
-	case IW_ODE:          ind_oded(n, b1, b2); return 1;
-	case IW_MUJOCO:       ind_mujocod(n, b1, b2); return 1;
-	case IW_EIGEN:        ind_eigend(n, b1, b2); return 1;
-	case IW_PHYSX:        ind_physxd(n, b1, b2, 0); return 1;
-	case IW_RP3D:         ind_rp3dd(n, b1, b2); return 1;
-	case IW_OPEN3D:       ind_open3dd(n, b1, b2, 0); return 1;
-	case IW_PHYSX_FIXED:  ind_physxd(n, b1, b2, 1); return 1;
-	case IW_OPEN3D_FIXED: ind_open3dd(n, b1, b2, 1); return 1;
-	default:              return 0;
-	}
-}
+INDEP_WILD_B_SWITCH(f, Vec3f)
+INDEP_WILD_B_SWITCH(d, Vec3d)
 
 #endif /* INDEP_WILD_B_H */

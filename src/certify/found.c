@@ -134,37 +134,6 @@ double found_try(probe_env *e, const double n[3], int in_domain)
 	return d;
 }
 
-/* |c| = sqrt(1 - a^2 - b^2) rounded to nearest in the format (a, b in it),
-   NaN when a^2 + b^2 > 1; *sure = 1 when that rounding is certain (the
-   320-bit value is within 2^-316 relative of the exact one, and
-   mpfr_can_round says that decides it): then (a, b, +-c) is the rounding
-   of the unit vector (a, b, +-sqrt(1 - a^2 - b^2)), a domain member. */
-static double complete(probe_env *e, double a, double b, int *sure)
-{
-	cert_ctx *x = e->x;
-	const int p = e->prec == PREC_FLOAT ? 24 : 53;
-	mpfr_set_d(x->t, a, MPFR_RNDN);
-	mpfr_sqr(x->t, x->t, MPFR_RNDN);
-	mpfr_set_d(x->s, b, MPFR_RNDN);
-	mpfr_fma(x->t, x->s, x->s, x->t, MPFR_RNDN);
-	mpfr_ui_sub(x->t, 1, x->t, MPFR_RNDN);
-	*sure = 0;
-	if (mpfr_sgn(x->t) < 0)
-		return NAN;
-	mpfr_sqrt(x->t, x->t, MPFR_RNDN);
-	*sure = mpfr_cmp_d(x->t, 0.5) > 0 && mpfr_can_round(x->t, 316, MPFR_RNDN, MPFR_RNDZ, p + 1);
-	return p == 24 ? (double)mpfr_get_flt(x->t, MPFR_RNDN) : mpfr_get_d(x->t, MPFR_RNDN);
-}
-
-static int biggest(const double n[3])
-{
-	int i, b = 0;
-	for (i = 1; i < 3; i++)
-		if (fabs(n[i]) > fabs(n[b]))
-			b = i;
-	return b;
-}
-
 /* n with its largest component (index b) completed; 1 when n is then
    surely a domain member, 0 when it must be asked, -1 when none exists. */
 static int complete_n(probe_env *e, double n[3], int b)
@@ -173,7 +142,7 @@ static int complete_n(probe_env *e, double n[3], int b)
 	double c;
 	if (e->o->tolerance >= 0)
 		return 0;
-	c = complete(e, n[(b + 1) % 3], n[(b + 2) % 3], &sure);
+	c = cert_complete(e->x, e->prec, n[(b + 1) % 3], n[(b + 2) % 3], &sure);
 	if (isnan(c))
 		return -1;
 	n[b] = copysign(c, n[b]);
@@ -202,7 +171,7 @@ static int make_u(probe_env *e, double z, double phi, double n[3])
 		for (i = 0; i < 3; i++)
 			n[i] *= s;
 	}
-	big = biggest(n);
+	big = cert_biggest(n);
 	if (e->prec == PREC_DOUBLE)   /* see above: spread the last component's rounding */
 		n[(big + 1) % 3] *= 1.0 + (rnd01(e) - 0.5) * 0x1p-26;
 	for (i = 0; i < 3; i++)
@@ -274,7 +243,7 @@ void found_sample(probe_env *e)
 static int propose(probe_env *e, const double n[3], double m[3], int k[2])
 {
 	static const int scale[4] = { 1, 2, 8, 64 };
-	const int b = biggest(n), s = scale[rnd(e) & 3];
+	const int b = cert_biggest(n), s = scale[rnd(e) & 3];
 	const uint64_t h = rnd(e);
 	int i, r;
 	memcpy(m, n, 3 * sizeof *m);
@@ -307,7 +276,7 @@ static void climb(probe_env *e, double n[3], double d, long steps, long stall)
 	int k[2] = { 0, 0 }, last[2] = { 0, 0 }, repeat = 0, known;
 	for (s = 0; s < steps && since < stall; s++) {
 		if (repeat) {   /* the same step once more */
-			const int b = biggest(n);
+			const int b = cert_biggest(n);
 			memcpy(m, n, sizeof m);
 			m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], last[0], e->prec);
 			m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], last[1], e->prec);
@@ -337,7 +306,7 @@ static void climb(probe_env *e, double n[3], double d, long steps, long stall)
    largest (the ends of its run). */
 static void neighbourhood(probe_env *e, const double n[3], int w)
 {
-	const int b = biggest(n);
+	const int b = cert_biggest(n);
 	int i, j;
 	for (i = -w; i <= w; i++)
 		for (j = -w; j <= w; j++) {

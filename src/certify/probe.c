@@ -1,11 +1,13 @@
 /*
- * probe.c - the certify context of a thread, and one input measured as
- * `onbstudy eval` measures it (probe.h).
+ * probe.c - the certify context of a thread, one input measured as
+ * `onbstudy eval` measures it, and an input completed to unit length
+ * (probe.h).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <mpfr.h>
 #include "probe.h"
+#include "common/prec.h"
 
 cert_ctx *cert_ctx_new(void)
 {
@@ -42,4 +44,29 @@ double cert_probe(cert_ctx *x, const study_kernel *k, int prec, const double n[3
 	ref_eval(x->rc, k, prec, n, loc, 0, &m);
 	*nonfinite = m.nonfinite;
 	return m.nonfinite ? INFINITY : m.defect;
+}
+
+double cert_complete(cert_ctx *x, int prec, double a, double b, int *sure)
+{
+	const int p = prec == PREC_FLOAT ? 24 : 53;
+	mpfr_set_d(x->t, a, MPFR_RNDN);
+	mpfr_sqr(x->t, x->t, MPFR_RNDN);
+	mpfr_set_d(x->s, b, MPFR_RNDN);
+	mpfr_fma(x->t, x->s, x->s, x->t, MPFR_RNDN);
+	mpfr_ui_sub(x->t, 1, x->t, MPFR_RNDN);
+	*sure = 0;
+	if (mpfr_sgn(x->t) < 0)
+		return NAN;
+	mpfr_sqrt(x->t, x->t, MPFR_RNDN);
+	*sure = mpfr_cmp_d(x->t, 0.5) > 0 && mpfr_can_round(x->t, 316, MPFR_RNDN, MPFR_RNDZ, p + 1);
+	return p == 24 ? (double)mpfr_get_flt(x->t, MPFR_RNDN) : mpfr_get_d(x->t, MPFR_RNDN);
+}
+
+int cert_biggest(const double n[3])
+{
+	int i, b = 0;
+	for (i = 1; i < 3; i++)
+		if (fabs(n[i]) > fabs(n[b]))
+			b = i;
+	return b;
 }

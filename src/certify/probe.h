@@ -1,7 +1,7 @@
 /*
- * probe.h - one input measured: the certify context of a thread (cert_ctx)
- * and the defect of a kernel on one input as `onbstudy eval` measures it
- * (probe.c).  Below the found side (found.c), the branch and bound
+ * probe.h - one input measured: the certify context of a thread (cert_ctx),
+ * the defect of a kernel on one input as `onbstudy eval` measures it, and
+ * an input completed to unit length (probe.c).  Below the found side (found.c), the branch and bound
  * (search.c) and the enumeration of a box (enumerate.c).
  */
 #ifndef ONB_CERTIFY_PROBE_H
@@ -25,5 +25,15 @@ struct cert_ctx {
 /* The defect of kernel k on input n as `onbstudy eval` measures it (the
    exact defect of the rounded outputs); *nonfinite set for NaN/inf. */
 double cert_probe(cert_ctx *x, const study_kernel *k, int prec, const double n[3], int *nonfinite);
+
+/* |c| = sqrt(1 - a^2 - b^2) rounded to nearest in the format prec (a, b in
+   it), NaN when a^2 + b^2 > 1; *sure = 1 when that rounding is certain (the
+   320-bit value is within 2^-316 relative of the exact one, and
+   mpfr_can_round says that decides it): then (a, b, +-c) is the rounding
+   of the unit vector (a, b, +-sqrt(1 - a^2 - b^2)), a domain member. */
+double cert_complete(cert_ctx *x, int prec, double a, double b, int *sure);
+
+/* The index of n's component of largest magnitude (the first of equals). */
+int cert_biggest(const double n[3]);
 
 #endif

@@ -1,7 +1,9 @@
 /*
  * gltf.c - the glTF 2.0 reader of meshio (see meshio.h for what it
- * reads).  The JSON is parsed by cJSON; every binary value is read
- * byte by byte as little-endian (so bit-exactly, on any host).
+ * reads): primitives, node transforms, scenes and geometry, from the
+ * values gltf_data.c reads.  The JSON is parsed by cJSON; every binary
+ * value is read byte by byte as little-endian (so bit-exactly, on any
+ * host).
  *
  * Refused, each with one line naming the object: JSON that does not parse;
  * asset.version not 2.x; a required extension that changes the geometry
@@ -16,437 +18,13 @@
  * byte of input (so memory stays bounded by the input).
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <cjson/cJSON.h>
 #include "mesh/meshio.h"  /* up, for the public types (mesh_normals, mesh_geom, mesh_opts): the folder's face holds them */
 #include "mesh/common.h"
 #include "mesh/gltf.h"
-
-#define GL_BYTE 5120
-#define GL_UBYTE 5121
-#define GL_SHORT 5122
-#define GL_USHORT 5123
-#define GL_UINT 5125
-#define GL_FLOAT 5126
-
-typedef struct {
-	unsigned char *data;  /* owned (data: URI, external file), or into bin */
-	size_t len;
-	int state;            /* 0 not loaded, 1 loaded */
-	int owned;
-} gbuf;
-
-typedef struct {
-	mctx *c;
-	const mesh_opts *o;
-	cJSON *root;
-	const unsigned char *bin;
-	size_t binlen;
-	int glb;
-	gbuf *bufs;
-	int nbufs;
-	size_t inbytes;       /* bytes read: the file and external buffers */
-	mesh_normals *m;
-	size_t cap;           /* allocated normals in m */
-	int ntypes;           /* stored component types seen: 1 float, 2 quantized */
-} gltf;
-
-/* ---- JSON helpers --------------------------------------------------- */
-
-static cJSON *item(const cJSON *o, const char *k)
-{
-	return cJSON_IsObject(o) ? cJSON_GetObjectItemCaseSensitive(o, k) : NULL;
-}
-
-/* An optional integer property in [lo, hi]; def when absent. */
-static int jint(gltf *g, const cJSON *o, const char *what, long wi, const char *k, long long def, long long lo,
-                long long hi, long long *out)
-{
-	const cJSON *v = item(o, k);
-	double d;
-	if (!v) {
-		if (def < lo)
-			return mio_fail(g->c, "%s %ld: '%s' is required", what, wi, k);
-		*out = def;
-		return 0;
-	}
-	d = v->valuedouble;
-	if (!cJSON_IsNumber(v) || !(d >= (double)lo && d <= (double)hi) || d != floor(d) || (lo == -2 && d < 0)) {
-		char at[80] = "";
-		if (wi >= 0)
-			snprintf(at, sizeof at, " %ld", wi);
-		if (lo == -2)
-			return mio_fail(g->c, "%s%s: '%s' must be an index (an integer >= 0)", what, at, k);
-		return mio_fail(g->c, "%s%s: '%s' must be an integer in [%lld, %lld]", what, at, k, lo, hi);
-	}
-	*out = (long long)d;
-	return 0;
-}
-
-/* The array o[k] (NULL when absent); -1 when present but not an array. */
-static int jarr(gltf *g, const cJSON *o, const char *what, long wi, const char *k, const cJSON **out)
-{
-	const cJSON *v = item(o, k);
-	*out = NULL;
-	if (!v)
-		return 0;
-	if (!cJSON_IsArray(v))
-		return wi >= 0 ? mio_fail(g->c, "%s %ld: '%s' must be an array", what, wi, k)
-		               : mio_fail(g->c, "%s'%s' must be an array", what, k);
-	*out = v;
-	return 0;
-}
-
-/* Element i of the top-level array k, which must be an object. */
-static const cJSON *top(gltf *g, const char *k, const char *what, long long i)
-{
-	const cJSON *a = item(g->root, k), *e;
-	int n = cJSON_IsArray(a) ? cJSON_GetArraySize(a) : 0;
-	if (i < 0 || i >= n) {
-		mio_fail(g->c, "%s %lld does not exist (%d in '%s')", what, i, n, k);
-		return NULL;
-	}
-	e = cJSON_GetArrayItem(a, (int)i);
-	if (!cJSON_IsObject(e)) {
-		mio_fail(g->c, "%s %lld is not a JSON object", what, i);
-		return NULL;
-	}
-	return e;
-}
-
-/* Adds a warning to m->warning (the first few fit; the rest are counted). */
-static void warn(gltf *g, const char *fmt, ...)
-#if defined(__GNUC__)
-	__attribute__((format(printf, 2, 3)))
-#endif
-	;
-static void warn(gltf *g, const char *fmt, ...)
-{
-	char *w = g->m->warning;
-	size_t l = strlen(w), cap = sizeof g->m->warning;
-	va_list ap;
-	if (l + 40 >= cap)
-		return;
-	if (l)
-		l += (size_t)snprintf(w + l, cap - l, "; ");
-	va_start(ap, fmt);
-	vsnprintf(w + l, cap - l, fmt, ap);
-	va_end(ap);
-	if (l && strstr(w, w + l) < w + l - 2) /* said already (a geometry read) */
-		w[l - 2] = '\0';
-}
-
-/* ---- buffers ---------------------------------------------------------- */
-
-static int b64v(unsigned char ch)
-{
-	if (ch >= 'A' && ch <= 'Z') return ch - 'A';
-	if (ch >= 'a' && ch <= 'z') return ch - 'a' + 26;
-	if (ch >= '0' && ch <= '9') return ch - '0' + 52;
-	if (ch == '+' || ch == '-') return 62;
-	if (ch == '/' || ch == '_') return 63;
-	return -1;
-}
-
-static int base64(gltf *g, long bi, const char *s, size_t n, gbuf *b)
-{
-	size_t i, k = 0;
-	unsigned acc = 0;
-	int bits = 0;
-	while (n && s[n - 1] == '=')
-		n--;
-	b->data = mio_calloc(n / 4 * 3 + 3, 1);
-	if (!b->data)
-		return mio_fail(g->c, "buffer %ld: out of memory", bi);
-	b->owned = 1;
-	for (i = 0; i < n; i++) {
-		int v = b64v((unsigned char)s[i]);
-		if (v < 0)
-			return mio_fail(g->c, "buffer %ld: bad base64 character at %zu of its data: URI", bi, i);
-		acc = (acc << 6 | (unsigned)v) & 0xffffffu;
-		bits += 6;
-		if (bits >= 8) {
-			bits -= 8;
-			b->data[k++] = (unsigned char)(acc >> bits);
-		}
-	}
-	b->len = k;
-	return 0;
-}
-
-/* A relative path below the file's directory: percent-decoded, no scheme,
-   no "..", not absolute. */
-static int external(gltf *g, long bi, const char *uri, gbuf *b)
-{
-	char rel[1024], path[4096];
-	size_t i, k = 0;
-	mctx sub;
-	if (!g->c->dir)
-		return mio_fail(g->c, "buffer %ld: external file '%.200s' (read from memory: external buffers are refused)", bi, uri);
-	for (i = 0; uri[i]; i++) {
-		int ch = (unsigned char)uri[i];
-		if (ch == '%' && uri[i + 1] && uri[i + 2]) {
-			char hx[3] = { uri[i + 1], uri[i + 2], 0 }, *e;
-			long v = strtol(hx, &e, 16);
-			if (*e || v <= 0)
-				return mio_fail(g->c, "buffer %ld: bad percent escape in uri '%.200s'", bi, uri);
-			ch = (int)v;
-			i += 2;
-		}
-		if (k + 1 >= sizeof rel || ch == 0 || ch == '\\')
-			return mio_fail(g->c, "buffer %ld: uri '%.200s' is too long or has a NUL or backslash", bi, uri);
-		rel[k++] = (char)ch;
-	}
-	rel[k] = '\0';
-	if (rel[0] == '/' || strchr(rel, ':') || !strcmp(rel, "..") || !strncmp(rel, "../", 3) || strstr(rel, "/../")
-	    || (k >= 3 && !strcmp(rel + k - 3, "/..")) || k == 0)
-		return mio_fail(g->c, "buffer %ld: uri '%.200s' is not a relative path below the file's directory (refused)", bi, uri);
-	if ((size_t)snprintf(path, sizeof path, "%s/%s", g->c->dir, rel) >= sizeof path)
-		return mio_fail(g->c, "buffer %ld: path too long", bi);
-	sub = *g->c;
-	if (mio_slurp(&sub, path, &b->data, &b->len) != 0)
-		return -1;
-	b->owned = 1;
-	g->inbytes += b->len;
-	if (g->inbytes > MESH_MAX_FILE)
-		return mio_fail(g->c, "buffer %ld: the external buffers total more than %zu bytes", bi, MESH_MAX_FILE);
-	return 0;
-}
-
-static int buffer(gltf *g, long long bi, const unsigned char **data, size_t *len)
-{
-	const cJSON *bo = top(g, "buffers", "buffer", bi), *u;
-	long long bl;
-	gbuf *b;
-	if (!bo)
-		return -1;
-	b = &g->bufs[bi];
-	if (jint(g, bo, "buffer", (long)bi, "byteLength", -1, 1, (long long)MESH_MAX_FILE, &bl) != 0)
-		return -1;
-	if (!b->state) {
-		u = item(bo, "uri");
-		if (u && !cJSON_IsString(u))
-			return mio_fail(g->c, "buffer %lld: 'uri' must be a string", bi);
-		if (!u) {
-			if (!g->glb || bi != 0)
-				return mio_fail(g->c, "buffer %lld has no uri (only buffer 0 of a .glb may refer to its BIN chunk)", bi);
-			if (!g->bin)
-				return mio_fail(g->c, "buffer 0 refers to the BIN chunk, but the .glb has none");
-			b->data = (unsigned char *)g->bin;
-			b->len = g->binlen;
-		} else if (!strncmp(u->valuestring, "data:", 5)) {
-			const char *s = strstr(u->valuestring, ";base64,");
-			if (!s || strchr(u->valuestring, ',') < s)
-				return mio_fail(g->c, "buffer %lld: a data: URI that is not base64", bi);
-			if (base64(g, (long)bi, s + 8, strlen(s + 8), b) != 0)
-				return -1;
-		} else if (external(g, (long)bi, u->valuestring, b) != 0)
-			return -1;
-		b->state = 1;
-	}
-	if ((unsigned long long)bl > b->len)
-		return mio_fail(g->c, "buffer %lld: byteLength %lld, but only %zu bytes are there", bi, bl, b->len);
-	*data = b->data;
-	*len = (size_t)bl;
-	return 0;
-}
-
-/* bufferView v: its bytes and stride (0 when not given). */
-static int view(gltf *g, long long vi, const unsigned char **data, size_t *len, size_t *stride)
-{
-	const cJSON *vo = top(g, "bufferViews", "bufferView", vi);
-	const unsigned char *bd = NULL;
-	size_t bl = 0;
-	long long b, off, n, st;
-	if (!vo || jint(g, vo, "bufferView", (long)vi, "buffer", -1, 0, 1 << 20, &b) != 0
-	    || jint(g, vo, "bufferView", (long)vi, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &off) != 0
-	    || jint(g, vo, "bufferView", (long)vi, "byteLength", -1, 1, (long long)MESH_MAX_FILE, &n) != 0
-	    || jint(g, vo, "bufferView", (long)vi, "byteStride", 0, 0, 252, &st) != 0)
-		return -1;
-	if (st && (st < 4 || st % 4))
-		return mio_fail(g->c, "bufferView %lld: byteStride %lld (must be a multiple of 4 in [4, 252])", vi, st);
-	if (buffer(g, b, &bd, &bl) != 0)
-		return -1;
-	if ((unsigned long long)off + (unsigned long long)n > bl)
-		return mio_fail(g->c, "bufferView %lld: bytes [%lld, %lld) outside buffer %lld (%zu bytes)", vi, off, off + n, b, bl);
-	*data = bd + off;
-	*len = (size_t)n;
-	*stride = (size_t)st;
-	return 0;
-}
-
-/* ---- accessors ---------------------------------------------------------- */
-
-static size_t csize(long long ct)
-{
-	return ct == GL_BYTE || ct == GL_UBYTE ? 1 : ct == GL_SHORT || ct == GL_USHORT ? 2 : 4;
-}
-
-/* One component, little-endian, converted exactly to double (normalized
-   integers decoded per the glTF spec). */
-static double comp(const unsigned char *p, long long ct, int norm)
-{
-	uint32_t u;
-	float f;
-	switch (ct) {
-	case GL_BYTE: {
-		int v = p[0] < 128 ? p[0] : (int)p[0] - 256;
-		return norm ? fmax(v / 127.0, -1.0) : v;
-	}
-	case GL_UBYTE: return norm ? p[0] / 255.0 : p[0];
-	case GL_SHORT: {
-		int v = (int)((unsigned)p[0] | (unsigned)p[1] << 8);
-		if (v >= 32768) v -= 65536;
-		return norm ? fmax(v / 32767.0, -1.0) : v;
-	}
-	case GL_USHORT: {
-		unsigned v = (unsigned)p[0] | (unsigned)p[1] << 8;
-		return norm ? v / 65535.0 : v;
-	}
-	case GL_UINT:
-		return (double)((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24);
-	default:
-		u = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-		memcpy(&f, &u, sizeof f);
-		return (double)f;
-	}
-}
-
-enum { ACC_NORMAL, ACC_POSITION, ACC_INDEX };
-
-/* Is componentType ct (normalized or not) allowed for this use? */
-static const char *ct_ok(int use, long long ct, int norm)
-{
-	if (use == ACC_NORMAL)
-		return ct == GL_FLOAT || ((ct == GL_BYTE || ct == GL_SHORT) && norm) ? NULL
-		       : "NORMAL must be FLOAT, or normalized BYTE or SHORT (KHR_mesh_quantization)";
-	if (use == ACC_POSITION)
-		return ct == GL_FLOAT || ct == GL_BYTE || ct == GL_UBYTE || ct == GL_SHORT || ct == GL_USHORT ? NULL
-		       : "POSITION must be FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT";
-	return (ct == GL_UBYTE || ct == GL_USHORT || ct == GL_UINT) && !norm ? NULL
-	       : "indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not normalized";
-}
-
-/* Copies count elements of nc components from (data, stride) into out,
-   after checking they fit in len bytes from offset. */
-static int span(gltf *g, const char *what, long long ai, const unsigned char *data, size_t len, size_t off,
-                size_t stride, size_t count, int nc, long long ct, int norm, double *out)
-{
-	const size_t es = (size_t)nc * csize(ct);
-	size_t i;
-	int k;
-	if (stride == 0)
-		stride = es;
-	if (stride < es)
-		return mio_fail(g->c, "accessor %lld: byteStride %zu is less than its element (%zu bytes)", ai, stride, es);
-	if (off > len || count > (len - off) / stride + 1 || (count && off + (count - 1) * stride + es > len))
-		return mio_fail(g->c, "accessor %lld: %s of %zu elements from byte %zu does not fit in its bufferView (%zu bytes)",
-		                ai, what, count, off, len);
-	for (i = 0; i < count; i++)
-		for (k = 0; k < nc; k++)
-			out[i * (size_t)nc + (size_t)k] = comp(data + off + i * stride + (size_t)k * csize(ct), ct, norm);
-	return 0;
-}
-
-static int sparse(gltf *g, long long ai, const cJSON *sp, size_t count, int nc, long long ct, int norm, double *out);
-
-/* Accessor ai for `use`: *count elements of 3 (or 1, for indices) doubles
-   in *out (malloc'ed).  *ctype: its componentType. */
-static int accessor(gltf *g, long long ai, int use, double **out, size_t *count, long long *ctype)
-{
-	static const char *uses[] = { "NORMAL", "POSITION", "indices" };
-	const cJSON *ao = top(g, "accessors", "accessor", ai), *ty, *nm, *sp;
-	long long bv, off, ct, n;
-	int norm, nc = use == ACC_INDEX ? 1 : 3;
-	const char *why;
-	size_t limit = (size_t)MESH_MAX_ITEMS;
-	*out = NULL;
-	if (!ao || jint(g, ao, "accessor", (long)ai, "bufferView", -2, -2, 1 << 30, &bv) != 0
-	    || jint(g, ao, "accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &off) != 0
-	    || jint(g, ao, "accessor", (long)ai, "componentType", -1, 5120, 5126, &ct) != 0
-	    || jint(g, ao, "accessor", (long)ai, "count", -1, 1, (long long)MESH_MAX_ITEMS, &n) != 0)
-		return -1;
-	ty = item(ao, "type");
-	nm = item(ao, "normalized");
-	if (nm && !cJSON_IsBool(nm))
-		return mio_fail(g->c, "accessor %lld: 'normalized' must be true or false", ai);
-	norm = cJSON_IsTrue(nm);
-	if (!cJSON_IsString(ty) || strcmp(ty->valuestring, use == ACC_INDEX ? "SCALAR" : "VEC3"))
-		return mio_fail(g->c, "accessor %lld (%s): type must be \"%s\"", ai, uses[use], use == ACC_INDEX ? "SCALAR" : "VEC3");
-	if ((why = ct_ok(use, ct, norm)) != NULL)
-		return mio_fail(g->c, "accessor %lld: componentType %lld%s: %s", ai, ct, norm ? " normalized" : "", why);
-	/* memory bounded by the input: at most 16 values per byte read */
-	if (g->inbytes < limit / 16)
-		limit = 16 * g->inbytes + 4096;
-	if ((size_t)n > limit)
-		return mio_fail(g->c, "accessor %lld: count %lld is more than this file can hold (%zu)", ai, n, limit);
-	*out = mio_calloc((size_t)n, (size_t)nc * sizeof **out);
-	if (!*out)
-		return mio_fail(g->c, "accessor %lld: out of memory for %lld elements", ai, n);
-	if (bv >= 0) {
-		const unsigned char *d;
-		size_t len, st;
-		if (view(g, bv, &d, &len, &st) != 0
-		    || span(g, "data", ai, d, len, (size_t)off, st, (size_t)n, nc, ct, norm, *out) != 0)
-			goto bad;
-	}
-	sp = item(ao, "sparse");
-	if (sp && sparse(g, ai, sp, (size_t)n, nc, ct, norm, *out) != 0)
-		goto bad;
-	*count = (size_t)n;
-	*ctype = ct;
-	return 0;
-bad:
-	free(*out);
-	*out = NULL;
-	return -1;
-}
-
-static int sparse(gltf *g, long long ai, const cJSON *sp, size_t count, int nc, long long ct, int norm, double *out)
-{
-	const cJSON *io = item(sp, "indices"), *vo = item(sp, "values");
-	long long n, ibv, ioff, ict, vbv, voff;
-	const unsigned char *d;
-	size_t len, st, i;
-	double *idx = NULL, *val = NULL;
-	int rc = -1;
-	if (!cJSON_IsObject(sp) || !cJSON_IsObject(io) || !cJSON_IsObject(vo))
-		return mio_fail(g->c, "accessor %lld: sparse needs objects 'indices' and 'values'", ai);
-	if (jint(g, sp, "sparse of accessor", (long)ai, "count", -1, 1, (long long)count, &n) != 0
-	    || jint(g, io, "sparse.indices of accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &ibv) != 0
-	    || jint(g, io, "sparse.indices of accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &ioff) != 0
-	    || jint(g, io, "sparse.indices of accessor", (long)ai, "componentType", -1, 5120, 5126, &ict) != 0
-	    || jint(g, vo, "sparse.values of accessor", (long)ai, "bufferView", -1, 0, 1 << 30, &vbv) != 0
-	    || jint(g, vo, "sparse.values of accessor", (long)ai, "byteOffset", 0, 0, (long long)MESH_MAX_FILE, &voff) != 0)
-		return -1;
-	if (ct_ok(ACC_INDEX, ict, 0))
-		return mio_fail(g->c, "accessor %lld: sparse indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT", ai);
-	idx = mio_calloc((size_t)n, sizeof *idx);
-	val = mio_calloc((size_t)n, (size_t)nc * sizeof *val);
-	if (!idx || !val) {
-		mio_fail(g->c, "accessor %lld: out of memory", ai);
-		goto out;
-	}
-	/* byteStride does not apply to sparse data: tightly packed */
-	if (view(g, ibv, &d, &len, &st) != 0 || span(g, "sparse indices", ai, d, len, (size_t)ioff, 0, (size_t)n, 1, ict, 0, idx) != 0
-	    || view(g, vbv, &d, &len, &st) != 0 || span(g, "sparse values", ai, d, len, (size_t)voff, 0, (size_t)n, nc, ct, norm, val) != 0)
-		goto out;
-	for (i = 0; i < (size_t)n; i++) {
-		if (!(idx[i] < (double)count) || (i && !(idx[i] > idx[i - 1]))) {
-			mio_fail(g->c, "accessor %lld: sparse index %zu is %.0f (indices must increase and be below count %zu)", ai, i, idx[i], count);
-			goto out;
-		}
-		memcpy(out + (size_t)idx[i] * (size_t)nc, val + i * (size_t)nc, (size_t)nc * sizeof *val);
-	}
-	rc = 0;
-out:
-	free(idx);
-	free(val);
-	return rc;
-}
+#include "mesh/gltf_int.h"
 
 /* ---- the normals of one primitive ---------------------------------------- */
 
@@ -574,7 +152,7 @@ typedef struct {
    without NORMAL, nothing to read). */
 static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_out *po)
 {
-	const cJSON *at = item(pr, "attributes"), *ext = item(pr, "extensions");
+	const cJSON *at = gl_item(pr, "attributes"), *ext = gl_item(pr, "extensions");
 	long long mode, ni, psi, ii, ct;
 	double *pos = NULL, *idx = NULL;
 	size_t np = 0, nidx = 0, nv, i;
@@ -583,24 +161,24 @@ static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_
 	memset(po, 0, sizeof po[0]);
 	if (!cJSON_IsObject(pr) || !cJSON_IsObject(at))
 		return mio_fail(g->c, "mesh %lld primitive %lld: not an object with an 'attributes' object", mi, pi);
-	if (item(ext, "KHR_draco_mesh_compression") || item(ext, "EXT_meshopt_compression"))
+	if (gl_item(ext, "KHR_draco_mesh_compression") || gl_item(ext, "EXT_meshopt_compression"))
 		return mio_fail(g->c, "mesh %lld primitive %lld: compressed geometry (Draco or meshopt) is not supported", mi, pi);
-	if (jint(g, pr, "mesh primitive", (long)pi, "mode", 4, 0, 6, &mode) != 0
-	    || jint(g, at, "mesh primitive", (long)pi, "NORMAL", -2, -2, 1 << 30, &ni) != 0
-	    || jint(g, at, "mesh primitive", (long)pi, "POSITION", -2, -2, 1 << 30, &psi) != 0
-	    || jint(g, pr, "mesh primitive", (long)pi, "indices", -2, -2, 1 << 30, &ii) != 0)
+	if (gl_jint(g, pr, "mesh primitive", (long)pi, "mode", 4, 0, 6, &mode) != 0
+	    || gl_jint(g, at, "mesh primitive", (long)pi, "NORMAL", -2, -2, 1 << 30, &ni) != 0
+	    || gl_jint(g, at, "mesh primitive", (long)pi, "POSITION", -2, -2, 1 << 30, &psi) != 0
+	    || gl_jint(g, pr, "mesh primitive", (long)pi, "indices", -2, -2, 1 << 30, &ii) != 0)
 		return -1;
 	if (psi >= 0) {
 		size_t bad = 0;
-		if (accessor(g, psi, ACC_POSITION, &pos, &np, &ct) != 0)
+		if (gl_accessor(g, psi, ACC_POSITION, &pos, &np, &ct) != 0)
 			goto out;
 		for (i = 0; i < 3 * np; i++)
 			bad += !isfinite(pos[i]);
 		if (bad)
-			warn(g, "mesh %lld primitive %lld: %zu POSITION values are not finite", mi, pi, bad);
+			gl_warn(g, "mesh %lld primitive %lld: %zu POSITION values are not finite", mi, pi, bad);
 	}
 	if (ni >= 0) {
-		if (accessor(g, ni, ACC_NORMAL, &po->nrm, &po->n, &ct) != 0)
+		if (gl_accessor(g, ni, ACC_NORMAL, &po->nrm, &po->n, &ct) != 0)
 			goto out;
 		g->ntypes |= ct == GL_FLOAT ? 1 : 2;
 		if (psi >= 0 && np != po->n) {
@@ -610,7 +188,7 @@ static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_
 	}
 	nv = psi >= 0 ? np : po->n;
 	if (ii >= 0) {
-		if (accessor(g, ii, ACC_INDEX, &idx, &nidx, &ct) != 0)
+		if (gl_accessor(g, ii, ACC_INDEX, &idx, &nidx, &ct) != 0)
 			goto out;
 		for (i = 0; i < nidx; i++)
 			if (!(idx[i] < (double)nv)) {
@@ -620,7 +198,7 @@ static int primitive(gltf *g, long long mi, long long pi, const cJSON *pr, prim_
 	}
 	g->m->nvertices += nv;
 	if (mode == 4 && (ii >= 0 ? nidx : nv) % 3)
-		warn(g, "mesh %lld primitive %lld: %zu vertices for TRIANGLES is not a multiple of 3 (the last %zu ignored)", mi, pi,
+		gl_warn(g, "mesh %lld primitive %lld: %zu vertices for TRIANGLES is not a multiple of 3 (the last %zu ignored)", mi, pi,
 		     ii >= 0 ? nidx : nv, (ii >= 0 ? nidx : nv) % 3);
 	if (ni < 0 && psi >= 0 && mode >= 4) {
 		size_t nc = ii >= 0 ? nidx : np, nt;
@@ -652,7 +230,7 @@ static double rd(int prec, double x) { return prec == PREC_FLOAT ? (double)(floa
    rotation and scale (translation does not act on normals). */
 static int local(gltf *g, long long ni, const cJSON *no, int prec, double *m)
 {
-	const cJSON *mt = item(no, "matrix"), *r = item(no, "rotation"), *s = item(no, "scale");
+	const cJSON *mt = gl_item(no, "matrix"), *r = gl_item(no, "rotation"), *s = gl_item(no, "scale");
 	double q[4] = { 0, 0, 0, 1 }, sc[3] = { 1, 1, 1 }, a[16];
 	int k, c;
 	const cJSON *arrs[3] = { mt, r, s };
@@ -741,9 +319,9 @@ static uint64_t tag_of(long long owner, long long pi)
    appended with owner (mesh or node) in their places. */
 static int mesh_into(gltf *g, long long mi, const double *nt, long long owner)
 {
-	const cJSON *mo = top(g, "meshes", "mesh", mi), *ps, *pr;
+	const cJSON *mo = gl_top(g, "meshes", "mesh", mi), *ps, *pr;
 	long long pi = 0;
-	if (!mo || jarr(g, mo, "mesh", (long)mi, "primitives", &ps) != 0)
+	if (!mo || gl_jarr(g, mo, "mesh", (long)mi, "primitives", &ps) != 0)
 		return -1;
 	if (!ps)
 		return mio_fail(g->c, "mesh %lld has no 'primitives'", mi);
@@ -788,7 +366,7 @@ static int node_graph(gltf *g, const cJSON *nodes, int nn, int *parent)
 			mio_fail(g->c, "node %d is not a JSON object", i);
 			goto out;
 		}
-		if (jarr(g, no, "node", i, "children", &ch) != 0 || jint(g, no, "node", i, "mesh", -2, -2, 1 << 30, &mi) != 0)
+		if (gl_jarr(g, no, "node", i, "children", &ch) != 0 || gl_jint(g, no, "node", i, "mesh", -2, -2, 1 << 30, &mi) != 0)
 			goto out;
 		cJSON_ArrayForEach(e, ch) {
 			double d = e->valuedouble;
@@ -834,7 +412,7 @@ static int scene_roots(gltf *g, int nn, const int *parent, int *roots, int *nr)
 	long long si;
 	int i;
 	*nr = 0;
-	if (jarr(g, g->root, "", -1, "scenes", &scs) != 0 || jint(g, g->root, "the file", -1, "scene", -2, -2, 1 << 30, &si) != 0)
+	if (gl_jarr(g, g->root, "", -1, "scenes", &scs) != 0 || gl_jint(g, g->root, "the file", -1, "scene", -2, -2, 1 << 30, &si) != 0)
 		return -1;
 	if (si < 0 && (!scs || cJSON_GetArraySize(scs) == 0)) {
 		for (i = 0; i < nn; i++)
@@ -842,8 +420,8 @@ static int scene_roots(gltf *g, int nn, const int *parent, int *roots, int *nr)
 				roots[(*nr)++] = i;
 		return 0;
 	}
-	so = top(g, "scenes", "scene", si < 0 ? 0 : si);
-	if (!so || jarr(g, so, "scene", (long)(si < 0 ? 0 : si), "nodes", &sn) != 0)
+	so = gl_top(g, "scenes", "scene", si < 0 ? 0 : si);
+	if (!so || gl_jarr(g, so, "scene", (long)(si < 0 ? 0 : si), "nodes", &sn) != 0)
 		return -1;
 	cJSON_ArrayForEach(e, sn) {
 		double d = e->valuedouble;
@@ -872,7 +450,7 @@ static int world(gltf *g, const cJSON *nodes, int nn, const int *parent, const i
 		stk[sp++] = roots[r];
 		while (sp > 0) {
 			const int i = stk[--sp];
-			const cJSON *no = cJSON_GetArrayItem(nodes, i), *ch = item(no, "children"), *e;
+			const cJSON *no = cJSON_GetArrayItem(nodes, i), *ch = gl_item(no, "children"), *e;
 			double loc[9], nt[9];
 			long long mi;
 			if (local(g, i, no, prec, loc) != 0)
@@ -881,7 +459,7 @@ static int world(gltf *g, const cJSON *nodes, int nn, const int *parent, const i
 				mul3(prec, &mat[9 * (size_t)parent[i]], loc, &mat[9 * (size_t)i]);
 			else
 				memcpy(&mat[9 * (size_t)i], loc, sizeof loc);
-			if (jint(g, no, "node", i, "mesh", -2, -2, 1 << 30, &mi) != 0)
+			if (gl_jint(g, no, "node", i, "mesh", -2, -2, 1 << 30, &mi) != 0)
 				goto out;
 			if (mi >= 0) {
 				inv_t(prec, &mat[9 * (size_t)i], nt);
@@ -950,22 +528,22 @@ static int geo_room(gltf *g, geo_acc *a, size_t nv, size_t nt)
    for a vertex no triangle uses) and triangles, appended to a. */
 static int geo_prim(gltf *g, long long mi, long long pi, const cJSON *pr, geo_acc *a)
 {
-	const cJSON *at = item(pr, "attributes");
+	const cJSON *at = gl_item(pr, "attributes");
 	long long mode, psi, ii, ct;
 	double *pos = NULL, *idx = NULL;
 	size_t np = 0, nidx = 0, nt, i;
 	uint32_t *tri = NULL;
 	prim_out po;
 	int rc = -1;
-	if (jint(g, pr, "mesh primitive", (long)pi, "mode", 4, 0, 6, &mode) != 0
-	    || jint(g, at, "mesh primitive", (long)pi, "POSITION", -2, -2, 1 << 30, &psi) != 0
-	    || jint(g, pr, "mesh primitive", (long)pi, "indices", -2, -2, 1 << 30, &ii) != 0)
+	if (gl_jint(g, pr, "mesh primitive", (long)pi, "mode", 4, 0, 6, &mode) != 0
+	    || gl_jint(g, at, "mesh primitive", (long)pi, "POSITION", -2, -2, 1 << 30, &psi) != 0
+	    || gl_jint(g, pr, "mesh primitive", (long)pi, "indices", -2, -2, 1 << 30, &ii) != 0)
 		return -1;
 	if (psi < 0 || mode < 4)
 		return 0; /* nothing to draw */
 	if (primitive(g, mi, pi, pr, &po) != 0)
 		return -1;
-	if (accessor(g, psi, ACC_POSITION, &pos, &np, &ct) != 0 || (ii >= 0 && accessor(g, ii, ACC_INDEX, &idx, &nidx, &ct) != 0))
+	if (gl_accessor(g, psi, ACC_POSITION, &pos, &np, &ct) != 0 || (ii >= 0 && gl_accessor(g, ii, ACC_INDEX, &idx, &nidx, &ct) != 0))
 		goto out;
 	tri = mio_calloc(ii >= 0 ? nidx : np, 3 * sizeof *tri);
 	if (!tri) {
@@ -1004,9 +582,9 @@ static int read_geom(gltf *g, mesh_geom *geom)
 	long long mi;
 	memset(&a, 0, sizeof a);
 	for (mi = 0; mi < (long long)g->m->nmeshes; mi++) {
-		const cJSON *mo = top(g, "meshes", "mesh", mi), *ps, *pr;
+		const cJSON *mo = gl_top(g, "meshes", "mesh", mi), *ps, *pr;
 		long long pi = 0;
-		if (!mo || jarr(g, mo, "mesh", (long)mi, "primitives", &ps) != 0)
+		if (!mo || gl_jarr(g, mo, "mesh", (long)mi, "primitives", &ps) != 0)
 			goto bad;
 		cJSON_ArrayForEach(pr, ps) {
 			if (geo_prim(g, mi, pi++, pr, &a) != 0)
@@ -1080,12 +658,12 @@ static int glb(gltf *g, const unsigned char *buf, size_t len, const unsigned cha
 /* asset.version 2.x, and no required extension that hides the geometry. */
 static int check_asset(gltf *g)
 {
-	const cJSON *as = item(g->root, "asset"), *v = item(as, "version"), *rq, *e;
+	const cJSON *as = gl_item(g->root, "asset"), *v = gl_item(as, "version"), *rq, *e;
 	if (!cJSON_IsObject(as) || !cJSON_IsString(v))
 		return mio_fail(g->c, "no asset.version: not a glTF 2.0 file (glTF 1.0 files are not read)");
 	if (strncmp(v->valuestring, "2.", 2))
 		return mio_fail(g->c, "glTF version '%.20s' is not read; only glTF 2.0 is", v->valuestring);
-	if (jarr(g, g->root, "", -1, "extensionsRequired", &rq) != 0)
+	if (gl_jarr(g, g->root, "", -1, "extensionsRequired", &rq) != 0)
 		return -1;
 	cJSON_ArrayForEach(e, rq)
 		if (cJSON_IsString(e) && (!strcmp(e->valuestring, "KHR_draco_mesh_compression")
@@ -1096,11 +674,11 @@ static int check_asset(gltf *g)
 
 static int read_all(gltf *g)
 {
-	const cJSON *nodes, *meshes = item(g->root, "meshes"), *bufs;
+	const cJSON *nodes, *meshes = gl_item(g->root, "meshes"), *bufs;
 	int nn, nr, *parent = NULL, *roots = NULL, rc = -1;
 	long long mi;
-	if (check_asset(g) != 0 || jarr(g, g->root, "", -1, "nodes", &nodes) != 0 || jarr(g, g->root, "", -1, "meshes", &meshes) != 0
-	    || jarr(g, g->root, "", -1, "buffers", &bufs) != 0)
+	if (check_asset(g) != 0 || gl_jarr(g, g->root, "", -1, "nodes", &nodes) != 0 || gl_jarr(g, g->root, "", -1, "meshes", &meshes) != 0
+	    || gl_jarr(g, g->root, "", -1, "buffers", &bufs) != 0)
 		return -1;
 	g->nbufs = bufs ? cJSON_GetArraySize(bufs) : 0;
 	g->bufs = mio_calloc((size_t)g->nbufs, sizeof *g->bufs);

@@ -62,10 +62,11 @@ if [ -n "${ONB_CI_MAKE_TEST_SECONDS:-}" ]; then
 "
 fi
 
-step sanitize 1200 sh -c 'make clean && make test SANITIZE=address,undefined'
+J=${JOBS:-2}
+step sanitize 1200 sh -c "make clean && make -j$J test-build SANITIZE=address,undefined && make test SANITIZE=address,undefined"
 grep -q '^make test: all passed' "$tmplog/sanitize.log" || { case " $failed " in *" sanitize "*) ;; *) failed="$failed sanitize";; esac; }
 # a plain build for valgrind (and for whoever runs ./onbstudy next)
-step build 600 sh -c 'make clean && make'
+step build 600 sh -c "make clean && make -j$J"
 mkdir -p "$L"
 mv "$tmplog/sanitize.log" "$tmplog/build.log" "$L/"
 

@@ -94,6 +94,12 @@ static void test_float_periodic(seed_kind k)
 		CHECK(dbits(other.bound) == dbits(base.bound), "%s: bound %a on eb %d..%d, %a on eb 1..2",
 		      seed_name(k), other.bound, ranges[r][0], ranges[r][1], base.bound);
 	}
+	if (k == SEED_INVSQRT_F) {   /* seed_bound_get scans eb 1..2 alone for this seed */
+		seed_bound g;
+		CHECK(seed_bound_get(k, &g) == 0 && dbits(g.bound) == dbits(base.bound) && g.worst_x == base.worst_x
+		      && g.x_lo == 0x1p-126 && g.x_hi == 0x1.fffffep127, "%s: seed_bound_get is not the eb 1..2 scan "
+		      "over every normal float", seed_name(k));
+	}
 	CHECK(base.worst <= base.bound && base.bound <= base.worst * (1 + 0x1p-47),
 	      "%s: worst %a, bound %a", seed_name(k), base.worst, base.bound);
 	for (uint64_t j = 0; j < 20000; j++) {
@@ -164,13 +170,16 @@ static void full_float(seed_kind k)
 	printf("%-9s worst x = %a, error %a (%.17g)\n", seed_name(k), b.worst_x, b.worst, b.worst);
 	printf("%-9s how: %s\n", seed_name(k), b.how);
 	printf("%-9s seed_bound_get: %.2f s for %u inputs on %d threads\n", seed_name(k), t1 - t0,
-	       (1u << 31) - (1u << 23), omp_get_max_threads());
+	       k == SEED_RSQRTSS ? (1u << 31) - (1u << 23) : 2u << 23, omp_get_max_threads());
 	CHECK(seed_scan_float(k, 1, 254, &c, &nonper) == 0, "scan failed");
 	CHECK(seed_scan_float(k, 1, 2, &base, NULL) == 0, "scan failed");
 	CHECK(nonper == 0, "%s: %llu seeds are not their base binade's scaled by 2^-k", seed_name(k),
 	      (unsigned long long)nonper);
 	CHECK(dbits(base.bound) == dbits(b.bound) && dbits(c.bound) == dbits(b.bound),
 	      "%s: full %a, eb 1..2 %a", seed_name(k), b.bound, base.bound);
+	CHECK(c.worst_x == b.worst_x && c.x_lo == b.x_lo && c.x_hi == b.x_hi,
+	      "%s: the full scan's worst x %a over [%a, %a], seed_bound_get's %a over [%a, %a]",
+	      seed_name(k), c.worst_x, c.x_lo, c.x_hi, b.worst_x, b.x_lo, b.x_hi);
 	printf("%-9s periodicity: %llu exceptions over every normal float (%.2f s with the check); "
 	       "eb 1..2 alone gives %a\n", seed_name(k), (unsigned long long)nonper,
 	       omp_get_wtime() - t1, base.bound);

@@ -4,7 +4,8 @@
 # scripts/install-deps.sh --test; a missing tool fails the step loudly.
 #   sh scripts/harden.sh [FUZZ_SECONDS]     (default 120 per harness)
 # Steps, in order (logs in build/harden/, durations in build/harden/steps.tsv):
-#   sanitize   make clean && make test SANITIZE=address,undefined
+#   sanitize   make clean && make -jN test-build SANITIZE=address,undefined && make test SANITIZE=...
+#              (the document and chart checks left out: the Makefile's SANITIZE_SKIP)
 #   build      make clean && make (the plain build that valgrind needs)
 #   fuzz       scripts/fuzz.sh FUZZ_SECONDS (mesh and gltf at once, then cli for a quarter of it)
 #   valgrind   memcheck of a short sweep and three short scene runs (OBJ, PLY, glTF)

@@ -159,9 +159,17 @@ static int complete_n(probe_env *e, double n[3], int b)
    would still land within a tiny part of an ulp of the double it came
    from, so one of the others is first moved by a random relative 2^-27 at
    most: the last component then moves by many of its ulps. */
+static int make_ur(probe_env *e, double rr, double z, double phi, double n[3]);
+
 static int make_u(probe_env *e, double z, double phi, double n[3])
 {
-	double rr = sqrt(fmax(0.0, (1.0 - z) * (1.0 + z)));
+	return make_ur(e, sqrt(fmax(0.0, (1.0 - z) * (1.0 + z))), z, phi, n);
+}
+
+/* The same with the distance rr = |(u.x, u.y)| from the z axis given
+   (near a pole, where z = +-sqrt(1 - rr^2) is +-1 in double). */
+static int make_ur(probe_env *e, double rr, double z, double phi, double n[3])
+{
 	int i, big = 0;
 	n[0] = rr * cos(phi);
 	n[1] = rr * sin(phi);
@@ -220,6 +228,33 @@ static void try_starts(probe_env *e)
 	}
 }
 
+/* Next to a pole the band's samples reach only 1 -+ z = 1e-3 of the
+   band's width, rr = |(x, y)| about 1e-5 in float; the kernels' own
+   pole thresholds lie below that (LuxCore's |(x, y)| < 1e-5: 168u in
+   float just under it) and so do the underflows of x^2 + y^2 in float.
+   So in a band that holds a pole, rr takes 4 values per decade from
+   there down to 1e-24 (float) or 1e-40 (double: below that rr^2 is
+   under the 2^-316 to which complete() decides the rounding of the
+   largest component, and each input would need cert_in_domain at 4400
+   bits), at the sector's axes, diagonals and middle. */
+static void pole_samples(probe_env *e, double plo, double phi_w)
+{
+	const cert_region *r = e->r;
+	const int south = r->nz_lo <= -1.0, north = r->nz_hi >= 1.0;
+	const double floor_r = e->prec == PREC_FLOAT ? 1e-24 : 1e-40;
+	double rr, d, b, n[3];
+	if (!south && !north)
+		return;
+	b = south ? 1.0 + r->nz_hi : 1.0 - r->nz_lo;
+	for (rr = sqrt(2e-3 * b); rr > floor_r; rr *= 0.5623413251903491) {   /* 10^-1/4 */
+		const double z = south ? -1.0 : 1.0;
+		for (d = ceil(r->phi_lo / 45.0) * 45.0; d < r->phi_hi; d += 45.0)
+			found_try(e, n, make_ur(e, rr, z, d * DEG, n) > 0);
+		found_try(e, n, make_ur(e, rr, z, plo + phi_w / 2, n) > 0);
+		found_try(e, n, make_ur(e, rr * pow(10.0, -0.25 * rnd01(e)), z, plo + phi_w * rnd01(e), n) > 0);
+	}
+}
+
 void found_sample(probe_env *e)
 {
 	const cert_region *r = e->r;
@@ -234,6 +269,7 @@ void found_sample(probe_env *e)
 	found_try_u(e, r->nz_hi, plo + phi_w / 2);
 	for (i = 0; i < e->o->samples; i++)
 		found_try_u(e, sample_z(r, rnd01(e)), plo + phi_w * rnd01(e));
+	pole_samples(e, plo, phi_w);
 	try_starts(e);
 }
 
@@ -328,6 +364,35 @@ static void neighbourhood(probe_env *e, const double n[3], int w)
 		}
 }
 
+/* A line search from n (screened defect d) along three directions of
+   the two smaller components (both alike: radial from the largest's
+   axis; each alone), by relative steps 1 +- 2^-k for k = 2..30, each
+   repeated while it pays: a defect that grows up to a threshold of the
+   kernel (LuxCore's |(x, y)| < 1e-5) is followed up to it, millions of
+   ulps away, where the ulp walks cannot reach. */
+static void line_search(probe_env *e, double n[3], double d)
+{
+	const int b = cert_biggest(n);
+	int dir, sg, k, known, tries = 0;
+	for (dir = 0; dir < 3; dir++)
+		for (sg = -1; sg <= 1; sg += 2)
+			for (k = 2; k <= 30 && tries < 400; k++) {
+				const double f = 1.0 + sg * ldexp(1.0, -k);
+				double m[3], v;
+				memcpy(m, n, sizeof m);
+				if (dir != 2)
+					m[(b + 1) % 3] = fmt_round(m[(b + 1) % 3] * f, e->prec);
+				if (dir != 1)
+					m[(b + 2) % 3] = fmt_round(m[(b + 2) % 3] * f, e->prec);
+				tries++;
+				if ((known = complete_n(e, m, b)) < 0 || !((v = found_try(e, m, known > 0)) > d))
+					continue;
+				d = v;
+				memcpy(n, m, sizeof m);
+				k--;   /* the same step once more */
+			}
+}
+
 /* The walks: from random inputs of the region (samples / 8 of them, at
    least 16; none unless `restarts`), then from each of the best inputs
    seen, then the neighbourhoods of the four best. */
@@ -359,6 +424,7 @@ void found_walks(probe_env *e, int restarts)
 			e->top[top] = tmp;
 		}
 		memcpy(best[0].n, e->top[j].n, sizeof best[0].n);
+		line_search(e, best[0].n, e->top[j].d);
 		neighbourhood(e, best[0].n, 5);
 	}
 }

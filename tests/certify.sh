@@ -83,6 +83,18 @@ awk -v a="$want" -v b="$got" 'BEGIN { exit !(a + 0 > 0 && (a - b) / a < 1e-3 && 
 data "$T/band/certify.csv" | awk -F, 'NR == 2 { first = ($3 == -1 && $4 == -0.9999) } NR > 1 { n++; if ($3 < -1 || $4 > -0.9999) out++ } END { exit !(first && n > 1 && !out) }' \
 	&& ok || bad "--band rows: $(data "$T/band/certify.csv" | head -3)"
 
+# 6b. --fma: the contracted kernels' rows (METHOD+fma, bounded with their
+#     contracted models) beside the plain ones, found <= bound; none for a
+#     method without a contracted model (said on stderr)
+if ./onbstudy certify --quick --quiet --fma --methods duff_branchless,rtow --precision float --band 0.3,0.6 --out "$T/fma" >/dev/null 2>"$T/fma.err"; then
+	data "$T/fma/certify.csv" | awk -F, '$1 == "duff_branchless+fma" { n++; if (!($7 + 0 >= $8 + 0 && $8 + 0 > 0)) b++ } $1 == "duff_branchless" { p++ } $1 == "rtow+fma" { r++ }
+		END { exit !(n > 0 && p == n && !b && !r) }' && ok || bad "--fma rows: $(data "$T/fma/certify.csv" | head -3)"
+elif grep -q 'no FMA' "$T/fma.err"; then
+	echo "  (no FMA on this CPU: --fma not checked)"
+else
+	bad "certify --fma failed: $(cat "$T/fma.err")"
+fi
+
 # 7. the charts of the quick run (scripts/certify-plot.sh), through the chart check
 if command -v gnuplot >/dev/null 2>&1; then
 	sh scripts/certify-plot.sh "$T/a" >/dev/null 2>"$T/plot.err" && ok || bad "certify-plot.sh failed: $(cat "$T/plot.err")"

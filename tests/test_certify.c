@@ -9,6 +9,9 @@
  * |x| = 0.9, |x| = |y|, |x| = |z| and |y| = |z| thresholds, the axes with
  * signed zeros, the n.z = +-0 seam and the approach to -x.
  * A model that drops, adds or moves one rounding fails here.
+ * The contracted models (cm_find_fma: the methods of cm_fma_names) are
+ * checked the same way against the study's --fma copies of their kernels
+ * (compiled with -mfma -ffp-contract=fast), where the CPU has FMA.
  */
 #include <math.h>
 #include <stdint.h>
@@ -17,6 +20,7 @@
 #include <string.h>
 #include "libonb/onb.h"
 #include "certify/models.h"
+#include "methods/kernels.h"
 #include "model/model_int.h"
 #include "inputs/rng.h"
 
@@ -134,6 +138,47 @@ static long check(const onb_method *m, const cm_method *cmm, int prec, long coun
 	return fail ? -1 : bad;
 }
 
+/* The contracted models against the --fma copies of their kernels. */
+static int check_fma(const char *only, long count, int *checked)
+{
+	int i, prec, fail = 0;
+	if (!fma_available()) {
+		printf("skip the contracted models: no FMA on this CPU or build\n");
+		return 0;
+	}
+	for (i = 0; cm_fma_names[i]; i++) {
+		const onb_method *m = onb_find(cm_fma_names[i]);
+		const cm_method *cmm = cm_find_fma(cm_fma_names[i]);
+		onb_method mf;
+		rotate_fn rot;
+		rotatef_fn rotf;
+		if (only && strcmp(only, cm_fma_names[i]) != 0)
+			continue;
+		if (!m || !cmm) {
+			printf("FAIL %s+fma: no method or contracted model\n", cm_fma_names[i]);
+			fail = 1;
+			continue;
+		}
+		mf = *m;
+		if (fma_lookup(m->name, &mf.basis, &mf.basisf, &rot, &rotf) != 0) {
+			printf("FAIL %s+fma: no --fma copy\n", m->name);
+			fail = 1;
+			continue;
+		}
+		for (prec = PREC_FLOAT; prec <= PREC_DOUBLE; prec++) {
+			long bad;
+			if (prec == PREC_DOUBLE && !mf.basis)
+				continue;
+			bad = check(&mf, cmm, prec, count);
+			(*checked)++;
+			printf("%s %-24s %-6s %ld inputs, %ld not bit-identical\n", bad ? "FAIL" : "ok  ",
+			       cm_fma_names[i], prec == PREC_FLOAT ? "float+fma" : "double+fma", count, bad);
+			fail |= bad != 0;
+		}
+	}
+	return fail;
+}
+
 /* argv[1]: inputs per method and precision; argv[2]: one method alone. */
 int main(int argc, char **argv)
 {
@@ -165,6 +210,7 @@ int main(int argc, char **argv)
 			fail |= bad != 0;
 		}
 	}
+	fail |= check_fma(only, count, &checked);
 	printf("%s: %d method-precision pairs, the models %s the kernels' bits\n",
 	       fail ? "FAIL" : "ok", checked, fail ? "do not reproduce" : "reproduce");
 	return fail;

@@ -31,6 +31,7 @@ typedef struct {
 	double band_lo, band_hi;
 	int quick;
 	int quiet;
+	int fma;                /* --fma: also the contracted kernels */
 	const char *starts;     /* --starts FILE[,FILE...] */
 } cert_cli;
 
@@ -44,7 +45,7 @@ static void usage(FILE *f)
 	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
 	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
 	"                        [--band LO,HI] [--starts FILE[,FILE...]] [--seed S]\n"
-	"                        [--quick] [--quiet]\n\n"
+	"                        [--fma] [--quick] [--quiet]\n\n"
 	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
 	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
 	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|):\n"
@@ -70,6 +71,9 @@ static void usage(FILE *f)
 	"                    nx,ny,nz or found_nx,found_ny,found_nz: a certify.csv or a\n"
 	"                    sweep's worst.csv): the found side also walks from those\n"
 	"                    of each method, precision and region\n"
+	"  --fma             also the methods' --fma copies (compiled with -mfma\n"
+	"                    -ffp-contract=fast), as METHOD+fma rows, where a contracted\n"
+	"                    rounding model exists (docs/certify.md lists which)\n"
 	"  --quick           budget 60, samples 150, 4 sectors: a run of under a minute\n");
 }
 
@@ -203,6 +207,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "tolerance", required_argument, NULL, 't' }, { "seed", required_argument, NULL, 'S' },
 		{ "quick", no_argument, NULL, 'q' }, { "quiet", no_argument, NULL, 'Q' },
 		{ "band", required_argument, NULL, 'B' }, { "starts", required_argument, NULL, 'T' },
+		{ "fma", no_argument, NULL, 'F' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args a;
@@ -237,6 +242,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'Q': c->quiet = 1; break;
 		case 'B': if (parse_band(a.arg, c)) goto bad; break;
 		case 'T': c->starts = a.arg; break;
+		case 'F': c->fma = 1; break;
 		default: goto bad;
 		}
 	}
@@ -396,6 +402,13 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 		fprintf(f, "# tolerance: %.17g\n", c->o.tolerance);
 	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
 	        c->o.budget, c->o.samples, c->o.target, c->sectors);
+	if (c->fma) {
+		int j;
+		fprintf(f, "# fma: METHOD+fma rows are the kernels compiled with -mfma -ffp-contract=fast, bounded with contracted models (");
+		for (j = 0; cm_fma_names[j]; j++)
+			fprintf(f, "%s%s", j ? " " : "", cm_fma_names[j]);
+		fprintf(f, "); the other methods' +fma copies have none and no rows\n");
+	}
 	if (c->band)
 		fprintf(f, "# band: %.17g <= n.z <= %.17g (the first row of each method is this band, not the sphere)\n",
 		        c->band_lo, c->band_hi);
@@ -457,13 +470,23 @@ int cmd_certify(int argc, char **argv)
 	study_out out;
 	if ((r = parse(argc, argv, &c)) != 0)
 		return r < 0 ? 0 : r;
-	if ((nk = kernels_select(c.methods, 0, ks, MAXK)) < 0)
+	if (c.fma && !fma_available()) {
+		study_error("--fma: this CPU or build has no FMA");
 		return ONB_EXIT_USAGE;
-	for (k = 0; k < nk; k++)
+	}
+	if ((nk = kernels_select(c.methods, c.fma, ks, MAXK)) < 0)
+		return ONB_EXIT_USAGE;
+	for (k = 0; k < nk; k++) {
+		if (ks[k].fma) {   /* no contracted model: said, and left out */
+			if (!(ms[k] = ks[k].m ? cm_find_fma(ks[k].m->name) : NULL) && !c.quiet && strcmp(c.methods, "all") != 0)
+				fprintf(stderr, "certify: %s: no contracted rounding model, not certified\n", ks[k].name);
+			continue;
+		}
 		if (!(ms[k] = ks[k].m ? cm_find(ks[k].m->name) : NULL) && strcmp(c.methods, "all") != 0) {
 			study_error("--methods: %s has no rounding model (its direction error is not certified)", ks[k].name);
 			return ONB_EXIT_USAGE;
 		}
+	}
 	if (c.starts && load_starts(&c))
 		return ONB_EXIT_USAGE;
 	for (p = 0; p < 2; p++)

@@ -3,16 +3,33 @@
  * (src/families/), with the method's parameters from its registry row.
  */
 #include <stddef.h>
+#include <string.h>
 #include "certify/models.h"
+#include "model/model_int.h"
 
 #define CM_ONE(m) + 1
 enum { CM_NMETHODS = 0 ONB_METHOD_LIST(CM_ONE) ONB_FLOAT_METHOD_LIST(CM_ONE) };
 #undef CM_ONE
 
 /* Filled on the first call (callers may be threads: under a lock). */
-static cm_method table[CM_NMETHODS];
+static cm_method table[CM_NMETHODS], table_fma[CM_NMETHODS];
 static size_t ntable;
 static int filled;
+
+/* The methods whose models follow GCC's contraction of their kernels
+   (MADD and ADDM in the family's model, where the --fma copy fuses):
+   tests/test_certify.c checks each against that copy bit for bit.  The
+   others have none (docs/certify.md says why). */
+const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", NULL };
+
+static int fma_modelled(const char *name)
+{
+	int i;
+	for (i = 0; cm_fma_names[i]; i++)
+		if (strcmp(cm_fma_names[i], name) == 0)
+			return 1;
+	return 0;
+}
 
 static void fill(void)
 {
@@ -26,6 +43,8 @@ static void fill(void)
 		table[ntable].fam = f;
 		table[ntable].nbranch = f->model_branches;
 		table[ntable].zero_any_n = f->zero_any_n(&ms[i]);
+		table_fma[ntable] = table[ntable];
+		table_fma[ntable].contract = fma_modelled(ms[i].name);
 		ntable++;
 	}
 	filled = 1;
@@ -49,7 +68,14 @@ const cm_method *cm_find(const char *name)
 	return r;
 }
 
+const cm_method *cm_find_fma(const char *name)
+{
+	const cm_method *m = cm_find(name);
+	return m && table_fma[m - table].contract ? &table_fma[m - table] : NULL;
+}
+
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6])
 {
+	c->contract = m->contract;
 	m->fam->model(c, P, m->m, n, out);
 }

@@ -18,11 +18,18 @@ typedef struct {
 	   and b1 whatever |n| is): where n is not unit at e = 0 (n.z given,
 	   mvf_box.has_zpoint) only the others need their centre Q(U, 0). */
 	unsigned zero_any_n;
+	int contract;              /* the model of the --fma copy (cm_find_fma)  */
 } cm_method;
 
 /* The model of registry method `name`, or NULL (frisvad_rotate has none
    yet: its direction error is not certified). */
 const cm_method *cm_find(const char *name);
+/* The model of the method's --fma copy (its kernel compiled with -mfma
+   -ffp-contract=fast: GCC fuses some a*b + c into one rounding), or NULL
+   where no contracted model has been written and checked bit for bit
+   against that copy (cm_fma_names lists those that have). */
+const cm_method *cm_find_fma(const char *name);
+extern const char *const cm_fma_names[];
 /* The kernel's operations on n, writing b1 (out[0..2]) and b2 (out[3..5])
    in precision P (PREC_FLOAT or PREC_DOUBLE). */
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6]);

@@ -72,8 +72,8 @@ static void model_listing(cm *c, int P, const cv n[3], cv out[6])
 	cv s = K(sg), ms = K(-sg), a, b;
 	a = DIV(K(-1.0), ADD(s, n[2]));
 	b = MUL(MUL(n[0], n[1]), a);
-	out[0] = ADD(K(1.0), MUL(MUL(MUL(s, n[0]), n[0]), a)); out[1] = MUL(s, b); out[2] = MUL(ms, n[0]);
-	out[3] = b; out[4] = ADD(s, MUL(MUL(n[1], n[1]), a)); out[5] = cm_neg(c, n[1]);
+	out[0] = ADDM(K(1.0), MUL(MUL(s, n[0]), n[0]), a); out[1] = MUL(s, b); out[2] = MUL(ms, n[0]);
+	out[3] = b; out[4] = ADDM(s, MUL(n[1], n[1]), a); out[5] = cm_neg(c, n[1]);
 }
 
 /* duff_wide: the float input widened, Listing 3 in double, each output

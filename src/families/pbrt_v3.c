@@ -42,20 +42,42 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 	kit_perp_cross(c, br ? 1 : 0, -1, n, r1, r2);   /* (-z, 0, x) or (0, z, -y) */
 }
 
+/* The --fma copy's cross product n x u in double as GCC 12 contracts it
+   (x86-64, -O3): b.x and b.y, vectorized, as p - fused q; b.z as fused
+   p - q. */
+static void cross_fma(cm *c, int P, const cv n[3], const cv u[3], cv b[3])
+{
+	b[0] = SUBM(MUL(n[1], u[2]), n[2], u[1]);
+	b[1] = SUBM(MUL(n[2], u[0]), n[0], u[2]);
+	b[2] = MSUB(n[0], u[1], MUL(n[1], u[0]));
+}
+
+/* x*x + z*z as written, or (contracted) x*x fused with the rounded z*z */
+static cv sum_sq(cm *c, int P, cv x, cv z)
+{
+	return c->contract ? MADD(x, x, MUL(z, z)) : ADD(MUL(x, x), MUL(z, z));
+}
+
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	cv inv, u[3], w[3], uw[3], b[3];
 	int i;
 	(void)m;
 	if (cm_branch_abs(c, 0, CM_GT, n[0], n[1])) {
-		inv = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[2], n[2]))));
+		inv = DIV(K(1.0), cm_sqrt(c, P, sum_sq(c, P, n[0], n[2])));
 		u[0] = MUL(cm_neg(c, n[2]), inv); u[1] = MUL(K(0.0), inv); u[2] = MUL(n[0], inv);
 	} else {
-		inv = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
+		inv = DIV(K(1.0), cm_sqrt(c, P, sum_sq(c, P, n[1], n[2])));
 		u[0] = MUL(K(0.0), inv); u[1] = MUL(n[2], inv); u[2] = MUL(cm_neg(c, n[1]), inv);
 	}
 	if (P == PREC_DOUBLE) {
-		mk_post_n_cross_u(c, P, n, u, K(1.0), out);
+		if (c->contract) {
+			for (i = 0; i < 3; i++)
+				out[i] = MUL(u[i], K(1.0));
+			cross_fma(c, P, n, out, out + 3);
+		} else {
+			mk_post_n_cross_u(c, P, n, u, K(1.0), out);
+		}
 		return;
 	}
 	for (i = 0; i < 3; i++) {  /* pbrt-v3's Cross: widened to double, then to float */

@@ -19,6 +19,10 @@ typedef struct mvf mvf;
 struct cm {
 	int backend;
 	int failed;
+	/* The kernel as compiled with FMA contraction (-mfma
+	   -ffp-contract=fast, the study's --fma copies): the models' MADD and
+	   ADDM are then one fused operation where GCC fuses them. */
+	int contract;
 	int n;                 /* CM_EXEC: values in use                     */
 	double x[CM_MAXV];     /* CM_EXEC: the values                        */
 	mvf *m;                /* CM_MVF: the interval arena                 */

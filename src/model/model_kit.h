@@ -18,6 +18,16 @@
 #define MUL(a, b) cm_mul(c, P, a, b)
 #define DIV(a, b) cm_div(c, P, a, b)
 #define K(v)      cm_cst(c, P == PREC_FLOAT ? (double)(float)(v) : (v))
+/* a*b + d (MADD), d + a*b (ADDM), a*b - d (MSUB) and d - a*b (SUBM) as
+   the kernel writes them: two
+   roundings, or, in a contracted model (c->contract: the kernel compiled
+   with -mfma -ffp-contract=fast), the one rounding of the fused a*b + d,
+   where GCC fuses it (tests/test_certify.c checks each contracted model
+   against the --fma copy of its kernel, bit for bit). */
+#define MADD(a, b, d) (c->contract ? cm_fma(c, P, a, b, d) : ADD(MUL(a, b), d))
+#define ADDM(d, a, b) (c->contract ? cm_fma(c, P, a, b, d) : ADD(d, MUL(a, b)))
+#define MSUB(a, b, d) (c->contract ? cm_fma(c, P, a, b, cm_neg(c, d)) : SUB(MUL(a, b), d))
+#define SUBM(d, a, b) (c->contract ? cm_fma(c, P, cm_neg(c, a), b, d) : SUB(d, MUL(a, b)))
 
 /* b = cross(p, q) as onb.h writes it: b.x = p.y*q.z - p.z*q.y, ... */
 static inline void mk_cross(cm *c, int P, const cv p[3], const cv q[3], cv b[3])
@@ -77,12 +87,12 @@ static inline void mk_frisvad(cm *c, int P, int sg, const cv n[3], cv out[6])
 	a = DIV(one, sg > 0 ? ADD(one, n[2]) : SUB(one, n[2]));
 	if (sg > 0) {
 		b = MUL(MUL(cm_neg(c, n[0]), n[1]), a);
-		out[0] = SUB(one, MUL(MUL(n[0], n[0]), a)); out[1] = b; out[2] = cm_neg(c, n[0]);
-		out[3] = b; out[4] = SUB(one, MUL(MUL(n[1], n[1]), a)); out[5] = cm_neg(c, n[1]);
+		out[0] = SUBM(one, MUL(n[0], n[0]), a); out[1] = b; out[2] = cm_neg(c, n[0]);
+		out[3] = b; out[4] = SUBM(one, MUL(n[1], n[1]), a); out[5] = cm_neg(c, n[1]);
 	} else {
 		b = MUL(MUL(n[0], n[1]), a);
-		out[0] = SUB(one, MUL(MUL(n[0], n[0]), a)); out[1] = cm_neg(c, b); out[2] = n[0];
-		out[3] = b; out[4] = SUB(MUL(MUL(n[1], n[1]), a), one); out[5] = cm_neg(c, n[1]);
+		out[0] = SUBM(one, MUL(n[0], n[0]), a); out[1] = cm_neg(c, b); out[2] = n[0];
+		out[3] = b; out[4] = MSUB(MUL(n[1], n[1]), a, one); out[5] = cm_neg(c, n[1]);
 	}
 }
 

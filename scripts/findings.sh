@@ -363,16 +363,31 @@ generate() {
 	function unit(p) { return p == "float" ? 2 ^ -24 : 2 ^ -53 }
 	function inu(v, p) { return v == "inf" ? "inf" : sprintf("%.4g", v / unit(p)) }
 	function ratio(b, f) { return (b == "inf" || f + 0 == 0) ? "-" : sprintf("%.3g", b / f) }
+	# the median over the regions (not the whole-sphere row, not singular
+	# ones) of bound / found, to 2 decimals ("-" when there is none)
+	function CMED(m, p,   n, r, i, f, v, nv, j, t) {
+		n = split(rows[CF_FILE], r, "\n"); nv = 0
+		for (i = 1; i <= n; i++) {
+			split(r[i], f, SUBSEP)
+			if (f[1] != m || f[2] != p || (f[3] == "-1" && f[4] == "1" && f[5] == "0" && f[6] == "360")) continue
+			if (CRT[r[i], "status"] == "singular" || CRT[r[i], "found"] + 0 <= 0) continue
+			t = CRT[r[i], "bound"] / CRT[r[i], "found"]
+			for (j = nv; j > 0 && v[j] > t; j--) v[j + 1] = v[j]   # insertion
+			v[j + 1] = t; nv++
+		}
+		if (!nv) return "-"
+		return sprintf("%.2f", nv % 2 ? v[(nv + 1) / 2] : (v[nv / 2] + v[nv / 2 + 1]) / 2)
+	}
 	function table_certify(   out, i, m, pp, p, k, line, any) {
-		out = "| method | float: found | bound | ratio | status | double: found | bound | ratio | status |\n|---|---:|---:|---:|---|---:|---:|---:|---|\n"
+		out = "| method | float: found | bound | ratio | median | status | double: found | bound | ratio | median | status |\n|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|\n"
 		for (i = 1; i <= ncm; i++) {
 			m = cmeth[i]; line = "| `" m "`"; any = 0
 			for (pp = 1; pp <= 2; pp++) {
 				p = pp == 1 ? "float" : "double"
 				k = m SUBSEP p SUBSEP "-1" SUBSEP "1" SUBSEP "0" SUBSEP "360"
-				if (!((k, "bound") in CRT)) { line = line " | | | | "; continue }
+				if (!((k, "bound") in CRT)) { line = line " | | | | | "; continue }
 				any = 1
-				line = line " | " inu(CRT[k, "found"], p) " | " (CRT[k, "status"] == "singular" ? "-" : inu(CRT[k, "bound"], p)) " | " (CRT[k, "status"] == "singular" ? "-" : ratio(CRT[k, "bound"], CRT[k, "found"])) " | " CRT[k, "status"]
+				line = line " | " inu(CRT[k, "found"], p) " | " (CRT[k, "status"] == "singular" ? "-" : inu(CRT[k, "bound"], p)) " | " (CRT[k, "status"] == "singular" ? "-" : ratio(CRT[k, "bound"], CRT[k, "found"])) " | " CMED(m, p) " | " CRT[k, "status"]
 			}
 			if (any) out = out line " |\n"
 		}

@@ -61,6 +61,15 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	} else {
 		v[0] = K(0.0); v[1] = cm_neg(c, n[2]); v[2] = n[1];
 	}
+	if (c->contract) {   /* the --fma copy: GCC 12 fuses by^2 into bx^2 + by^2 */
+		s = mk_rsq(c, P, ADD(MADD(v[1], v[1], MUL(v[0], v[0])), MUL(v[2], v[2])), m->norm);
+		for (i = 0; i < 3; i++)
+			out[3 + i] = MUL(v[i], s);
+		out[0] = SUBM(MUL(out[4], n[2]), out[5], n[1]);
+		out[1] = SUBM(MUL(out[5], n[0]), out[3], n[2]);
+		out[2] = MSUB(out[3], n[1], MUL(out[4], n[0]));
+		return;
+	}
 	s = mk_rsq(c, P, mk_dot3(c, P, v, v), m->norm);
 	for (i = 0; i < 3; i++)
 		out[3 + i] = MUL(v[i], s);

@@ -20,7 +20,7 @@ static int filled;
    (MADD and ADDM in the family's model, where the --fma copy fuses):
    tests/test_certify.c checks each against that copy bit for bit.  The
    others have none (docs/certify.md says why). */
-const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", NULL };
+const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", "stark", "stark_fixed", NULL };
 
 static int fma_modelled(const char *name)
 {

@@ -87,7 +87,17 @@ static void model_rule(cm *c, int P, int fixed, const cv n[3], cv out[6])
 	const int xm = xy & xz, ym = yz & !xm, zm = fixed ? !(xm | ym) : !(xm & ym);
 	cv e[3], p[3];
 	e[0] = K(xm ? 1.0 : 0.0); e[1] = K(ym ? 1.0 : 0.0); e[2] = K(zm ? 1.0 : 0.0);
-	mk_cross(c, P, n, e, p);
+	mk_cross(c, P, n, e, p);   /* products by 0 and 1: exact, fused or not */
+	if (c->contract) {   /* the --fma copy: GCC 12's fusions */
+		cv s = DIV(K(1.0), cm_sqrt(c, P, MADD(p[2], p[2], MADD(p[0], p[0], MUL(p[1], p[1])))));
+		int i;
+		for (i = 0; i < 3; i++)
+			out[i] = MUL(p[i], s);
+		out[3] = SUBM(MUL(n[1], out[2]), n[2], out[1]);
+		out[4] = SUBM(MUL(n[2], out[0]), n[0], out[2]);
+		out[5] = MSUB(n[0], out[1], MUL(n[1], out[0]));
+		return;
+	}
 	mk_post_n_cross_u(c, P, n, p, DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, p, p))), out);
 }
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6]) { (void)m; model_rule(c, P, 0, n, out); }

@@ -62,8 +62,12 @@ cap() { # cap ZTOP ZBOT N: a z-band of a UV sphere, smooth normals, as OBJ
 	    printf "f %d//%d %d//%d %d//%d\nf %d//%d %d//%d %d//%d\n", a, a, c, c, b, b, b, b, c, c, d, d } }'; }
 cap 1 0.2 6 > "$T/dome.obj"
 cap -0.99999 -1 6 > "$T/south.obj"
+# (under a sanitizer the south cap alone: it takes both paths, proven and
+# not, through the same code, and each scene proves all methods, minutes there)
+if [ -z "$SAN" ]; then
 ./onbstudy scene "$T/dome.obj" --certify --repeats 1 --out "$T/sd" > "$T/sd.out" 2>&1 || bad "scene --certify dome failed: $(tail -2 "$T/sd.out")"
 grep -q '^  frisvad  .*[0-9]  proven within E$' "$T/sd.out" && ok || bad "frisvad not proven on the dome: $(grep '^  frisvad ' "$T/sd.out")"
+fi
 ./onbstudy scene "$T/south.obj" --certify --repeats 1 --out "$T/ss" > "$T/ss.out" 2>&1 || bad "scene --certify south cap failed: $(tail -2 "$T/ss.out")"
 grep -q '^  frisvad  .* not proven within E$' "$T/ss.out" && ok || bad "frisvad proven near -z: $(grep '^  frisvad ' "$T/ss.out")"
 grep -q '^  duff  .*[0-9]  proven within E$' "$T/ss.out" && ok || bad "duff not proven near -z: $(grep '^  duff ' "$T/ss.out")"

@@ -137,6 +137,53 @@ static void input_warnings(const char *pn, const double n[3])
 		       "(onb_basis_checked normalizes it)\n", sqrt(l2));
 }
 
+/* One kernel on input n (precision p, named pn): its outputs, the
+   reference's and every metric, and whether a wider reference agrees. */
+static void eval_one(ref_ctx *rc, ref_ctx *rc2, long bits, const study_kernel *k, int p, const char *pn,
+                     const double n[3], const double lv[3])
+{
+	sample_metrics m, m2;
+	char why[256];
+	if (!kernel_runs(k, p)) {
+		printf("\n%s (%s): float only (no double version)\n", k->name, pn);
+		return;
+	}
+	ref_eval(rc, k, p, n, lv, 0, &m);
+	ref_eval(rc2, k, p, n, lv, 0, &m2);
+	printf("\n%s (%s), branch %d (%s)\n", k->name, pn, m.branch,
+	       branch_name(k, m.branch, why, sizeof why));
+	if (k->m) {
+		show3("b1", m.out);
+		show3("b2", m.out + 3);
+		show3("ref b1", m.ref);
+		show3("ref b2", m.ref + 3);
+	} else {
+		show3("w", m.out);
+		show3("ref w", m.ref);
+	}
+	printf("  |n|-1 of the input: %.6g\n", m.in_norm);
+	if (m.nonfinite) {
+		printf("  NON-FINITE output: no other metric\n");
+		return;
+	}
+	if (k->m) {
+		printf("  defects: |b1|-1 %.6g  |b2|-1 %.6g  b1.n %.6g  b2.n %.6g  b1.b2 %.6g  (max %.6g)\n",
+		       m.d[0], m.d[1], m.d[2], m.d[3], m.d[4], m.defect);
+		printf("  det(b1,b2,n) %.17g: %s for handedness %+d\n", m.det,
+		       m.wrong_hand ? "WRONG" : "right", k->m->handedness);
+	}
+	printf("  forward: max %.6g ulp (|exact| >= eps), max %.6g eps absolute, bits mean %.4g max %.4g\n",
+	       m.ulp_max, m.abs_eps_max, m.nbits ? m.bits_sum / m.nbits : 0.0, m.bits_max);
+	printf("  direction: w = (%a, %a, %a); | |w|-1 | %.6g, | w.n - z | %.6g\n",
+	       m.w[0], m.w[1], m.w[2], m.dir_norm, m.dir_cos);
+	printf("  floor (the exact formula rounded once): defect %.6g, | |w|-1 | %.6g, | w.n - z | %.6g\n",
+	       m.floor, m.floor_dir_norm, m.floor_dir_cos);
+	if (k->m && m.floor > 0.0)
+		printf("  defect / floor: %.6g\n", m.defect / m.floor);
+	if (!ref_agree(&m, &m2, why, sizeof why))
+		printf("  WARNING: the reference at %ld bits disagrees with %ld bits: %s\n", bits, bits + 64, why);
+}
+
 int cmd_eval(int argc, char **argv)
 {
 	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
@@ -173,48 +220,8 @@ int cmd_eval(int argc, char **argv)
 					printf("   note: component %d rounded to %s: %.17g -> %a\n", i, pn, in[i], n[i]);
 			input_warnings(pn, n);
 			printf("   local direction for the direction error: (%a, %a, %a)\n", lv[0], lv[1], lv[2]);
-			for (k = 0; k < nk; k++) {
-				sample_metrics m, m2;
-				char why[256];
-				if (!kernel_runs(&ks[k], p)) {
-					printf("\n%s (%s): float only (no double version)\n", ks[k].name, pn);
-					continue;
-				}
-				ref_eval(rc, &ks[k], p, n, lv, 0, &m);
-				ref_eval(rc2, &ks[k], p, n, lv, 0, &m2);
-				printf("\n%s (%s), branch %d (%s)\n", ks[k].name, pn, m.branch,
-				       branch_name(&ks[k], m.branch, why, sizeof why));
-				if (ks[k].m) {
-					show3("b1", m.out);
-					show3("b2", m.out + 3);
-					show3("ref b1", m.ref);
-					show3("ref b2", m.ref + 3);
-				} else {
-					show3("w", m.out);
-					show3("ref w", m.ref);
-				}
-				printf("  |n|-1 of the input: %.6g\n", m.in_norm);
-				if (m.nonfinite) {
-					printf("  NON-FINITE output: no other metric\n");
-					continue;
-				}
-				if (ks[k].m) {
-					printf("  defects: |b1|-1 %.6g  |b2|-1 %.6g  b1.n %.6g  b2.n %.6g  b1.b2 %.6g  (max %.6g)\n",
-					       m.d[0], m.d[1], m.d[2], m.d[3], m.d[4], m.defect);
-					printf("  det(b1,b2,n) %.17g: %s for handedness %+d\n", m.det,
-					       m.wrong_hand ? "WRONG" : "right", ks[k].m->handedness);
-				}
-				printf("  forward: max %.6g ulp (|exact| >= eps), max %.6g eps absolute, bits mean %.4g max %.4g\n",
-				       m.ulp_max, m.abs_eps_max, m.nbits ? m.bits_sum / m.nbits : 0.0, m.bits_max);
-				printf("  direction: w = (%a, %a, %a); | |w|-1 | %.6g, | w.n - z | %.6g\n",
-				       m.w[0], m.w[1], m.w[2], m.dir_norm, m.dir_cos);
-				printf("  floor (the exact formula rounded once): defect %.6g, | |w|-1 | %.6g, | w.n - z | %.6g\n",
-				       m.floor, m.floor_dir_norm, m.floor_dir_cos);
-				if (ks[k].m && m.floor > 0.0)
-					printf("  defect / floor: %.6g\n", m.defect / m.floor);
-				if (!ref_agree(&m, &m2, why, sizeof why))
-					printf("  WARNING: the reference at %ld bits disagrees with %ld bits: %s\n", bits, bits + 64, why);
-			}
+			for (k = 0; k < nk; k++)
+				eval_one(rc, rc2, bits, &ks[k], p, pn, n, lv);
 			printf("\n");
 		}
 		ref_free(rc);

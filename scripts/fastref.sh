@@ -35,7 +35,7 @@ cp "$W/bench/bench-reference.csv" "$DIR/bench-reference.csv"
 both() {
 	label=$1; out=$2; shift 2
 	{
-		echo "# issue 14: $label, --ref fast then --ref mpfr, one after the other (scripts/fastref.sh)"
+		echo "# the fast reference against MPFR: $label, --ref fast then --ref mpfr, one after the other (scripts/fastref.sh)"
 		echo "# revision: $rev; cpu: $cpu; $(nproc) cores"
 		echo "# command: $B sweep $* --ref R --quiet --out DIR"
 		for r in fast mpfr; do

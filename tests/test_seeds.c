@@ -195,7 +195,7 @@ int main(int argc, char **argv)
 	}
 	if (full) {
 		study_set_cmdline(argc, argv);
-		study_provenance(stdout, "test_seeds --full (seed bounds, issue 22)", SEED, omp_get_max_threads());
+		study_provenance(stdout, "test_seeds --full (the rsqrt seeds' bounds)", SEED, omp_get_max_threads());
 		printf("# rsqrtss cpu (CPUID): %s\n", seed_cpu());
 		full_float(SEED_RSQRTSS);
 		full_float(SEED_INVSQRT_F);

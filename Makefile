@@ -174,6 +174,10 @@ $(B)/common/output.o $(MAIN_OBJ): $(B)/rev.stamp
 FORCE:
 
 # The FMA copy of the kernels for `sweep --fma`: contraction on, on purpose.
+# Never instrumented: a sanitizer changes which products GCC contracts, and
+# certify --fma's models are checked bit-exact against this object as a
+# client's plain -ffp-contract=fast build compiles it (tests/test_certify).
+$(B)/methods/fma_kernels.o: SANFLAGS =
 ifeq ($(shell uname -m),x86_64)
 $(B)/methods/fma_kernels.o: XFLAGS = -mfma -ffp-contract=fast
 else

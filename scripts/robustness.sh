@@ -128,7 +128,7 @@ fuzzrow gltf "glTF 2.0 reader"
 fuzzrow cli "CLI parsers"
 echo "| Fuzz regressions | inputs kept in tests/fuzz/regressions/, replayed with the seed corpus by make test (tests/fuzz_regress.sh) | $nreg kept |"
 echo "| make test SANITIZE=address,undefined | the suite under ASan and UBSan (-fno-sanitize-recover=all), less the document checks (SANITIZE_SKIP) | $san |"
-echo "| valgrind memcheck | sweep --samples 256 --exhaustive-count 256 --grid 4x8 (all methods, 2 threads); scene on an OBJ, a big-endian PLY and a glTF (--world) | $vg |"
+echo "| valgrind memcheck | sweep --samples 64 --exhaustive-count 64 --grid 4x8 over every distribution but threshold (all methods, 2 threads) and over threshold (frisvad, duff, hughes_moeller); scene on an OBJ, a big-endian PLY and a glTF (--world) | $vg |"
 echo "| cppcheck src/lib | --enable=warning,style,performance,portability --force (every #ifdef configuration) | $cp |"
 echo "| Strict warnings | src/lib with -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror |$wst |"
 echo

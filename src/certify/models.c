@@ -20,7 +20,9 @@ static int filled;
    (MADD and ADDM in the family's model, where the --fma copy fuses):
    tests/test_certify.c checks each against that copy bit for bit.  The
    others have none (docs/certify.md says why). */
-const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", "stark", "stark_fixed", NULL };
+const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", "stark", "stark_fixed", "rtow",
+	"naive", "naive_invsqrt", "naive_rsqrt", "naive_rsqrt_nr", "naive_nonorm", "hughes_moeller_invsqrt", "hughes_moeller_rsqrt",
+	"hughes_moeller_rsqrt_nr", "hughes_moeller_nonorm", "q2rtx", "filament", "jolt_fma", "duff_wide", "duff_comp", "bullet", "eigen", "rp3d", "jolt", "luxcore", "physx", "physx_fixed", "mujoco", "embree", NULL };
 
 static int fma_modelled(const char *name)
 {

@@ -48,12 +48,12 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	cv a, k;
 	(void)m;
 	if (cm_branch_abs(c, 0, CM_GT, n[2], K(0x1.6a09e667f3bcdp-1))) {
-		a = ADD(MUL(n[1], n[1]), MUL(n[2], n[2]));
+		a = ADDM(MUL(n[1], n[1]), n[2], n[2]);   /* contracted: fma(z, z, y*y) */
 		k = DIV(K(1.0), cm_sqrt(c, P, a));
 		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), k); out[2] = MUL(n[1], k);
 		out[3] = MUL(a, k); out[4] = MUL(cm_neg(c, n[0]), out[2]); out[5] = MUL(n[0], out[1]);
 	} else {
-		a = ADD(MUL(n[0], n[0]), MUL(n[1], n[1]));
+		a = MADD(n[0], n[0], MUL(n[1], n[1]));   /* contracted: fma(x, x, y*y) */
 		k = DIV(K(1.0), cm_sqrt(c, P, a));
 		out[0] = MUL(cm_neg(c, n[1]), k); out[1] = MUL(n[0], k); out[2] = K(0.0);
 		out[3] = MUL(cm_neg(c, n[2]), out[1]); out[4] = MUL(n[2], out[0]); out[5] = MUL(a, k);

@@ -56,14 +56,14 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	(void)m;
 	cm_formula_exact_n(c, 0, 1u << CQ_N2);   /* b1 unit and orthogonal to n, b2 = n x b1 */
 	if (cm_branch_abs(c, 0, CM_GT, n[0], zp) || cm_branch_abs(c, 1, CM_GT, n[1], zp)) {
-		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[1], n[1]))));
+		r = DIV(K(1.0), cm_sqrt(c, P, MADD(n[0], n[0], MUL(n[1], n[1]))));
 		out[0] = MUL(cm_neg(c, n[1]), r); out[1] = MUL(n[0], r); out[2] = K(0.0);
 	} else {
-		r = DIV(K(1.0), cm_sqrt(c, P, ADD(MUL(n[1], n[1]), MUL(n[2], n[2]))));
+		r = DIV(K(1.0), cm_sqrt(c, P, ADDM(MUL(n[1], n[1]), n[2], n[2])));
 		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
 	}
 	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
-	mk_cross(c, P, n, out, out + 3);
+	mk_cross_fused(c, P, n, out, out + 3, "ssf");  /* contracted as GCC fuses them */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

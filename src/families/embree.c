@@ -72,12 +72,17 @@ static cv embree_rsqrt(cm *c, int P, cv x)
 	r = cm_div(c, PREC_FLOAT, cm_cst(c, 1.0), cm_sqrt(c, PREC_FLOAT, xf));
 #endif
 	r = cm_cvt(c, P, r);
+	if (c->contract)   /* GCC fuses 1.5*r into the sum */
+		return MADD(r, K(1.5), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r)));
 	return cm_newton_embree(c, P, x, r);   /* ADD(MUL(K(1.5), r), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r))) */
 }
 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	const cv zz = MUL(n[2], n[2]), d0 = ADD(zz, MUL(n[1], n[1])), d1 = ADD(zz, MUL(n[0], n[0]));
+	/* contracted, GCC fuses z*z into each sum */
+	const cv zz = MUL(n[2], n[2]);
+	const cv d0 = c->contract ? MADD(n[2], n[2], MUL(n[1], n[1])) : ADD(zz, MUL(n[1], n[1]));
+	const cv d1 = c->contract ? MADD(n[2], n[2], MUL(n[0], n[0])) : ADD(zz, MUL(n[0], n[0]));
 	cv u[3], q[3], s;
 	int i;
 	(void)m;
@@ -88,8 +93,8 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	for (i = 0; i < 3; i++)
 		out[i] = MUL(u[i], s);
-	mk_cross(c, P, n, out, q);
-	s = embree_rsqrt(c, P, mk_dot3(c, P, q, q));
+	mk_cross_fused(c, P, n, out, q, "ssf");
+	s = embree_rsqrt(c, P, mk_dot3_xf(c, P, q, q));
 	for (i = 0; i < 3; i++)
 		out[3 + i] = MUL(q[i], s);
 }

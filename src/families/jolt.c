@@ -62,7 +62,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = DIV(K(0.0), len); out[1] = DIV(n[2], len); out[2] = DIV(SUB(K(0.0), n[1]), len);
 	}
 	if (m->norm != ONB__WILD_FMA) {
-		mk_cross(c, P, n, out, out + 3);
+		mk_cross_fused(c, P, n, out, out + 3, P == PREC_FLOAT ? "fff" : "ssf");  /* as GCC fuses them (vectorized in double) */
 		return;
 	}
 	for (i = 0; i < 3; i++) {

@@ -61,7 +61,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 /* The comparison is with the double 1e-5, in either format. */
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	const cv len = cm_sqrt(c, P, ADD(MUL(n[0], n[0]), MUL(n[1], n[1])));
+	const cv len = cm_sqrt(c, P, MADD(n[0], n[0], MUL(n[1], n[1])));   /* contracted: fma(x, x, y*y) */
 	cv v[3];
 	(void)m;
 	if (cm_branch(c, 0, CM_LT, len, cm_cst(c, 1e-5))) {
@@ -73,7 +73,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	out[3] = MUL(v[0], K(1.0)); out[4] = MUL(v[1], K(1.0)); out[5] = MUL(v[2], K(1.0));
 	cm_formula_zero_after(c, (1u << CQ_D1N) | (1u << CQ_D12));   /* b1 = n x b2 */
-	mk_cross(c, P, n, out + 3, out);
+	mk_cross_fused(c, P, n, out + 3, out, "fsf");  /* contracted as GCC fuses them */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return 0; }

@@ -76,7 +76,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    (s >= 1e-15 on the unit sphere) */
 static void normalize(cm *c, int P, cv v[3])
 {
-	const cv inv = DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, v, v)));
+	const cv inv = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_xf(c, P, v, v)));
 	int i;
 	for (i = 0; i < 3; i++)
 		v[i] = MUL(v[i], inv);
@@ -97,11 +97,11 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	d = mk_dot3(c, P, w, e);
 	for (i = 0; i < 3; i++)
-		e[i] = SUB(e[i], MUL(w[i], d));
+		e[i] = SUBM(e[i], w[i], d);
 	normalize(c, P, e);
 	for (i = 0; i < 3; i++)
 		out[i] = e[i];
-	mk_cross(c, P, w, e, out + 3);
+	mk_cross_fused(c, P, w, e, out + 3, "fnn");  /* as GCC fuses it */
 }
 
 /* measured against n but built from n/|n|: all five */

@@ -70,17 +70,27 @@ static int exact_zero(const onb_method *m, int br) { (void)m; return 3 + br; }
 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	cv b[3], d, u[3];
+	cv b[3], d, u[3], s;
 	int i;
 	if (cm_branch(c, 0, CM_GT, n[0], K(0.9))) {
 		b[0] = K(0.0); b[1] = K(1.0); b[2] = K(0.0);
 	} else {
 		b[0] = K(1.0); b[1] = K(0.0); b[2] = K(0.0);
 	}
-	d = mk_dot3(c, P, b, n);
+	d = mk_dot3(c, P, b, n);      /* contracted or not: its products are exact */
 	for (i = 0; i < 3; i++)
-		u[i] = SUB(b[i], MUL(n[i], d));
-	mk_post_n_cross_u(c, P, n, u, mk_rsq(c, P, mk_dot3(c, P, u, u), m->norm), out);
+		u[i] = SUBM(b[i], n[i], d);
+	if (m->norm == ONB__NORM_NONE) {  /* GCC vectorizes this one otherwise */
+		(void)mk_rsq(c, P, K(1.0), m->norm);  /* 1, and the formula's nonzero lengths */
+		for (i = 0; i < 3; i++)
+			out[i] = u[i];
+		mk_cross_fused(c, P, n, u, out + 3, "ssf");
+		return;
+	}
+	s = mk_rsq(c, P, mk_dot3_xf(c, P, u, u), m->norm);
+	for (i = 0; i < 3; i++)
+		out[i] = MUL(u[i], s);
+	mk_cross_fused(c, P, n, out, out + 3, "fff");
 }
 
 static unsigned zero_any_n(const onb_method *m) { return m->norm == ONB__NORM_NONE ? ZN_CROSS : ZN_NAIVE; }

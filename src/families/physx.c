@@ -73,7 +73,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    (m > 0 on the unit sphere) */
 static void normalize(cm *c, int P, cv v[3])
 {
-	const cv f = DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, v, v)));
+	const cv f = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_zf(c, P, v, v)));
 	int i;
 	for (i = 0; i < 3; i++)
 		v[i] = MUL(v[i], f);
@@ -85,7 +85,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[3] = K(0.0); out[4] = n[2]; out[5] = cm_neg(c, n[1]);
 		normalize(c, P, out + 3);
 		if (m->norm == ONB__WILD_FIXED) {
-			mk_cross(c, P, out + 3, n, out);
+			mk_cross_fused(c, P, out + 3, n, out, "ssf");  /* as GCC fuses it */
 		} else {   /* b1 = (1, 0, 0): b1.n = n.x, not 0 on the unit sphere */
 			cm_formula_nonzero(c, 1u << CQ_D1N);
 			out[0] = K(1.0); out[1] = K(0.0); out[2] = K(0.0);
@@ -94,7 +94,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = n[2]; out[1] = K(0.0); out[2] = cm_neg(c, n[0]);
 		normalize(c, P, out);
 		out[3] = MUL(n[1], out[2]);
-		out[4] = SUB(MUL(n[2], out[0]), MUL(n[0], out[2]));
+		out[4] = SUBM(MUL(n[2], out[0]), n[0], out[2]);
 		out[5] = MUL(cm_neg(c, n[1]), out[0]);
 	}
 }

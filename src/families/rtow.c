@@ -66,7 +66,7 @@ static void model(cm *c, int P, const onb_method *m, const cv w[3], cv out[6])
 	cv inv, uw[3], a[3], cr[3], il;
 	int i;
 	(void)m;
-	inv = DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, w, w)));
+	inv = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_xf(c, P, w, w)));
 	for (i = 0; i < 3; i++)
 		uw[i] = MUL(inv, w[i]);
 	if (cm_branch_abs(c, 0, CM_GT, uw[0], K(0.9))) {
@@ -75,10 +75,10 @@ static void model(cm *c, int P, const onb_method *m, const cv w[3], cv out[6])
 		a[0] = K(1.0); a[1] = K(0.0); a[2] = K(0.0);
 	}
 	mk_cross(c, P, uw, a, cr);
-	il = DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, cr, cr)));
+	il = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_xf(c, P, cr, cr)));
 	for (i = 0; i < 3; i++)
 		out[3 + i] = MUL(il, cr[i]);
-	mk_cross(c, P, uw, out + 3, out);
+	mk_cross_fused(c, P, uw, out + 3, out, "ssf");
 }
 
 /* measured against n but built from n/|n|: all five */

@@ -43,6 +43,54 @@ static inline cv mk_dot3(cm *c, int P, const cv p[3], const cv q[3])
 	return ADD(ADD(MUL(p[0], q[0]), MUL(p[1], q[1])), MUL(p[2], q[2]));
 }
 
+/* The contracted forms GCC gives (x*x + y*y) + z*z and a cross product
+   under -mfma -ffp-contract=fast, which differ from kernel to kernel (its
+   widening_mul pass fuses what the vectorizer left it; read with
+   -fdump-tree-widening_mul).  Plain (two roundings each) in a model
+   without contraction.  mk_dot3_xf: fma(z, z, fma(x, x, y*y)). */
+static inline cv mk_dot3_xf(cm *c, int P, const cv p[3], const cv q[3])
+{
+	if (!c->contract)
+		return mk_dot3(c, P, p, q);
+	return cm_fma(c, P, p[2], q[2], cm_fma(c, P, p[0], q[0], MUL(p[1], q[1])));
+}
+
+/* mk_dot3_zf: fma(z, z, x*x + y*y) */
+static inline cv mk_dot3_zf(cm *c, int P, const cv p[3], const cv q[3])
+{
+	if (!c->contract)
+		return mk_dot3(c, P, p, q);
+	return cm_fma(c, P, p[2], q[2], ADD(MUL(p[0], q[0]), MUL(p[1], q[1])));
+}
+
+/* cross(p, q) with, per component, the product GCC fuses: 'f' the first
+   (a*b - c*d as fma(a, b, -(c*d))), 's' the second (fma(-c, d, a*b)),
+   'n' none; plain in a model without contraction. */
+static inline void mk_cross_fused(cm *c, int P, const cv p[3], const cv q[3], cv b[3], const char *how)
+{
+	static const int i1[3] = { 1, 2, 0 }, i2[3] = { 2, 0, 1 };
+	int k;
+	for (k = 0; k < 3; k++) {
+		const cv a = p[i1[k]], bb = q[i2[k]], cc = p[i2[k]], d = q[i1[k]];
+		if (c->contract && how[k] == 'f')
+			b[k] = MSUB(a, bb, MUL(cc, d));
+		else if (c->contract && how[k] == 's')
+			b[k] = SUBM(MUL(a, bb), cc, d);
+		else
+			b[k] = SUB(MUL(a, bb), MUL(cc, d));
+	}
+}
+
+/* Newton's step y * (1.5 - (0.5*x*y)*y); contracted, GCC fuses the
+   last product into the subtraction (fma(-y, 0.5*x*y, 1.5)).  The plain
+   step keeps cm_newton's own enclosure. */
+static inline cv mk_newton(cm *c, int P, cv x, cv y)
+{
+	if (!c->contract)
+		return cm_newton(c, P, x, y);
+	return MUL(y, SUBM(K(1.5), y, MUL(MUL(x, K(0.5)), y)));
+}
+
 /* onb__rsq / onb__rsqf: the normalization variants (onb_method.norm).
    Newton's step y * (1.5 - 0.5*x*y*y) is Listing 3's (and InvSqrt's, with
    xhalf = 0.5*x computed first: the same products in the same order). */
@@ -50,7 +98,7 @@ static inline cv mk_rsq(cm *c, int P, cv x, int norm)
 {
 	switch (norm) {
 	case ONB__NORM_INVSQRT:
-		return cm_newton(c, P, x, cm_seed(c, P == PREC_FLOAT ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
+		return mk_newton(c, P, x, cm_seed(c, P == PREC_FLOAT ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
 	case ONB__NORM_RSQRT:
 	case ONB__NORM_RSQRT_NR: {
 		cv xf = P == PREC_FLOAT ? x : cm_cvt(c, PREC_FLOAT, x), y;
@@ -60,7 +108,7 @@ static inline cv mk_rsq(cm *c, int P, cv x, int norm)
 		y = cm_div(c, PREC_FLOAT, cm_cst(c, 1.0), cm_sqrt(c, PREC_FLOAT, xf));
 #endif
 		y = cm_cvt(c, P, y);
-		return norm == ONB__NORM_RSQRT ? y : cm_newton(c, P, x, y);
+		return norm == ONB__NORM_RSQRT ? y : mk_newton(c, P, x, y);
 	}
 	case ONB__NORM_NONE:
 		cm_formula_nonzero(c, CQ_LENGTHS);

@@ -83,11 +83,11 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	} else {
 		a[1] = ADD(n[0], n[2]); a[2] = SUB(cm_neg(c, n[1]), n[0]);
 	}
-	l = cm_sqrt(c, P, mk_dot3(c, P, a, a));
+	l = cm_sqrt(c, P, mk_dot3_xf(c, P, a, a));
 	out[0] = DIV(a[0], l); out[1] = DIV(a[1], l); out[2] = DIV(a[2], l);
 	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
 	if (m->norm != ONB__EVAL_FMSUB) {
-		mk_cross(c, P, n, out, out + 3);
+		mk_cross_fused(c, P, n, out, out + 3, "fff");  /* as GCC fuses it */
 		return;
 	}
 	out[3] = cm_fma(c, P, n[1], out[2], cm_neg(c, MUL(n[2], out[1])));

@@ -121,8 +121,8 @@ static void model_mitsuba3(cm *c, int P, const cv n[3], cv out[6])
 	cv s = K(sg), ms = K(-sg), a, b;
 	a = cm_neg(c, DIV(K(1.0), ADD(s, n[2])));
 	b = MUL(MUL(n[0], n[1]), a);
-	out[0] = ADD(MUL(s, MUL(MUL(n[0], n[0]), a)), K(1.0)); out[1] = MUL(s, b); out[2] = MUL(ms, n[0]);
-	out[3] = b; out[4] = ADD(MUL(n[1], MUL(n[1], a)), s); out[5] = cm_neg(c, n[1]);
+	out[0] = MADD(s, MUL(MUL(n[0], n[0]), a), K(1.0)); out[1] = MUL(s, b); out[2] = MUL(ms, n[0]);
+	out[3] = b; out[4] = MADD(n[1], MUL(n[1], a), s); out[5] = cm_neg(c, n[1]);
 }
 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])

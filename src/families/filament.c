@@ -94,6 +94,10 @@ static void model_fixed(cm *c, int P, const cv n[3], cv out[6])
 	if (lower) {
 		out[0] = o[4]; out[1] = o[5]; out[2] = o[3];
 		out[3] = cm_neg(c, o[1]); out[4] = cm_neg(c, o[2]); out[5] = cm_neg(c, o[0]);
+		/* contracted, -(1 - z*z*a) is fma(z*z, a, -1): the same value,
+		   but +0 where the negation gives -0 (a = 1 at z = +-1) */
+		if (c->contract)
+			out[5] = MSUB(MUL(p[0], p[0]), DIV(K(1.0), SUB(K(1.0), p[2])), K(1.0));
 		return;
 	}
 	out[0] = o[1]; out[1] = o[2]; out[2] = o[0];

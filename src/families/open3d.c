@@ -83,7 +83,9 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 static cv sqnorm(cm *c, int P, const cv v[3])
 {
 	if (P == PREC_DOUBLE)
-		return ADD(ADD(MUL(v[0], v[0]), MUL(v[1], v[1])), MUL(v[2], v[2]));
+		return mk_dot3_xf(c, P, v, v);
+	if (c->contract)   /* as GCC fuses it: fma(x, x, fma(y, y, z*z)) */
+		return MADD(v[0], v[0], MADD(v[1], v[1], MUL(v[2], v[2])));
 	return ADD(MUL(v[0], v[0]), ADD(MUL(v[1], v[1]), MUL(v[2], v[2])));
 }
 
@@ -112,7 +114,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = n[1]; out[1] = SUB(n[2], n[0]); out[2] = cm_neg(c, n[1]);
 	}
 	normalized(c, P, 1, out);
-	mk_cross(c, P, n, out, out + 3);
+	mk_cross_fused(c, P, n, out, out + 3, "ssf");  /* as GCC fuses it */
 	normalized(c, P, 2, out + 3);
 }
 

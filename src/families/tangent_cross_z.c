@@ -55,11 +55,11 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	int i;
 	(void)m;
 	t[0] = n[0]; t[1] = n[1]; t[2] = ADD(n[2], K(1.0));
-	mk_cross(c, P, n, t, cr);
-	l = cm_sqrt(c, P, mk_dot3(c, P, cr, cr));
+	mk_cross_fused(c, P, n, t, cr, "ffn");   /* as GCC fuses it: cr.z = x*y - y*x, one product CSE'd */
+	l = cm_sqrt(c, P, mk_dot3_xf(c, P, cr, cr));
 	for (i = 0; i < 3; i++)
 		out[3 + i] = DIV(cr[i], l);
-	mk_cross(c, P, n, out + 3, out);
+	mk_cross_fused(c, P, n, out + 3, out, "fff");
 }
 
 /* b1 and b2 swapped against stark's: b2 = p/|p| with p = n x t */

@@ -21,7 +21,7 @@ C="$T/a/certify.csv"
 
 # 1. the columns, and found <= bound wherever a bound is claimed
 head=$(data "$C" | head -1)
-[ "$head" = "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated" ] && ok || bad "header: $head"
+[ "$head" = "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated,found_lx,found_ly,found_lz" ] && ok || bad "header: $head"
 data "$C" | awk -F, 'NR > 1 && $12 != "singular" && !($7 + 0 >= $8 + 0) { print; n++ } END { exit n > 0 }' >"$T/inv" \
 	&& ok || bad "found above bound in $(wc -l <"$T/inv") rows: $(head -2 "$T/inv")"
 data "$C" | awk -F, 'NR > 1 && $12 !~ /^(proven|singular|budget)$/ { n++ } END { exit n > 0 }' && ok || bad "a status outside proven/singular/budget"
@@ -50,6 +50,25 @@ data "$C" | awk -F, 'NR > 1 && $1 == "frisvad" && $2 == "float" && $3 == -1 && $
 	e=$(./onbstudy eval --methods frisvad --precision float -- "$x" "$y" "$z" | awk '/defects:/ { print $NF }' | tr -d ')')
 	awk -v a="$e" -v b="$f" 'BEGIN { exit !(a + 0 > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
 } && ok || bad "frisvad's whole-sphere found input does not replay in eval"
+
+# 4b. frisvad_rotate: its direction error over (n, loc), next to -z (one
+#     sector: the band's regions at their quickest): found <= bound with
+#     a loc on every row, the study's measured direction errors below the
+#     bounds, and the whole band's found input replayed through eval --local
+./onbstudy certify --quick --quiet --sectors 1 --methods frisvad_rotate --band -1,-0.9999 --out "$T/rot" >/dev/null 2>"$T/rot.err" ||
+	bad "certify frisvad_rotate failed: $(cat "$T/rot.err")"
+data "$T/rot/certify.csv" | awk -F, 'NR > 1 { n++; if (!($7 + 0 >= $8 + 0 && $8 + 0 > 0 && $14 != "" && $12 != "singular")) b++ } END { exit !(n > 4 && !b) }' \
+	&& ok || bad "frisvad_rotate rows: $(data "$T/rot/certify.csv" | head -3)"
+build/tests/certify_check "$T/rot/certify.csv" results/reference/worst.csv results/poles/worst.csv \
+	results/poles/north/worst.csv results/poles/south/worst.csv >"$T/chk3" 2>&1 && ok || bad "frisvad_rotate: $(cat "$T/chk3")"
+for p in float double; do
+	data "$T/rot/certify.csv" | awk -F, -v p=$p 'NR > 1 && $2 == p && $3 == -1 && $4 == -0.9999 { print $9, $10, $11, $14 "," $15 "," $16, $8 }' | {
+		read -r x y z l f || exit 1
+		e=$(./onbstudy eval --methods frisvad_rotate --precision $p --local "$l" -- "$x" "$y" "$z" |
+		    awk '/^  direction:/ { a = $(NF - 6); b = $NF; print (a + 0 > b + 0 ? a : b) }')
+		awk -v a="$e" -v b="$f" 'BEGIN { exit !(a + 0 > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
+	} && ok || bad "frisvad_rotate's $p found input does not replay in eval --local"
+done
 
 # 5. scene --certify: the spherical triangles of a scene's vertex normals.
 #    A dome (n.z >= 0.2) proves frisvad within E = 1e-6; a cap around -z

@@ -125,23 +125,19 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	return mvf_failed(c->m) ? -1 : 1;
 }
 
-/* Where a gradient cannot be enclosed: the largest |Q| over the box from
-   the values alone (+inf when even they fail). */
-static double values_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
+/* Where a gradient cannot be enclosed: each quantity's interval over the
+   box from the values alone (the whole line when even they fail). */
+static void values_spans(cm *c, const cm_method *m, const mvf_box *x, unsigned path, span s[NCQ])
 {
 	cv q[NCQ];
-	double best = 0.0, d, unused;
-	span v;
-	int k;
-	if (run_path(c, m, x, path, MVF_VALUES, q) <= 0)
-		return INFINITY;
+	double unused;
+	int k, ok = run_path(c, m, x, path, MVF_VALUES, q) > 0;
 	for (k = 0; k < NCQ; k++) {
-		mvf_bounds(c->m, q[k], &v.lo, &v.hi, &unused);
-		d = quantity_bound(k, v);
-		if (!(d <= best))
-			best = d;
+		s[k].lo = -INFINITY;
+		s[k].hi = INFINITY;
+		if (ok)
+			mvf_bounds(c->m, q[k], &s[k].lo, &s[k].hi, &unused);
 	}
-	return isnan(best) ? INFINITY : best;
 }
 
 /* The centre Q(U, 0) of each quantity in `want` along `path`: the
@@ -175,28 +171,34 @@ static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 	return 1;
 }
 
-/* The bound along one feasible path (or -1 when infeasible): each quantity
-   in the intersection of its direct interval and its mean value form
+/* The signed enclosure s[k] of each quantity along one path (|b|^2 - 1
+   for the lengths), and nn of |n|^2 - 1 over the box: each quantity in
+   the intersection of its direct interval and its mean value form
    Q(U, 0) + [-1, 1] sum_k r_k max|dQ/de_k| (Q(U, 0) = 0 where the formula
-   is exact on the unit sphere along the path). */
-static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
+   is exact on the unit sphere along the path).  Returns 0 when the path
+   is infeasible for the box, else 1. */
+static int path_spans(cm *c, const cm_method *m, const mvf_box *x, unsigned path, span s[NCQ], span *nn)
 {
 	cv q[NCQ];
-	span direct[NCQ], centre[NCQ], nn;
-	double lin[NCQ], lin_e[NCQ], best = 0.0;
+	span direct[NCQ], centre[NCQ];
+	double lin[NCQ], lin_e[NCQ];
 	unsigned nonzero, zero_n, norm_n;
 	int k, known = 0, r = run_path(c, m, x, path, MVF_FULL, q);
 	if (r == 0)
-		return -1.0;
-	if (r < 0)
-		return values_bound(c, m, x, path);
+		return 0;
+	nn->lo = -INFINITY;
+	nn->hi = INFINITY;
+	if (r < 0) {
+		values_spans(c, m, x, path, s);
+		return 1;
+	}
 	for (k = 0; k < NCQ; k++) {
 		mvf_bounds(c->m, q[k], &direct[k].lo, &direct[k].hi, &lin[k]);
 		lin_e[k] = mvf_lin_arith(c->m, q[k]);
 		if (!mvf_input_grad_ok(c->m))
 			lin[k] = INFINITY;
 	}
-	mvf_norm_n(c->m, &nn.lo, &nn.hi);
+	mvf_norm_n(c->m, &nn->lo, &nn->hi);
 	zero_n = (m->zero_any_n | c->zero_n) & ~c->nonzero;
 	norm_n = c->norm_n & ~c->nonzero & ~zero_n;
 	nonzero = c->nonzero;   /* n.z given: n is not unit at e = 0 */
@@ -205,39 +207,141 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 	if (nonzero)
 		known = centre_bounds(c, m, x, path, nonzero, centre);
 	for (k = 0; k < NCQ; k++) {
-		span s = direct[k];
-		double v;
-		if (!(nonzero & (1u << k))) {
-			span zero = { 0.0, 0.0 };
-			s = meet(s, widen(zero, lin[k]));
-		} else if (known) {
-			s = meet(s, widen(centre[k], lin[k]));
-		}
+		const span zero = { 0.0, 0.0 };
+		s[k] = direct[k];
+		if (!(nonzero & (1u << k)))
+			s[k] = meet(s[k], widen(zero, lin[k]));
+		else if (known)
+			s[k] = meet(s[k], widen(centre[k], lin[k]));
 		/* exact in n: Q(n, e) = Q(n, 0) + sum over the arithmetic's terms,
 		   with Q(n, 0) = 0 or |n|^2 - 1 */
-		if (c->zero_late & ~c->nonzero & (1u << k)) {
-			span zero = { 0.0, 0.0 };
-			s = meet(s, widen(zero, mvf_lin_from(c->m, q[k], c->late_var)));
-		}
-		if (zero_n & (1u << k)) {
-			span zero = { 0.0, 0.0 };
-			s = meet(s, widen(zero, lin_e[k]));
-		} else if (norm_n & (1u << k)) {
-			s = meet(s, widen(nn, lin_e[k]));
-		}
-		v = quantity_bound(k, s);
+		if (c->zero_late & ~c->nonzero & (1u << k))
+			s[k] = meet(s[k], widen(zero, mvf_lin_from(c->m, q[k], c->late_var)));
+		if (zero_n & (1u << k))
+			s[k] = meet(s[k], widen(zero, lin_e[k]));
+		else if (norm_n & (1u << k))
+			s[k] = meet(s[k], widen(*nn, lin_e[k]));
+	}
+	return 1;
+}
+
+/* The bound on the defect along one path (-1 when infeasible). */
+static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned path)
+{
+	span s[NCQ], nn;
+	double best = 0.0;
+	int k;
+	if (!path_spans(c, m, x, path, s, &nn))
+		return -1.0;
+	for (k = 0; k < NCQ; k++) {
+		const double v = quantity_bound(k, s[k]);
 		if (!(v <= best))
 			best = v; /* NaN stays +inf below */
 	}
 	return isnan(best) ? INFINITY : best;
 }
 
+/* ---- frisvad_rotate: the direction error from its basis's defects ----
+   The kernel forms b1, b2 (the model: Frisvad's formula without a
+   threshold) and returns w_i = fl(fl(fl(x b1_i) + fl(y b2_i)) + fl(z n_i)),
+   loc = (x, y, z) a rounding of a unit vector.  With M = [b1 b2 n] and
+   G = M^T M, w = w* + e for w* = M loc, so
+     |w*|^2 - 1 = loc^T (G - I) loc + (|loc|^2 - 1),
+     w*.n - z   = x b1.n + y b2.n + z (|n|^2 - 1),
+   where G - I holds the five defect quantities (|b|^2 - 1 signed) and
+   |n|^2 - 1, each enclosed over the box; and, per component, with
+   fl(v) = v (1 + d) + h (|d| <= u, |h| <= eta for a product, h = 0 for a
+   sum), |e_i| <= (1 + u)^2 (u A_i + 3 eta) + u (1 + u) C_i + u |w*_i| with
+   A_i = |x b1_i| + |y b2_i| + |z n_i| and C_i = |x b1_i + y b2_i|.  Then
+   | |w| - 1 | <= | |w*| - 1 | + |e| and |w.n - z| <= |w*.n - z| + |e| |n|. */
+
+/* v rounded up for the few roundings to nearest it took (each a relative
+   2^-53 of a nonnegative partial result at most: far below 2^-45), with
+   an absolute margin for underflow. */
+static double up(double v) { return v * (1.0 + 0x1p-45) + 0x1p-1000; }
+
+static double mag(span s)
+{
+	const double a = fabs(s.lo), b = fabs(s.hi);
+	return isnan(a) || isnan(b) ? INFINITY : a > b ? a : b;
+}
+
+/* a + b + c with its roundings covered (signs mixed). */
+static double sum3_up(double a, double b, double c)
+{
+	return a + b + c + 0x1p-51 * (fabs(a) + fabs(b) + fabs(c)) + 0x1p-1000;
+}
+
+/* Bounds on max over unit-ish loc of +-loc^T D loc / |loc|^2, D = G - I:
+   the largest eigenvalue of D is at most both its Frobenius norm and the
+   largest Gershgorin end (diagonal's upper end plus the row's other
+   magnitudes); the smallest at least minus both. */
+static void gram_eigs(const span *sp, span nn, double *qhi, double *qlo)
+{
+	const double d12 = mag(sp[CQ_D12]), d13 = mag(sp[CQ_D1N]), d23 = mag(sp[CQ_D2N]);
+	const double d11 = mag(sp[CQ_N1]), d22 = mag(sp[CQ_N2]), d33 = mag(nn);
+	const double f = up(sqrt(d11 * d11 + d22 * d22 + d33 * d33 + 2 * (d12 * d12 + d13 * d13 + d23 * d23)));
+	double gu = sum3_up(sp[CQ_N1].hi, d12, d13), gl = sum3_up(-sp[CQ_N1].lo, d12, d13);
+	gu = fmax(gu, fmax(sum3_up(sp[CQ_N2].hi, d12, d23), sum3_up(nn.hi, d13, d23)));
+	gl = fmax(gl, fmax(sum3_up(-sp[CQ_N2].lo, d12, d23), sum3_up(-nn.lo, d13, d23)));
+	*qhi = fmax(0.0, fmin(f, gu));
+	*qlo = fmax(0.0, fmin(f, gl));
+}
+
+/* The bound on max(| |w| - 1 |, |w.n - z|) along one path of the model
+   (special: the kernel's n.z = -1 case, w = (-y, -x, -z) exactly, where
+   the model's b1.n = -n.y and b2.n = -n.x). */
+static double dir_bound(const span *sp, span nn, int prec, int special, unsigned drop)
+{
+	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53;
+	const double eta = prec == PREC_FLOAT ? 0x1p-150 : 0x1p-1074;   /* half the least subnormal, up */
+	const double rho = up(u + 2 * eta);           /* | |loc| - 1 | <= rho */
+	const double l1 = up(1.0 + rho), l2 = up(l1 * l1);
+	double qhi, qlo, b1sq, b2sq, nsq, A, C, W, e, dn, dc;
+	span w2;
+	int k;
+	for (k = 0; k < NCQ; k++)   /* fmax and fmin would drop a NaN */
+		if (isnan(sp[k].lo) || isnan(sp[k].hi))
+			return INFINITY;
+	if (isnan(nn.lo) || isnan(nn.hi))
+		return INFINITY;
+	if (special)   /* |w| = |loc|; w.n - z = x b1.n + y b2.n */
+		return fmax(rho, up(l1 * sqrt(mag(sp[CQ_D1N]) * mag(sp[CQ_D1N]) + mag(sp[CQ_D2N]) * mag(sp[CQ_D2N]))));
+	gram_eigs(sp, nn, &qhi, &qlo);
+	if (!(qhi < INFINITY && qlo < INFINITY && nn.hi < INFINITY))
+		return INFINITY;
+	w2.lo = -up(qlo * l2 + 2 * rho);
+	w2.hi = up(qhi * l2 + up(2 * rho + rho * rho));
+	b1sq = up(1.0 + fmax(sp[CQ_N1].hi, -1.0));
+	b2sq = up(1.0 + fmax(sp[CQ_N2].hi, -1.0));
+	nsq = up(1.0 + fmax(nn.hi, -1.0));
+	A = up(l1 * sqrt(b1sq + b2sq + nsq));
+	C = up(l1 * sqrt(fmax(b1sq, b2sq) + mag(sp[CQ_D12])));
+	W = up(sqrt(1.0 + fmax(w2.hi, -1.0)));
+	e = drop & BOUND_DROP_DOT ? 0.0 : up((1 + u) * (1 + u) * (u * A + 6 * eta) + u * (1 + u) * C + u * W);
+	dn = up(norm_from_square(w2) + e);
+	dc = up(l1 * sqrt(mag(sp[CQ_D1N]) * mag(sp[CQ_D1N]) + mag(sp[CQ_D2N]) * mag(sp[CQ_D2N]) + mag(nn) * mag(nn)) +
+	        e * sqrt(nsq));
+	return isnan(dn) || isnan(dc) ? INFINITY : fmax(dn, dc);
+}
+
 double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x)
+{
+	return bound_box_ablate(b, m, x, 0);
+}
+
+double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop)
 {
 	unsigned path, npath = 1u << m->nbranch;
 	double best = 0.0;
 	for (path = 0; path < npath; path++) {
-		double v = path_bound(b->c, m, x, path);
+		double v;
+		if (m->direction) {
+			span sp[NCQ], nn;
+			v = path_spans(b->c, m, x, path, sp, &nn) ? dir_bound(sp, nn, x->prec, path != 0, drop) : -1.0;
+		} else {
+			v = path_bound(b->c, m, x, path);
+		}
 		if (!(v <= best))
 			best = v;   /* an infeasible path gives -1 */
 	}

@@ -16,7 +16,13 @@ void bound_free(bound_ctx *b);
 /* The bound on max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|) of method
    m over box x: the larger over every branch path that a point of the box
    can take.  +inf when some path cannot be enclosed (a singular point, or
-   a box too wide for the intervals). */
+   a box too wide for the intervals).  For frisvad_rotate (m->direction)
+   the bound is on its direction error max(| |w| - 1 |, |w.n - z|) over
+   every loc = (x, y, z) that is a rounding of a unit vector. */
 double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x);
+/* The same with terms of frisvad_rotate's bound left out, which makes it
+   unsound: tests/test_certify_dir.c shows that its checks catch that. */
+#define BOUND_DROP_DOT 1u   /* the rounding of w's dot products */
+double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop);
 
 #endif

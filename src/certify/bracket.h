@@ -37,6 +37,7 @@ typedef struct {
 	double bound;       /* certified: no input of the region exceeds it (+inf: none) */
 	double found;       /* the largest defect measured on an input of the region */
 	double found_n[3];  /* that input (in the format)                          */
+	double found_loc[3]; /* frisvad_rotate: its local direction (x, y, z)     */
 	int status;         /* CERT_*                                              */
 	int nonfinite;      /* a sampled input gave a non-finite output            */
 	long boxes;

@@ -48,7 +48,9 @@ static void usage(FILE *f)
 	"                        [--fma] [--quick] [--quiet]\n\n"
 	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
 	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
-	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|):\n"
+	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|)\n"
+	"(frisvad_rotate: the direction error max(| |w|-1 |, |w.n - z|) of its output w\n"
+	"on every local direction (x, y, z) that is a rounding of a unit vector):\n"
 	"  found  the largest defect of the real kernel on a real input of the region\n"
 	"         (sampled, then ulp walks from many starts; replay it with `onbstudy eval`);\n"
 	"  bound  proven for every input of the region: the kernel's own operations,\n"
@@ -293,6 +295,7 @@ static void whole_sphere(const cert_result *res, const task *t, int nt, int k, i
 		if (r->found > w->found) {
 			w->found = r->found;
 			memcpy(w->found_n, r->found_n, sizeof w->found_n);
+			memcpy(w->found_loc, r->found_loc, sizeof w->found_loc);
 		}
 		if (r->status == CERT_SINGULAR)
 			w->status = CERT_SINGULAR;
@@ -307,7 +310,7 @@ static void whole_sphere(const cert_result *res, const task *t, int nt, int k, i
 		w->bound = INFINITY;
 }
 
-static void csv_row(FILE *f, const char *name, int p, const cert_region *r, const cert_result *x)
+static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region *r, const cert_result *x)
 {
 	fprintf(f, "%s,%s,%.17g,%.17g,%g,%g,", name, prec_name(p),
 	        r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
@@ -319,7 +322,11 @@ static void csv_row(FILE *f, const char *name, int p, const cert_region *r, cons
 		fprintf(f, "%.17g,%a,%a,%a,%s,", x->found, x->found_n[0], x->found_n[1], x->found_n[2], status_name(x->status));
 	else
 		fprintf(f, "0,,,,%s,", status_name(x->status));
-	fprintf(f, "%ld\n", x->probes);   /* inputs the found side evaluated */
+	fprintf(f, "%ld", x->probes);   /* inputs the found side evaluated */
+	if (dir && x->found > 0.0)     /* frisvad_rotate: the found input's loc */
+		fprintf(f, ",%a,%a,%a\n", x->found_loc[0], x->found_loc[1], x->found_loc[2]);
+	else
+		fprintf(f, ",,,\n");
 }
 
 /* Every region of every kernel and precision, in parallel. */
@@ -416,7 +423,11 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	seeds_provenance(f, ks, nk);
 	if (c->starts)
 		fprintf(f, "# starts: the found side also walked from the %ld inputs of %s\n", c->o.nstarts, c->starts);
-	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated\n");
+	for (i = 0; i < nt && ks[t[i].k].m; i++)
+		;
+	if (i < nt)
+		fprintf(f, "# frisvad_rotate: bound and found are its direction error max(| |w| - 1 |, |w.n - z|) for w the kernel's output on the local direction loc = (x, y, z), over every loc that is a rounding of a unit vector; found_lx,found_ly,found_lz: the found input's loc (empty on the other methods' rows)\n");
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated,found_lx,found_ly,found_lz\n");
 	for (k = 0; k < nk; k++)
 		for (p = 0; p < 2; p++) {
 			cert_result w;
@@ -428,10 +439,10 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 			whole_sphere(res, t, nt, k, p, &w);
 			if (w.status < 0)
 				continue;
-			csv_row(f, ks[k].name, p, &all, &w);
+			csv_row(f, ks[k].name, !ks[k].m, p, &all, &w);
 			for (i = 0; i < nt; i++)
 				if (t[i].k == k && t[i].prec == p)
-					csv_row(f, ks[k].name, p, &reg[p * MAXREG + t[i].reg], &res[i]);
+					csv_row(f, ks[k].name, !ks[k].m, p, &reg[p * MAXREG + t[i].reg], &res[i]);
 		}
 	return ferror(f) ? -1 : 0;
 }
@@ -482,9 +493,16 @@ int cmd_certify(int argc, char **argv)
 				fprintf(stderr, "certify: %s: no contracted rounding model, not certified\n", ks[k].name);
 			continue;
 		}
-		if (!(ms[k] = ks[k].m ? cm_find(ks[k].m->name) : NULL) && strcmp(c.methods, "all") != 0) {
-			study_error("--methods: %s has no rounding model (its direction error is not certified)", ks[k].name);
+		if (!(ms[k] = cm_find(ks[k].name)) && strcmp(c.methods, "all") != 0) {
+			study_error("--methods: %s has no rounding model", ks[k].name);
 			return ONB_EXIT_USAGE;
+		}
+		if (ms[k] && ms[k]->direction && c.o.tolerance >= 0) {   /* its model assumes n.z >= -1 */
+			if (strcmp(c.methods, "all") != 0) {
+				study_error("--tolerance: %s is certified in the default domain only (n.z < -1 takes another path)", ks[k].name);
+				return ONB_EXIT_USAGE;
+			}
+			ms[k] = NULL;
 		}
 	}
 	if (c.starts && load_starts(&c))

@@ -51,7 +51,7 @@ static void acc(double *s, double *c, double v)
 }
 
 /* p . q - sub, to a relative error far below 1e-20 of the terms' size. */
-static double dot_dd(const double *p, const double *q, double sub)
+double found_dot_dd(const double *p, const double *q, double sub)
 {
 	double s = -sub, c = 0.0, hi, lo;
 	int i;
@@ -68,13 +68,13 @@ static double screen_defect(const double n[3], const double b[6])
 {
 	double d[5], m = 0.0;
 	int i;
-	d[0] = dot_dd(b, b, 1.0);
-	d[1] = dot_dd(b + 3, b + 3, 1.0);
+	d[0] = found_dot_dd(b, b, 1.0);
+	d[1] = found_dot_dd(b + 3, b + 3, 1.0);
 	d[0] = d[0] / (1.0 + sqrt(1.0 + d[0]));   /* |b| - 1 from |b|^2 - 1 */
 	d[1] = d[1] / (1.0 + sqrt(1.0 + d[1]));
-	d[2] = dot_dd(b, n, 0.0);
-	d[3] = dot_dd(b + 3, n, 0.0);
-	d[4] = dot_dd(b, b + 3, 0.0);
+	d[2] = found_dot_dd(b, n, 0.0);
+	d[3] = found_dot_dd(b + 3, n, 0.0);
+	d[4] = found_dot_dd(b, b + 3, 0.0);
 	for (i = 0; i < 5; i++)
 		if (fabs(d[i]) > m)
 			m = fabs(d[i]);
@@ -111,6 +111,12 @@ double found_try(probe_env *e, const double n[3], int in_domain)
 		int side = e->prec == PREC_FLOAT && e->o->tolerance < 0 ? cert_f32_side(n) : 2;
 		if (side == 2 ? !cert_in_domain(n, e->prec, e->o->tolerance) : side != 0)
 			return -1.0;
+	}
+	if (e->k->rot) {   /* frisvad_rotate: the direction error, over loc too */
+		d = found_dir_try(e, n);
+		if (d >= 0.0)
+			keep_top(e, n, d);
+		return d;
 	}
 	e->res->probes++;
 	ref_run_kernel(e->k, e->prec, n, loc, nn, &s);
@@ -427,4 +433,6 @@ void found_walks(probe_env *e, int restarts)
 		line_search(e, best[0].n, e->top[j].d);
 		neighbourhood(e, best[0].n, 5);
 	}
+	if (e->k->rot)
+		found_dir_walk(e, restarts ? 200 : 400);
 }

@@ -47,4 +47,20 @@ void found_try_u(probe_env *e, double z, double phi);
 void found_sample(probe_env *e);
 void found_walks(probe_env *e, int restarts);
 
+/* p . q - sub in double-double (found.c). */
+double found_dot_dd(const double *p, const double *q, double sub);
+
+/* frisvad_rotate (found_dir.c): the largest screened direction error on n
+   over the locs its basis points at (the best measured as eval measures
+   it: res->found, found_n, found_loc), or -1; and ulp walks in loc from
+   the found input. */
+double found_dir_try(probe_env *e, const double n[3]);
+/* The directions (not yet rounded, not unit) where frisvad_rotate's
+   direction error on n can be largest: the eigenvectors of G - I and
+   (b1.n, b2.n, |n|^2 - 1), both signs, (0.6, 0, 0.8), +z and two random
+   ones from *rng.  Returns their count. */
+#define FOUND_DIR_CAND 12
+int found_dir_candidates(int prec, const double n[3], uint64_t *rng, double c[FOUND_DIR_CAND][3]);
+void found_dir_walk(probe_env *e, long steps);
+
 #endif

@@ -19,10 +19,13 @@ typedef struct {
 	   mvf_box.has_zpoint) only the others need their centre Q(U, 0). */
 	unsigned zero_any_n;
 	int contract;              /* the model of the --fma copy (cm_find_fma)  */
+	/* frisvad_rotate: the model is the basis its kernel forms on the way
+	   (m is NULL), and what is bounded is the direction error of
+	   w = x b1 + y b2 + z n, not the basis's defect (bound.c). */
+	int direction;
 } cm_method;
 
-/* The model of registry method `name`, or NULL (frisvad_rotate has none
-   yet: its direction error is not certified). */
+/* The model of registry method `name` or of frisvad_rotate, or NULL. */
 const cm_method *cm_find(const char *name);
 /* The model of the method's --fma copy (its kernel compiled with -mfma
    -ffp-contract=fast: GCC fuses some a*b + c into one rounding), or NULL

@@ -65,7 +65,7 @@ typedef struct study_family {
 	   on branch br, for any n, where the MPFR formula leaves a rounding
 	   residue; -1 for none. */
 	int (*exact_zero)(const onb_method *m, int br);
-	family_model_fn model;       /* NULL: certify has no model (frisvad_rotate) */
+	family_model_fn model;       /* frisvad_rotate's: the basis it forms    */
 	int model_branches;          /* branch points of the model: 2^k paths       */
 	/* The defect quantities (CQ_ bits) that stay 0 in exact arithmetic for
 	   every n, unit or not (see model_kit.h). */

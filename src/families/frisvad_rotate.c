@@ -2,7 +2,9 @@
  * frisvad_rotate.c - Frisvad 2012, Equation 3: a direction (x, y, z) of
  * the local frame of n, rotated without forming the basis.  Not a
  * registry method (m = NULL everywhere here): the study measures its
- * direction error; certify has no model of it (docs/certify.md).
+ * direction error.  Its certify model is the basis the kernel forms on
+ * the way (Frisvad's formula without a threshold): certify bounds the
+ * direction error from that basis's defects (bound.c, docs/certify.md).
  */
 #include "families/family.h"
 
@@ -72,11 +74,37 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 	}
 }
 
+#include "model/model_kit.h"
+
+/* The basis the kernel forms on the way, op for op: Frisvad's formula
+   (a = 1/(1 + n.z), b = (-n.x n.y) a, 1 - (n.x n.x) a, ...) with no
+   threshold, so that w = x b1 + y b2 + z n, each component the kernel's
+   ((x b1_i + y b2_i) + z n_i) (tests/test_certify.c checks those bits).
+   The kernel's one special case, 1 + n.z == 0, is n.z == -1 on every
+   input whose n.z >= -1 (1 + n.z is exact there, Sterbenz), which is
+   n.z < t for t the format value just above -1: its output (-y, -x, -z)
+   is x (0, -1, 0) + y (-1, 0, 0) + z (0, 0, -1), and the model returns
+   that basis (0, -1, 0), (-1, 0, 0) there.  Inputs with n.z < -1 (the
+   tolerance domain) would take the formula in the kernel: certify does
+   not bound frisvad_rotate in that domain. */
+static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	const double t = P == PREC_FLOAT ? -1.0 + 0x1p-24 : -1.0 + 0x1p-53;
+	(void)m;
+	if (cm_branch(c, 0, CM_LT, n[2], cm_cst(c, t))) {
+		cm_formula_nonzero(c, CQ_ALL);
+		out[0] = K(0.0); out[1] = K(-1.0); out[2] = K(0.0);
+		out[3] = K(-1.0); out[4] = K(0.0); out[5] = K(0.0);
+		return;
+	}
+	mk_frisvad(c, P, 1, n, out);
+}
+
 static unsigned zero_any_n(const onb_method *m) { (void)m; return 0; }
 
 FAMILY_DECLARE(frisvad_rotate);
 const study_family family_frisvad_rotate = {
 	"frisvad_rotate", FAMILY_PASSES(frisvad_rotate), names, mpfr, FAMILY_PAIRS(frisvad_rotate),
-	family_no_variant, family_no_exact_zero, NULL, 0, zero_any_n, family_no_singular, family_meets_none,
+	family_no_variant, family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
 };
 #endif

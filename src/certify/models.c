@@ -81,7 +81,8 @@ const cm_method *cm_find(const char *name)
 const cm_method *cm_find_fma(const char *name)
 {
 	const cm_method *m = cm_find(name);
-	return m && table_fma[m - table].contract ? &table_fma[m - table] : NULL;
+	/* frisvad_rotate's model lies outside the tables, and has no contracted twin */
+	return m && !m->direction && table_fma[m - table].contract ? &table_fma[m - table] : NULL;
 }
 
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6])

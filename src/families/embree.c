@@ -73,7 +73,7 @@ static cv embree_rsqrt(cm *c, int P, cv x)
 #endif
 	r = cm_cvt(c, P, r);
 	if (c->contract)   /* GCC fuses 1.5*r into the sum */
-		return MADD(r, K(1.5), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r)));
+		return cm_newton_embree_fused(c, P, x, r);
 	return cm_newton_embree(c, P, x, r);   /* ADD(MUL(K(1.5), r), MUL(MUL(MUL(x, K(-0.5)), r), MUL(r, r))) */
 }
 

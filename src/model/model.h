@@ -69,6 +69,9 @@ cv cm_newton(cm *c, int f, cv x, cv y);
    rounded in f; CM_MVF bounds its relative error as a whole where y is a
    seed of x, else runs the operations one by one. */
 cv cm_newton_embree(cm *c, int f, cv x, cv y);
+/* the same steps as -mfma -ffp-contract=fast compiles them (model.c) */
+cv cm_newton_fused(cm *c, int f, cv x, cv y);
+cv cm_newton_embree_fused(cm *c, int f, cv x, cv y);
 
 /* Branch point number `id` of the model: a OP b on the values as computed,
    and |a| OP |b| for cm_branch_abs.  Returns the side taken (0 or 1). */

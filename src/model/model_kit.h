@@ -82,13 +82,10 @@ static inline void mk_cross_fused(cm *c, int P, const cv p[3], const cv q[3], cv
 }
 
 /* Newton's step y * (1.5 - (0.5*x*y)*y); contracted, GCC fuses the
-   last product into the subtraction (fma(-y, 0.5*x*y, 1.5)).  The plain
-   step keeps cm_newton's own enclosure. */
+   last product into the subtraction (fma(-y, 0.5*x*y, 1.5)). */
 static inline cv mk_newton(cm *c, int P, cv x, cv y)
 {
-	if (!c->contract)
-		return cm_newton(c, P, x, y);
-	return MUL(y, SUBM(K(1.5), y, MUL(MUL(x, K(0.5)), y)));
+	return c->contract ? cm_newton_fused(c, P, x, y) : cm_newton(c, P, x, y);
 }
 
 /* onb__rsq / onb__rsqf: the normalization variants (onb_method.norm).

@@ -1049,6 +1049,36 @@ static int norm_sqrt(mvf *m, int f, cv ir, cv ia)
 	return 1;
 }
 
+/* A contracted sum of squares, fma(a, a, d) with d a tagged sum of squares
+   of other bases: a^2 is exact inside the fma, so
+   RN(a^2 + S_d (1 + e_d) + t) = (S_a + S_d)(1 + e')(1 + delta) + t' with e'
+   in hull(0, e_d): the tag that ADD gives a^2 (1 + d1) + S_d (1 + e_d),
+   with d1 = 0.  Without it the length of (x, y) near a pole, an fma in a
+   contracted build, holds 0 and its reciprocal is unbounded. */
+static void fma_square_tag(mvf *m, int f, int exact, cv ir, cv ia, cv ib, cv id)
+{
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia], *d = &m->val[id];
+	const double u = m->zero_e ? 0.0 : unit_round(f), eta = m->zero_e ? 0.0 : tiny_of(f);
+	int i;
+	exact = exact || m->zero_e;
+	if (ia != ib || !a->theta_free || d->tg_p != 2 || d->tg_nb > 2)
+		return;
+	for (i = 0; i < d->tg_nb; i++)
+		if (d->tg_b[i] == a->base)
+			return;
+	r->tg_p = 2;
+	r->tg_nb = d->tg_nb + 1;
+	memcpy(r->tg_b, d->tg_b, (size_t)d->tg_nb * sizeof *r->tg_b);
+	r->tg_b[d->tg_nb] = a->base;
+	r->tg_lo = rel_mul(m, fmin(0.0, d->tg_lo), exact ? 0.0 : -u, 0);
+	r->tg_hi = rel_mul(m, fmax(0.0, d->tg_hi), exact ? 0.0 : u, 1);
+	r->tg_abs = round_up_d(d->tg_abs * (1.0 + 2 * u));
+	if (!exact)
+		r->tg_abs = round_up_d(r->tg_abs + eta);
+	r->tg_olo = r->tg_ohi = 0.0;
+}
+
 cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 {
 	cv ir = fresh(m, f);
@@ -1093,6 +1123,8 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		}
 	}
 	track(m, op, f, exact, ir, ia, ib);
+	if (op == MVF_FMA)
+		fma_square_tag(m, f, exact, ir, ia, ib, id);
 	return ir;
 }
 

@@ -147,7 +147,7 @@ int main(int argc, char **argv)
 	w.x = cert_ctx_new();
 	while (fgets(line, sizeof line, in) && nr < MAXROW) {
 		char meth[64], prec[16], status[16], fx[64], fy[64], fz[64];
-		double bound, found, n[3], best;
+		double bound, found, n[3], best, at[3];
 		long r;
 		int k;
 		if (line[0] == '#' || strncmp(line, "method,", 7) == 0)
@@ -169,17 +169,20 @@ int main(int argc, char **argv)
 		w.prec = strcmp(prec, "double") == 0 ? PREC_DOUBLE : PREC_FLOAT;
 		n[0] = strtod(fx, NULL); n[1] = strtod(fy, NULL); n[2] = strtod(fz, NULL);
 		best = climb(&w, n, steps);
+		memcpy(at, n, sizeof at);
 		for (r = 0; r < restarts; r++) {
 			double d;
 			start(&w, n);
-			if ((d = climb(&w, n, steps)) > best)
+			if ((d = climb(&w, n, steps)) > best) {   /* keep its input: the one printed */
 				best = d;
+				memcpy(at, n, sizeof at);
+			}
 		}
 		ratios[nr++] = best / found;
 		if (best > 1.05 * found) {
 			beaten++;
 			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: found %.6g, walk %.6g (x%.3f) at (%a, %a, %a)\n", meth,
-			       prec, w.r.nz_lo, w.r.nz_hi, w.r.phi_lo, w.r.phi_hi, found, best, best / found, n[0], n[1], n[2]);
+			       prec, w.r.nz_lo, w.r.nz_hi, w.r.phi_lo, w.r.phi_hi, found, best, best / found, at[0], at[1], at[2]);
 		}
 		if (best / found > worst)
 			worst = best / found;

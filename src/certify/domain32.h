@@ -14,6 +14,10 @@
    decides unless it is within 2^-46 of 1, then cert_in_domain does. */
 int cert_f32_side(const double n[3]);
 
+/* The same for the default double domain (cert_in_domain(n, PREC_DOUBLE,
+   -1)): sums in double-double decide unless within 2^-96 of 1. */
+int cert_f64_side(const double n[3]);
+
 /* The domain members with n[axis] of the sign of `sign` (+1: +0 and up,
    -1: -0 and down), the other two components as in n: the run *lo..*hi in
    magnitude order.  Returns its length (0: none, -1: a side could not be

@@ -108,7 +108,7 @@ double found_try(probe_env *e, const double n[3], int in_domain)
 	if (!cert_in_region(e->r, n))
 		return -1.0;
 	if (!in_domain) {
-		int side = e->prec == PREC_FLOAT && e->o->tolerance < 0 ? cert_f32_side(n) : 2;
+		int side = e->o->tolerance >= 0 ? 2 : e->prec == PREC_FLOAT ? cert_f32_side(n) : cert_f64_side(n);
 		if (side == 2 ? !cert_in_domain(n, e->prec, e->o->tolerance) : side != 0)
 			return -1.0;
 	}
@@ -140,6 +140,24 @@ double found_try(probe_env *e, const double n[3], int in_domain)
 	return d;
 }
 
+/* cert_complete in float without MPFR, where double decides it: a^2 and
+   b^2 are exact, 1 - (a^2 + b^2) in [1/4, 1) within 2^-52, its sqrt within
+   2^-50 relative of the exact |c|; when that is at least 2^-48 relative
+   from every midpoint of floats, the rounding is certain (and the same as
+   cert_complete's).  NaN when double does not decide. */
+static double complete_f32(double a, double b)
+{
+	const double s = 1.0 - (a * a + b * b), c = sqrt(s);
+	double x, f;
+	if (!(s > 0.25) || !(c < 1.0 - 0x1p-20))
+		return NAN;
+	x = c * 0x1p25;   /* c in (1/2, 1): the float midpoints are the odd integers */
+	f = floor(x);
+	if (fmod(f, 2.0) == 1.0 ? x - f < 0x1p-23 : f + 1.0 - x < 0x1p-23)
+		return NAN;   /* too near a midpoint */
+	return fmt_round(c, PREC_FLOAT);
+}
+
 /* n with its largest component (index b) completed; 1 when n is then
    surely a domain member, 0 when it must be asked, -1 when none exists. */
 static int complete_n(probe_env *e, double n[3], int b)
@@ -148,6 +166,10 @@ static int complete_n(probe_env *e, double n[3], int b)
 	double c;
 	if (e->o->tolerance >= 0)
 		return 0;
+	if (e->prec == PREC_FLOAT && !isnan(c = complete_f32(n[(b + 1) % 3], n[(b + 2) % 3]))) {
+		n[b] = copysign(c, n[b]);   /* cheap: the walks complete every step */
+		return 1;
+	}
 	c = cert_complete(e->x, e->prec, n[(b + 1) % 3], n[(b + 2) % 3], &sure);
 	if (isnan(c))
 		return -1;
@@ -289,9 +311,13 @@ static int propose(probe_env *e, const double n[3], double m[3], int k[2])
 	const uint64_t h = rnd(e);
 	int i, r;
 	memcpy(m, n, 3 * sizeof *m);
-	/* moves off the completion need cert_in_domain, in MPFR at 4400 bits
-	   in double (tens of microseconds): float only */
-	if ((h & 7) == 0 && e->prec == PREC_FLOAT) {   /* all three by -2..2 ulps */
+	/* moves off the completion: the domain side of the result is decided
+	   in double-double (cert_f32_side, cert_f64_side), cheaply in both
+	   formats.  In double such an input is a member only where the two
+	   smaller components' rounding cells can make up for the largest
+	   one's ulp (near the diagonals), and the largest defects of
+	   hughes_moeller lie on such inputs */
+	if ((h & 7) == 0) {   /* all three by -2..2 ulps */
 		for (i = 0; i < 3; i++)
 			m[i] = fmt_step(m[i], (int64_t)((h >> (8 + 4 * i)) % 5) - 2, e->prec);
 		return 0;
@@ -301,7 +327,7 @@ static int propose(probe_env *e, const double n[3], double m[3], int k[2])
 	m[(b + 1) % 3] = fmt_step(m[(b + 1) % 3], k[0], e->prec);
 	m[(b + 2) % 3] = fmt_step(m[(b + 2) % 3], k[1], e->prec);
 	r = complete_n(e, m, b);
-	if (r >= 0 && e->prec == PREC_FLOAT && (h & 0x300000000000ull) == 0) {   /* a quarter: the largest one ulp off */
+	if (r >= 0 && (h & 0x300000000000ull) == 0) {   /* a quarter: the largest one ulp off */
 		m[b] = fmt_step(m[b], (h >> 50) & 1 ? 1 : -1, e->prec);
 		return 0;
 	}
@@ -360,6 +386,13 @@ static void neighbourhood(probe_env *e, const double n[3], int w)
 			if ((known = complete_n(e, m, b)) < 0)
 				continue;
 			found_try(e, m, known > 0);
+			if (e->prec == PREC_DOUBLE && e->o->tolerance < 0) {   /* the largest an ulp off */
+				const double c = m[b];
+				m[b] = fmt_step(c, 1, e->prec);
+				found_try(e, m, 0);
+				m[b] = fmt_step(c, -1, e->prec);
+				found_try(e, m, 0);
+			}
 			if (e->prec == PREC_FLOAT && e->o->tolerance < 0 &&
 			    cert_f32_run(m, b, signbit(m[b]) ? -1 : 1, &lo, &hi) > 1) {
 				m[b] = copysign(lo, m[b]);
@@ -413,12 +446,12 @@ void found_walks(probe_env *e, int restarts)
 		double n[3], d;
 		const int known = make_u(e, sample_z(r, rnd01(e)), (r->phi_lo + (r->phi_hi - r->phi_lo) * rnd01(e)) * DEG, n);
 		if (known >= 0 && (d = found_try(e, n, known > 0)) >= 0.0)
-			climb(e, n, d, 150, 40);
+			climb(e, n, d, 400, 120);
 	}
 	nb = e->ntop;
 	memcpy(best, e->top, (size_t)nb * sizeof *best);
 	for (j = 0; j < nb && (restarts || j < 4); j++)
-		climb(e, best[j].n, best[j].d, 300, 80);
+		climb(e, best[j].n, best[j].d, 800, 240);
 	for (j = 0; j < (restarts ? 4 : 2) && j < e->ntop; j++) {
 		int top = j, t;
 		for (t = j + 1; t < e->ntop; t++)

@@ -18,8 +18,8 @@
  *     singular, or when certify's found value is not what the box measured
  *     on the same input (found inputs outside the box, in the corners of
  *     the region, are measured again instead).
- * Also: cert_f32_side agrees with cert_in_domain on rounded unit vectors
- * and their neighbours.  Prints per box and method: inputs, box maximum,
+ * Also: cert_f32_side and cert_f64_side agree with cert_in_domain on
+ * rounded unit vectors and their neighbours.  Prints per box and method: inputs, box maximum,
  * bound, bound / maximum, found.  The rsqrt and invsqrt variants need the
  * seed bounds (an exhaustive scan of ~20 s, seeds.h): only with --seeds.
  */
@@ -86,6 +86,43 @@ static void side_crosscheck(long count)
 	CHECK(bad == 0, "cert_f32_side disagrees with cert_in_domain on %ld of %ld inputs", bad, count);
 	CHECK(in > count / 10 && in < count, "side cross-check: %ld members of %ld (want both kinds)", in, count);
 	printf("cert_f32_side = cert_in_domain on %ld inputs (%ld members)\n", count, in);
+}
+
+/* The double side test against the exact one: double roundings of unit
+   vectors, half of them near the diagonals |x| = |y| (where a largest
+   component an ulp off its completion can still be a member), each
+   component then moved by -1, 0 or +1 ulp; and (1, y, 0) with y within
+   16 doubles of 2^-26.5, where the low-end sum is nearest 1. */
+static void side64_crosscheck(long count)
+{
+	long i, in = 0, bad = 0;
+	for (i = 0; i < count; i++) {
+		double z = 2.0 * unif((uint64_t)i, 5) - 1.0, phi = 6.283185307179586 * unif((uint64_t)i, 6), n[3], r;
+		int j, s;
+		if (i % 2)
+			phi = (45.0 + 90.0 * (double)(i % 4 / 2) + 1e-3 * (unif((uint64_t)i, 7) - 0.5)) * 0.017453292519943295;
+		r = sqrt((1.0 - z) * (1.0 + z));
+		n[0] = r * cos(phi);
+		n[1] = r * sin(phi);
+		n[2] = z;
+		for (j = 0; j < 3; j++)
+			n[j] = fmt_step(n[j], (int64_t)(rng_mix64((uint64_t)i * 3 + (uint64_t)j + 7) % 3) - 1, PREC_DOUBLE);
+		s = cert_f64_side(n);
+		in += s == 0;
+		bad += (s == 0) != cert_in_domain(n, PREC_DOUBLE, -1.0) || s == 2;
+	}
+	for (i = -16; i <= 16; i++) {
+		double n[3] = { 1.0, 0.0, 0.0 };
+		int s;
+		n[1] = fmt_step(0x1.6a09e667f3bcdp-27, i, PREC_DOUBLE);
+		s = cert_f64_side(n);
+		in += s == 0;
+		bad += (s == 0) != cert_in_domain(n, PREC_DOUBLE, -1.0) || s == 2;
+	}
+	count += 33;
+	CHECK(bad == 0, "cert_f64_side disagrees with cert_in_domain on %ld of %ld inputs", bad, count);
+	CHECK(in > count / 10 && in < count, "double side cross-check: %ld members of %ld (want both kinds)", in, count);
+	printf("cert_f64_side = cert_in_domain on %ld inputs (%ld members)\n", count, in);
 }
 
 /* The index of input n among the count of in, or -1 (bit comparison). */
@@ -239,6 +276,7 @@ int main(int argc, char **argv)
 	if (!seeds)
 		printf("the rsqrt and invsqrt variants are left out (their seed bounds take ~20 s): --seeds adds them\n");
 	side_crosscheck(20000);
+	side64_crosscheck(6000);
 	for (i = 0; i < nb; i++)
 		one_box(&b[i], ks, nk, seeds);
 	return check_finish("test_enumerate");

@@ -158,6 +158,38 @@ static double complete_f32(double a, double b)
 	return fmt_round(c, PREC_FLOAT);
 }
 
+/* The same in double, from double-double: s = 1 - a^2 - b^2 in [1/4, 1)
+   to within 2^-104 relative (exact products, a compensated sum), c0 its
+   square root in double, c1 = (s - c0^2) / (2 c0) the correction (s_hi -
+   c0^2 exact by fma); the exact |c| rounds to c0 + k ulp with k the
+   nearest integer to c1 / ulp, which is certain when c1 / ulp is at least
+   2^-30 from every half-integer (the errors are below 2^-45 ulp). */
+static double complete_f64(double a, double b)
+{
+	double s = 1.0, cc = 0.0, p, sh, sl, c0, c1, u, t;
+	int k;
+	p = a * a;
+	acc(&s, &cc, -p);
+	acc(&s, &cc, -fma(a, a, -p));
+	p = b * b;
+	acc(&s, &cc, -p);
+	acc(&s, &cc, -fma(b, b, -p));
+	sh = s + cc;
+	sl = cc - (sh - s);
+	if (!(sh > 0.25))
+		return NAN;
+	c0 = sqrt(sh);
+	if (!(c0 > 0.5 + 0x1p-20 && c0 < 1.0 - 0x1p-20))
+		return NAN;
+	c1 = (fma(-c0, c0, sh) + sl) / (2.0 * c0);
+	u = nextafter(c0, INFINITY) - c0;
+	t = c1 / u;
+	k = (int)floor(t + 0.5);
+	if (fabs(t - (k - 0.5)) < 0x1p-30 || fabs(t - (k + 0.5)) < 0x1p-30 || abs(k) > 2)
+		return NAN;
+	return c0 + k * u;
+}
+
 /* n with its largest component (index b) completed; 1 when n is then
    surely a domain member, 0 when it must be asked, -1 when none exists. */
 static int complete_n(probe_env *e, double n[3], int b)
@@ -166,7 +198,9 @@ static int complete_n(probe_env *e, double n[3], int b)
 	double c;
 	if (e->o->tolerance >= 0)
 		return 0;
-	if (e->prec == PREC_FLOAT && !isnan(c = complete_f32(n[(b + 1) % 3], n[(b + 2) % 3]))) {
+	c = e->prec == PREC_FLOAT ? complete_f32(n[(b + 1) % 3], n[(b + 2) % 3])
+	                          : complete_f64(n[(b + 1) % 3], n[(b + 2) % 3]);
+	if (!isnan(c)) {
 		n[b] = copysign(c, n[b]);   /* cheap: the walks complete every step */
 		return 1;
 	}
@@ -432,13 +466,13 @@ static void line_search(probe_env *e, double n[3], double d)
 			}
 }
 
-/* The walks: from random inputs of the region (samples / 8 of them, at
+/* The walks: from random inputs of the region (samples / 2 of them, at
    least 16; none unless `restarts`), then from each of the best inputs
    seen, then the neighbourhoods of the four best. */
 void found_walks(probe_env *e, int restarts)
 {
 	const cert_region *r = e->r;
-	const long starts = !restarts ? 0 : e->o->samples / 8 > 16 ? e->o->samples / 8 : 16;
+	const long starts = !restarts ? 0 : e->o->samples / 2 > 16 ? e->o->samples / 2 : 16;
 	found_cand best[FOUND_TOP];
 	long i;
 	int nb, j;

@@ -466,13 +466,13 @@ static void line_search(probe_env *e, double n[3], double d)
 			}
 }
 
-/* The walks: from random inputs of the region (samples / 2 of them, at
+/* The walks: from random inputs of the region (samples / 8 of them, at
    least 16; none unless `restarts`), then from each of the best inputs
    seen, then the neighbourhoods of the four best. */
 void found_walks(probe_env *e, int restarts)
 {
 	const cert_region *r = e->r;
-	const long starts = !restarts ? 0 : e->o->samples / 2 > 16 ? e->o->samples / 2 : 16;
+	const long starts = !restarts ? 0 : e->o->samples / 8 > 16 ? e->o->samples / 8 : 16;
 	found_cand best[FOUND_TOP];
 	long i;
 	int nb, j;

@@ -11,7 +11,8 @@
  * A model that drops, adds or moves one rounding fails here.
  * The contracted models (cm_find_fma: the methods of cm_fma_names) are
  * checked the same way against the study's --fma copies of their kernels
- * (compiled with -mfma -ffp-contract=fast), where the CPU has FMA.
+ * (compiled with -mfma -ffp-contract=fast), where the CPU has FMA, on a
+ * quarter of the count.
  */
 #include <math.h>
 #include <stdint.h>
@@ -210,7 +211,9 @@ int main(int argc, char **argv)
 			fail |= bad != 0;
 		}
 	}
-	fail |= check_fma(only, count, &checked);
+	/* a quarter as many for the contracted models: 76 more pairs, and a
+	   misplaced fusion shows on 1% to 78% of inputs */
+	fail |= check_fma(only, count >= 4 ? count / 4 : count, &checked);
 	printf("%s: %d method-precision pairs, the models %s the kernels' bits\n",
 	       fail ? "FAIL" : "ok", checked, fail ? "do not reproduce" : "reproduce");
 	return fail;

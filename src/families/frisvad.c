@@ -57,13 +57,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const double t = P == PREC_FLOAT ? (double)(float)m->threshold : m->threshold;
-	if (cm_branch(c, 0, CM_LT, n[2], cm_cst(c, t))) {
-		cm_formula_nonzero(c, CQ_ALL);
-		out[0] = K(0.0); out[1] = K(-1.0); out[2] = K(0.0);
-		out[3] = K(-1.0); out[4] = K(0.0); out[5] = K(0.0);
-		return;
-	}
-	mk_frisvad(c, P, 1, n, out);
+	mk_frisvad_listing2(c, P, t, n, out);
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return 0; }

@@ -141,6 +141,20 @@ static inline void mk_frisvad(cm *c, int P, int sg, const cv n[3], cv out[6])
 	}
 }
 
+/* Listing 2: below the threshold t the fallback (0, -1, 0), (-1, 0, 0),
+   else Frisvad's formula (frisvad, frisvad_max, and frisvad_rotate's
+   basis with t just above -1). */
+static inline void mk_frisvad_listing2(cm *c, int P, double t, const cv n[3], cv out[6])
+{
+	if (cm_branch(c, 0, CM_LT, n[2], cm_cst(c, t))) {
+		cm_formula_nonzero(c, CQ_ALL);
+		out[0] = K(0.0); out[1] = K(-1.0); out[2] = K(0.0);
+		out[3] = K(-1.0); out[4] = K(0.0); out[5] = K(0.0);
+		return;
+	}
+	mk_frisvad(c, P, 1, n, out);
+}
+
 /* The defect quantities (CQ_ bits) that stay 0 in exact arithmetic for
    every n, unit or not: b1 normalized and b2 = n x b1 (naive); b2 = v s
    with v.n = 0 and b1 = v x n (hughes_moeller); b1 = p/|p| with p = n x e

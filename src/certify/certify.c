@@ -56,7 +56,7 @@ static void usage(FILE *f)
 	"  bound  proven for every input of the region: the kernel's own operations,\n"
 	"         each rounded once, in a mean value form over MPFI intervals, by\n"
 	"         branch and bound until bound <= 1.25 found, the budget runs out or\n"
-	"         1000 more boxes take less than 2%% off the bound.\n"
+	"         500 more boxes take less than 2%% off the bound.\n"
 	"The domain: every rounding of a real unit vector (default), or with\n"
 	"--tolerance T every n with | |n| - 1 | <= T.  status: proven, singular (the\n"
 	"method can return NaN or inf there: not bounded) or budget (bound holds, not\n"
@@ -76,7 +76,8 @@ static void usage(FILE *f)
 	"  --fma             also the methods' --fma copies (compiled with -mfma\n"
 	"                    -ffp-contract=fast), as METHOD+fma rows, where a contracted\n"
 	"                    rounding model exists (docs/certify.md lists which)\n"
-	"  --quick           budget 60, samples 150, 4 sectors: a run of under a minute\n");
+	"  --quick           budget 40, samples 150 (walks a quarter as long), 2 sectors:\n"
+	"                    a run of under a minute\n");
 }
 
 /* Split line s at commas into f (at most max fields); returns the count. */
@@ -252,9 +253,9 @@ static int parse(int argc, char **argv, cert_cli *c)
 		goto bad;
 	cli_end(&a);
 	if (c->quick) {
-		if (!budget_set) c->o.budget = 60;
+		if (!budget_set) c->o.budget = 40;
 		if (!samples_set) c->o.samples = 150;
-		if (!sectors_set) c->sectors = 4;
+		if (!sectors_set) c->sectors = 2;
 	}
 	return 0;
 bad:

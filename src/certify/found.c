@@ -99,6 +99,14 @@ static void keep_top(probe_env *e, const double n[3], double d)
 	memcpy(e->top[low].n, n, 3 * sizeof *n);
 }
 
+int found_worth_measuring(probe_env *e, double d)
+{
+	if (!(d >= e->res->found * (1.0 - 1e-9)) || !(d > e->gate * (1.0 + 0x1p-40)))
+		return 0;
+	e->gate = d;
+	return 1;
+}
+
 double found_try(probe_env *e, const double n[3], int in_domain)
 {
 	static const double loc[3] = { 0.0, 0.0, 1.0 };
@@ -127,7 +135,7 @@ double found_try(probe_env *e, const double n[3], int in_domain)
 		}
 	d = screen_defect(nn, s.out);
 	keep_top(e, n, d);
-	if (d >= e->res->found * (1.0 - 1e-9)) {   /* measure it exactly */
+	if (found_worth_measuring(e, d)) {   /* measure it exactly */
 		int nf = 0;
 		double exact = cert_probe(e->x, e->k, e->prec, n, &nf);
 		if (nf)
@@ -149,9 +157,9 @@ static double complete_f32(double a, double b)
 {
 	const double s = 1.0 - (a * a + b * b), c = sqrt(s);
 	double x, f;
-	if (!(s > 0.25) || !(c < 1.0 - 0x1p-20))
+	if (!(s > 0.25))
 		return NAN;
-	x = c * 0x1p25;   /* c in (1/2, 1): the float midpoints are the odd integers */
+	x = c * 0x1p25;   /* c in (1/2, 1]: the float midpoints are the odd integers */
 	f = floor(x);
 	if (fmod(f, 2.0) == 1.0 ? x - f < 0x1p-23 : f + 1.0 - x < 0x1p-23)
 		return NAN;   /* too near a midpoint */
@@ -179,15 +187,20 @@ static double complete_f64(double a, double b)
 	if (!(sh > 0.25))
 		return NAN;
 	c0 = sqrt(sh);
-	if (!(c0 > 0.5 + 0x1p-20 && c0 < 1.0 - 0x1p-20))
+	if (!(c0 > 0.5 + 0x1p-20))
 		return NAN;
 	c1 = (fma(-c0, c0, sh) + sl) / (2.0 * c0);
-	u = nextafter(c0, INFINITY) - c0;
+	u = 0x1p-53;   /* the grid of [1/2, 1], 1 included: |c| <= 1 */
 	t = c1 / u;
 	k = (int)floor(t + 0.5);
 	if (fabs(t - (k - 0.5)) < 0x1p-30 || fabs(t - (k + 0.5)) < 0x1p-30 || abs(k) > 2)
 		return NAN;
 	return c0 + k * u;
+}
+
+double found_complete_fast(int prec, double a, double b)
+{
+	return prec == PREC_FLOAT ? complete_f32(a, b) : complete_f64(a, b);
 }
 
 /* n with its largest component (index b) completed; 1 when n is then
@@ -198,8 +211,7 @@ static int complete_n(probe_env *e, double n[3], int b)
 	double c;
 	if (e->o->tolerance >= 0)
 		return 0;
-	c = e->prec == PREC_FLOAT ? complete_f32(n[(b + 1) % 3], n[(b + 2) % 3])
-	                          : complete_f64(n[(b + 1) % 3], n[(b + 2) % 3]);
+	c = found_complete_fast(e->prec, n[(b + 1) % 3], n[(b + 2) % 3]);
 	if (!isnan(c)) {
 		n[b] = copysign(c, n[b]);   /* cheap: the walks complete every step */
 		return 1;
@@ -468,11 +480,13 @@ static void line_search(probe_env *e, double n[3], double d)
 
 /* The walks: from random inputs of the region (samples / 8 of them, at
    least 16; none unless `restarts`), then from each of the best inputs
-   seen, then the neighbourhoods of the four best. */
+   seen, then the neighbourhoods of the four best.  Below 1000 samples
+   (--quick) every climb is shortened in proportion, to a quarter at most. */
 void found_walks(probe_env *e, int restarts)
 {
 	const cert_region *r = e->r;
 	const long starts = !restarts ? 0 : e->o->samples / 8 > 16 ? e->o->samples / 8 : 16;
+	const double f = e->o->samples >= 1000 ? 1.0 : e->o->samples >= 250 ? e->o->samples / 1000.0 : 0.25;
 	found_cand best[FOUND_TOP];
 	long i;
 	int nb, j;
@@ -480,12 +494,12 @@ void found_walks(probe_env *e, int restarts)
 		double n[3], d;
 		const int known = make_u(e, sample_z(r, rnd01(e)), (r->phi_lo + (r->phi_hi - r->phi_lo) * rnd01(e)) * DEG, n);
 		if (known >= 0 && (d = found_try(e, n, known > 0)) >= 0.0)
-			climb(e, n, d, 400, 120);
+			climb(e, n, d, (long)(400 * f), (long)(120 * f));
 	}
 	nb = e->ntop;
 	memcpy(best, e->top, (size_t)nb * sizeof *best);
 	for (j = 0; j < nb && (restarts || j < 4); j++)
-		climb(e, best[j].n, best[j].d, 800, 240);
+		climb(e, best[j].n, best[j].d, (long)(800 * f), (long)(240 * f));
 	for (j = 0; j < (restarts ? 4 : 2) && j < e->ntop; j++) {
 		int top = j, t;
 		for (t = j + 1; t < e->ntop; t++)
@@ -501,5 +515,5 @@ void found_walks(probe_env *e, int restarts)
 		neighbourhood(e, best[0].n, 5);
 	}
 	if (e->k->rot)
-		found_dir_walk(e, restarts ? 200 : 400);
+		found_dir_walk(e, (int)((restarts ? 200 : 400) * f));
 }

@@ -29,6 +29,7 @@ typedef struct {
 	found_cand top[FOUND_TOP];
 	int ntop;
 	uint64_t rng;
+	double gate;   /* the largest screened defect measured so far */
 } probe_env;
 
 /* Evaluate input n (in the format) if it lies in the region and the domain
@@ -36,6 +37,12 @@ typedef struct {
    screened defect, or -1 when it was not evaluated or gave a non-finite
    output (then res->nonfinite is set). */
 double found_try(probe_env *e, const double n[3], int in_domain);
+
+/* Should an input of screened defect d be measured exactly?  When d
+   reaches found and exceeds every screened defect measured before by
+   more than 2^-40 relative (the screen is good to about 1e-15 relative,
+   and the walks meet the same defect again and again on flat ground). */
+int found_worth_measuring(probe_env *e, double d);
 
 /* An input near the unit vector at (z, phi radians), completed so that it
    is the rounding of a unit vector (found.c), tried. */
@@ -46,6 +53,11 @@ void found_try_u(probe_env *e, double z, double phi);
    seen, then every input of a small neighbourhood of the best ones. */
 void found_sample(probe_env *e);
 void found_walks(probe_env *e, int restarts);
+
+/* |c| = sqrt(1 - a^2 - b^2) rounded to the format prec (a, b in it), as
+   cert_complete gives it, without MPFR where double arithmetic decides the
+   rounding for certain; NaN where it does not (then ask cert_complete). */
+double found_complete_fast(int prec, double a, double b);
 
 /* p . q - sub in double-double (found.c). */
 double found_dot_dd(const double *p, const double *q, double sub);

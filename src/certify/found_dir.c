@@ -129,7 +129,7 @@ static void measure(probe_env *e, const double n[3], const double loc[3], double
 {
 	sample_metrics m;
 	double v;
-	if (!(d >= e->res->found * (1.0 - 1e-9)))
+	if (!found_worth_measuring(e, d))
 		return;
 	ref_eval(e->x->rc, e->k, e->prec, n, loc, 0, &m);
 	if (m.nonfinite) {

@@ -26,6 +26,8 @@
 #   results/certify/certify.csv:
 #   {{TABLE certify}}               every method's whole-sphere bracket
 #   {{TABLE certifybands method precision}}  the bands of n.z <= -0.9
+#   {{TABLE certifyfma D}}          every method: whole-sphere bracket and
+#                                   its +fma row, from results/certify/D
 #   {{CW dir method precision column}}  bound or found of the first row of
 #                                   results/certify/dir/certify.csv, in u
 #   {{CP key}}                      a '# key: value' line of certify.csv
@@ -438,6 +440,36 @@ generate() {
 		close(file)
 		print "findings: no " m " " p " " c " in " file > "/dev/stderr"; bad = 1; return "?"
 	}
+	# every method: its whole-sphere bracket, plain and +fma, from the run in
+	# results/certify/D (certify --fma): bound / found in u, the ratio
+	function table_fma(d,   file, line, f, nh, nh2, h, i, c, key, bd, fo, st, nm, meth, seen, out, m, pp, p, v, k) {
+		file = REF "/../certify/" d "/certify.csv"; nh = 0; nm = 0
+		while ((getline line < file) > 0) {
+			if (line ~ /^#/) continue
+			nh2 = split(line, f, ",")
+			if (!nh) { nh = nh2; for (i = 1; i <= nh; i++) c[f[i]] = i; continue }
+			if (f[c["nz_lo"]] != "-1" || f[c["nz_hi"]] != "1" || f[c["phi_lo"]] != "0" || f[c["phi_hi"]] != "360") continue
+			key = f[c["method"]] SUBSEP f[c["precision"]]
+			bd[key] = f[c["bound"]]; fo[key] = f[c["found"]]; st[key] = f[c["status"]]
+			m = f[c["method"]]; sub(/\+fma$/, "", m)
+			if (!(m in seen)) { seen[m] = 1; meth[++nm] = m }
+		}
+		close(file)
+		if (!nm) { print "findings: no whole-sphere rows in " file > "/dev/stderr"; bad = 1; return "?" }
+		out = "| method | float | float+fma | double | double+fma |\n|---|---|---|---|---|\n"
+		for (i = 1; i <= nm; i++) {
+			out = out "| `" meth[i] "`"
+			for (pp = 1; pp <= 4; pp++) {
+				p = pp <= 2 ? "float" : "double"; m = meth[i] (pp % 2 ? "" : "+fma"); k = m SUBSEP p
+				if (!(k in bd)) { v = "-" }
+				else if (st[k] == "singular") v = "singular (found " inu(fo[k], p) ")"
+				else v = inu(bd[k], p) " / " inu(fo[k], p) " (" ratio(bd[k], fo[k]) "x)"
+				out = out " | " v
+			}
+			out = out " |\n"
+		}
+		return out
+	}
 	function CP(key,   lines, n, i, l) {
 		n = split(comments[CF_FILE], lines, "\n")
 		for (i = 1; i <= n; i++) if (index(lines[i], "# " key ": ") == 1) return substr(lines[i], length(key) + 5)
@@ -547,6 +579,7 @@ generate() {
 			else if (a[1] == "TABLE" && a[2] == "tradeoff") rep = table_tradeoff()
 			else if (a[1] == "TABLE" && a[2] == "certify") rep = table_certify()
 			else if (a[1] == "TABLE" && a[2] == "certifybands" && nt == 4) rep = table_bands(a[3], a[4])
+			else if (a[1] == "TABLE" && a[2] == "certifyfma" && nt == 3) rep = table_fma(a[3])
 			else if (a[1] == "CW" && nt == 5) rep = CW(a[2], a[3], a[4], a[5])
 			else if (a[1] == "CP" && nt == 2) rep = CP(a[2])
 			else if (a[1] == "ONBH" && nt == 1) rep = table_onbh()

@@ -82,22 +82,41 @@
  *   naive_rsqrt              singular                       singular
  *   naive_rsqrt_nr           singular                       singular
  *   naive_nonorm             <= 1.68e+07u (found 1.68e+07u) <= 9.01e+15u (found 9.01e+15u)
- *   hughes_moeller           <= 6.59u (found 3.49u)         <= 7.61u (found 3.75u)
+ *   hughes_moeller           <= 5.5u (found 3.66u)          <= 6.59u (found 4.02u)
  *   hughes_moeller_invsqrt   <= 3.67e+04u (found 2.94e+04u) <= 1.97e+13u (found 1.58e+13u)
- *   hughes_moeller_rsqrt     <= 5.42e+03u (found 4.34e+03u) <= 2.87e+12u (found 2.3e+12u)
- *   hughes_moeller_rsqrt_nr  <= 10.3u (found 4.9u)          <= 1.1e+09u (found 8.82e+08u)
- *   hughes_moeller_nonorm    <= 6.06e+06u (found 4.9e+06u)  <= 3.25e+15u (found 2.63e+15u)
+ *   hughes_moeller_rsqrt     <= 6.82e+03u (found 5.46e+03u) <= 3.6e+12u (found 2.88e+12u)
+ *   hughes_moeller_rsqrt_nr  <= 10.6u (found 5.59u)         <= 1.73e+09u (found 1.44e+09u)
+ *   hughes_moeller_nonorm    <= 6.09e+06u (found 4.91e+06u) <= 3.27e+15u (found 2.64e+15u)
  *   frisvad                  <= 1.3e+07u (found 1.05e+07u)  <= 4.03e+12u (found 4.03e+12u)
- *   frisvad_max              <= 1.03e+05u (found 8.26e+04u) <= 5.37e+13u (found 4.42e+13u)
- *   duff                     <= 6u (found 3.1u)             <= 6u (found 3.26u)
- *   duff_branchless          <= 6u (found 3.1u)             <= 6u (found 3.26u)
- *   stark                    <= 7.53u (found 4.14u)         <= 7.53u (found 4.24u)
- *   stark_fixed              <= 7.53u (found 3.74u)         <= 7.53u (found 3.86u)
- *   pbrt_v3                  <= 6.05u (found 3.16u)         <= 7.05u (found 3.8u)
- *   rtow                     <= 11.1u (found 4.8u)          <= 11.1u (found 5.07u)
+ *   frisvad_max              <= 1.04e+05u (found 8.32e+04u) <= 5.37e+13u (found 4.42e+13u)
+ *   duff                     <= 5u (found 3.26u)            <= 5u (found 3.23u)
+ *   duff_branchless          <= 5u (found 3.26u)            <= 5u (found 3.23u)
+ *   stark                    <= 7.07u (found 4.22u)         <= 7.07u (found 4.36u)
+ *   stark_fixed              <= 6.59u (found 3.95u)         <= 6.59u (found 4.02u)
+ *   pbrt_v3                  <= 5.8u (found 3.72u)          <= 6.59u (found 4.02u)
+ *   rtow                     <= 11.4u (found 5.26u)         <= 11.4u (found 5.21u)
  *   tangent_cross_z          singular                       singular
- *   duff_wide                <= 2.41u (found 1.26u)         -
- *   duff_comp                <= 3.02u (found 1.38u)         -
+ *   q2rtx                    <= 3.65e+05u (found 3.31e+05u) <= 1.96e+14u (found 1.78e+14u)
+ *   filament                 <= 1.29e+07u (found 1.05e+07u) <= 5.28e+12u (found 4.38e+12u)
+ *   mitsuba3                 <= 5u (found 3.21u)            <= 5u (found 3.23u)
+ *   cycles_cross111          <= 21.8u (found 3.76u)         <= 21.8u (found 3.77u)
+ *   cycles_cross111_avx2     <= 20.1u (found 3.69u)         <= 20.1u (found 3.72u)
+ *   embree                   <= 16.5u (found 4.33u)         <= 2.51e+09u (found 1.44e+09u)
+ *   luxcore                  <= 1.44e+03u (found 168u)      <= 1.27e+11u (found 9.01e+10u)
+ *   jolt                     <= 5.53u (found 3.16u)         <= 5.53u (found 3.2u)
+ *   jolt_fma                 <= 5.5u (found 3.22u)          <= 5.5u (found 3.1u)
+ *   bullet                   <= 4.85u (found 2.96u)         <= 4.85u (found 2.94u)
+ *   mujoco                   <= 15.6u (found 8.45u)         <= 15.6u (found 8.46u)
+ *   eigen                    <= 10.5u (found 3.95u)         <= 10.5u (found 3.96u)
+ *   physx                    <= 2.57e+05u (found 2.34e+05u) <= 1.38e+14u (found 1.26e+14u)
+ *   rp3d                     <= 5.53u (found 3.25u)         <= 5.53u (found 3.09u)
+ *   open3d                   singular                       singular
+ *   physx_fixed              <= 6.59u (found 3.95u)         <= 6.59u (found 3.85u)
+ *   open3d_fixed             <= 9.52u (found 2.59u)         <= 9.93u (found 2.98u)
+ *   filament_fixed           <= 5u (found 3.33u)            <= 5u (found 3.41u)
+ *   duff_wide                <= 2.06u (found 1.47u)         -
+ *   duff_comp                <= 2.7u (found 1.47u)          -
+ *   frisvad_rotate           <= 2.09e+07u (found 1.68e+07u) <= 1.12e+16u (found 9.01e+15u)
  * (end of the proven bounds)
  *
  * Floating-point flags (docs/library.md, "Compiler flags"):

@@ -56,7 +56,7 @@ static void usage(FILE *f)
 	"  bound  proven for every input of the region: the kernel's own operations,\n"
 	"         each rounded once, in a mean value form over MPFI intervals, by\n"
 	"         branch and bound until bound <= 1.25 found, the budget runs out or\n"
-	"         500 more boxes take less than 2%% off the bound.\n"
+	"         250 more boxes take less than 2%% off the bound.\n"
 	"The domain: every rounding of a real unit vector (default), or with\n"
 	"--tolerance T every n with | |n| - 1 | <= T.  status: proven, singular (the\n"
 	"method can return NaN or inf there: not bounded) or budget (bound holds, not\n"

@@ -204,7 +204,7 @@ static int worst_leaf(const leaf *l, int nl, double *worst)
    less than 2% over the last STALL_BOXES boxes: the budget then goes to
    regions where splitting still pays (a bound set by the first-order
    worst case of single inputs, as at the n.z = 0 seam, does not move). */
-#define STALL_BOXES 500
+#define STALL_BOXES 250
 /* Where the bracket stays wide: inputs drawn in this many of the leaves
    with the largest bounds, samples / 16 + 8 in each. */
 #define PROBE_LEAVES 32
@@ -231,7 +231,7 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 		int k, j;
 		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 8 > e->o->budget)
 			break;
-		if (e->res->boxes >= next_check) {   /* stalled: 500 more boxes took < 2% off */
+		if (e->res->boxes >= next_check) {   /* stalled: 250 more boxes took < 2% off */
 			if (!(worst < 0.98 * at_check))
 				break;
 			at_check = worst;

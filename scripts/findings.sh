@@ -130,8 +130,8 @@ fi
 
 generate() {
 	awk -v REF="$REF" '
-	function load(file, arr, keycols,   line, n, f, k, i, hdr, nh, h) {
-		nh = 0
+	function load(file, arr, keycols,   line, n, f, k, i, hdr, nh, h, chunk, nc) {
+		nh = 0; chunk = ""; nc = 0
 		while ((getline line < file) > 0) {
 			if (line ~ /^#/) { comments[file] = comments[file] line "\n"; continue }
 			n = split(line, f, ",")
@@ -139,8 +139,10 @@ generate() {
 			k = ""
 			for (i = 1; i <= split(keycols, kc, " "); i++) k = k (i > 1 ? SUBSEP : "") f[kc[i]]
 			for (i = 1; i <= n; i++) arr[k, h[i]] = f[i]
-			rows[file] = rows[file] k "\n"
+			chunk = chunk k "\n"   # in chunks: appending each row to rows[file] copies it all each time
+			if (++nc % 256 == 0) { rows[file] = rows[file] chunk; chunk = "" }
 		}
+		rows[file] = rows[file] chunk
 		close(file)
 	}
 	function fmt(v) {

@@ -258,6 +258,9 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 /* v rounded up for the few roundings to nearest it took (each a relative
    2^-53 of a nonnegative partial result at most: far below 2^-45), with
    an absolute margin for underflow. */
+/* 2^BOUND_MAXBRANCH paths at most */
+#define BOUND_MAXBRANCH 8
+
 static double up(double v) { return v * (1.0 + 0x1p-45) + 0x1p-1000; }
 
 static double mag(span s)
@@ -325,6 +328,20 @@ static double dir_bound(const span *sp, span nn, int prec, int special, unsigned
 	return isnan(dn) || isnan(dc) ? INFINITY : fmax(dn, dc);
 }
 
+/* The model's control flow follows the path's bits alone (cm_branch
+   returns them): a path that sets the bit of a branch point which the path
+   without that bit never met takes every side that path took, and so runs
+   the same operations to the same bound.  Returns that earlier path, or
+   -1; seen[q]: the branch points that path q (q < path) met. */
+static int same_as_earlier(unsigned path, const unsigned *seen)
+{
+	unsigned k;
+	for (k = 0; (1u << k) <= path; k++)
+		if ((path >> k & 1u) && !(seen[path ^ (1u << k)] & (1u << k)))
+			return (int)(path ^ (1u << k));
+	return -1;
+}
+
 double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x)
 {
 	return bound_box_ablate(b, m, x, 0);
@@ -332,16 +349,24 @@ double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x)
 
 double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop)
 {
-	unsigned path, npath = 1u << m->nbranch;
+	unsigned path, npath = 1u << m->nbranch, seen[1u << BOUND_MAXBRANCH];
 	double best = 0.0;
+	if (m->nbranch > BOUND_MAXBRANCH)
+		return INFINITY;   /* no model has so many (models.c checks) */
 	for (path = 0; path < npath; path++) {
+		const int copy = same_as_earlier(path, seen);
 		double v;
+		if (copy >= 0) {
+			seen[path] = seen[copy];   /* the same run */
+			continue;
+		}
 		if (m->direction) {
 			span sp[NCQ], nn;
 			v = path_spans(b->c, m, x, path, sp, &nn) ? dir_bound(sp, nn, x->prec, path != 0, drop) : -1.0;
 		} else {
 			v = path_bound(b->c, m, x, path);
 		}
+		seen[path] = b->c->seen;
 		if (!(v <= best))
 			best = v;   /* an infeasible path gives -1 */
 	}

@@ -197,8 +197,10 @@ static int take(cm *c, int id, int exec_side, int lo_possible, int hi_possible)
 		return exec_side;
 	side = (int)((c->path >> id) & 1u);
 	c->seen |= 1u << id;
-	if (!(side ? hi_possible : lo_possible) && !mvf_zero_e(c->m))
+	if (!(side ? hi_possible : lo_possible) && !mvf_zero_e(c->m)) {
 		c->infeasible = 1;
+		mvf_abandon(c->m);   /* its bound is not wanted: skip the rest */
+	}
 	return side;
 }
 

@@ -67,6 +67,7 @@ enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG }
 mvf *mvf_new(void);
 void mvf_free(mvf *m);
 int  mvf_failed(const mvf *m);
+void mvf_abandon(mvf *m);
 int  mvf_zero_e(const mvf *m);
 cv   mvf_cst(mvf *m, double v);
 cv   mvf_op(mvf *m, int op, int f, cv a, cv b, cv d);

@@ -161,6 +161,10 @@ void mvf_free(mvf *m)
 
 int mvf_failed(const mvf *m) { return m->failed; }
 
+/* The rest of this run is not wanted (a path no point of the box takes):
+   every later operation returns at once. */
+void mvf_abandon(mvf *m) { m->failed = 1; }
+
 /* No gradients in this run: MVF_VALUES, MVF_AT_ZERO and MVF_AT_MID. */
 static int no_grad(const mvf *m) { return m->nograd || (m->zero_e && !m->centred); }
 
@@ -225,8 +229,9 @@ static void set_grad(mval *x, int k, mpfi_srcptr g)
 static void imul(mvf *m, mpfi_ptr a, mpfi_srcptr b, mpfi_srcptr c)
 {
 	mpfr_srcptr bl = &b->left, br = &b->right, cl = &c->left, cr = &c->right;
-	if (mpfr_get_prec(&a->left) != MV_PREC || mpfr_get_prec(&a->right) != MV_PREC || mpfi_nan_p(b) ||
-	    mpfi_nan_p(c) || mpfi_is_zero(b) || mpfi_is_zero(c) || (mpfr_sgn(bl) >= 0 && mpfr_sgn(cl) >= 0)) {
+	if (mpfr_get_prec(&a->left) != MV_PREC || mpfr_get_prec(&a->right) != MV_PREC || mpfr_nan_p(bl) ||
+	    mpfr_nan_p(br) || mpfr_nan_p(cl) || mpfr_nan_p(cr) || (mpfr_zero_p(bl) && mpfr_zero_p(br)) ||
+	    (mpfr_zero_p(cl) && mpfr_zero_p(cr)) || (mpfr_sgn(bl) >= 0 && mpfr_sgn(cl) >= 0)) {
 		mpfi_mul(a, b, c);   /* no temporaries there */
 		return;
 	}
@@ -271,9 +276,23 @@ static void imul(mvf *m, mpfi_ptr a, mpfi_srcptr b, mpfi_srcptr c)
 	mpfr_set(&a->left, m->p1, MPFR_RNDD);
 }
 
-/* r->g = sa * a->g + sb * b->g (sa, sb intervals; b may be NULL). */
+/* g = s x: a copy or a negation when s is the constant 1 or -1 (what
+   imul would give, exactly: the product by +-1 is exact), else imul. */
+static void scale(mvf *m, mpfi_ptr g, mpfi_srcptr x, mpfi_srcptr s)
+{
+	if (s == m->one)
+		mpfi_set(g, x);
+	else if (s == m->mone)
+		mpfi_neg(g, x);
+	else
+		imul(m, g, x, s);
+}
+
+/* r->g = sa * a->g + sb * b->g (sa, sb intervals; b may be NULL), each
+   entry written in place unless r is a or b. */
 static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval *b, mpfi_srcptr sb)
 {
+	const int alias = r == a || r == b;
 	int k, ng = a->ng;
 	if (no_grad(m))
 		return;
@@ -281,17 +300,24 @@ static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval 
 		ng = b->ng;
 	for (k = 0; k < ng; k++) {
 		int ia = k < a->ng && a->nz[k], ib = b && k < b->ng && b->nz[k];
+		mpfi_ptr g = alias ? m->t3 : r->g[k];
 		if (!ia && !ib)
 			continue;
-		if (ia)
-			imul(m, m->t3, a->g[k], sa);
-		else
-			mpfi_set_d(m->t3, 0.0);
-		if (ib) {
-			imul(m, m->t2, b->g[k], sb);
-			mpfi_add(m->t3, m->t3, m->t2);
+		if (ia) {
+			scale(m, g, a->g[k], sa);
+			if (ib) {
+				scale(m, m->t2, b->g[k], sb);
+				mpfi_add(g, g, m->t2);
+			}
+		} else
+			scale(m, g, b->g[k], sb);
+		if (alias)
+			set_grad(r, k, g);
+		else {
+			r->nz[k] = 1;
+			if (r->ng <= k)
+				r->ng = k + 1;
 		}
-		set_grad(r, k, m->t3);
 	}
 }
 

@@ -352,7 +352,7 @@ void found_sample(probe_env *e)
    complete_n does (0 for a move of all three components). */
 static int propose(probe_env *e, const double n[3], double m[3], int k[2])
 {
-	static const int scale[4] = { 1, 2, 8, 64 };
+	static const int scale[4] = { 2, 8, 64, 256 };
 	const int b = cert_biggest(n), s = scale[rnd(e) & 3];
 	const uint64_t h = rnd(e);
 	int i, r;
@@ -485,7 +485,7 @@ static void line_search(probe_env *e, double n[3], double d)
 void found_walks(probe_env *e, int restarts)
 {
 	const cert_region *r = e->r;
-	const long starts = !restarts ? 0 : e->o->samples / 8 > 16 ? e->o->samples / 8 : 16;
+	const long starts = !restarts ? 0 : e->o->samples / 4 > 16 ? e->o->samples / 4 : 16;
 	const double f = e->o->samples >= 1000 ? 1.0 : e->o->samples >= 250 ? e->o->samples / 1000.0 : 0.25;
 	found_cand best[FOUND_TOP];
 	long i;
@@ -494,7 +494,7 @@ void found_walks(probe_env *e, int restarts)
 		double n[3], d;
 		const int known = make_u(e, sample_z(r, rnd01(e)), (r->phi_lo + (r->phi_hi - r->phi_lo) * rnd01(e)) * DEG, n);
 		if (known >= 0 && (d = found_try(e, n, known > 0)) >= 0.0)
-			climb(e, n, d, (long)(400 * f), (long)(120 * f));
+			climb(e, n, d, (long)(500 * f), (long)(400 * f));
 	}
 	nb = e->ntop;
 	memcpy(best, e->top, (size_t)nb * sizeof *best);

@@ -10,6 +10,8 @@
  * from |b|^2 - 1 through sqrt(1 + s) - 1, which is not symmetric in s.
  */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <stdlib.h>
 #include "bound.h"
 
@@ -117,7 +119,7 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	c->failed = 0;
 	mvf_begin(c->m, x, mode, n);
 	cm_run(c, m, x->prec, n, out);
-	if (c->infeasible)
+	if (c->infeasible || mvf_no_point(c->m))
 		return 0;
 	if (mvf_failed(c->m))
 		return -1;
@@ -235,6 +237,8 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 		return -1.0;
 	for (k = 0; k < NCQ; k++) {
 		const double v = quantity_bound(k, s[k]);
+		if (getenv("ONB_BOX_DEBUG"))
+			fprintf(stderr, "path %u q%d [%g, %g] -> %g\n", path, k, s[k].lo, s[k].hi, v);
 		if (!(v <= best))
 			best = v; /* NaN stays +inf below */
 	}

@@ -478,7 +478,7 @@ static void line_search(probe_env *e, double n[3], double d)
 			}
 }
 
-/* The walks: from random inputs of the region (samples / 8 of them, at
+/* The walks: from random inputs of the region (samples / 4 of them, at
    least 16; none unless `restarts`), then from each of the best inputs
    seen, then the neighbourhoods of the four best.  Below 1000 samples
    (--quick) every climb is shortened in proportion, to a quarter at most. */

@@ -223,6 +223,7 @@ int cm_branch_abs(cm *c, int id, int op, cv a, cv b)
 		return op == CM_LT ? fabs(c->x[a]) < fabs(c->x[b]) : fabs(c->x[a]) > fabs(c->x[b]);
 	mvf_compare(c->m, op, 1, a, b, &t, &f);
 	t = take(c, id, 0, f, t);
+	mvf_constrain(c->m, op, 1, a, b, t);
 	mvf_note_strict(c->m, op, 1, a, b, t);
 	return t;
 }

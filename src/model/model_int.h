@@ -68,6 +68,7 @@ mvf *mvf_new(void);
 void mvf_free(mvf *m);
 int  mvf_failed(const mvf *m);
 void mvf_abandon(mvf *m);
+int  mvf_no_point(const mvf *m);   /* the path is infeasible for the box */
 int  mvf_zero_e(const mvf *m);
 cv   mvf_cst(mvf *m, double v);
 cv   mvf_op(mvf *m, int op, int f, cv a, cv b, cv d);

@@ -80,10 +80,14 @@ struct mvf {
 	int nvar;
 	int grad_lost;         /* the input terms' gradients are unbounded */
 	double nh[3];          /* |n_i - u_i| <= nh[i] */
+	double phi_lo, phi_hi; /* the box's azimuths (radians) ...          */
+	double rr_lo;          /* ... and |(u_x, u_y)| >= rr_lo over it      */
 	double tol;            /* the box's tolerance (< 0: roundings) */
 	cv st_a[16], st_b[16]; /* a != b for the actual values (branches) */
 	int nst;
 	int failed;
+	int no_point;          /* two enclosures of one value are disjoint: no
+	                          input of the box takes the path */
 	int zero_e;            /* every e is 0: values only, no gradients */
 	int nograd;            /* values over the whole box, no gradients */
 	int centred;           /* with zero_e: gradients in the inputs' offsets */
@@ -160,6 +164,8 @@ void mvf_free(mvf *m)
 }
 
 int mvf_failed(const mvf *m) { return m->failed; }
+
+int mvf_no_point(const mvf *m) { return m->no_point; }
 
 /* The rest of this run is not wanted (a path no point of the box takes):
    every later operation returns at once. */
@@ -386,7 +392,9 @@ static void add_sym(mvf *m, mval *x, double h)
 	}
 }
 
-static void round_to(mvf *m, cv r, int f)
+/* The rounding of v to format f: v + e, |e| <= h = half an ulp of v's
+   binade, or cap when that is smaller (round_sum). */
+static void round_to_cap(mvf *m, cv r, int f, double cap)
 {
 	mval *x = &m->val[r];
 	double h;
@@ -395,10 +403,28 @@ static void round_to(mvf *m, cv r, int f)
 		m->failed = 1;
 		return;
 	}
-	if (m->zero_e || (h = half_ulp_of(m, x->v, f)) == 0.0)
+	if (m->zero_e || (h = fmin(half_ulp_of(m, x->v, f), cap)) == 0.0)
 		return;                                   /* v = 0: exact */
 	set_grad(x, new_var(m, h), m->one);
 	add_sym(m, x, h);
+}
+
+static void round_to(mvf *m, cv r, int f) { round_to_cap(m, r, f, INFINITY); }
+
+/* The error of a rounded sum a + b of two values of format f is at most
+   min(|a|, |b|): a and b are themselves candidates for the nearest value
+   (1 + y^2 with y^2 below half an ulp of 1 is 1, its error y^2, not half
+   an ulp).  INFINITY when an operand is of a wider format. */
+static double round_sum_cap(mvf *m, const mval *a, const mval *b, int f)
+{
+	double ca, cb;
+	if (a->fmt > f || b->fmt > f)
+		return INFINITY;
+	mpfi_mag(m->f1, a->v);
+	ca = mpfr_get_d(m->f1, MPFR_RNDU);
+	mpfi_mag(m->f1, b->v);
+	cb = mpfr_get_d(m->f1, MPFR_RNDU);
+	return fmin(ca, cb);
 }
 
 static int is_cst(const mval *x, double v) { return x->is_cst && x->cval == v; }
@@ -826,9 +852,80 @@ static int norm_factor(mvf *m, const mval *t)
 	return 1;
 }
 
+/* A lower bound on the length of (x, y) at the box's points u and at the
+   points p = u + theta (n - u) (the angle between p and u is at most
+   asin(|p - u| / r) for either length r): rr_lo, or from the inputs'
+   intervals, which hold the p's and what the branches say of n (Eigen's
+   |y| > 1e-5 |z|). */
+static double planar_rr(mvf *m, const mval *t)
+{
+	mpfi_mig(m->f2, m->val[t->tg_b[0]].v);
+	mpfr_sqr(m->f2, m->f2, MPFR_RNDD);
+	mpfi_mig(m->p1, m->val[t->tg_b[1]].v);
+	mpfr_sqr(m->p1, m->p1, MPFR_RNDD);
+	mpfr_add(m->f2, m->f2, m->p1, MPFR_RNDD);
+	mpfr_sqrt(m->f2, m->f2, MPFR_RNDD);
+	return fmax(m->rr_lo, mpfr_get_d(m->f2, MPFR_RNDD));
+}
+
+/* 1 when norm_unit_phi applies to tag t: a is (n_x, n_y) up to order and
+   signs, in a run with error terms. */
+static int norm_planar(mvf *m, const mval *t)
+{
+	int i0, i1;
+	if (m->zero_e || t->tg_nb != 2 || !(planar_rr(m, t) > 0.0))
+		return 0;
+	i0 = m->val[t->tg_b[0]].input;
+	i1 = m->val[t->tg_b[1]].input;
+	return (i0 == 0 && i1 == 1) || (i0 == 1 && i1 == 0);
+}
+
+/* Where a is (n_x, n_y) up to order and signs (Eigen's and LuxCore's
+   (-y, x, 0)): a/|a| is the direction of (n_x, n_y), which lies within
+   asin(d / r) of the box's azimuths, d = |(n_x - u_x, n_y - u_y)| <=
+   |(nh_x, nh_y)| and r = |(u_x, u_y)| >= rr_lo (and so at every point
+   u + theta (n - u) where the mean value form evaluates).  So n_x/|a| is
+   in cos([phi_lo - D, phi_hi + D]) and n_y/|a| in sin(...), D = 1.05 d/rr_lo
+   >= asin(d/rr_lo) for d/rr_lo <= 1/2.  Intersected into out (b_j/|a|,
+   flipped by sign); nothing in the runs without error terms (their
+   inputs are other points). */
+static void norm_unit_phi(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
+{
+	const int ij = m->val[t->tg_b[j]].input;
+	if (!norm_planar(m, t))
+		return;
+	mpfr_set_d(m->f1, m->nh[0], MPFR_RNDU);
+	mpfr_sqr(m->f1, m->f1, MPFR_RNDU);
+	mpfr_set_d(m->f2, m->nh[1], MPFR_RNDU);
+	mpfr_sqr(m->f2, m->f2, MPFR_RNDU);
+	mpfr_add(m->f1, m->f1, m->f2, MPFR_RNDU);
+	mpfr_sqrt(m->f1, m->f1, MPFR_RNDU);
+	mpfr_div_d(m->f1, m->f1, planar_rr(m, t), MPFR_RNDU);   /* d / rr */
+	if (mpfr_cmp_d(m->f1, 0.5) > 0)
+		return;
+	mpfr_mul_d(m->f1, m->f1, 1.05, MPFR_RNDU);           /* D */
+	mpfr_set_d(m->f2, m->phi_lo, MPFR_RNDD);
+	mpfr_sub(m->f2, m->f2, m->f1, MPFR_RNDD);
+	mpfr_add_d(m->f1, m->f1, m->phi_hi, MPFR_RNDU);
+	mpfi_interv_fr(m->t3, m->f2, m->f1);
+	if (ij == 0)
+		mpfi_cos(m->t3, m->t3);
+	else
+		mpfi_sin(m->t3, m->t3);
+	if (sign < 0)
+		mpfi_neg(m->t3, m->t3);
+	mpfi_intersect(m->t3, m->t3, out);
+	if (mpfi_is_empty(m->t3)) {   /* no input of the box takes this path */
+		m->no_point = 1;
+		m->failed = 1;
+		return;
+	}
+	mpfi_set(out, m->t3);
+}
+
 /* b_j / |a| over the box into out: its square from the squares of the
    components, P/(P + Q) (increasing in P, decreasing in Q), its sign from
-   b_j's; sign flips it. */
+   b_j's; sign flips it; then norm_unit_phi. */
 static void norm_unit(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
 {
 	int k;
@@ -873,6 +970,7 @@ static void norm_unit(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
 		}
 	}
 	mpfr_clears(plo, phi, (mpfr_ptr)0);
+	norm_unit_phi(m, t, j, sign, out);
 }
 
 /* The input terms' gradient of x = sign b_j / |a| (b_j the base of x),
@@ -976,7 +1074,7 @@ static int norm_out(mvf *m, int op, int f, cv ir, cv ia, cv ib)
 	}
 	if (!x->theta_free || x->is_cst || is_zero(x) || x->opaque)
 		return 0;
-	if (!t->opaque && norm_narrow(m, t))
+	if (!t->opaque && norm_narrow(m, t) && !norm_planar(m, t))
 		return 0;   /* |a| nearly constant over the box: the plain operations do as well */
 	for (j = 0; j < t->tg_nb && t->tg_b[j] != x->base; j++)
 		;
@@ -1186,7 +1284,7 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		r->fmt = a->fmt;
 	} else if (!exact_op(m, op, f, a, b, r)) {
 		exact = 0;
-		round_to(m, ir, f);
+		round_to_cap(m, ir, f, op == MVF_ADD || op == MVF_SUB ? round_sum_cap(m, a, b, f) : INFINITY);
 	} else if ((op == MVF_ADD || op == MVF_SUB) && (is_zero(a) || is_zero(b))) {
 		r->fmt = is_zero(a) ? b->fmt : a->fmt;   /* +-v itself */
 	} else if (op == MVF_CVT) {
@@ -1313,6 +1411,7 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->n = 0;
 	m->nvar = 0;
 	m->failed = 0;
+	m->no_point = 0;
 	m->grad_lost = 0;
 	m->nst = 0;
 	m->tol = b->tolerance;
@@ -1347,6 +1446,10 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	if (mpfi_is_empty(m->s1))
 		mpfi_interv_d(m->s1, 0.0, 1.0);
 	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
+	mpfi_get_left(m->f1, m->s1);
+	m->rr_lo = mpfr_get_d(m->f1, MPFR_RNDD);
+	m->phi_lo = b->phi_lo;
+	m->phi_hi = b->phi_hi;
 	if (b->has_zpoint)
 		mpfi_set_d(m->val[in[2]].v, b->zpoint);   /* exact: no error term */
 	else
@@ -1452,18 +1555,39 @@ static void refine_input(mvf *m, mval *x)
 	mpfi_intersect(x->v, x->v, m->t2);
 }
 
-/* After a branch on input a against constant b took `side`: the input's
-   possible values know it.  op CM_LT: a < b (side 1) or a >= b (side 0);
-   CM_GT: a > b or a <= b.  Absolute comparisons are left alone. */
+/* After a branch on input a against b took `side`: the input's possible
+   values know it.  op CM_LT: a < b (side 1) or a >= b (side 0); CM_GT:
+   a > b or a <= b; absolute: the same of |a| and |b|.  b's interval holds
+   its actual value, and a's the actual input, so a > b gives a >= lo(b),
+   a <= b gives a <= hi(b), |a| <= |b| gives |a| <= mag(b), and |a| > |b|
+   gives |a| >= g = mig(b): a >= g where a > -g, a <= -g where a < g. */
 void mvf_constrain(mvf *m, int op, int absolute, cv ia, cv ib, int side)
 {
 	mval *a = &m->val[ia];
 	const mval *b = &m->val[ib];
-	int below;
-	if (absolute || a->input < 0 || !b->is_cst || m->zero_e)
+	const int below = (op == CM_LT) == (side != 0);   /* a <= b on this side */
+	if (a->input < 0 || m->zero_e || m->failed || mpfi_nan_p(b->v) || mpfi_is_empty(b->v))
 		return;
-	below = (op == CM_LT) == (side != 0);   /* a <= b on this side */
-	mpfi_interv_d(m->t1, below ? -INFINITY : b->cval, below ? b->cval : INFINITY);
+	mpfr_set_inf(m->f1, -1);
+	mpfr_set_inf(m->f2, 1);
+	if (!absolute && below) {
+		mpfi_get_right(m->f2, b->v);
+	} else if (!absolute) {
+		mpfi_get_left(m->f1, b->v);
+	} else if (below) {
+		mpfi_mag(m->f2, b->v);
+		mpfr_neg(m->f1, m->f2, MPFR_RNDD);
+	} else {
+		mpfi_mig(m->f1, b->v);                        /* g */
+		mpfr_neg(m->f2, m->f1, MPFR_RNDD);            /* -g, exact */
+		if (mpfr_cmp(&a->v->left, m->f2) > 0)
+			mpfr_set_inf(m->f2, 1);               /* [g, inf) */
+		else if (mpfr_cmp(&a->v->right, m->f1) < 0)
+			mpfr_set_inf(m->f1, -1);              /* (-inf, -g] */
+		else
+			return;
+	}
+	mpfi_interv_fr(m->t1, m->f1, m->f2);
 	if (!a->has_br) {
 		mpfi_set(a->br, a->v);
 		a->has_br = 1;

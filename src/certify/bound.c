@@ -10,8 +10,6 @@
  * from |b|^2 - 1 through sqrt(1 + s) - 1, which is not symmetric in s.
  */
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <stdlib.h>
 #include "bound.h"
 
@@ -237,8 +235,6 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 		return -1.0;
 	for (k = 0; k < NCQ; k++) {
 		const double v = quantity_bound(k, s[k]);
-		if (getenv("ONB_BOX_DEBUG"))
-			fprintf(stderr, "path %u q%d [%g, %g] -> %g\n", path, k, s[k].lo, s[k].hi, v);
 		if (!(v <= best))
 			best = v; /* NaN stays +inf below */
 	}

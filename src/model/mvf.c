@@ -1555,6 +1555,43 @@ static void refine_input(mvf *m, mval *x)
 	mpfi_intersect(x->v, x->v, m->t2);
 }
 
+/* After a branch found a length l = (S (1 + eps) + rho S)^(1/2) (1 + o)
+   (a norm tag, p = 1) at most hi(b): S <= ((hi(b)/(1 + o))^2 + |rho S|) /
+   (1 + eps), so every input among its bases has |n_i| <= sqrt of that
+   (LuxCore's fallback |(x, y)| < 1e-5: |n.x| <= 1e-5 there, not the box's
+   |x|). */
+static void constrain_length(mvf *m, const mval *t, const mval *b)
+{
+	int j;
+	if (!(1.0 + t->tg_olo > 0.0) || !(1.0 + t->tg_lo > 0.0))
+		return;
+	mpfi_get_right(m->f1, b->v);
+	if (mpfr_sgn(m->f1) < 0 || !mpfr_number_p(m->f1))
+		return;
+	mpfr_set_d(m->f2, t->tg_olo, MPFR_RNDD);
+	mpfr_add_ui(m->f2, m->f2, 1, MPFR_RNDD);
+	mpfr_div(m->f1, m->f1, m->f2, MPFR_RNDU);
+	mpfr_sqr(m->f1, m->f1, MPFR_RNDU);
+	mpfr_add_d(m->f1, m->f1, t->tg_abs, MPFR_RNDU);
+	mpfr_set_d(m->f2, t->tg_lo, MPFR_RNDD);
+	mpfr_add_ui(m->f2, m->f2, 1, MPFR_RNDD);
+	mpfr_div(m->f1, m->f1, m->f2, MPFR_RNDU);
+	mpfr_sqrt(m->f1, m->f1, MPFR_RNDU);                   /* |n_i| <= s */
+	mpfr_neg(m->f2, m->f1, MPFR_RNDD);
+	for (j = 0; j < t->tg_nb; j++) {
+		mval *x = &m->val[t->tg_b[j]];
+		if (x->input < 0)
+			continue;
+		mpfi_interv_fr(m->t1, m->f2, m->f1);
+		if (!x->has_br) {
+			mpfi_set(x->br, x->v);
+			x->has_br = 1;
+		}
+		mpfi_intersect(x->br, x->br, m->t1);
+		refine_input(m, x);
+	}
+}
+
 /* After a branch on input a against b took `side`: the input's possible
    values know it.  op CM_LT: a < b (side 1) or a >= b (side 0); CM_GT:
    a > b or a <= b; absolute: the same of |a| and |b|.  b's interval holds
@@ -1566,8 +1603,13 @@ void mvf_constrain(mvf *m, int op, int absolute, cv ia, cv ib, int side)
 	mval *a = &m->val[ia];
 	const mval *b = &m->val[ib];
 	const int below = (op == CM_LT) == (side != 0);   /* a <= b on this side */
-	if (a->input < 0 || m->zero_e || m->failed || mpfi_nan_p(b->v) || mpfi_is_empty(b->v))
+	if (m->zero_e || m->failed || mpfi_nan_p(b->v) || mpfi_is_empty(b->v))
 		return;
+	if (a->input < 0) {
+		if (a->tg_p == 1 && below)
+			constrain_length(m, a, b);
+		return;
+	}
 	mpfr_set_inf(m->f1, -1);
 	mpfr_set_inf(m->f2, 1);
 	if (!absolute && below) {

@@ -21,6 +21,8 @@
 #include "common/output.h"
 #include "inputs/rng.h"
 #include "model/seeds.h"
+#include "model/model_int.h"
+#include "model/newton_f.h"
 #if ONB_HAVE_HW_RSQRT
 #include <xmmintrin.h>   /* rsqrtps beside rsqrtss: onb.h itself no longer includes it */
 #endif
@@ -64,6 +66,43 @@ static void test_model(void)
 	}
 	CHECK(bad == 0, "%ld seeds differ from the kernels' (onb.h)", bad);
 	CHECK(badv == 0, "%ld rsqrtps results differ from rsqrtss", badv);
+}
+
+/* newton_f, which the scan of newton_f.c runs, is bit for bit the
+   model's executed step on the same seed (which test_model ties to the
+   kernels); and the scan's range holds every sampled step's error. */
+static void test_newton_steps(void)
+{
+	cm *c = cm_new(CM_EXEC);
+	long bad = 0, out = 0;
+	int k, s;
+	for (k = 0; k < NNEWTON; k++)
+		for (s = 0; s <= SEED_INVSQRT_F; s++)
+			for (uint64_t j = 0; j < 50000; j++) {
+				const double n[3] = { rand_f(j), 0.0, 0.0 };
+				double lo, hi;
+				cv in[3], y, r;
+				float got, x;
+				int e;
+				cm_exec_begin(c, PREC_FLOAT, n, in);
+				y = cm_seed(c, (seed_kind)s, in[0]);
+				r = k == NEWTON_L3 ? cm_newton(c, PREC_FLOAT, in[0], y)
+				  : k == NEWTON_L3_FUSED ? cm_newton_fused(c, PREC_FLOAT, in[0], y)
+				  : k == NEWTON_EMBREE ? cm_newton_embree(c, PREC_FLOAT, in[0], y)
+				  : cm_newton_embree_fused(c, PREC_FLOAT, in[0], y);
+				got = newton_f((newton_kind)k, (seed_kind)s, (float)n[0]);
+				bad += fbits(got) != fbits((float)cm_value(c, r));
+				x = ldexpf(frexpf((float)n[0], &e), (int)(j & 1));   /* in [0.5, 2) */
+				got = newton_f((newton_kind)k, (seed_kind)s, x);
+				if (newton_range_f((newton_kind)k, (seed_kind)s, 126, 127, &lo, &hi) == 0) {
+					const double err = got * sqrt((double)x) - 1.0;   /* within 1e-16 */
+					out += !(err >= lo - 1e-15 && err <= hi + 1e-15);
+				} else
+					out++;
+			}
+	cm_free(c);
+	CHECK(bad == 0, "%ld Newton steps (newton_f) differ from the model's executed steps", bad);
+	CHECK(out == 0, "%ld Newton steps outside their binade's scanned range", out);
 }
 
 /* seed_err_f's claim: within a factor 1 +- 2^-50 of MPFR's value. */
@@ -204,6 +243,7 @@ int main(int argc, char **argv)
 		test_float_periodic(SEED_INVSQRT_F);
 	}
 	test_model();
+	test_newton_steps();
 	test_err_formula();
 	test_double(n);
 	printf("outside the domain (singular in the model):\n");

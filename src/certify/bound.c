@@ -208,7 +208,10 @@ static int path_spans(cm *c, const cm_method *m, const mvf_box *x, unsigned path
 		known = centre_bounds(c, m, x, path, nonzero, centre);
 	for (k = 0; k < NCQ; k++) {
 		const span zero = { 0.0, 0.0 };
+		span len;
 		s[k] = direct[k];
+		if ((k == CQ_N1 || k == CQ_N2) && mvf_len_direct(c->m, k - CQ_N1, &len.lo, &len.hi))
+			s[k] = meet(s[k], len);
 		if (!(nonzero & (1u << k)))
 			s[k] = meet(s[k], widen(zero, lin[k]));
 		else if (known)

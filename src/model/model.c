@@ -150,7 +150,7 @@ cv cm_newton(cm *c, int f, cv x, cv y)
 {
 	double h, t;
 	if (c->backend == CM_MVF)
-		return mvf_newton(c->m, f, x, y);
+		return mvf_newton(c->m, f, x, y, 0);
 	h = fmt(f, 0.5 * c->x[x]);
 	t = fmt(f, fmt(f, h * c->x[y]) * c->x[y]);
 	return put(c, fmt(f, c->x[y] * fmt(f, 1.5 - t)));
@@ -167,14 +167,14 @@ cv cm_newton(cm *c, int f, cv x, cv y)
 cv cm_newton_fused(cm *c, int f, cv x, cv y)
 {
 	if (c->backend == CM_MVF)
-		return mvf_newton(c->m, f, x, y);
+		return mvf_newton(c->m, f, x, y, 1);
 	return cm_mul(c, f, y, cm_fma(c, f, cm_neg(c, y), cm_mul(c, f, cm_mul(c, f, x, cm_cst(c, 0.5)), y), cm_cst(c, 1.5)));
 }
 
 cv cm_newton_embree_fused(cm *c, int f, cv x, cv y)
 {
 	cv r;
-	if (c->backend == CM_MVF && (r = mvf_newton_embree(c->m, f, x, y)) >= 0)
+	if (c->backend == CM_MVF && (r = mvf_newton_embree(c->m, f, x, y, 1)) >= 0)
 		return r;
 	return cm_fma(c, f, y, cm_cst(c, 1.5),
 	              cm_mul(c, f, cm_mul(c, f, cm_mul(c, f, x, cm_cst(c, -0.5)), y), cm_mul(c, f, y, y)));
@@ -183,7 +183,7 @@ cv cm_newton_embree_fused(cm *c, int f, cv x, cv y)
 cv cm_newton_embree(cm *c, int f, cv x, cv y)
 {
 	cv r;
-	if (c->backend == CM_MVF && (r = mvf_newton_embree(c->m, f, x, y)) >= 0)
+	if (c->backend == CM_MVF && (r = mvf_newton_embree(c->m, f, x, y, 0)) >= 0)
 		return r;
 	return cm_add(c, f, cm_mul(c, f, cm_cst(c, 1.5), y),
 	              cm_mul(c, f, cm_mul(c, f, cm_mul(c, f, x, cm_cst(c, -0.5)), y), cm_mul(c, f, y, y)));

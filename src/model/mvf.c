@@ -30,6 +30,7 @@
 #include <mpfi.h>
 #include "model_int.h"
 #include "mvf.h"
+#include "newton_f.h"
 
 #define MV_PREC   80
 #define MV_MAXVAR 192
@@ -45,7 +46,7 @@ typedef struct {
 	/* A seed y of 1/sqrt(x): y = r/sqrt(x) with r in [rel_lo, rel_hi], x the
 	   value rsqrt_of (-1: not a seed).  A rounded conversion a = x (1 + d):
 	   cvt_of = x, d in [-cvt_u, cvt_u] (-1: not one). */
-	int rsqrt_of, cvt_of;
+	int rsqrt_of, cvt_of, seed_k;
 	double rel_lo, rel_hi, cvt_u;
 	/* Inputs only: br, the values the input can take given the region (n.z
 	   within the band) and the branches taken so far (has_br: it is set);
@@ -70,6 +71,16 @@ typedef struct {
 	int tg_p, tg_nb, tg_var;
 	cv tg_b[3];
 	double tg_lo, tg_hi, tg_abs, tg_olo, tg_ohi, tg_glo, tg_ghi;
+	/* A length tag (len_track), for the outputs' lengths alone, with no
+	   need of theta-freeness: ls_p = 2, the actual value is S (1 + eps) +
+	   alpha, S the sum of the squares of the actual values of the bases
+	   ls_b, eps in [ls_lo, ls_hi], |alpha| <= ls_abs; ls_p = -1 or 1, it
+	   is (1 + o)^(-ls_p) x^(ls_p/2) for the value x = ls_x (ls_p = 2), o in
+	   [ls_olo, ls_ohi].  ls_k >= 0: the value is q K (1 + d) + eta (or
+	   q / K ...), q of base ls_q, K = ls_k, |d| <= ls_u, |eta| <= ls_eta. */
+	int ls_p, ls_nb, ls_x, ls_k, ls_q;
+	cv ls_b[3];
+	double ls_lo, ls_hi, ls_abs, ls_olo, ls_ohi, ls_u, ls_eta;
 } mval;
 
 struct mvf {
@@ -79,6 +90,8 @@ struct mvf {
 	unsigned char in_var[MV_MAXVAR]; /* a term of the input (or its offset) */
 	int nvar;
 	int grad_lost;         /* the input terms' gradients are unbounded */
+	int len_ok[2];         /* mvf_quantities: len_direct held for b1, b2 */
+	double len_lo[2], len_hi[2];
 	double nh[3];          /* |n_i - u_i| <= nh[i] */
 	double phi_lo, phi_hi; /* the box's azimuths (radians) ...          */
 	double rr_lo;          /* ... and |(u_x, u_y)| >= rr_lo over it      */
@@ -190,7 +203,7 @@ static cv fresh(mvf *m, int fmt)
 	x->ng = 0;
 	x->fmt = fmt;
 	x->is_cst = 0;
-	x->rsqrt_of = x->cvt_of = -1;
+	x->rsqrt_of = x->cvt_of = x->seed_k = -1;
 	x->has_br = 0;
 	x->input = -1;
 	x->in_h = 0.0;
@@ -201,6 +214,8 @@ static cv fresh(mvf *m, int fmt)
 	x->opaque = 0;
 	x->quantum = x->act_lo = 0.0;
 	x->sub_a = x->sub_b = -1;
+	x->ls_p = 0;
+	x->ls_k = -1;
 	x->tg_p = 0;
 	x->tg_var = -1;
 	return m->n++;
@@ -1236,6 +1251,8 @@ static int norm_sqrt(mvf *m, int f, cv ir, cv ia)
    in hull(0, e_d): the tag that ADD gives a^2 (1 + d1) + S_d (1 + e_d),
    with d1 = 0.  Without it the length of (x, y) near a pole, an fma in a
    contracted build, holds 0 and its reciprocal is unbounded. */
+static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id);
+
 static void fma_square_tag(mvf *m, int f, int exact, cv ir, cv ia, cv ib, cv id)
 {
 	mval *r = &m->val[ir];
@@ -1260,7 +1277,119 @@ static void fma_square_tag(mvf *m, int f, int exact, cv ir, cv ia, cv ib, cv id)
 	r->tg_olo = r->tg_ohi = 0.0;
 }
 
+/* A length tag's sum of squares a^2 (1 + d) + eta, or fma(a, a, c) and
+   a + c for a tagged c (terms >= 0: S1 (1 + e1) + S2 (1 + e2) = (S1 + S2)
+   (1 + e), e in hull(e1, e2)); 0 when a's base is among c's already. */
+static int len_square(mvf *m, mval *r, const mval *c, cv base, double u, double eta)
+{
+	int i;
+	if (c->ls_nb + 1 > 3)
+		return 0;
+	for (i = 0; i < c->ls_nb; i++)
+		if (c->ls_b[i] == base)
+			return 0;
+	memcpy(r->ls_b, c->ls_b, sizeof r->ls_b);
+	r->ls_b[c->ls_nb] = base;
+	r->ls_nb = c->ls_nb + 1;
+	r->ls_lo = rel_mul(m, fmin(0.0, c->ls_lo), -u, 0);
+	r->ls_hi = rel_mul(m, fmax(0.0, c->ls_hi), u, 1);
+	r->ls_abs = round_up_d(round_up_d(c->ls_abs * (1.0 + 2 * u)) + eta);
+	r->ls_p = 2;
+	return 1;
+}
+
+static int len_add(mvf *m, mval *r, const mval *a, const mval *b, double u, double eta)
+{
+	int i, j;
+	if (a->ls_nb + b->ls_nb > 3)
+		return 0;
+	for (i = 0; i < a->ls_nb; i++)
+		for (j = 0; j < b->ls_nb; j++)
+			if (a->ls_b[i] == b->ls_b[j])
+				return 0;
+	memcpy(r->ls_b, a->ls_b, (size_t)a->ls_nb * sizeof *r->ls_b);
+	memcpy(r->ls_b + a->ls_nb, b->ls_b, (size_t)b->ls_nb * sizeof *r->ls_b);
+	r->ls_nb = a->ls_nb + b->ls_nb;
+	r->ls_lo = rel_mul(m, fmin(a->ls_lo, b->ls_lo), -u, 0);
+	r->ls_hi = rel_mul(m, fmax(a->ls_hi, b->ls_hi), u, 1);
+	r->ls_abs = round_up_d(round_up_d(round_up_d(a->ls_abs + b->ls_abs) * (1.0 + 2 * u)) + eta);
+	r->ls_p = 2;
+	return 1;
+}
+
+/* A reciprocal length (1 + o)/sqrt(x) of a tagged sum of squares x. */
+static void len_recip(mval *r, cv ix, double olo, double ohi)
+{
+	r->ls_p = -1;
+	r->ls_x = ix;
+	r->ls_olo = olo;
+	r->ls_ohi = ohi;
+}
+
+/* The length tags after r = op(a, b, d), each operation taken as rounded
+   (an exact one is a rounding with d = 0): squares and their sums, square
+   roots, reciprocals, and the outputs q K, q / L of a tagged K, L. */
+static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
+{
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[ia], *b = ib >= 0 ? &m->val[ib] : NULL, *d = id >= 0 ? &m->val[id] : NULL;
+	const double u = unit_round(f), eta = tiny_of(f);
+	static const mval none = { .ls_nb = 0, .ls_lo = 0.0, .ls_hi = 0.0, .ls_abs = 0.0 };
+	if (m->failed || m->zero_e)
+		return;
+	if (op == MVF_NEG || (op == MVF_CVT && a->fmt <= f)) {   /* exact: the same lengths */
+		r->ls_k = a->ls_k; r->ls_q = a->ls_q; r->ls_u = a->ls_u; r->ls_eta = a->ls_eta;
+		if (op == MVF_CVT) {
+			r->ls_p = a->ls_p; r->ls_nb = a->ls_nb; r->ls_x = a->ls_x;
+			memcpy(r->ls_b, a->ls_b, sizeof r->ls_b);
+			r->ls_lo = a->ls_lo; r->ls_hi = a->ls_hi; r->ls_abs = a->ls_abs;
+			r->ls_olo = a->ls_olo; r->ls_ohi = a->ls_ohi;
+		}
+		return;
+	}
+	if (op == MVF_CVT) {   /* a rounded narrowing: x (1 + d) + eta, K (1 + d) */
+		if (a->ls_p == 2) {
+			memcpy(r->ls_b, a->ls_b, sizeof r->ls_b);
+			r->ls_nb = a->ls_nb;
+			r->ls_lo = rel_mul(m, a->ls_lo, -u, 0);
+			r->ls_hi = rel_mul(m, a->ls_hi, u, 1);
+			r->ls_abs = round_up_d(round_up_d(a->ls_abs * (1.0 + 2 * u)) + eta);
+			r->ls_p = 2;
+		} else if (a->ls_p == 1 || a->ls_p == -1) {
+			mpfi_mig(m->f1, a->v);
+			if (mpfr_cmp_d(m->f1, normal_min(f)) >= 0) {
+				len_recip(r, a->ls_x, rel_mul(m, a->ls_olo, -u, 0), rel_mul(m, a->ls_ohi, u, 1));
+				r->ls_p = a->ls_p;
+			}
+		}
+	} else if (op == MVF_MUL && ia == ib)
+		len_square(m, r, &none, a->base, u, eta);
+	else if (op == MVF_FMA && ia == ib && d->ls_p == 2)
+		len_square(m, r, d, a->base, u, eta);
+	else if (op == MVF_ADD && a->ls_p == 2 && b->ls_p == 2)
+		len_add(m, r, a, b, u, eta);
+	else if (op == MVF_SQRT && a->ls_p == 2) {
+		len_recip(r, ia, -u, u);
+		r->ls_p = 1;
+	} else if (op == MVF_DIV && is_cst(a, 1.0) && b->ls_p == 1)
+		len_recip(r, b->ls_x, rel_div(m, -u, b->ls_ohi, 0), rel_div(m, u, b->ls_olo, 1));
+	else if ((op == MVF_MUL && (b->ls_p == -1 || a->ls_p == -1)) || (op == MVF_DIV && b->ls_p == 1)) {
+		const int k_is_a = op == MVF_MUL && b->ls_p != -1;
+		r->ls_k = k_is_a ? ia : ib;
+		r->ls_q = k_is_a ? b->base : a->base;
+		r->ls_u = u;
+		r->ls_eta = eta;
+	}
+}
+
 cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
+{
+	cv ir = op_value(m, op, f, ia, ib, id);
+	len_track(m, op, f, ir, ia, ib, id);
+	return ir;
+}
+
+static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 {
 	cv ir = fresh(m, f);
 	mval *r = &m->val[ir];
@@ -1293,6 +1422,7 @@ cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		if (a->fmt < r->fmt)
 			r->fmt = a->fmt;
 		r->rsqrt_of = a->rsqrt_of;
+		r->seed_k = a->seed_k;
 		r->rel_lo = a->rel_lo;
 		r->rel_hi = a->rel_hi;
 	}
@@ -1340,12 +1470,15 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 	mpfi_interv_d(m->t1, 1.0 - sb.bound, 1.0 + sb.bound);
 	imul(m, r->v, m->s1, m->t1);                    /* (1 + e)/sqrt(a)         */
 	r->rsqrt_of = ia;
+	r->seed_k = (int)k;
 	r->rel_lo = 1.0 - sb.bound;
 	r->rel_hi = 1.0 + sb.bound;
 	if (m->zero_e) {
 		exact_rsqrt(m, r, a);
 		return ir;
 	}
+	if (a->ls_p == 2)
+		len_recip(r, ia, -sb.bound, sb.bound);
 	mpfi_div(m->s2, r->v, a->v);                     /* d/da = -(1 + e)/(2 a^1.5) */
 	mpfi_div_2ui(m->s2, m->s2, 1);
 	mpfi_neg(m->s2, m->s2);
@@ -1712,8 +1845,96 @@ static cv ex_dot(mvf *m, const cv *p, const cv *q)
 	return ex(m, MVF_ADD, s, ex(m, MVF_MUL, p[2], q[2]));
 }
 
+/* An enclosure [*lo, *hi] of |b|^2 - 1 for the actual outputs b = out[0..2]
+   from their length tags alone, whatever the box: b_i = q_i K (1 + d_i) +
+   eta_i (or q_i / K) for one tagged K = (1 + o)^-+1 x^-+1/2, x = S (1 + eps)
+   + alpha and S the sum of the q_i^2 (a zero output has no q), so
+   |b~|^2 = (1 + d)^2 (1 + o)^+-2 / (1 + eps + alpha/S), |b| = |b~| +-
+   sqrt(3) eta.  Returns 0 when the outputs are not of that form. */
+static int len_direct(mvf *m, const cv out[3], double *lo, double *hi)
+{
+	const mval *k = NULL, *x;
+	cv seen[3];
+	double u = 0.0, eta = 0.0, L;
+	int ns = 0, i, j;
+	for (i = 0; i < 3; i++) {
+		const mval *b = &m->val[out[i]];
+		if (is_zero(b))
+			continue;
+		if (b->ls_k < 0 || (k && k != &m->val[b->ls_k]))
+			return 0;
+		k = &m->val[b->ls_k];
+		for (j = 0; j < ns; j++)
+			if (seen[j] == b->ls_q)
+				return 0;
+		seen[ns++] = b->ls_q;
+		u = fmax(u, b->ls_u);
+		eta = fmax(eta, b->ls_eta);
+	}
+	if (!k || (k->ls_p != 1 && k->ls_p != -1) || (x = &m->val[k->ls_x])->ls_p != 2 || x->ls_nb != ns)
+		return 0;
+	for (i = 0; i < ns; i++) {
+		for (j = 0; j < ns && seen[j] != x->ls_b[i]; j++)
+			;
+		if (j == ns)
+			return 0;
+	}
+	mpfi_get_left(m->f1, x->v);                      /* S >= (x - alpha)/(1 + eps) */
+	mpfr_sub_d(m->f1, m->f1, x->ls_abs, MPFR_RNDD);
+	mpfr_div_d(m->f1, m->f1, round_up_d(1.0 + x->ls_hi), MPFR_RNDD);
+	L = mpfr_get_d(m->f1, MPFR_RNDD);
+	if (x->ls_abs > 0.0 && !(L > 0.0))
+		return 0;
+	mpfr_set_d(m->f1, x->ls_abs, MPFR_RNDU);
+	if (x->ls_abs > 0.0)
+		mpfr_div_d(m->f1, m->f1, L, MPFR_RNDU);            /* rho = alpha/S   */
+	mpfr_sub_d(m->f2, m->f1, x->ls_lo, MPFR_RNDU);
+	mpfr_ui_sub(m->f2, 1, m->f2, MPFR_RNDD);               /* 1 + eps - rho   */
+	mpfr_add_d(m->f1, m->f1, x->ls_hi, MPFR_RNDU);
+	mpfr_add_ui(m->f1, m->f1, 1, MPFR_RNDU);
+	if (mpfr_sgn(m->f2) <= 0)
+		return 0;
+	mpfi_interv_fr(m->s1, m->f2, m->f1);
+	mpfi_interv_d(m->s2, 1.0 + k->ls_olo, 1.0 + k->ls_ohi);   /* exact: |o| >= 2^-60 */
+	mpfi_sqr(m->s2, m->s2);
+	if (k->ls_p == 1)
+		mpfi_inv(m->s2, m->s2);
+	mpfi_div(m->s1, m->s2, m->s1);
+	mpfi_interv_d(m->s2, 1.0 - u, 1.0 + u);
+	mpfi_sqr(m->s2, m->s2);
+	imul(m, m->s1, m->s1, m->s2);                           /* |b~|^2         */
+	mpfi_sqrt(m->s1, m->s1);
+	mpfr_set_d(m->f1, eta, MPFR_RNDU);
+	mpfr_mul_d(m->f1, m->f1, 1.7320508075688774, MPFR_RNDU);
+	mpfi_interv_fr(m->s2, m->f1, m->f1);
+	mpfi_neg(m->t1, m->s2);
+	mpfi_put(m->s2, m->t1);
+	mpfi_add(m->s1, m->s1, m->s2);
+	if (mpfi_has_zero(m->s1))
+		return 0;
+	mpfi_sqr(m->s1, m->s1);
+	mpfi_sub_d(m->s1, m->s1, 1.0);
+	mpfi_get_left(m->f1, m->s1);
+	*lo = mpfr_get_d(m->f1, MPFR_RNDD);
+	mpfi_get_right(m->f1, m->s1);
+	*hi = mpfr_get_d(m->f1, MPFR_RNDU);
+	return !(isnan(*lo) || isnan(*hi));
+}
+
+int mvf_len_direct(const mvf *m, int which, double *lo, double *hi)
+{
+	if (!m->len_ok[which])
+		return 0;
+	*lo = m->len_lo[which];
+	*hi = m->len_hi[which];
+	return 1;
+}
+
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
 {
+	int i;
+	for (i = 0; i < 2; i++)
+		m->len_ok[i] = !m->failed && !m->zero_e && len_direct(m, out + 3 * i, &m->len_lo[i], &m->len_hi[i]);
 	cv one = mvf_cst(m, 1.0);
 	/* |b|^2 - 1, not |b| - 1: a wide box's b.b can reach 0, where the
 	   derivative of the square root is unbounded (bound.c converts) */
@@ -1773,8 +1994,10 @@ static void newton_poly(mvf *m, double r, mpfi_srcptr p, mpfi_ptr out)
    concave in r > 0 and decreasing in p, so its range over the box is at
    the corners and at its peak r = 1/sqrt(p), f = 1/sqrt(p).  Returns the
    bound of |y1 sqrt(x) - 1|, or -1 when y is no seed of x. */
-static double newton_rel(mvf *m, int f, cv ix, cv iy, int embree)
+static int newton_scanned(mvf *m, int f, cv ix, cv iy, newton_kind k, double *lo, double *hi);
+static double newton_rel(mvf *m, int f, cv ix, cv iy, newton_kind k)
 {
+	const int embree = k == NEWTON_EMBREE || k == NEWTON_EMBREE_FUSED;
 	const mval *y = &m->val[iy];
 	double u = unit_round(f), rlo = y->rel_lo, rhi = y->rel_hi, lo, hi;
 	if (y->rsqrt_of < 0)
@@ -1820,13 +2043,50 @@ static double newton_rel(mvf *m, int f, cv ix, cv iy, int embree)
 	imul(m, m->t1, m->t1, m->s1);
 	mpfi_sub_d(m->t1, m->t1, 1.0);
 	mpfi_mag(m->f1, m->t1);
-	return mpfr_get_d(m->f1, MPFR_RNDU);
+	hi = mpfr_get_d(m->f1, MPFR_RNDU);
+	if (newton_scanned(m, f, ix, iy, k, &lo, &rhi))
+		hi = fmin(hi, fmax(-lo, rhi));
+	return hi;
+}
+
+/* The scan's range [*lo, *hi] of y1 sqrt(x) - 1 (newton_f.c), where y is a
+   float seed of the float x itself and x lies in at most 4 binades. */
+static int newton_scanned(mvf *m, int f, cv ix, cv iy, newton_kind k, double *lo, double *hi)
+{
+	const mval *y = &m->val[iy];
+	double a, b;
+	int ea, eb;
+	if (f != PREC_FLOAT || y->rsqrt_of != ix || y->seed_k < 0 || m->zero_e)
+		return 0;
+	mpfi_get_left(m->f1, m->val[ix].v);
+	mpfi_get_right(m->f2, m->val[ix].v);
+	a = mpfr_get_d(m->f1, MPFR_RNDD);
+	b = mpfr_get_d(m->f2, MPFR_RNDU);
+	if (!(a >= 0x1p-126 && b < 0x1p127))
+		return 0;
+	frexp(a, &ea);
+	frexp(b, &eb);
+	return eb - ea < 4 && newton_range_f(k, (seed_kind)y->seed_k, ea + 126, eb + 126, lo, hi) == 0;
+}
+
+/* y1 = (1 + o)/sqrt(x): o's range, [-newton_rel, newton_rel] or the scan's. */
+static void newton_o(mvf *m, int f, cv ix, cv iy, newton_kind k, double e, double *lo, double *hi)
+{
+	*lo = -e;
+	*hi = e;
+	if (newton_scanned(m, f, ix, iy, k, lo, hi)) {
+		*lo = fmax(*lo, -e);
+		*hi = fmin(*hi, e);
+	}
 }
 
 /* Listing 3's Newton step, as y1 = (1 + e)/sqrt(x) with |e| <= newton_rel.
    Needs h, h y and (h y) y normal: x >= 2^-100 (float) or 2^-1000. */
-static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree);
-cv mvf_newton(mvf *m, int f, cv ix, cv iy) { return newton_common(m, f, ix, iy, 0); }
+static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k);
+cv mvf_newton(mvf *m, int f, cv ix, cv iy, int fused)
+{
+	return newton_common(m, f, ix, iy, fused ? NEWTON_L3_FUSED : NEWTON_L3);
+}
 
 /* Embree's step 1.5 y + ((x (-0.5)) y)(y y) on a seed y = r/sqrt(x): with
    the roundings dd of 1.5 y, da, db, dc of the three products and dy of the
@@ -1835,17 +2095,18 @@ cv mvf_newton(mvf *m, int f, cv ix, cv iy) { return newton_common(m, f, ix, iy, 
    form with another p.  Returns -1 when y is no seed of x (then the model
    runs the operations one by one).  The result carries a norm tag when x
    does: y1 = (1 + o)/sqrt(S (1 + eps + rho)). */
-cv mvf_newton_embree(mvf *m, int f, cv ix, cv iy)
+cv mvf_newton_embree(mvf *m, int f, cv ix, cv iy, int fused)
 {
+	const newton_kind k = fused ? NEWTON_EMBREE_FUSED : NEWTON_EMBREE;
 	cv ir;
 	const mval *x = &m->val[ix];
 	mval *r;
 	double e;
-	if (m->failed || newton_rel(m, f, ix, iy, 1) < 0.0)
+	if (m->failed || newton_rel(m, f, ix, iy, k) < 0.0)
 		return -1;
-	ir = newton_common(m, f, ix, iy, 1);
+	ir = newton_common(m, f, ix, iy, k);
 	r = &m->val[ir];
-	e = m->zero_e ? 0.0 : newton_rel(m, f, ix, iy, 1);
+	e = m->zero_e ? 0.0 : newton_rel(m, f, ix, iy, k);
 	if (!m->failed && x->tg_p == 2) {
 		memcpy(r->tg_b, x->tg_b, sizeof r->tg_b);
 		r->tg_nb = x->tg_nb;
@@ -1857,12 +2118,12 @@ cv mvf_newton_embree(mvf *m, int f, cv ix, cv iy)
 	return ir;
 }
 
-static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree)
+static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 {
 	cv ir = fresh(m, f);
 	mval *r = &m->val[ir];
 	const mval *x = &m->val[ix];
-	double e = newton_rel(m, f, ix, iy, embree);
+	double e = newton_rel(m, f, ix, iy, k), olo, ohi;
 	mpfi_get_left(m->f1, x->v);
 	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == PREC_FLOAT ? 0x1p-100 : 0x1p-1000) < 0) {
 		m->failed = 1;
@@ -1873,6 +2134,10 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, int embree)
 	if (m->zero_e) {
 		exact_rsqrt(m, r, x);
 		return ir;
+	}
+	if (x->ls_p == 2) {
+		newton_o(m, f, ix, iy, k, e, &olo, &ohi);
+		len_recip(r, ix, olo, ohi);
 	}
 	mpfi_interv_d(m->t1, 1.0 - e, 1.0 + e);
 	imul(m, r->v, m->s1, m->t1);

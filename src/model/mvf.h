@@ -38,6 +38,9 @@ enum { MVF_FULL = 0, MVF_AT_ZERO, MVF_VALUES, MVF_AT_MID, MVF_CENTRED };
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3]);
 void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5]);
 void mvf_bounds(mvf *m, cv q, double *lo, double *hi, double *lin);
+/* An enclosure of |b|^2 - 1 for b1 (which 0) or b2 (1) from how the run
+   normalized it, whatever the box (mvf_quantities; 0: none). */
+int  mvf_len_direct(const mvf *m, int which, double *lo, double *hi);
 /* sum_k r_k max|dQ/de_k| over the arithmetic's error terms alone (not the
    input's own rounding), and whether the full sum mvf_bounds gives is
    valid (0 when a normalization of a vector whose length can reach 0 over

@@ -56,21 +56,6 @@ const char *seed_name(seed_kind k)
 	return (unsigned)k < NSEED ? names[k] : "?";
 }
 
-/* D = s^2 x - 1 for float s, x > 0.  sx = s*x is exact (24 + 24 bits);
-   hi = (float)sx and lo = sx - hi are exact, each of 24 bits; s*hi and
-   s*lo are exact (48 bits); s*hi is in [0.5, 2] so s*hi - 1 is exact
-   (Sterbenz): D = (s*hi - 1) + s*lo rounds once, d = D (1 + r) with
-   |r| <= 2^-53.  NAN outside the premise. */
-static inline double seed_dev_f(float x, float s)
-{
-	const double sd = s, sx = sd * (double)x;
-	const double hi = (double)(float)sx, lo = sx - hi;
-	const double a = sd * hi;
-	if (!(a >= 0.5 && a <= 2.0) || !isfinite(sx))
-		return NAN;
-	return (a - 1.0) + sd * lo;
-}
-
 /* |e| = |D| / (1 + sqrt(1 + D)) from d: 1 + d, the sqrt, 1 + sqrt and the
    division add at most 3 roundings on quantities near 1 and 2 to d's one;
    the condition of D -> e is <= 1.02 for |D| <= 0.07: in all the result

@@ -25,6 +25,7 @@
  */
 #ifndef ONB_SEEDS_H
 #define ONB_SEEDS_H
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -54,6 +55,21 @@ const char *seed_name(seed_kind k);
 float  seed_rsqrtss(float x);
 float  seed_invsqrt_f(float x);
 double seed_invsqrt_d(double x);
+
+/* D = s^2 x - 1 for float s, x > 0.  sx = s*x is exact (24 + 24 bits);
+   hi = (float)sx and lo = sx - hi are exact, each of 24 bits; s*hi and
+   s*lo are exact (48 bits); s*hi is in [0.5, 2] so s*hi - 1 is exact
+   (Sterbenz): D = (s*hi - 1) + s*lo rounds once, d = D (1 + r) with
+   |r| <= 2^-53.  NAN outside the premise. */
+static inline double seed_dev_f(float x, float s)
+{
+	const double sd = s, sx = sd * (double)x;
+	const double hi = (double)(float)sx, lo = sx - hi;
+	const double a = sd * hi;
+	if (!(a >= 0.5 && a <= 2.0) || !isfinite(sx))
+		return NAN;
+	return (a - 1.0) + sd * lo;
+}
 
 /* |s sqrt(x) - 1| for float s, x > 0 normal with s*s*x in [0.5, 2],
    computed from exact partial products: relative error below 2^-50

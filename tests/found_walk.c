@@ -19,7 +19,9 @@
  * a summary: regions, how many are beaten by more than 5%, the largest and
  * the median walk / found; and every region where the walk exceeds the
  * bound (a failed proof).  Exit 0, 1 when some walk exceeds a bound, or 2
- * on bad input.
+ * on bad input.  The regions run in parallel (OpenMP), each on its own
+ * random stream from SEED and its row number: the same result on any
+ * number of threads.
  */
 #include <math.h>
 #include <stdint.h>
@@ -35,21 +37,23 @@
 #define MAXK 128
 #define MAXROW 40000
 
-static uint64_t rng;
-static uint64_t next(void)   /* SplitMix64: the mix of the counter, then the step */
-{
-	const uint64_t v = rng_mix64(rng);
-	rng += 0x9e3779b97f4a7c15u;
-	return v;
-}
-static double unit(void) { return (double)(next() >> 11) * 0x1p-53; }
-
 typedef struct {
 	cert_ctx *x;
 	const study_kernel *k;
 	int prec;
 	cert_region r;
+	uint64_t rng;   /* the row's own stream: the same walks on any thread */
 } walker;
+
+static uint64_t next_of(walker *w)   /* SplitMix64: the mix of the counter, then the step */
+{
+	const uint64_t v = rng_mix64(w->rng);
+	w->rng += 0x9e3779b97f4a7c15u;
+	return v;
+}
+#define next() next_of(w)
+static double unit_of(walker *w) { return (double)(next() >> 11) * 0x1p-53; }
+#define unit() unit_of(w)
 
 /* The defect at n, or -1 when n is outside the region or the domain. */
 static double defect(walker *w, const double n[3])
@@ -125,79 +129,132 @@ static int cmp_d(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
+typedef struct {
+	char meth[64];
+	int k, prec;
+	cert_region r;
+	double bound, found, n[3];
+	double best, at[3];   /* the walks' result */
+} row;
+
+static row rows[MAXROW];
 static double ratios[MAXROW];
 
-int main(int argc, char **argv)
+/* The rows of a certify.csv to walk: not singular, not whole-sphere, with
+   a found input, of a method this build has. */
+static int read_rows(FILE *in, const study_kernel *ks, int nk)
 {
-	static study_kernel ks[MAXK];
 	char line[4096];
-	long restarts = argc > 2 ? atol(argv[2]) : 20, steps = argc > 3 ? atol(argv[3]) : 300;
-	int nk = kernels_select(NULL, 0, ks, MAXK), nr = 0, beaten = 0, above = 0;
-	double worst = 0.0;
-	walker w;
-	FILE *in;
-	if (argc < 2 || argc > 5 || restarts < 0 || steps < 0) {
-		fprintf(stderr, "usage: found_walk CERTIFY.CSV [RESTARTS [STEPS [SEED]]]\n");
-		return 2;
-	}
-	rng = argc > 4 ? strtoull(argv[4], NULL, 0) : 12345;
-	if (!(in = fopen(argv[1], "r"))) {
-		fprintf(stderr, "found_walk: %s: cannot open\n", argv[1]);
-		return 2;
-	}
-	memset(&w, 0, sizeof w);
-	w.x = cert_ctx_new();
+	int nr = 0;
 	while (fgets(line, sizeof line, in) && nr < MAXROW) {
-		char meth[64], prec[16], status[16], fx[64], fy[64], fz[64];
-		double bound, found, n[3], best, at[3];
-		long r;
+		char prec[16], status[16], fx[64], fy[64], fz[64];
+		row *w = &rows[nr];
 		int k;
 		if (line[0] == '#' || strncmp(line, "method,", 7) == 0)
 			continue;
 		for (k = 0; line[k]; k++)
 			if (line[k] == ',')
 				line[k] = ' ';
-		if (sscanf(line, "%63s %15s %lf %lf %lf %lf %lf %lf %63s %63s %63s %15s", meth, prec, &w.r.nz_lo,
-		           &w.r.nz_hi, &w.r.phi_lo, &w.r.phi_hi, &bound, &found, fx, fy, fz, status) != 12)
+		if (sscanf(line, "%63s %15s %lf %lf %lf %lf %lf %lf %63s %63s %63s %15s", w->meth, prec, &w->r.nz_lo,
+		           &w->r.nz_hi, &w->r.phi_lo, &w->r.phi_hi, &w->bound, &w->found, fx, fy, fz, status) != 12)
 			continue;
-		if (strcmp(status, "singular") == 0 || (w.r.nz_lo == -1.0 && w.r.nz_hi == 1.0 && w.r.phi_hi == 360.0 &&
-		                                        w.r.phi_lo == 0.0) || !(found > 0.0))
+		if (strcmp(status, "singular") == 0 || (w->r.nz_lo == -1.0 && w->r.nz_hi == 1.0 && w->r.phi_hi == 360.0 &&
+		                                        w->r.phi_lo == 0.0) || !(w->found > 0.0))
 			continue;
-		for (k = 0; k < nk && strcmp(ks[k].name, meth) != 0; k++)
+		for (k = 0; k < nk && strcmp(ks[k].name, w->meth) != 0; k++)
 			;
 		if (k == nk)
 			continue;
-		w.k = &ks[k];
-		w.prec = strcmp(prec, "double") == 0 ? PREC_DOUBLE : PREC_FLOAT;
-		n[0] = strtod(fx, NULL); n[1] = strtod(fy, NULL); n[2] = strtod(fz, NULL);
-		best = climb(&w, n, steps);
-		memcpy(at, n, sizeof at);
-		for (r = 0; r < restarts; r++) {
-			double d;
-			start(&w, n);
-			if ((d = climb(&w, n, steps)) > best) {   /* keep its input: the one printed */
-				best = d;
-				memcpy(at, n, sizeof at);
-			}
-		}
-		ratios[nr++] = best / found;
-		if (best > bound) {   /* the proof fails: never expected */
-			above++;
-			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: ABOVE THE BOUND %.6g: walk %.6g at (%a, %a, %a)\n", meth,
-			       prec, w.r.nz_lo, w.r.nz_hi, w.r.phi_lo, w.r.phi_hi, bound, best, at[0], at[1], at[2]);
-		}
-		if (best > 1.05 * found) {
-			beaten++;
-			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: found %.6g, walk %.6g (x%.3f) at (%a, %a, %a)\n", meth,
-			       prec, w.r.nz_lo, w.r.nz_hi, w.r.phi_lo, w.r.phi_hi, found, best, best / found, at[0], at[1], at[2]);
-		}
-		if (best / found > worst)
-			worst = best / found;
+		w->k = k;
+		w->prec = strcmp(prec, "double") == 0 ? PREC_DOUBLE : PREC_FLOAT;
+		w->n[0] = strtod(fx, NULL); w->n[1] = strtod(fy, NULL); w->n[2] = strtod(fz, NULL);
+		nr++;
 	}
+	return nr;
+}
+
+/* One row's walks: from its found input, then `restarts` random starts. */
+static void walk_row(walker *w, row *r, long restarts, long steps)
+{
+	double n[3];
+	long i;
+	memcpy(n, r->n, sizeof n);
+	r->best = climb(w, n, steps);
+	memcpy(r->at, n, sizeof n);
+	for (i = 0; i < restarts; i++) {
+		double d;
+		start(w, n);
+		if ((d = climb(w, n, steps)) > r->best) {   /* keep its input: the one printed */
+			r->best = d;
+			memcpy(r->at, n, sizeof n);
+		}
+	}
+}
+
+int main(int argc, char **argv)
+{
+	static study_kernel ks[MAXK];
+	long restarts = argc > 2 ? atol(argv[2]) : 20, steps = argc > 3 ? atol(argv[3]) : 300;
+	int nk = kernels_select(NULL, 0, ks, MAXK), nr, i, beaten = 0, above = 0, fail = 0;
+	uint64_t seed;
+	double worst = 0.0;
+	FILE *in;
+	if (argc < 2 || argc > 5 || restarts < 0 || steps < 0) {
+		fprintf(stderr, "usage: found_walk CERTIFY.CSV [RESTARTS [STEPS [SEED]]]\n");
+		return 2;
+	}
+	seed = argc > 4 ? strtoull(argv[4], NULL, 0) : 12345;
+	if (!(in = fopen(argv[1], "r"))) {
+		fprintf(stderr, "found_walk: %s: cannot open\n", argv[1]);
+		return 2;
+	}
+	nr = read_rows(in, ks, nk);
 	fclose(in);
+#pragma omp parallel
+	{
+		walker w;
+		int j;
+		memset(&w, 0, sizeof w);
+		if (!(w.x = cert_ctx_new())) {
+#pragma omp atomic write
+			fail = 1;
+		}
+#pragma omp for schedule(dynamic, 1)
+		for (j = 0; j < nr; j++) {
+			if (!w.x)
+				continue;
+			w.k = &ks[rows[j].k];
+			w.prec = rows[j].prec;
+			w.r = rows[j].r;
+			w.rng = rng_mix64(seed ^ rng_mix64((uint64_t)j));
+			walk_row(&w, &rows[j], restarts, steps);
+		}
+		cert_ctx_free(w.x);
+	}
+	if (fail) {
+		fprintf(stderr, "found_walk: out of memory\n");
+		return 2;
+	}
+	for (i = 0; i < nr; i++) {
+		const row *r = &rows[i];
+		ratios[i] = r->best / r->found;
+		if (r->best > r->bound) {   /* the proof fails: never expected */
+			above++;
+			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: ABOVE THE BOUND %.6g: walk %.6g at (%a, %a, %a)\n", r->meth,
+			       prec_name(r->prec), r->r.nz_lo, r->r.nz_hi, r->r.phi_lo, r->r.phi_hi, r->bound, r->best, r->at[0],
+			       r->at[1], r->at[2]);
+		}
+		if (r->best > 1.05 * r->found) {
+			beaten++;
+			printf("%s %s n.z [%.17g, %.17g] phi [%g, %g]: found %.6g, walk %.6g (x%.3f) at (%a, %a, %a)\n", r->meth,
+			       prec_name(r->prec), r->r.nz_lo, r->r.nz_hi, r->r.phi_lo, r->r.phi_hi, r->found, r->best,
+			       r->best / r->found, r->at[0], r->at[1], r->at[2]);
+		}
+		if (ratios[i] > worst)
+			worst = ratios[i];
+	}
 	qsort(ratios, (size_t)nr, sizeof *ratios, cmp_d);
 	printf("found_walk: %d regions, %ld restarts x %ld steps: walk beats found by > 5%% in %d; largest walk/found %.4f, median %.4f; above the bound in %d\n",
 	       nr, restarts, steps, beaten, worst, nr ? ratios[nr / 2] : NAN, above);
-	cert_ctx_free(w.x);
 	return above ? 1 : 0;
 }

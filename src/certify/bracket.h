@@ -17,6 +17,8 @@ typedef struct {
 	char method[48];
 	int prec;
 	double n[3];
+	int has_loc;        /* frisvad_rotate's found local direction, when given */
+	double loc[3];
 } cert_start;
 
 typedef struct {

@@ -28,6 +28,8 @@ typedef struct {
 	cert_opts o;
 	int sectors;
 	int band;               /* --band given: only lo <= n.z <= hi */
+	long refined;           /* regions refine_top bounded again ...    */
+	double refine_s;        /* ... in this many seconds                */
 	double band_lo, band_hi;
 	int quick;
 	int quiet;
@@ -71,8 +73,9 @@ static void usage(FILE *f)
 	"                    the default bands cut to it; the summary row is that band\n"
 	"  --starts FILES    CSV files of earlier worst inputs (columns method, precision,\n"
 	"                    nx,ny,nz or found_nx,found_ny,found_nz: a certify.csv or a\n"
-	"                    sweep's worst.csv): the found side also walks from those\n"
-	"                    of each method, precision and region\n"
+	"                    sweep's worst.csv; frisvad_rotate's rows also lx,ly,lz or\n"
+	"                    found_lx,found_ly,found_lz): the found side also walks from\n"
+	"                    those of each method, precision and region\n"
 	"  --fma             also the methods' --fma copies (compiled with -mfma\n"
 	"                    -ffp-contract=fast), as METHOD+fma rows, where a contracted\n"
 	"                    rounding model exists (docs/certify.md lists which)\n"
@@ -107,7 +110,7 @@ static int col_of(char **h, int nh, const char *a, const char *b)
 static int load_start_file(const char *path, cert_start **v, long *n, long *cap)
 {
 	char line[8192], head[8192], *h[64], *f[64];
-	int nh = 0, cmeth = -1, cp = -1, cx = -1, cy = -1, cz = -1;
+	int nh = 0, cmeth = -1, cp = -1, cx = -1, cy = -1, cz = -1, lx = -1, ly = -1, lz = -1;
 	FILE *in = fopen(path, "r");
 	if (!in) {
 		study_error("--starts: %s: cannot open", path);
@@ -123,6 +126,7 @@ static int load_start_file(const char *path, cert_start **v, long *n, long *cap)
 			nh = split_fields(head, h, 64);
 			cmeth = col_of(h, nh, "method", NULL); cp = col_of(h, nh, "precision", NULL);
 			cx = col_of(h, nh, "found_nx", "nx"); cy = col_of(h, nh, "found_ny", "ny"); cz = col_of(h, nh, "found_nz", "nz");
+			lx = col_of(h, nh, "found_lx", "lx"); ly = col_of(h, nh, "found_ly", "ly"); lz = col_of(h, nh, "found_lz", "lz");
 			if (cmeth < 0 || cx < 0 || cy < 0 || cz < 0) {
 				study_error("--starts: %s: no method and nx,ny,nz (or found_nx,found_ny,found_nz) columns", path);
 				fclose(in);
@@ -145,6 +149,12 @@ static int load_start_file(const char *path, cert_start **v, long *n, long *cap)
 		snprintf(s->method, sizeof s->method, "%s", f[cmeth]);
 		s->prec = cp < 0 ? -1 : strcmp(f[cp], "double") == 0 ? PREC_DOUBLE : strcmp(f[cp], "float") == 0 ? PREC_FLOAT : -2;
 		s->n[0] = strtod(f[cx], &end[0]); s->n[1] = strtod(f[cy], &end[1]); s->n[2] = strtod(f[cz], &end[2]);
+		s->has_loc = 0;
+		if (lx >= 0 && ly >= 0 && lz >= 0 && *f[lx] && *f[ly] && *f[lz]) {   /* frisvad_rotate's loc */
+			char *le[3];
+			s->loc[0] = strtod(f[lx], &le[0]); s->loc[1] = strtod(f[ly], &le[1]); s->loc[2] = strtod(f[lz], &le[2]);
+			s->has_loc = !*le[0] && !*le[1] && !*le[2] && isfinite(s->loc[0] + s->loc[1] + s->loc[2]);
+		}
 		if (s->prec > -2 && !*end[0] && !*end[1] && !*end[2] && isfinite(s->n[0] + s->n[1] + s->n[2]))
 			(*n)++;
 	}
@@ -372,6 +382,141 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 	return fail ? -1 : 0;
 }
 
+/* The regions that set a whole-sphere bound, refined.  For each kernel
+   and precision whose whole-sphere bracket is wider than REFINE_ABOVE
+   (the target), the regions left at their budget whose bound is within
+   REFINE_NEAR of the largest, and above every bound a refined region
+   kept, are bounded again without the stall stop (cert_region_refine);
+   again while some are, while each round takes at least REFINE_GAIN off
+   its regions' largest bound, and for REFINE_MAX regions at most.  The stall stop keeps
+   the run short where splitting pays little; there it would decide the
+   whole-sphere bracket.  A region below a refined one's bound cannot lower
+   the whole-sphere bound: it is left. */
+#define REFINE_ABOVE 2.0
+#define REFINE_NEAR 0.98
+#define REFINE_GAIN 0.05
+#define REFINE_MAX 64
+
+typedef struct {
+	double top, kept, found;   /* the largest bound, a refined region's, the largest found */
+	double before;             /* the largest bound of the round's regions before it */
+	int stop, count;
+} refine_group;
+
+static int group_of(const task *t) { return 2 * t->k + t->prec; }
+
+static void refine_tops(const task *t, int nt, const cert_result *res, const unsigned char *done, refine_group *g, int ng)
+{
+	int i;
+	for (i = 0; i < ng; i++)
+		g[i].top = g[i].kept = g[i].found = 0.0;
+	for (i = 0; i < nt; i++) {
+		refine_group *r = &g[group_of(&t[i])];
+		if (res[i].status == CERT_SINGULAR)
+			continue;
+		if (res[i].bound > r->top)
+			r->top = res[i].bound;
+		if (done[i] && res[i].bound > r->kept)
+			r->kept = res[i].bound;
+		if (res[i].found > r->found)
+			r->found = res[i].found;
+	}
+}
+
+/* The next round's regions into pick; their number. */
+static int refine_pick(const task *t, int nt, const cert_result *res, const unsigned char *done, refine_group *g,
+                       int ng, int *pick)
+{
+	int i, np = 0;
+	refine_tops(t, nt, res, done, g, ng);
+	for (i = 0; i < ng; i++)
+		if (g[i].count == 0 && !(g[i].top > REFINE_ABOVE * g[i].found))
+			g[i].stop = 1;   /* within the target already */
+	for (i = 0; i < nt; i++) {
+		refine_group *r = &g[group_of(&t[i])];
+		if (!r->stop && r->count < REFINE_MAX && !done[i] && res[i].status == CERT_BUDGET &&
+		    res[i].bound >= REFINE_NEAR * r->top && res[i].bound > r->kept) {
+			pick[np++] = i;
+			r->count++;
+			if (res[i].bound > r->before)
+				r->before = res[i].bound;
+		}
+	}
+	return np;
+}
+
+/* After a round: a kernel and precision whose refined regions' largest
+   bound fell by less than REFINE_GAIN is refined no more. */
+static void refine_gain(const task *t, const cert_result *res, const int *pick, int np, refine_group *g, int ng)
+{
+	double *after = calloc((size_t)ng, sizeof *after);
+	int j;
+	if (!after) {
+		for (j = 0; j < ng; j++)
+			g[j].stop = 1;
+		return;
+	}
+	for (j = 0; j < np; j++)
+		if (res[pick[j]].bound > after[group_of(&t[pick[j]])])
+			after[group_of(&t[pick[j]])] = res[pick[j]].bound;
+	for (j = 0; j < ng; j++) {
+		if (g[j].before > 0.0 && !(after[j] <= (1.0 - REFINE_GAIN) * g[j].before))
+			g[j].stop = 1;
+		g[j].before = 0.0;
+	}
+	free(after);
+}
+
+static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
+                      cert_cli *c, cert_result *res)
+{
+	const double t0 = study_now();
+	unsigned char *done = calloc((size_t)nt, 1);
+	int *pick = malloc((size_t)nt * sizeof *pick), np, fail = 0, ng = 0, i;
+	refine_group *g;
+	for (i = 0; i < nt; i++)
+		if (group_of(&t[i]) >= ng)
+			ng = group_of(&t[i]) + 1;
+	g = calloc((size_t)ng + 1, sizeof *g);
+	if (!done || !pick || !g) {
+		free(done);
+		free(pick);
+		free(g);
+		study_error("out of memory");
+		return -1;
+	}
+	while (!fail && (np = refine_pick(t, nt, res, done, g, ng, pick)) > 0) {
+#pragma omp parallel
+		{
+			cert_ctx *x = cert_ctx_new();
+			int j;
+			if (!x) {
+#pragma omp atomic write
+				fail = 1;
+			}
+#pragma omp for schedule(dynamic, 1)
+			for (j = 0; j < np; j++) {
+				const int r = pick[j];
+				if (x)
+					cert_region_refine(x, &ks[t[r].k], ms[t[r].k], t[r].prec, &reg[t[r].prec * MAXREG + t[r].reg],
+					                   &c->o, &res[r]);
+				done[r] = 1;
+			}
+			cert_ctx_free(x);
+		}
+		refine_gain(t, res, pick, np, g, ng);
+	}
+	for (i = 0; i < nt; i++)
+		c->refined += done[i];
+	c->refine_s = study_now() - t0;
+	free(done);
+	free(pick);
+	free(g);
+	if (fail)
+		study_error("out of memory: some regions were not refined; nothing written");
+	return fail ? -1 : 0;
+}
+
 /* Does any selected method use an approximate reciprocal square root (a
    normalization of its registry row that starts from a seed)? */
 static int uses_seeds(const study_kernel *ks, int nk)
@@ -408,6 +553,8 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	                                                : "every n with | |n| - 1 | <= tolerance");
 	if (c->o.tolerance >= 0)
 		fprintf(f, "# tolerance: %.17g\n", c->o.tolerance);
+	fprintf(f, "# refine: %ld regions that set a whole-sphere bound wider than %.0fx found bounded again without the "
+	        "stall stop (%.0f s)\n", c->refined, REFINE_ABOVE, c->refine_s);
 	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
 	        c->o.budget, c->o.samples, c->o.target, c->sectors);
 	if (c->fma) {
@@ -542,7 +689,7 @@ int cmd_certify(int argc, char **argv)
 			}
 		}
 	}
-	if (study_mkdir_p(dir) || run_all(ks, ms, reg, nreg, t, nt, &c, res))
+	if (study_mkdir_p(dir) || run_all(ks, ms, reg, nreg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
 		goto done;
 	if (study_out_open(&out, dir, "certify.csv"))
 		goto done;

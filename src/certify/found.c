@@ -297,8 +297,11 @@ static void try_starts(probe_env *e)
 		if ((s->prec < 0 || s->prec == e->prec) && strcmp(s->method, e->k->name) == 0 &&
 		    (e->prec == PREC_DOUBLE || fmt_round(s->n[0], PREC_FLOAT) == s->n[0]) &&
 		    (e->prec == PREC_DOUBLE || (fmt_round(s->n[1], PREC_FLOAT) == s->n[1] &&
-		                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2])))
+		                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2]))) {
 			found_try(e, s->n, 0);
+			if (e->k->rot && s->has_loc)
+				found_dir_start(e, s->n, s->loc);
+		}
 	}
 }
 

@@ -30,6 +30,7 @@ typedef struct {
 	int ntop;
 	uint64_t rng;
 	double gate;   /* the largest screened defect measured so far */
+	int no_stall;  /* the branch and bound runs to its budget (search.c) */
 } probe_env;
 
 /* Evaluate input n (in the format) if it lies in the region and the domain
@@ -74,5 +75,8 @@ double found_dir_try(probe_env *e, const double n[3]);
 #define FOUND_DIR_CAND 12
 int found_dir_candidates(int prec, const double n[3], uint64_t *rng, double c[FOUND_DIR_CAND][3]);
 void found_dir_walk(probe_env *e, long steps);
+/* An earlier run's worst (n, loc) (--starts), measured where n lies in
+   the region and both in the domain. */
+void found_dir_start(probe_env *e, const double n[3], const double loc[3]);
 
 #endif

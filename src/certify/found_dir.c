@@ -196,6 +196,19 @@ double found_dir_try(probe_env *e, const double n[3])
 	return best;
 }
 
+/* An earlier run's worst (n, loc) (--starts): measured as it is, when n
+   lies in the region and both in the domain. */
+void found_dir_start(probe_env *e, const double n[3], const double loc[3])
+{
+	double d;
+	if (!cert_in_region(e->r, n) || !cert_in_domain(n, e->prec, e->o->tolerance) ||
+	    !cert_in_domain(loc, e->prec, -1.0) || (e->prec == PREC_FLOAT && (fmt_round(loc[0], PREC_FLOAT) != loc[0] ||
+	    fmt_round(loc[1], PREC_FLOAT) != loc[1] || fmt_round(loc[2], PREC_FLOAT) != loc[2])))
+		return;
+	if ((d = screen(e, n, loc)) >= 0.0)
+		measure(e, n, loc, d);
+}
+
 /* Ulp walks in loc from the found input: the two smaller components of
    loc moved by a few ulps at a random scale, the largest completed; a
    step that pays is kept.  This moves the roundings of w's dot products,

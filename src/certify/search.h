@@ -15,5 +15,9 @@
    PREC_DOUBLE) over region r. */
 void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
                      const cert_region *r, const cert_opts *o, cert_result *res);
+/* The branch and bound of a region run before, again to its budget with
+   no stall stop (search.c); res keeps the smaller bound. */
+void cert_region_refine(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
+                        const cert_region *r, const cert_opts *o, cert_result *res);
 
 #endif

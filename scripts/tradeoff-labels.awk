@@ -52,7 +52,11 @@ END {
 				if (free(x0, y0, w)) placed = 1
 			}
 		}
-		if (!placed) { x0 = px[i] + 0.012; y0 = py[i] } # give up: right of the point
+		if (!placed) { # give up: right of the point, or as far right as the canvas lets it
+			x0 = px[i] + 0.012; y0 = py[i]
+			if (x0 + w > 0.99) x0 = 0.99 - w
+			if (x0 < 0) x0 = 0
+		}
 		nl++; lx[nl] = x0; ly[nl] = y0; lw[nl] = w
 		printf "set label %d \"%s\" at graph %.4f, graph %.4f left font \",10\" noenhanced front\n", nl, text[i], x0, y0
 		if (k > 1 || (k == 1 && dy != 0) || x0 < px[i] || side > 2)

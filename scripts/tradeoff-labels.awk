@@ -52,6 +52,11 @@ END {
 				if (free(x0, y0, w)) placed = 1
 			}
 		}
+		if (!placed) # any free spot of the graph, nearest the point first, behind a leader line
+			for (d = 0; d <= 1 && !placed; d += 0.02)
+				for (yy = 0.03; yy <= 0.97 && !placed; yy += 2.2 * H)
+					for (xx = 0; xx + w <= 0.99 && !placed; xx += 0.02)
+						if ((xx - px[i]) ^ 2 + (yy - py[i]) ^ 2 <= d * d && free(xx, yy, w)) { x0 = xx; y0 = yy; placed = 1; side = 3 }
 		if (!placed) { # give up: right of the point, or as far right as the canvas lets it
 			x0 = px[i] + 0.012; y0 = py[i]
 			if (x0 + w > 0.99) x0 = 0.99 - w

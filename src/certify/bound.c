@@ -114,6 +114,7 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	c->nonzero = 0;
 	c->zero_n = c->norm_n = c->zero_late = 0;
 	c->late_var = 0;
+	c->cross_to = 0;
 	c->failed = 0;
 	mvf_begin(c->m, x, mode, n);
 	cm_run(c, m, x->prec, n, out);
@@ -171,6 +172,78 @@ static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 	return 1;
 }
 
+/* The cross rule (cm.cross_to): an output d = cross(n, v) of the input n
+   and the other output v (or cross(v, n)), each component a - b of two
+   products, rounded as a(1 + d1) - b(1 + d2) then (1 + d3), or fused
+   (one of d1, d2 zero).  Its error r = d - n x v has, per component,
+   |r_i| <= u (1 + u) (|a_i| + |b_i|) + u |(n x v)_i| + 4 eta, and
+   sum_i a_i^2 + b_i^2 = sum_(j != k) n_j^2 v_k^2 <= |n|^2 |v|^2, so
+       |r| <= R = ((1 + u) sqrt 2 + 1) u |n| |v| + 8 eta,
+       |n x v|^2 - 1 = A + B + A B - (n.v)^2,
+   A = |n|^2 - 1, B = |v|^2 - 1, both enclosed (nn, s[v]).  Then
+   |d|^2 - 1 lies in g -+ 2 R |n x v| (+ R^2 above), d.n = r.n and
+   d.v = r.v: |d.n| <= R |n|, |d.v| <= R |v|.  Every value is small and
+   each step is rounded outward with a relative 2^-50 margin. */
+static double mag(span s)
+{
+	const double a = fabs(s.lo), b = fabs(s.hi);
+	return isnan(a) || isnan(b) ? INFINITY : a > b ? a : b;
+}
+
+static double hi_of(double v) { return v + fabs(v) * 0x1p-50 + 0x1p-1000; }
+static double lo_of(double v) { return v - fabs(v) * 0x1p-50 - 0x1p-1000; }
+
+static void cross_rule(int prec, int to, span nn, span s[NCQ])
+{
+	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-150 : 0x1p-1074;
+	const span A = nn, B = s[to ? CQ_N1 : CQ_N2], D = s[to ? CQ_D1N : CQ_D2N];
+	const span zero = { 0.0, 0.0 };
+	double ab[4], ab_lo, ab_hi, nv2, g_lo, g_hi, n_hi, v_hi, R, c_hi;
+	int i;
+	if (!(isfinite(A.lo) && isfinite(A.hi) && isfinite(B.lo) && isfinite(B.hi) && isfinite(D.lo) && isfinite(D.hi)))
+		return;
+	if (A.lo <= -1.0 || B.lo <= -1.0)
+		return;
+	ab[0] = A.lo * B.lo; ab[1] = A.lo * B.hi; ab[2] = A.hi * B.lo; ab[3] = A.hi * B.hi;
+	ab_lo = ab_hi = ab[0];
+	for (i = 1; i < 4; i++) {
+		ab_lo = fmin(ab_lo, ab[i]);
+		ab_hi = fmax(ab_hi, ab[i]);
+	}
+	nv2 = hi_of(mag(D) * mag(D));
+	g_lo = lo_of(lo_of(lo_of(A.lo + B.lo) + lo_of(ab_lo)) - nv2);
+	g_hi = hi_of(hi_of(A.hi + B.hi) + hi_of(ab_hi));
+	n_hi = hi_of(sqrt(hi_of(1.0 + A.hi)));
+	v_hi = hi_of(sqrt(hi_of(1.0 + B.hi)));
+	R = hi_of(hi_of(2.4142137 * u * n_hi) * v_hi) + 8 * eta;   /* (1 + u) sqrt 2 + 1 < 2.4142137 */
+	c_hi = hi_of(sqrt(hi_of(1.0 + fmax(g_hi, -1.0))));
+	{
+		span len;
+		const int k = to ? CQ_N2 : CQ_N1;
+		len.lo = lo_of(g_lo - hi_of(2.0 * R * c_hi));
+		len.hi = hi_of(g_hi + hi_of(2.0 * R * c_hi) + hi_of(R * R));
+		s[k] = meet(s[k], len);
+		s[to ? CQ_D2N : CQ_D1N] = meet(s[to ? CQ_D2N : CQ_D1N], widen(zero, hi_of(R * n_hi)));
+		s[CQ_D12] = meet(s[CQ_D12], widen(zero, hi_of(R * v_hi)));
+	}
+}
+
+/* The orthogonality rule (mvf_orth_direct): b = q K (1 + d) + eta with
+   q.n = 0 exactly gives |b.n| <= (u (|b| + sqrt(3) eta) / (1 - u) +
+   sqrt(3) eta) |n|, |b| and |n| from their enclosures. */
+static void orth_rule(cm *c, int which, span nn, span s[NCQ])
+{
+	const span zero = { 0.0, 0.0 };
+	const span len = s[which ? CQ_N2 : CQ_N1];
+	double u, eta, b_hi, n_hi, r;
+	if (!mvf_orth_direct(c->m, which, &u, &eta) || !(isfinite(len.hi) && isfinite(nn.hi)))
+		return;
+	b_hi = hi_of(hi_of(sqrt(hi_of(1.0 + fmax(len.hi, -1.0)))) + 1.7320509 * eta);
+	n_hi = hi_of(sqrt(hi_of(1.0 + fmax(nn.hi, -1.0))));
+	r = hi_of(hi_of(hi_of(u * b_hi) / (1.0 - u)) + 1.7320509 * eta) * n_hi;
+	s[which ? CQ_D2N : CQ_D1N] = meet(s[which ? CQ_D2N : CQ_D1N], widen(zero, hi_of(r)));
+}
+
 /* The signed enclosure s[k] of each quantity along one path (|b|^2 - 1
    for the lengths), and nn of |n|^2 - 1 over the box: each quantity in
    the intersection of its direct interval and its mean value form
@@ -225,6 +298,10 @@ static int path_spans(cm *c, const cm_method *m, const mvf_box *x, unsigned path
 		else if (norm_n & (1u << k))
 			s[k] = meet(s[k], widen(*nn, lin_e[k]));
 	}
+	for (k = 0; k < 2; k++)
+		orth_rule(c, k, *nn, s);
+	if (c->cross_to)
+		cross_rule(x->prec, c->cross_to - 1, *nn, s);
 	return 1;
 }
 
@@ -266,11 +343,6 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 
 static double up(double v) { return v * (1.0 + 0x1p-45) + 0x1p-1000; }
 
-static double mag(span s)
-{
-	const double a = fabs(s.lo), b = fabs(s.hi);
-	return isnan(a) || isnan(b) ? INFINITY : a > b ? a : b;
-}
 
 /* a + b + c with its roundings covered (signs mixed). */
 static double sum3_up(double a, double b, double c)

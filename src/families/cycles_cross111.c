@@ -87,12 +87,13 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	out[0] = DIV(a[0], l); out[1] = DIV(a[1], l); out[2] = DIV(a[2], l);
 	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
 	if (m->norm != ONB__EVAL_FMSUB) {
-		mk_cross_fused(c, P, n, out, out + 3, "fff");  /* as GCC fuses it */
+		mk_cross_out(c, P, n, out, 1, 1, "fff");  /* as GCC fuses it */
 		return;
 	}
 	out[3] = cm_fma(c, P, n[1], out[2], cm_neg(c, MUL(n[2], out[1])));
 	out[4] = cm_fma(c, P, n[2], out[0], cm_neg(c, MUL(n[0], out[2])));
 	out[5] = cm_fma(c, P, n[0], out[1], cm_neg(c, MUL(n[1], out[0])));
+	c->cross_to = 2;   /* b2 = cross(n, b1), fused: the cross rule holds */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -63,7 +63,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
 	}
 	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
-	mk_cross_fused(c, P, n, out, out + 3, "ssf");  /* contracted as GCC fuses them */
+	mk_cross_out(c, P, n, out, 1, 1, "ssf");  /* contracted as GCC fuses them */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -68,12 +68,13 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = SUBM(MUL(out[4], n[2]), out[5], n[1]);
 		out[1] = SUBM(MUL(out[5], n[0]), out[3], n[2]);
 		out[2] = MSUB(out[3], n[1], MUL(out[4], n[0]));
+		c->cross_to = 1;   /* b1 = cross(b2, n), fused: the cross rule holds */
 		return;
 	}
 	s = mk_rsq(c, P, mk_dot3(c, P, v, v), m->norm);
 	for (i = 0; i < 3; i++)
 		out[3 + i] = MUL(v[i], s);
-	mk_cross(c, P, out + 3, n, out);  /* b1 = cross(v, n) */
+	mk_cross_out(c, P, n, out, 0, 0, "nnn");  /* b1 = cross(v, n) */
 }
 
 static unsigned zero_any_n(const onb_method *m) { return m->norm == ONB__NORM_NONE ? ZN_HM_NONORM : ZN_HM; }

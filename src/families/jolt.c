@@ -62,13 +62,14 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = DIV(K(0.0), len); out[1] = DIV(n[2], len); out[2] = DIV(SUB(K(0.0), n[1]), len);
 	}
 	if (m->norm != ONB__WILD_FMA) {
-		mk_cross_fused(c, P, n, out, out + 3, P == PREC_FLOAT ? "fff" : "ssf");  /* as GCC fuses them (vectorized in double) */
+		mk_cross_out(c, P, n, out, 1, 1, P == PREC_FLOAT ? "fff" : "ssf");  /* as GCC fuses them (vectorized in double) */
 		return;
 	}
 	for (i = 0; i < 3; i++) {
 		const int j = (i + 1) % 3, k = (i + 2) % 3;
 		out[3 + i] = cm_fma(c, P, out[k], n[j], cm_neg(c, MUL(n[k], out[j])));
 	}
+	c->cross_to = 2;   /* b2 = cross(n, b1), fused: the cross rule holds */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

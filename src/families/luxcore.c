@@ -73,7 +73,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	out[3] = MUL(v[0], K(1.0)); out[4] = MUL(v[1], K(1.0)); out[5] = MUL(v[2], K(1.0));
 	cm_formula_zero_after(c, (1u << CQ_D1N) | (1u << CQ_D12));   /* b1 = n x b2 */
-	mk_cross_fused(c, P, n, out + 3, out, "fsf");  /* contracted as GCC fuses them */
+	mk_cross_out(c, P, n, out, 0, 1, "fsf");  /* contracted as GCC fuses them */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return 0; }

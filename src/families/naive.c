@@ -84,13 +84,13 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		(void)mk_rsq(c, P, K(1.0), m->norm);  /* 1, and the formula's nonzero lengths */
 		for (i = 0; i < 3; i++)
 			out[i] = u[i];
-		mk_cross_fused(c, P, n, u, out + 3, "ssf");
+		mk_cross_out(c, P, n, out, 1, 1, "ssf");   /* out = u */
 		return;
 	}
 	s = mk_rsq(c, P, mk_dot3_xf(c, P, u, u), m->norm);
 	for (i = 0; i < 3; i++)
 		out[i] = MUL(u[i], s);
-	mk_cross_fused(c, P, n, out, out + 3, "fff");
+	mk_cross_out(c, P, n, out, 1, 1, "fff");
 }
 
 static unsigned zero_any_n(const onb_method *m) { return m->norm == ONB__NORM_NONE ? ZN_CROSS : ZN_NAIVE; }

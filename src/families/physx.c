@@ -85,7 +85,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[3] = K(0.0); out[4] = n[2]; out[5] = cm_neg(c, n[1]);
 		normalize(c, P, out + 3);
 		if (m->norm == ONB__WILD_FIXED) {
-			mk_cross_fused(c, P, out + 3, n, out, "ssf");  /* as GCC fuses it */
+			mk_cross_out(c, P, n, out, 0, 0, "ssf");  /* as GCC fuses it */
 		} else {   /* b1 = (1, 0, 0): b1.n = n.x, not 0 on the unit sphere */
 			cm_formula_nonzero(c, 1u << CQ_D1N);
 			out[0] = K(1.0); out[1] = K(0.0); out[2] = K(0.0);

@@ -71,7 +71,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	for (k = 0; k < 3; k++)
 		out[k] = DIV(p[k], l);
-	mk_cross_fused(c, P, n, out, out + 3, "fff");  /* contracted as GCC fuses them */
+	mk_cross_out(c, P, n, out, 1, 1, "fff");  /* contracted as GCC fuses them */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -59,7 +59,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	l = cm_sqrt(c, P, mk_dot3_xf(c, P, cr, cr));
 	for (i = 0; i < 3; i++)
 		out[3 + i] = DIV(cr[i], l);
-	mk_cross_fused(c, P, n, out + 3, out, "fff");
+	mk_cross_out(c, P, n, out, 0, 1, "fff");
 }
 
 /* b1 and b2 swapped against stark's: b2 = p/|p| with p = n x t */

@@ -39,6 +39,11 @@ struct cm {
 	                          before the error term late_var, given exact
 	                          arithmetic from there on                    */
 	int late_var;
+	/* bound.c's cross rule: 2 when the kernel returns b2 = cross(n, b1)
+	   (either order of the factors, each component a - b with one or both
+	   of its products rounded, or fused: fma(p, q, -fl(r s))) of the
+	   input n and the b1 it returns; 1 for b1 from b2 alike; 0 none */
+	int cross_to;
 };
 
 /* CM_EXEC: start a run on input n (rounded to format f); in[] receives the

@@ -81,6 +81,21 @@ static inline void mk_cross_fused(cm *c, int P, const cv p[3], const cv q[3], cv
 	}
 }
 
+/* The output out[to] (b1: to = 0, b2: to = 1) = cross(n, the other
+   output) (n_first) or cross(the other, n), fused as `how`; recorded for
+   bound.c's cross rule (cm.cross_to), which bounds |out[to]|, its dot
+   with n and with the other from their own bounds and |n|. */
+static inline void mk_cross_out(cm *c, int P, const cv n[3], cv out[6], int to, int n_first, const char *how)
+{
+	const cv *src = out + (to ? 0 : 3);
+	cv *dst = out + (to ? 3 : 0);
+	if (n_first)
+		mk_cross_fused(c, P, n, src, dst, how);
+	else
+		mk_cross_fused(c, P, src, n, dst, how);
+	c->cross_to = to + 1;
+}
+
 /* Newton's step y * (1.5 - (0.5*x*y)*y); contracted, GCC fuses the
    last product into the subtraction (fma(-y, 0.5*x*y, 1.5)). */
 static inline cv mk_newton(cm *c, int P, cv x, cv y)
@@ -121,7 +136,7 @@ static inline void mk_post_n_cross_u(cm *c, int P, const cv n[3], const cv u[3],
 	int i;
 	for (i = 0; i < 3; i++)
 		out[i] = MUL(u[i], s);
-	mk_cross(c, P, n, out, out + 3);
+	mk_cross_out(c, P, n, out, 1, 1, "nnn");
 }
 
 /* Frisvad's formula with a = 1/(1 + n.z) (sg = +1) and Duff's mirror with

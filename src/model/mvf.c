@@ -79,6 +79,7 @@ typedef struct {
 	   [ls_olo, ls_ohi].  ls_k >= 0: the value is q K (1 + d) + eta (or
 	   q / K ...), q of base ls_q, K = ls_k, |d| <= ls_u, |eta| <= ls_eta. */
 	int ls_p, ls_nb, ls_x, ls_k, ls_q;
+	int ls_qv, ls_sg;   /* the factor q itself, and the sign of the value against q K */
 	cv ls_b[3];
 	double ls_lo, ls_hi, ls_abs, ls_olo, ls_ohi, ls_u, ls_eta;
 } mval;
@@ -91,6 +92,8 @@ struct mvf {
 	int nvar;
 	int grad_lost;         /* the input terms' gradients are unbounded */
 	int len_ok[2];         /* mvf_quantities: len_direct held for b1, b2 */
+	int orth_ok[2];        /* mvf_quantities: orth_direct held for b1, b2 */
+	double orth_u[2], orth_eta[2];
 	double len_lo[2], len_hi[2];
 	double nh[3];          /* |n_i - u_i| <= nh[i] */
 	double phi_lo, phi_hi; /* the box's azimuths (radians) ...          */
@@ -216,6 +219,8 @@ static cv fresh(mvf *m, int fmt)
 	x->sub_a = x->sub_b = -1;
 	x->ls_p = 0;
 	x->ls_k = -1;
+	x->ls_qv = -1;
+	x->ls_sg = 1;
 	x->tg_p = 0;
 	x->tg_var = -1;
 	return m->n++;
@@ -1339,6 +1344,7 @@ static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
 		return;
 	if (op == MVF_NEG || (op == MVF_CVT && a->fmt <= f)) {   /* exact: the same lengths */
 		r->ls_k = a->ls_k; r->ls_q = a->ls_q; r->ls_u = a->ls_u; r->ls_eta = a->ls_eta;
+		r->ls_qv = a->ls_qv; r->ls_sg = op == MVF_NEG ? -a->ls_sg : a->ls_sg;
 		if (op == MVF_CVT) {
 			r->ls_p = a->ls_p; r->ls_nb = a->ls_nb; r->ls_x = a->ls_x;
 			memcpy(r->ls_b, a->ls_b, sizeof r->ls_b);
@@ -1377,6 +1383,8 @@ static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
 		const int k_is_a = op == MVF_MUL && b->ls_p != -1;
 		r->ls_k = k_is_a ? ia : ib;
 		r->ls_q = k_is_a ? b->base : a->base;
+		r->ls_qv = k_is_a ? ib : ia;
+		r->ls_sg = 1;
 		r->ls_u = u;
 		r->ls_eta = eta;
 	}
@@ -1830,6 +1838,10 @@ static cv ex(mvf *m, int op, cv a, cv b)
 {
 	cv ir = fresh(m, PREC_DOUBLE);
 	mval *r = &m->val[ir];
+	if (a < 0) {   /* no value: not met (fresh and mvf_cst always give one) */
+		m->failed = 1;
+		return ir;
+	}
 	if (m->val[a].opaque || (b >= 0 && m->val[b].opaque))
 		m->failed = 1;
 	if (!m->failed && (!exact_eval(m, op, r, &m->val[a], b >= 0 ? &m->val[b] : NULL, NULL) ||
@@ -1843,6 +1855,25 @@ static cv ex_dot(mvf *m, const cv *p, const cv *q)
 	cv s = ex(m, MVF_MUL, p[0], q[0]);
 	s = ex(m, MVF_ADD, s, ex(m, MVF_MUL, p[1], q[1]));
 	return ex(m, MVF_ADD, s, ex(m, MVF_MUL, p[2], q[2]));
+}
+
+/* A lower bound on S, the sum of the squares of the actual values of
+   length tag x's bases (0: none known): each at least the mig of its
+   interval or what the branches and its grid say (actual_lo). */
+static double len_lact(mvf *m, const mval *x)
+{
+	int j, nz;
+	mpfr_set_zero(m->f2, 1);
+	for (j = 0; j < x->ls_nb; j++) {
+		const mval *b = &m->val[x->ls_b[j]];
+		const double lo = actual_lo(m, b, &nz);
+		mpfi_mig(m->f1, b->v);
+		if (mpfr_cmp_d(m->f1, lo) < 0)
+			mpfr_set_d(m->f1, lo, MPFR_RNDD);
+		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
+		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDD);
+	}
+	return mpfr_get_d(m->f2, MPFR_RNDD);
 }
 
 /* An enclosure [*lo, *hi] of |b|^2 - 1 for the actual outputs b = out[0..2]
@@ -1882,7 +1913,7 @@ static int len_direct(mvf *m, const cv out[3], double *lo, double *hi)
 	mpfi_get_left(m->f1, x->v);                      /* S >= (x - alpha)/(1 + eps) */
 	mpfr_sub_d(m->f1, m->f1, x->ls_abs, MPFR_RNDD);
 	mpfr_div_d(m->f1, m->f1, round_up_d(1.0 + x->ls_hi), MPFR_RNDD);
-	L = mpfr_get_d(m->f1, MPFR_RNDD);
+	L = fmax(mpfr_get_d(m->f1, MPFR_RNDD), len_lact(m, x));
 	if (x->ls_abs > 0.0 && !(L > 0.0))
 		return 0;
 	mpfr_set_d(m->f1, x->ls_abs, MPFR_RNDU);
@@ -1921,6 +1952,70 @@ static int len_direct(mvf *m, const cv out[3], double *lo, double *hi)
 	return !(isnan(*lo) || isnan(*hi));
 }
 
+/* Adds sg times the linear form of v in the inputs n[] to row[] (v an
+   input, 0, or an exact difference of such, signs and widenings aside);
+   returns 0 when v is none of those. */
+static int lin_form(const mvf *m, cv v, int sg, const cv n[3], int depth, int row[3])
+{
+	const mval *x, *b;
+	int j;
+	if (v < 0 || v >= m->n)
+		return 0;
+	x = &m->val[v];
+	b = &m->val[x->base];
+	sg *= x->bsign;
+	for (j = 0; j < 3; j++)
+		if (x->base == m->val[n[j]].base) {
+			row[j] += sg * m->val[n[j]].bsign;
+			return 1;
+		}
+	if (is_zero(b))
+		return 1;
+	if (b->sub_a < 0 || b->sub_b < 0 || depth > 1)
+		return 0;
+	return lin_form(m, b->sub_a, sg, n, depth + 1, row) && lin_form(m, b->sub_b, -sg, n, depth + 1, row);
+}
+
+/* Outputs b_i = q_i K (1 + d_i) + eta_i (or q_i / K ...), |d_i| <= u, of
+   one tagged K, with q = M n for an antisymmetric integer M (q.n = 0 for
+   the actual values: q made of the inputs by negations, zeros and exact
+   differences): then b.n = sum_i q_i K d_i n_i + eta.n, so
+   |b.n| <= u |q K| |n| + sqrt(3) eta |n|, and |q K| <= (|b| + sqrt(3) eta)
+   / (1 - u).  Returns 0 when the outputs are not of that form. */
+static int orth_direct(mvf *m, const cv out[3], const cv n[3], double *u, double *eta)
+{
+	int M[3][3] = { { 0 } }, i, j, k = -1;
+	*u = *eta = 0.0;
+	for (i = 0; i < 3; i++) {
+		const mval *b = &m->val[out[i]];
+		if (is_zero(b))
+			continue;
+		if (b->ls_k < 0 || b->ls_qv < 0 || (k >= 0 && b->ls_k != k))
+			return 0;
+		k = b->ls_k;
+		if (!lin_form(m, b->ls_qv, b->ls_sg, n, 0, M[i]))
+			return 0;
+		*u = fmax(*u, b->ls_u);
+		*eta = fmax(*eta, b->ls_eta);
+	}
+	if (k < 0)
+		return 0;
+	for (i = 0; i < 3; i++)
+		for (j = 0; j < 3; j++)
+			if (M[i][j] + M[j][i] != 0)
+				return 0;
+	return 1;
+}
+
+int mvf_orth_direct(const mvf *m, int which, double *u, double *eta)
+{
+	if (!m->orth_ok[which])
+		return 0;
+	*u = m->orth_u[which];
+	*eta = m->orth_eta[which];
+	return 1;
+}
+
 int mvf_len_direct(const mvf *m, int which, double *lo, double *hi)
 {
 	if (!m->len_ok[which])
@@ -1935,6 +2030,8 @@ void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
 	int i;
 	for (i = 0; i < 2; i++)
 		m->len_ok[i] = !m->failed && !m->zero_e && len_direct(m, out + 3 * i, &m->len_lo[i], &m->len_hi[i]);
+	for (i = 0; i < 2; i++)
+		m->orth_ok[i] = !m->failed && !m->zero_e && orth_direct(m, out + 3 * i, n, &m->orth_u[i], &m->orth_eta[i]);
 	cv one = mvf_cst(m, 1.0);
 	/* |b|^2 - 1, not |b| - 1: a wide box's b.b can reach 0, where the
 	   derivative of the square root is unbounded (bound.c converts) */

@@ -41,6 +41,10 @@ void mvf_bounds(mvf *m, cv q, double *lo, double *hi, double *lin);
 /* An enclosure of |b|^2 - 1 for b1 (which 0) or b2 (1) from how the run
    normalized it, whatever the box (mvf_quantities; 0: none). */
 int  mvf_len_direct(const mvf *m, int which, double *lo, double *hi);
+/* After mvf_quantities: output `which` (0: b1, 1: b2) is q K (1 + d) with
+   q.n = 0 exactly for the actual values and |d| <= *u (plus |eta| <= *eta
+   per component): bound.c's orthogonality rule (returns 0 otherwise). */
+int  mvf_orth_direct(const mvf *m, int which, double *u, double *eta);
 /* sum_k r_k max|dQ/de_k| over the arithmetic's error terms alone (not the
    input's own rounding), and whether the full sum mvf_bounds gives is
    valid (0 when a normalization of a vector whose length can reach 0 over

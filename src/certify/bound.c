@@ -114,7 +114,7 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	c->nonzero = 0;
 	c->zero_n = c->norm_n = c->zero_late = 0;
 	c->late_var = 0;
-	c->cross_to = 0;
+	c->cross_to = c->cross_kind = 0;
 	c->failed = 0;
 	mvf_begin(c->m, x, mode, n);
 	cm_run(c, m, x->prec, n, out);
@@ -123,6 +123,14 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 	if (mvf_failed(c->m))
 		return -1;
 	mvf_quantities(c->m, n, out, q);
+	c->cross_kind = 0;
+	if (c->cross_to) {
+		const cv *o = out + 3 * (c->cross_to - 1);
+		if (o[0] == c->cross_q[0] && o[1] == c->cross_q[1] && o[2] == c->cross_q[2])
+			c->cross_kind = 1;
+		else if (mvf_scaled_of(c->m, o, c->cross_q, &c->cross_u, &c->cross_eta))
+			c->cross_kind = 2;
+	}
 	return mvf_failed(c->m) ? -1 : 1;
 }
 
@@ -182,8 +190,11 @@ static int centre_bounds(cm *c, const cm_method *m, const mvf_box *x, unsigned p
        |n x v|^2 - 1 = A + B + A B - (n.v)^2,
    A = |n|^2 - 1, B = |v|^2 - 1, both enclosed (nn, s[v]).  Then
    |d|^2 - 1 lies in g -+ 2 R |n x v| (+ R^2 above), d.n = r.n and
-   d.v = r.v: |d.n| <= R |n|, |d.v| <= R |v|.  Every value is small and
-   each step is rounded outward with a relative 2^-50 margin. */
+   d.v = r.v: |d.n| <= R |n|, |d.v| <= R |v|.  Where the output is the
+   normalized b = q K (1 + d) + eta (cross_kind 2, as Embree and Open3D
+   build b2), |b.n| and |b.v| follow from |r| and |b| the same way.
+   Every value is small and each step is rounded outward with a relative
+   2^-50 margin. */
 static double mag(span s)
 {
 	const double a = fabs(s.lo), b = fabs(s.hi);
@@ -193,11 +204,13 @@ static double mag(span s)
 static double hi_of(double v) { return v + fabs(v) * 0x1p-50 + 0x1p-1000; }
 static double lo_of(double v) { return v - fabs(v) * 0x1p-50 - 0x1p-1000; }
 
-static void cross_rule(int prec, int to, span nn, span s[NCQ])
+static void cross_rule(const cm *c, int prec, span nn, span s[NCQ])
 {
 	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-150 : 0x1p-1074;
+	const int to = c->cross_to - 1;
 	const span A = nn, B = s[to ? CQ_N1 : CQ_N2], D = s[to ? CQ_D1N : CQ_D2N];
 	const span zero = { 0.0, 0.0 };
+	span *len = &s[to ? CQ_N2 : CQ_N1], *dn = &s[to ? CQ_D2N : CQ_D1N];
 	double ab[4], ab_lo, ab_hi, nv2, g_lo, g_hi, n_hi, v_hi, R, c_hi;
 	int i;
 	if (!(isfinite(A.lo) && isfinite(A.hi) && isfinite(B.lo) && isfinite(B.hi) && isfinite(D.lo) && isfinite(D.hi)))
@@ -217,14 +230,27 @@ static void cross_rule(int prec, int to, span nn, span s[NCQ])
 	v_hi = hi_of(sqrt(hi_of(1.0 + B.hi)));
 	R = hi_of(hi_of(2.4142137 * u * n_hi) * v_hi) + 8 * eta;   /* (1 + u) sqrt 2 + 1 < 2.4142137 */
 	c_hi = hi_of(sqrt(hi_of(1.0 + fmax(g_hi, -1.0))));
-	{
-		span len;
-		const int k = to ? CQ_N2 : CQ_N1;
-		len.lo = lo_of(g_lo - hi_of(2.0 * R * c_hi));
-		len.hi = hi_of(g_hi + hi_of(2.0 * R * c_hi) + hi_of(R * R));
-		s[k] = meet(s[k], len);
-		s[to ? CQ_D2N : CQ_D1N] = meet(s[to ? CQ_D2N : CQ_D1N], widen(zero, hi_of(R * n_hi)));
+	if (c->cross_kind == 1) {   /* the output is q itself */
+		span l;
+		l.lo = lo_of(g_lo - hi_of(2.0 * R * c_hi));
+		l.hi = hi_of(g_hi + hi_of(2.0 * R * c_hi) + hi_of(R * R));
+		*len = meet(*len, l);
+		*dn = meet(*dn, widen(zero, hi_of(R * n_hi)));
 		s[CQ_D12] = meet(s[CQ_D12], widen(zero, hi_of(R * v_hi)));
+	} else if (c->cross_kind == 2 && isfinite(len->hi) && g_lo > -1.0) {
+		/* b = q K (1 + d) + eta: |q K| <= T = (|b| + sqrt(3) eta)/(1 - u),
+		   K <= T / |q|, |q| >= sqrt(1 + g) - R; b.n = K r.n + K sum q_i
+		   d_i n_i + eta.n, and b.v alike */
+		const double ue = c->cross_u, et = 1.7320509 * c->cross_eta;
+		const double b_hi = hi_of(sqrt(hi_of(1.0 + fmax(len->hi, -1.0))));
+		const double T = hi_of(hi_of(b_hi + et) / (1.0 - ue));
+		const double q_lo = lo_of(lo_of(sqrt(lo_of(1.0 + g_lo))) - R);
+		double f;
+		if (!(q_lo > 0.0))
+			return;
+		f = hi_of(hi_of(hi_of(hi_of(T / q_lo) * R) + hi_of(ue * T)) + et);
+		*dn = meet(*dn, widen(zero, hi_of(f * n_hi)));
+		s[CQ_D12] = meet(s[CQ_D12], widen(zero, hi_of(f * v_hi)));
 	}
 }
 
@@ -300,8 +326,8 @@ static int path_spans(cm *c, const cm_method *m, const mvf_box *x, unsigned path
 	}
 	for (k = 0; k < 2; k++)
 		orth_rule(c, k, *nn, s);
-	if (c->cross_to)
-		cross_rule(x->prec, c->cross_to - 1, *nn, s);
+	if (c->cross_kind)
+		cross_rule(c, x->prec, *nn, s);
 	return 1;
 }
 

@@ -93,7 +93,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	out[3] = cm_fma(c, P, n[1], out[2], cm_neg(c, MUL(n[2], out[1])));
 	out[4] = cm_fma(c, P, n[2], out[0], cm_neg(c, MUL(n[0], out[2])));
 	out[5] = cm_fma(c, P, n[0], out[1], cm_neg(c, MUL(n[1], out[0])));
-	c->cross_to = 2;   /* b2 = cross(n, b1), fused: the cross rule holds */
+	mk_note_cross(c, 1, out + 3);   /* b2 = cross(n, b1), fused: the cross rule holds */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -94,6 +94,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	for (i = 0; i < 3; i++)
 		out[i] = MUL(u[i], s);
 	mk_cross_fused(c, P, n, out, q, "ssf");
+	mk_note_cross(c, 1, q);
 	s = embree_rsqrt(c, P, mk_dot3_xf(c, P, q, q));
 	for (i = 0; i < 3; i++)
 		out[3 + i] = MUL(q[i], s);

@@ -68,7 +68,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[0] = SUBM(MUL(out[4], n[2]), out[5], n[1]);
 		out[1] = SUBM(MUL(out[5], n[0]), out[3], n[2]);
 		out[2] = MSUB(out[3], n[1], MUL(out[4], n[0]));
-		c->cross_to = 1;   /* b1 = cross(b2, n), fused: the cross rule holds */
+		mk_note_cross(c, 0, out);   /* b1 = cross(b2, n), fused: the cross rule holds */
 		return;
 	}
 	s = mk_rsq(c, P, mk_dot3(c, P, v, v), m->norm);

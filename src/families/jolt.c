@@ -69,7 +69,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		const int j = (i + 1) % 3, k = (i + 2) % 3;
 		out[3 + i] = cm_fma(c, P, out[k], n[j], cm_neg(c, MUL(n[k], out[j])));
 	}
-	c->cross_to = 2;   /* b2 = cross(n, b1), fused: the cross rule holds */
+	mk_note_cross(c, 1, out + 3);   /* b2 = cross(n, b1), fused: the cross rule holds */
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -115,6 +115,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	}
 	normalized(c, P, 1, out);
 	mk_cross_fused(c, P, n, out, out + 3, "ssf");  /* as GCC fuses it */
+	mk_note_cross(c, 1, out + 3);
 	normalized(c, P, 2, out + 3);
 }
 

@@ -44,6 +44,12 @@ struct cm {
 	   of its products rounded, or fused: fma(p, q, -fl(r s))) of the
 	   input n and the b1 it returns; 1 for b1 from b2 alike; 0 none */
 	int cross_to;
+	cv cross_q[3];         /* the cross product's values as computed     */
+	/* bound.c (run_path): 1 when output cross_to - 1 is cross_q itself, 2
+	   when it is cross_q K (1 + d) + eta for one K (a normalization),
+	   |d| <= cross_u, |eta| <= cross_eta; 0 neither */
+	int cross_kind;
+	double cross_u, cross_eta;
 };
 
 /* CM_EXEC: start a run on input n (rounded to format f); in[] receives the

@@ -81,6 +81,16 @@ static inline void mk_cross_fused(cm *c, int P, const cv p[3], const cv q[3], cv
 	}
 }
 
+/* Notes that q = cross(n, the other output), or cross(the other, n), as
+   mk_cross_fused computes it, is output `to` (b1: 0, b2: 1) or is
+   normalized into it (bound.c checks which; the factors must be the
+   input n and the other output exactly). */
+static inline void mk_note_cross(cm *c, int to, const cv q[3])
+{
+	c->cross_to = to + 1;
+	c->cross_q[0] = q[0]; c->cross_q[1] = q[1]; c->cross_q[2] = q[2];
+}
+
 /* The output out[to] (b1: to = 0, b2: to = 1) = cross(n, the other
    output) (n_first) or cross(the other, n), fused as `how`; recorded for
    bound.c's cross rule (cm.cross_to), which bounds |out[to]|, its dot
@@ -93,7 +103,7 @@ static inline void mk_cross_out(cm *c, int P, const cv n[3], cv out[6], int to, 
 		mk_cross_fused(c, P, n, src, dst, how);
 	else
 		mk_cross_fused(c, P, src, n, dst, how);
-	c->cross_to = to + 1;
+	mk_note_cross(c, to, dst);
 }
 
 /* Newton's step y * (1.5 - (0.5*x*y)*y); contracted, GCC fuses the

@@ -2007,6 +2007,23 @@ static int orth_direct(mvf *m, const cv out[3], const cv n[3], double *u, double
 	return 1;
 }
 
+int mvf_scaled_of(const mvf *m, const cv out[3], const cv q[3], double *u, double *eta)
+{
+	int i, k = -1;
+	*u = *eta = 0.0;
+	if (m->failed || m->zero_e)
+		return 0;
+	for (i = 0; i < 3; i++) {
+		const mval *b = &m->val[out[i]];
+		if (b->ls_k < 0 || b->ls_qv != q[i] || b->ls_sg != 1 || (k >= 0 && b->ls_k != k))
+			return 0;
+		k = b->ls_k;
+		*u = fmax(*u, b->ls_u);
+		*eta = fmax(*eta, b->ls_eta);
+	}
+	return 1;
+}
+
 int mvf_orth_direct(const mvf *m, int which, double *u, double *eta)
 {
 	if (!m->orth_ok[which])

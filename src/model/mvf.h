@@ -45,6 +45,9 @@ int  mvf_len_direct(const mvf *m, int which, double *lo, double *hi);
    q.n = 0 exactly for the actual values and |d| <= *u (plus |eta| <= *eta
    per component): bound.c's orthogonality rule (returns 0 otherwise). */
 int  mvf_orth_direct(const mvf *m, int which, double *u, double *eta);
+/* out_i = q_i K (1 + d_i) + eta_i for one K, each q_i the value q[i]
+   itself, |d_i| <= *u, |eta_i| <= *eta (the length tags): 1, else 0. */
+int  mvf_scaled_of(const mvf *m, const cv out[3], const cv q[3], double *u, double *eta);
 /* sum_k r_k max|dQ/de_k| over the arithmetic's error terms alone (not the
    input's own rounding), and whether the full sum mvf_bounds gives is
    valid (0 when a normalization of a vector whose length can reach 0 over

@@ -340,46 +340,87 @@ static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region
 		fprintf(f, ",,,\n");
 }
 
-/* Every region of every kernel and precision, in parallel. */
-static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const size_t *nreg,
-                    const task *t, int nt, const cert_cli *c, cert_result *res)
+/* fn(x, j, arg) for j = 0..n-1 in parallel, each thread with its own
+   cert_ctx x; pr (or NULL) counts them and draws the bar.  Returns -1
+   when a thread could not make its context (its tasks were not run). */
+typedef void (*cert_task_fn)(cert_ctx *x, int j, void *arg);
+
+static int run_tasks(int n, cert_task_fn fn, void *arg, study_progress *pr)
 {
-	study_progress pr;
 	int fail = 0;
-	memset(&pr, 0, sizeof pr);
-	pr.bar = !c->quiet && isatty(2);
-	pr.t0 = study_now();
-	pr.total = (unsigned long long)nt;
 #pragma omp parallel
 	{
 		cert_ctx *x = cert_ctx_new();
-		int i;
+		int j;
 		if (!x) {
 #pragma omp atomic write
 			fail = 1;
 		}
 #pragma omp for schedule(dynamic, 1)
-		for (i = 0; i < nt; i++) {
+		for (j = 0; j < n; j++) {
 			if (!x)
 				continue;
-			cert_region_run(x, &ks[t[i].k], ms[t[i].k], t[i].prec, &reg[t[i].prec * MAXREG + t[i].reg], &c->o, &res[i]);
+			fn(x, j, arg);
+			if (!pr)
+				continue;
 #pragma omp atomic
-			pr.done++;
+			pr->done++;
 #ifdef _OPENMP
-			if (omp_get_thread_num() == 0 && pr.bar)
+			if (omp_get_thread_num() == 0 && pr->bar)
 #else
-			if (pr.bar)
+			if (pr->bar)
 #endif
-				study_progress_line("certify", &pr);
+				study_progress_line("certify", pr);
 		}
 		cert_ctx_free(x);
 	}
-	(void)nreg;
+	return fail ? -1 : 0;
+}
+
+/* What the tasks of run_all and refine_top read. */
+typedef struct {
+	const study_kernel *ks;
+	const cm_method **ms;
+	const cert_region *reg;
+	const task *t;
+	const cert_cli *c;
+	cert_result *res;
+	const int *pick;   /* refine_top: the regions of the round */
+} task_set;
+
+static void run_one(cert_ctx *x, int i, void *arg)
+{
+	const task_set *s = arg;
+	const task *t = &s->t[i];
+	cert_region_run(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o, &s->res[i]);
+}
+
+static void refine_one(cert_ctx *x, int j, void *arg)
+{
+	const task_set *s = arg;
+	const int r = s->pick[j];
+	const task *t = &s->t[r];
+	cert_region_refine(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o,
+	                   &s->res[r]);
+}
+
+/* Every region of every kernel and precision, in parallel. */
+static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
+                   const cert_cli *c, cert_result *res)
+{
+	const task_set s = { ks, ms, reg, t, c, res, NULL };
+	study_progress pr;
+	int fail;
+	memset(&pr, 0, sizeof pr);
+	pr.bar = !c->quiet && isatty(2);
+	pr.t0 = study_now();
+	pr.total = (unsigned long long)nt;
+	fail = run_tasks(nt, run_one, (void *)&s, &pr);
 	if (pr.bar)
 		fprintf(stderr, "\n");
 	if (fail)
 		study_error("out of memory: some regions were not run; nothing written");
-	return fail ? -1 : 0;
+	return fail;
 }
 
 /* The regions that set a whole-sphere bound, refined.  For each kernel
@@ -486,24 +527,10 @@ static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_r
 		return -1;
 	}
 	while (!fail && (np = refine_pick(t, nt, res, done, g, ng, pick)) > 0) {
-#pragma omp parallel
-		{
-			cert_ctx *x = cert_ctx_new();
-			int j;
-			if (!x) {
-#pragma omp atomic write
-				fail = 1;
-			}
-#pragma omp for schedule(dynamic, 1)
-			for (j = 0; j < np; j++) {
-				const int r = pick[j];
-				if (x)
-					cert_region_refine(x, &ks[t[r].k], ms[t[r].k], t[r].prec, &reg[t[r].prec * MAXREG + t[r].reg],
-					                   &c->o, &res[r]);
-				done[r] = 1;
-			}
-			cert_ctx_free(x);
-		}
+		const task_set s = { ks, ms, reg, t, c, res, pick };
+		fail = run_tasks(np, refine_one, (void *)&s, NULL);
+		for (i = 0; i < np; i++)
+			done[pick[i]] = 1;
 		refine_gain(t, res, pick, np, g, ng);
 	}
 	for (i = 0; i < nt; i++)
@@ -689,7 +716,7 @@ int cmd_certify(int argc, char **argv)
 			}
 		}
 	}
-	if (study_mkdir_p(dir) || run_all(ks, ms, reg, nreg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
+	if (study_mkdir_p(dir) || run_all(ks, ms, reg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
 		goto done;
 	if (study_out_open(&out, dir, "certify.csv"))
 		goto done;

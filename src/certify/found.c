@@ -353,10 +353,10 @@ void found_sample(probe_env *e)
 /* One proposal of a walk from n into m; k[] receives the ulp steps of the
    two smaller components (for a repeat).  Returns the domain knowledge as
    complete_n does (0 for a move of all three components). */
-static int propose(probe_env *e, const double n[3], double m[3], int k[2])
+static int propose(probe_env *e, const double n[3], double m[3], int k[2], int fine)
 {
-	static const int scale[4] = { 2, 8, 64, 256 };
-	const int b = cert_biggest(n), s = scale[rnd(e) & 3];
+	static const int scale[2][4] = { { 2, 8, 64, 256 }, { 1, 1, 2, 4 } };
+	const int b = cert_biggest(n), s = scale[fine][rnd(e) & 3];
 	const uint64_t h = rnd(e);
 	int i, r;
 	memcpy(m, n, 3 * sizeof *m);
@@ -385,8 +385,8 @@ static int propose(probe_env *e, const double n[3], double m[3], int k[2])
 
 /* A hill climb from n (screened defect d) of at most `steps` steps,
    stopping after `stall` steps without a gain; a step that paid is
-   repeated. */
-static void climb(probe_env *e, double n[3], double d, long steps, long stall)
+   repeated.  fine: steps of 1 to 4 ulps only. */
+static void climb(probe_env *e, double n[3], double d, long steps, long stall, int fine)
 {
 	double m[3], v;
 	long s, since = 0;
@@ -402,7 +402,7 @@ static void climb(probe_env *e, double n[3], double d, long steps, long stall)
 			k[1] = last[1];
 		} else {
 			k[0] = k[1] = 0;
-			known = propose(e, n, m, k);
+			known = propose(e, n, m, k, fine);
 		}
 		v = known < 0 ? -1.0 : found_try(e, m, known > 0);
 		repeat = v > d && (k[0] || k[1]);
@@ -497,12 +497,12 @@ void found_walks(probe_env *e, int restarts)
 		double n[3], d;
 		const int known = make_u(e, sample_z(r, rnd01(e)), (r->phi_lo + (r->phi_hi - r->phi_lo) * rnd01(e)) * DEG, n);
 		if (known >= 0 && (d = found_try(e, n, known > 0)) >= 0.0)
-			climb(e, n, d, (long)(500 * f), (long)(400 * f));
+			climb(e, n, d, (long)(500 * f), (long)(400 * f), 0);
 	}
 	nb = e->ntop;
 	memcpy(best, e->top, (size_t)nb * sizeof *best);
 	for (j = 0; j < nb && (restarts || j < 4); j++)
-		climb(e, best[j].n, best[j].d, (long)(800 * f), (long)(240 * f));
+		climb(e, best[j].n, best[j].d, (long)(800 * f), (long)(240 * f), 0);
 	for (j = 0; j < (restarts ? 4 : 2) && j < e->ntop; j++) {
 		int top = j, t;
 		for (t = j + 1; t < e->ntop; t++)
@@ -517,6 +517,11 @@ void found_walks(probe_env *e, int restarts)
 		line_search(e, best[0].n, e->top[j].d);
 		neighbourhood(e, best[0].n, 5);
 	}
+	/* last, fine climbs from the best inputs now: 1 to 4 ulps a step */
+	nb = e->ntop < 8 ? e->ntop : 8;
+	memcpy(best, e->top, (size_t)nb * sizeof *best);
+	for (j = 0; restarts && j < nb; j++)
+		climb(e, best[j].n, best[j].d, (long)(300 * f), (long)(150 * f), 1);
 	if (e->k->rot)
 		found_dir_walk(e, (int)((restarts ? 200 : 400) * f));
 }

@@ -160,7 +160,7 @@ function load_cert(F,   n, r, m, p, v) {
 		if (get(F, r, "nz_lo") + 0 != -1 || get(F, r, "nz_hi") + 0 != 1 || get(F, r, "phi_lo") + 0 != 0 || get(F, r, "phi_hi") + 0 != 360) continue
 		m = get(F, r, "method"); p = get(F, r, "precision")
 		cbound[m, p] = get(F, r, "bound"); cstatus[m, p] = get(F, r, "status")
-		v = get(F, r, "found")
+		v = get(F, r, "found"); cfound[m, p] = v
 		if (!((m, p) in found) || num(v) > num(found[m, p])) {
 			found[m, p] = v
 			input[m, p] = get(F, r, "found_nx") " " get(F, r, "found_ny") " " get(F, r, "found_nz")
@@ -314,6 +314,16 @@ function table(   i, e, t, s, l) {
 	return s
 }
 
+# Where the worst defect (a sweep's input) exceeds the proven bound: that
+# input lies outside the domain certify covers (the roundings of unit
+# vectors; a sweep's unit inputs are normalized in the format, |n| - 1 up
+# to a few u); say so, with the largest found inside it.
+function outside(t) {
+	if (!proven(t, "float") || !(num(found[t, "float"]) > num(cbound[t, "float"]))) return ""
+	return " over the roundings of unit vectors, where `certify` finds at most " fmtd(cfound[t, "float"], "float") \
+	       " (this input, from a sweep, is normalized in float, and not among them)"
+}
+
 function findings(   i, e, s, t) {
 	s = ""
 	for (i = 1; i <= neng; i++) {
@@ -325,7 +335,7 @@ function findings(   i, e, s, t) {
 		s = s "- Code: " repo[e] " at `" commit[e] "`, " path[e] " (" lic[e] "); " lang[e] ", " sprec[e] "; build read: " build[e] ".\n"
 		s = s "- Worst input (float): `" (evalcmd(e, "float") == "" ? "not in the committed run" : evalcmd(e, "float")) "`.\n"
 		s = s "- Defect there: " W(e, "float", "found") (nonfin[t, "float"] > 0 ? "; non-finite output on " nonfin[t, "float"] " of the sampled unit inputs" : "") \
-		    (cstatus[t, "float"] == "singular" ? "; `onbstudy certify`: singular (" singtext(t) ")" : "; proven bound " W(e, "float", "bound")) ".\n"
+		    (cstatus[t, "float"] == "singular" ? "; `onbstudy certify`: singular (" singtext(t) ")" : "; proven bound " W(e, "float", "bound") outside(t)) ".\n"
 		s = s "- Fix: " fix[e] (fixm[e] == "" ? "" : "; `" fixm[e] "` is proven " fixbound(e, "float") " in float and " fixbound(e, "double") " in double") ".\n\n"
 		s = s expand(para[e]) "\n\n"
 	}

@@ -14,7 +14,7 @@
 #     REF=DIR for another run): the largest
 #     defect found on unit inputs (all distributions but nonunit), non-finite
 #     counts, the input of the largest defect, the speed (batch, 1 thread);
-#   results/certify/certify.csv, then results/wild/certify.csv (CERT="FILE
+#   results/wild/certify.csv, then results/certify/certify.csv (CERT="FILE
 #     ...": a later file's row wins): the whole-sphere row of each method and
 #     precision (proven bound, largest defect found and its input, status);
 #   scripts/wild.md.in: the text, with placeholders
@@ -42,7 +42,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$HERE/..
 REF=${REF:-$ROOT/results/wild}
 # the paper methods' proven bounds, then the engines' run (its rows win)
-CERT=${CERT:-$ROOT/results/certify/certify.csv $ROOT/results/wild/certify.csv}
+CERT=${CERT:-$ROOT/results/wild/certify.csv $ROOT/results/certify/certify.csv}
 ONBSTUDY=${ONBSTUDY:-$ROOT/onbstudy}
 TPL=${WILD_TPL:-$HERE/wild.md.in}
 BODY=$TPL

@@ -369,7 +369,6 @@ static double path_bound(cm *c, const cm_method *m, const mvf_box *x, unsigned p
 
 static double up(double v) { return v * (1.0 + 0x1p-45) + 0x1p-1000; }
 
-
 /* a + b + c with its roundings covered (signs mixed). */
 static double sum3_up(double a, double b, double c)
 {

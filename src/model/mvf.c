@@ -811,19 +811,27 @@ static void track(mvf *m, int op, int f, int exact, cv ir, cv ia, cv ib)
    each component's square at least mig^2 of its interval, or the square of
    what the branches and its grid say; and a length l >= act_lo > 0 known
    from a branch on it gives S (1 + eps) + alpha >= (act_lo / (1 + o))^2. */
-static double norm_lact(mvf *m, const mval *t)
+/* Into m->f2 (rounded down): the sum over the values bases[0..nb-1] of
+   the square of a lower bound on each one's magnitude, the mig of its
+   interval or what the branches and its grid say (actual_lo). */
+static void squares_lo(mvf *m, const cv *bases, int nb)
 {
 	int j, nz;
 	mpfr_set_zero(m->f2, 1);
-	for (j = 0; j < t->tg_nb; j++) {
-		const mval *b = &m->val[t->tg_b[j]];
-		double lo = actual_lo(m, b, &nz);
+	for (j = 0; j < nb; j++) {
+		const mval *b = &m->val[bases[j]];
+		const double lo = actual_lo(m, b, &nz);
 		mpfi_mig(m->f1, b->v);
 		if (mpfr_cmp_d(m->f1, lo) < 0)
 			mpfr_set_d(m->f1, lo, MPFR_RNDD);
 		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
 		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDD);
 	}
+}
+
+static double norm_lact(mvf *m, const mval *t)
+{
+	squares_lo(m, t->tg_b, t->tg_nb);
 	if (t->tg_p == 1 && t->act_lo > 0.0) {
 		mpfr_set_d(m->f1, t->act_lo, MPFR_RNDD);
 		mpfr_div_d(m->f1, m->f1, nextafter(1.0 + t->tg_ohi, INFINITY), MPFR_RNDD);
@@ -1858,21 +1866,10 @@ static cv ex_dot(mvf *m, const cv *p, const cv *q)
 }
 
 /* A lower bound on S, the sum of the squares of the actual values of
-   length tag x's bases (0: none known): each at least the mig of its
-   interval or what the branches and its grid say (actual_lo). */
+   length tag x's bases (0: none known). */
 static double len_lact(mvf *m, const mval *x)
 {
-	int j, nz;
-	mpfr_set_zero(m->f2, 1);
-	for (j = 0; j < x->ls_nb; j++) {
-		const mval *b = &m->val[x->ls_b[j]];
-		const double lo = actual_lo(m, b, &nz);
-		mpfi_mig(m->f1, b->v);
-		if (mpfr_cmp_d(m->f1, lo) < 0)
-			mpfr_set_d(m->f1, lo, MPFR_RNDD);
-		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
-		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDD);
-	}
+	squares_lo(m, x->ls_b, x->ls_nb);
 	return mpfr_get_d(m->f2, MPFR_RNDD);
 }
 

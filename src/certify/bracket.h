@@ -11,6 +11,10 @@
 
 enum { CERT_PROVEN = 0, CERT_SINGULAR, CERT_BUDGET };
 
+/* The found side's best inputs a region keeps for the images pass
+   (found_images.c). */
+#define CERT_KEEP 8
+
 /* An input the found side starts a walk from (--starts): another run's
    worst input of a method, for one precision (-1: either). */
 typedef struct {
@@ -44,6 +48,14 @@ typedef struct {
 	int nonfinite;      /* a sampled input gave a non-finite output            */
 	long boxes;
 	long probes;        /* inputs of the region the found side evaluated      */
+	double keep_n[CERT_KEEP][3];   /* its best inputs by screened defect, largest first */
+	int nkeep;
 } cert_result;
+
+/* An input of the images pass's pool; sure: known to be in the domain. */
+typedef struct {
+	double n[3];
+	int sure;
+} cert_pool_in;
 
 #endif

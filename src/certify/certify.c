@@ -17,6 +17,7 @@
 #include "certify.h"
 #include "search.h"
 #include "model/seeds.h"
+#include "found.h"
 
 #define MAXREG 1024
 #define MAXK STUDY_MAX_KERNELS
@@ -30,6 +31,8 @@ typedef struct {
 	int band;               /* --band given: only lo <= n.z <= hi */
 	long refined;           /* regions refine_top bounded again ...    */
 	double refine_s;        /* ... in this many seconds                */
+	long pool;              /* inputs the images pass pooled ...       */
+	double images_s;        /* ... in this many seconds                */
 	double band_lo, band_hi;
 	int quick;
 	int quiet;
@@ -40,6 +43,8 @@ typedef struct {
 typedef struct {
 	int k, prec, reg;   /* kernel, precision, region index */
 } task;
+
+static int group_of(const task *t) { return 2 * t->k + t->prec; }
 
 static void usage(FILE *f)
 {
@@ -386,6 +391,7 @@ typedef struct {
 	const cert_cli *c;
 	cert_result *res;
 	const int *pick;   /* refine_top: the regions of the round */
+	const struct image_pool_s *pool;   /* images_all: the pooled inputs */
 } task_set;
 
 static void run_one(cert_ctx *x, int i, void *arg)
@@ -408,7 +414,7 @@ static void refine_one(cert_ctx *x, int j, void *arg)
 static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
                    const cert_cli *c, cert_result *res)
 {
-	const task_set s = { ks, ms, reg, t, c, res, NULL };
+	const task_set s = { ks, ms, reg, t, c, res, NULL, NULL };
 	study_progress pr;
 	int fail;
 	memset(&pr, 0, sizeof pr);
@@ -421,6 +427,84 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 	if (fail)
 		study_error("out of memory: some regions were not run; nothing written");
 	return fail;
+}
+
+/* The images pass (found_images.c), after every region has run: per
+   kernel and precision a pool of every region's best inputs (known
+   members of the domain) and the --starts inputs that fit, each region
+   trying the images of its pool that fall in it.  pool[off[g]..off[g+1])
+   is group g's. */
+typedef struct image_pool_s {
+	cert_pool_in *in;
+	long *off;
+} image_pool;
+
+static void pool_add(image_pool *p, long *fill, int g, const double n[3], int sure, int write)
+{
+	if (write) {
+		memcpy(p->in[fill[g]].n, n, sizeof p->in->n);
+		p->in[fill[g]].sure = sure;
+	}
+	fill[g]++;
+}
+
+/* Counts the pool (write 0) into fill, or fills it (write 1). */
+static void pool_pass(const study_kernel *ks, int nk, const task *t, int nt, const cert_result *res,
+                      const cert_opts *o, image_pool *p, long *fill, int write)
+{
+	long s;
+	int i, j, k;
+	for (i = 0; i < nt; i++)
+		for (j = 0; j < res[i].nkeep; j++)
+			pool_add(p, fill, group_of(&t[i]), res[i].keep_n[j], 1, write);
+	for (s = 0; s < o->nstarts; s++)
+		for (k = 0; k < nk; k++)
+			for (j = 0; j < 2; j++)
+				if (found_start_fits(&o->starts[s], ks[k].name, j))
+					pool_add(p, fill, 2 * k + j, o->starts[s].n, 0, write);
+}
+
+static void images_one(cert_ctx *x, int i, void *arg)
+{
+	const task_set *s = arg;
+	const task *t = &s->t[i];
+	const image_pool *p = s->pool;
+	const int g = group_of(t);
+	cert_region_images(x, &s->ks[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o,
+	                   p->in + p->off[g], p->off[g + 1] - p->off[g], &s->res[i]);
+}
+
+static int images_all(const study_kernel *ks, int nk, const cm_method **ms, const cert_region *reg, const task *t,
+                      int nt, cert_cli *c, cert_result *res)
+{
+	const double t0 = study_now();
+	const int ng = 2 * nk;
+	image_pool p;
+	long *fill = calloc((size_t)ng + 1, sizeof *fill);
+	int g, fail = -1;
+	p.off = calloc((size_t)ng + 1, sizeof *p.off);
+	p.in = NULL;
+	if (fill && p.off) {
+		pool_pass(ks, nk, t, nt, res, &c->o, &p, fill, 0);
+		for (g = 0; g < ng; g++)
+			p.off[g + 1] = p.off[g] + fill[g];
+		p.in = malloc((size_t)(p.off[ng] > 0 ? p.off[ng] : 1) * sizeof *p.in);
+	}
+	if (p.in) {
+		task_set s = { ks, ms, reg, t, c, res, NULL, NULL };
+		s.pool = &p;
+		memcpy(fill, p.off, (size_t)ng * sizeof *fill);
+		pool_pass(ks, nk, t, nt, res, &c->o, &p, fill, 1);
+		fail = run_tasks(nt, images_one, (void *)&s, NULL);
+		c->pool = p.off[ng];
+	}
+	c->images_s = study_now() - t0;
+	free(fill);
+	free(p.off);
+	free(p.in);
+	if (fail)
+		study_error("out of memory: the images pass was not run; nothing written");
+	return fail ? -1 : 0;
 }
 
 /* The regions that set a whole-sphere bound, refined.  For each kernel
@@ -443,8 +527,6 @@ typedef struct {
 	double before;             /* the largest bound of the round's regions before it */
 	int stop, count;
 } refine_group;
-
-static int group_of(const task *t) { return 2 * t->k + t->prec; }
 
 static void refine_tops(const task *t, int nt, const cert_result *res, const unsigned char *done, refine_group *g, int ng)
 {
@@ -527,7 +609,7 @@ static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_r
 		return -1;
 	}
 	while (!fail && (np = refine_pick(t, nt, res, done, g, ng, pick)) > 0) {
-		const task_set s = { ks, ms, reg, t, c, res, pick };
+		const task_set s = { ks, ms, reg, t, c, res, pick, NULL };
 		fail = run_tasks(np, refine_one, (void *)&s, NULL);
 		for (i = 0; i < np; i++)
 			done[pick[i]] = 1;
@@ -580,6 +662,8 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	                                                : "every n with | |n| - 1 | <= tolerance");
 	if (c->o.tolerance >= 0)
 		fprintf(f, "# tolerance: %.17g\n", c->o.tolerance);
+	fprintf(f, "# images: every region also tried the images under the 48 signed permutations of %ld inputs (each "
+	        "region's best and the --starts of its method and precision) that fall in it (%.0f s)\n", c->pool, c->images_s);
 	fprintf(f, "# refine: %ld regions that set a whole-sphere bound wider than %.0fx found bounded again without the "
 	        "stall stop (%.0f s)\n", c->refined, REFINE_ABOVE, c->refine_s);
 	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
@@ -716,7 +800,8 @@ int cmd_certify(int argc, char **argv)
 			}
 		}
 	}
-	if (study_mkdir_p(dir) || run_all(ks, ms, reg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
+	if (study_mkdir_p(dir) || run_all(ks, ms, reg, t, nt, &c, res) ||
+	    images_all(ks, nk, ms, reg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
 		goto done;
 	if (study_out_open(&out, dir, "certify.csv"))
 		goto done;

@@ -289,15 +289,20 @@ static double sample_z(const cert_region *r, double t)
 
 /* The --starts inputs of this kernel and precision (found_try keeps those
    of the region). */
+int found_start_fits(const cert_start *s, const char *name, int prec)
+{
+	return (s->prec < 0 || s->prec == prec) && strcmp(s->method, name) == 0 &&
+	       (prec == PREC_DOUBLE || (fmt_round(s->n[0], PREC_FLOAT) == s->n[0] &&
+	                                fmt_round(s->n[1], PREC_FLOAT) == s->n[1] &&
+	                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2]));
+}
+
 static void try_starts(probe_env *e)
 {
 	long i;
 	for (i = 0; i < e->o->nstarts; i++) {
 		const cert_start *s = &e->o->starts[i];
-		if ((s->prec < 0 || s->prec == e->prec) && strcmp(s->method, e->k->name) == 0 &&
-		    (e->prec == PREC_DOUBLE || fmt_round(s->n[0], PREC_FLOAT) == s->n[0]) &&
-		    (e->prec == PREC_DOUBLE || (fmt_round(s->n[1], PREC_FLOAT) == s->n[1] &&
-		                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2]))) {
+		if (found_start_fits(s, e->k->name, e->prec)) {
 			found_try(e, s->n, 0);
 			if (e->k->rot && s->has_loc)
 				found_dir_start(e, s->n, s->loc);
@@ -524,4 +529,32 @@ void found_walks(probe_env *e, int restarts)
 		climb(e, best[j].n, best[j].d, (long)(300 * f), (long)(150 * f), 1);
 	if (e->k->rot)
 		found_dir_walk(e, (int)((restarts ? 200 : 400) * f));
+}
+
+static int by_d(const void *a, const void *b)
+{
+	const double x = ((const found_cand *)a)->d, y = ((const found_cand *)b)->d;
+	return x > y ? -1 : x < y;
+}
+
+void found_keep(probe_env *e)
+{
+	found_cand c[FOUND_TOP];
+	int i;
+	memcpy(c, e->top, (size_t)e->ntop * sizeof *c);
+	qsort(c, (size_t)e->ntop, sizeof *c, by_d);
+	e->res->nkeep = e->ntop < CERT_KEEP ? e->ntop : CERT_KEEP;
+	for (i = 0; i < e->res->nkeep; i++)
+		memcpy(e->res->keep_n[i], c[i].n, sizeof c[i].n);
+}
+
+void found_polish(probe_env *e, int nbest, double frac)
+{
+	found_cand c[FOUND_TOP];
+	const int nt = e->ntop;
+	int j;
+	memcpy(c, e->top, (size_t)nt * sizeof *c);
+	qsort(c, (size_t)nt, sizeof *c, by_d);
+	for (j = 0; j < nbest && j < nt && c[j].d >= frac * e->res->found; j++)
+		climb(e, c[j].n, c[j].d, 300, 150, 1);
 }

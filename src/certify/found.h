@@ -55,6 +55,22 @@ void found_try_u(probe_env *e, double z, double phi);
 void found_sample(probe_env *e);
 void found_walks(probe_env *e, int restarts);
 
+/* Is start s one of kernel `name`'s in precision prec (its values in the
+   format)? */
+int found_start_fits(const cert_start *s, const char *name, int prec);
+
+/* The best inputs seen into res->keep_n, largest screened defect first. */
+void found_keep(probe_env *e);
+
+/* Fine climbs (1 to 4 ulps a step) from the best inputs seen whose
+   screened defect reaches `frac` of found, `nbest` of them at most. */
+void found_polish(probe_env *e, int nbest, double frac);
+
+/* The images pass (found_images.c): every input of pool under the 48
+   signed permutations of its components, tried where it lies in the
+   region, then polished. */
+void found_images(probe_env *e, const cert_pool_in *pool, long np);
+
 /* |c| = sqrt(1 - a^2 - b^2) rounded to the format prec (a, b in it), as
    cert_complete gives it, without MPFR where double arithmetic decides the
    rounding for certain; NaN where it does not (then ask cert_complete). */

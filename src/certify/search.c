@@ -291,6 +291,7 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	e.rng = region_seed(o->seed, r);
 	found_sample(&e);
 	found_walks(&e, 1);
+	found_keep(&e);
 	if (region_meets_singular(k, r) || res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
@@ -299,10 +300,27 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	region_box(r, prec, o->tolerance, &b);
 	branch_and_bound(&e, m, &b);
 	found_walks(&e, 0);
+	found_keep(&e);
 	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
+	}
+}
+
+void cert_region_images(cert_ctx *x, const study_kernel *k, int prec, const cert_region *r, const cert_opts *o,
+                        const cert_pool_in *pool, long np, cert_result *res)
+{
+	probe_env e;
+	memset(&e, 0, sizeof e);
+	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
+	e.rng = region_seed(o->seed ^ UINT64_C(0x696d61676573), r);   /* "images" */
+	found_images(&e, pool, np);
+	if (res->nonfinite) {
+		res->status = CERT_SINGULAR;
+		res->bound = INFINITY;
+	} else if (res->status != CERT_SINGULAR) {
+		res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	}
 }
 

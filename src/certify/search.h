@@ -20,4 +20,11 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 void cert_region_refine(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
                         const cert_region *r, const cert_opts *o, cert_result *res);
 
+/* The images pass of a region run before (found_images.c): the inputs of
+   pool (a kernel and precision's best inputs of every region and its
+   --starts) under the signed permutations, where they fall in r.  found
+   can only rise; the status follows it. */
+void cert_region_images(cert_ctx *x, const study_kernel *k, int prec, const cert_region *r, const cert_opts *o,
+                        const cert_pool_in *pool, long np, cert_result *res);
+
 #endif

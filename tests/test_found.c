@@ -10,6 +10,11 @@
  * the fast path must be cert_complete's bits, and cert_complete must call
  * that rounding certain.  The share of inputs the fast path answers is
  * printed, and must be most of them (it is the walks' speed).
+ *
+ * The images pass (found_images.c) takes a domain member's 48 signed
+ * permutations for members without asking: here cert_in_domain must give
+ * every image of an input the input's own answer, on completed inputs and
+ * on inputs whose largest component is an ulp off (members or not).
  */
 #include <math.h>
 #include <stdint.h>
@@ -68,6 +73,41 @@ static long check(cert_ctx *x, int prec, long count, long *fast)
 	return bad;
 }
 
+/* The number of inputs some signed permutation of which cert_in_domain
+   answers differently from the input itself. */
+static long check_images(int prec, long count, long *members)
+{
+	uint64_t s = 777 + (uint64_t)prec;
+	long i, bad = 0;
+	*members = 0;
+	for (i = 0; i < count; i++) {
+		double a, b, n[3], m[3];
+		int p[3], in, g;
+		draw(&s, prec, i, &a, &b);
+		n[0] = a;
+		n[1] = b;
+		n[2] = sqrt(fmax(0.0, 1.0 - a * a - b * b));
+		n[2] = fmt_step(fmt_round(n[2], prec), (int64_t)(i % 3) - 1, prec);
+		in = cert_in_domain(n, prec, -1.0);
+		*members += in;
+		for (g = 0; g < 48; g++) {
+			p[0] = g % 3;
+			p[1] = (p[0] + 1 + (g / 3) % 2) % 3;
+			p[2] = 3 - p[0] - p[1];
+			m[0] = (g / 6) & 1 ? -n[p[0]] : n[p[0]];
+			m[1] = (g / 6) & 2 ? -n[p[1]] : n[p[1]];
+			m[2] = (g / 6) & 4 ? -n[p[2]] : n[p[2]];
+			if (cert_in_domain(m, prec, -1.0) != in) {
+				if (bad++ < 5)
+					printf("FAIL %s images: (%a, %a, %a) %s, its image (%a, %a, %a) not\n", prec_name(prec), n[0],
+					       n[1], n[2], in ? "a member" : "no member", m[0], m[1], m[2]);
+				break;
+			}
+		}
+	}
+	return bad;
+}
+
 int main(int argc, char **argv)
 {
 	const long count = argc > 1 ? atol(argv[1]) : 400000;
@@ -82,6 +122,14 @@ int main(int argc, char **argv)
 		       bad || few ? "FAIL" : "ok  ", prec_name(prec), count, fast, bad,
 		       few ? " (it should answer half or more)" : "");
 		fail |= bad != 0 || few;
+	}
+	for (prec = PREC_FLOAT; prec <= PREC_DOUBLE; prec++) {
+		long members, bad = check_images(prec, count / 100, &members);
+		const int none = members == 0 || members == count / 100;
+		printf("%s %-6s %ld inputs (%ld members): %ld with an image on the other side of the domain%s\n",
+		       bad || none ? "FAIL" : "ok  ", prec_name(prec), count / 100, members, bad,
+		       none ? " (both kinds should be drawn)" : "");
+		fail |= bad != 0 || none;
 	}
 	cert_ctx_free(x);
 	return fail;

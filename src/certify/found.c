@@ -18,8 +18,10 @@
  * vector, or moving all three, or repeating the last step that paid;
  * every input whose two smaller components lie within 5 ulps of those of
  * the best inputs, with every domain value of the largest (each end of
- * its run in float); and, from search.c, the centres of the boxes the
- * branch and bound splits and inputs drawn in its worst leaves.
+ * its run in float); from search.c, the centres of the boxes the branch
+ * and bound splits and inputs drawn in its worst leaves; and, once every
+ * region has run, the images of every region's best inputs under the
+ * signed permutations (found_images.c).
  */
 #include <math.h>
 #include <stdlib.h>

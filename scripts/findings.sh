@@ -382,6 +382,36 @@ generate() {
 		if (!nv) return "-"
 		return sprintf("%.2f", nv % 2 ? v[(nv + 1) / 2] : (v[nv / 2] + v[nv / 2 + 1]) / 2)
 	}
+	# over every region of every method and precision (not the whole-sphere
+	# rows, not singular ones): their count, the median of bound / found
+	# to 2 decimals, and how many are proven
+	# the k-th smallest of v[1..n] (Hoare selection; v is reordered)
+	function kth(v, n, k,   lo, hi, i, j, x, t) {
+		lo = 1; hi = n
+		while (lo < hi) {
+			x = v[int((lo + hi) / 2)]; i = lo; j = hi
+			while (i <= j) {
+				while (v[i] < x) i++
+				while (v[j] > x) j--
+				if (i <= j) { t = v[i]; v[i] = v[j]; v[j] = t; i++; j-- }
+			}
+			if (k <= j) hi = j; else if (k >= i) lo = i; else return v[k]
+		}
+		return v[k]
+	}
+	function CMEDALL(   n, r, i, f, nv, np, v, a, b) {
+		n = split(rows[CF_FILE], r, "\n"); nv = np = 0
+		for (i = 1; i <= n; i++) {
+			split(r[i], f, SUBSEP)
+			if (f[1] == "" || (f[3] == "-1" && f[4] == "1" && f[5] == "0" && f[6] == "360")) continue
+			if (CRT[r[i], "status"] == "singular" || CRT[r[i], "found"] + 0 <= 0) continue
+			nv++; np += CRT[r[i], "status"] == "proven"
+			v[nv] = CRT[r[i], "bound"] / CRT[r[i], "found"]
+		}
+		if (!nv) return "no regions"
+		a = kth(v, nv, int((nv + 1) / 2)); b = nv % 2 ? a : kth(v, nv, nv / 2 + 1)
+		return sprintf("%d regions, median bound / found %.2f, %d of them proven", nv, (a + b) / 2, np)
+	}
 	function table_certify(   out, i, m, pp, p, k, line, any) {
 		out = "| method | float: found | bound | ratio | median | status | double: found | bound | ratio | median | status |\n|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|\n"
 		for (i = 1; i <= ncm; i++) {
@@ -580,6 +610,7 @@ generate() {
 			else if (a[1] == "TABLE" && a[2] == "accuracy") rep = table_accuracy(a[3])
 			else if (a[1] == "TABLE" && a[2] == "tradeoff") rep = table_tradeoff()
 			else if (a[1] == "TABLE" && a[2] == "certify") rep = table_certify()
+			else if (a[1] == "CMEDALL" && nt == 1) rep = CMEDALL()
 			else if (a[1] == "TABLE" && a[2] == "certifybands" && nt == 4) rep = table_bands(a[3], a[4])
 			else if (a[1] == "TABLE" && a[2] == "certifyfma" && nt == 3) rep = table_fma(a[3])
 			else if (a[1] == "CW" && nt == 5) rep = CW(a[2], a[3], a[4], a[5])

@@ -94,7 +94,7 @@
  *   stark                    <= 7.07u (found 4.48u)         <= 7.07u (found 4.45u)
  *   stark_fixed              <= 6.58u (found 4.05u)         <= 6.58u (found 4.1u)
  *   pbrt_v3                  <= 5.8u (found 3.73u)          <= 6.58u (found 4.08u)
- *   rtow                     <= 10.3u (found 5.35u)         <= 10.3u (found 5.67u)
+ *   rtow                     <= 10.3u (found 5.39u)         <= 10.3u (found 5.67u)
  *   tangent_cross_z          singular                       singular
  *   q2rtx                    <= 3.65e+05u (found 3.31e+05u) <= 1.96e+14u (found 1.78e+14u)
  *   filament                 <= 1.31e+07u (found 1.05e+07u) <= 5.28e+12u (found 4.38e+12u)
@@ -104,7 +104,7 @@
  *   embree                   <= 6.38u (found 4.95u)         <= 1.44e+09u (found 1.44e+09u)
  *   luxcore                  <= 168u (found 168u)           <= 9.01e+10u (found 9.01e+10u)
  *   jolt                     <= 5.52u (found 3.29u)         <= 5.13u (found 3.67u)
- *   jolt_fma                 <= 5.5u (found 3.22u)          <= 5.12u (found 3.22u)
+ *   jolt_fma                 <= 5.5u (found 3.34u)          <= 5.12u (found 3.22u)
  *   bullet                   <= 5.07u (found 3u)            <= 5.07u (found 3.03u)
  *   mujoco                   <= 15.6u (found 8.65u)         <= 15.6u (found 8.66u)
  *   eigen                    <= 6.91u (found 4u)            <= 6.91u (found 4.06u)

@@ -44,7 +44,6 @@ void found_images(probe_env *e, const cert_pool_in *pool, long np)
 	int a;
 	if (e->k->rot)   /* frisvad_rotate's found carries a local direction too */
 		return;
-	e->ntop = 0;   /* polish what the images reached */
 	for (i = 0; i < np; i++)
 		for (a = 0; a < 3; a++) {
 			if (in_band(e->r, pool[i].n[a]))

@@ -462,7 +462,7 @@ static void pool_pass(const study_kernel *ks, int nk, const task *t, int nt, con
 			pool_add(p, fill, group_of(&t[i]), res[i].keep_n[j], 1, write);
 	for (s = 0; s < o->nstarts; s++)
 		for (k = 0; k < nk; k++)
-			for (j = 0; j < 2; j++)
+			for (j = PREC_FLOAT; j <= PREC_DOUBLE; j++)
 				if (found_start_fits(&o->starts[s], ks[k].name, j))
 					pool_add(p, fill, 2 * k + j, o->starts[s].n, 0, write);
 }

@@ -367,24 +367,21 @@ generate() {
 	function unit(p) { return p == "float" ? 2 ^ -24 : 2 ^ -53 }
 	function inu(v, p) { return v == "inf" ? "inf" : sprintf("%.4g", v / unit(p)) }
 	function ratio(b, f) { return (b == "inf" || f + 0 == 0) ? "-" : sprintf("%.3g", b / f) }
-	# the median over the regions (not the whole-sphere row, not singular
-	# ones) of bound / found, to 2 decimals ("-" when there is none)
-	function CMED(m, p,   n, r, i, f, v, nv, j, t) {
-		n = split(rows[CF_FILE], r, "\n"); nv = 0
+	# bound / found of every region of method m in precision p (every
+	# method and precision when m is ""; not the whole-sphere rows, not
+	# singular ones) into v[1..]; their count, and in np how many are proven
+	function brackets(m, p, v, np,   n, r, i, f, nv) {
+		n = split(rows[CF_FILE], r, "\n"); nv = np[0] = 0
 		for (i = 1; i <= n; i++) {
 			split(r[i], f, SUBSEP)
-			if (f[1] != m || f[2] != p || (f[3] == "-1" && f[4] == "1" && f[5] == "0" && f[6] == "360")) continue
+			if (f[1] == "" || (m != "" && (f[1] != m || f[2] != p))) continue
+			if (f[3] == "-1" && f[4] == "1" && f[5] == "0" && f[6] == "360") continue
 			if (CRT[r[i], "status"] == "singular" || CRT[r[i], "found"] + 0 <= 0) continue
-			t = CRT[r[i], "bound"] / CRT[r[i], "found"]
-			for (j = nv; j > 0 && v[j] > t; j--) v[j + 1] = v[j]   # insertion
-			v[j + 1] = t; nv++
+			v[++nv] = CRT[r[i], "bound"] / CRT[r[i], "found"]
+			np[0] += CRT[r[i], "status"] == "proven"
 		}
-		if (!nv) return "-"
-		return sprintf("%.2f", nv % 2 ? v[(nv + 1) / 2] : (v[nv / 2] + v[nv / 2 + 1]) / 2)
+		return nv
 	}
-	# over every region of every method and precision (not the whole-sphere
-	# rows, not singular ones): their count, the median of bound / found
-	# to 2 decimals, and how many are proven
 	# the k-th smallest of v[1..n] (Hoare selection; v is reordered)
 	function kth(v, n, k,   lo, hi, i, j, x, t) {
 		lo = 1; hi = n
@@ -399,18 +396,22 @@ generate() {
 		}
 		return v[k]
 	}
-	function CMEDALL(   n, r, i, f, nv, np, v, a, b) {
-		n = split(rows[CF_FILE], r, "\n"); nv = np = 0
-		for (i = 1; i <= n; i++) {
-			split(r[i], f, SUBSEP)
-			if (f[1] == "" || (f[3] == "-1" && f[4] == "1" && f[5] == "0" && f[6] == "360")) continue
-			if (CRT[r[i], "status"] == "singular" || CRT[r[i], "found"] + 0 <= 0) continue
-			nv++; np += CRT[r[i], "status"] == "proven"
-			v[nv] = CRT[r[i], "bound"] / CRT[r[i], "found"]
-		}
+	function median(v, n,   a) {
+		a = kth(v, n, int((n + 1) / 2))
+		return n % 2 ? a : (a + kth(v, n, n / 2 + 1)) / 2
+	}
+	# the median over the regions of a method of bound / found, to 2 decimals
+	# ("-" when there is none)
+	function CMED(m, p,   v, np, nv) {
+		nv = brackets(m, p, v, np)
+		return nv ? sprintf("%.2f", median(v, nv)) : "-"
+	}
+	# the same over every region of every method and precision: their
+	# count, the median, and how many are proven
+	function CMEDALL(   v, np, nv) {
+		nv = brackets("", "", v, np)
 		if (!nv) return "no regions"
-		a = kth(v, nv, int((nv + 1) / 2)); b = nv % 2 ? a : kth(v, nv, nv / 2 + 1)
-		return sprintf("%d regions, median bound / found %.2f, %d of them proven", nv, (a + b) / 2, np)
+		return sprintf("%d regions, median bound / found %.2f, %d of them proven", nv, median(v, nv), np[0])
 	}
 	function table_certify(   out, i, m, pp, p, k, line, any) {
 		out = "| method | float: found | bound | ratio | median | status | double: found | bound | ratio | median | status |\n|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|\n"

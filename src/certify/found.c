@@ -289,8 +289,6 @@ static double sample_z(const cert_region *r, double t)
 	return lo + (hi - lo) * t;
 }
 
-/* The --starts inputs of this kernel and precision (found_try keeps those
-   of the region). */
 int found_start_fits(const cert_start *s, const char *name, int prec)
 {
 	return (s->prec < 0 || s->prec == prec) && strcmp(s->method, name) == 0 &&
@@ -299,6 +297,8 @@ int found_start_fits(const cert_start *s, const char *name, int prec)
 	                                fmt_round(s->n[2], PREC_FLOAT) == s->n[2]));
 }
 
+/* The --starts inputs of this kernel and precision (found_try keeps those
+   of the region). */
 static void try_starts(probe_env *e)
 {
 	long i;
@@ -539,13 +539,20 @@ static int by_d(const void *a, const void *b)
 	return x > y ? -1 : x < y;
 }
 
+/* The best inputs seen into c, largest screened defect first; their count. */
+static int sorted_top(const probe_env *e, found_cand c[FOUND_TOP])
+{
+	memcpy(c, e->top, (size_t)e->ntop * sizeof *c);
+	qsort(c, (size_t)e->ntop, sizeof *c, by_d);
+	return e->ntop;
+}
+
 void found_keep(probe_env *e)
 {
 	found_cand c[FOUND_TOP];
+	const int nt = sorted_top(e, c);
 	int i;
-	memcpy(c, e->top, (size_t)e->ntop * sizeof *c);
-	qsort(c, (size_t)e->ntop, sizeof *c, by_d);
-	e->res->nkeep = e->ntop < CERT_KEEP ? e->ntop : CERT_KEEP;
+	e->res->nkeep = nt < CERT_KEEP ? nt : CERT_KEEP;
 	for (i = 0; i < e->res->nkeep; i++)
 		memcpy(e->res->keep_n[i], c[i].n, sizeof c[i].n);
 }
@@ -553,10 +560,8 @@ void found_keep(probe_env *e)
 void found_polish(probe_env *e, int nbest, double frac)
 {
 	found_cand c[FOUND_TOP];
-	const int nt = e->ntop;
+	const int nt = sorted_top(e, c);
 	int j;
-	memcpy(c, e->top, (size_t)nt * sizeof *c);
-	qsort(c, (size_t)nt, sizeof *c, by_d);
 	for (j = 0; j < nbest && j < nt && c[j].d >= frac * e->res->found; j++)
 		climb(e, c[j].n, c[j].d, 300, 150, 1);
 }

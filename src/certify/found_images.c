@@ -24,7 +24,8 @@ static int in_band(const cert_region *r, double z)
 	return (z >= r->nz_lo || r->nz_lo <= -1.0) && (z <= r->nz_hi || r->nz_hi >= 1.0);
 }
 
-/* The 8 images of n with component a, signed by sz, as their n.z. */
+/* The 8 images of pool input p whose n.z is z (+-p->n[a]): the other two
+   components in either order, each with either sign. */
 static void try_with_z(probe_env *e, const cert_pool_in *p, int a, double z)
 {
 	double m[3];

@@ -31,6 +31,9 @@ TEST="$TEST help2man man-db"  # man pages: man/onbstudy.1 from --help (scripts/m
 TEST="$TEST procps g++"  # pgrep in tests/mpi.sh; g++ for the C++17 check of tests/lib_client.sh
 TEST="$TEST gcc-aarch64-linux-gnu libc6-dev-arm64-cross gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user"  # make cross-check
 TEST="$TEST gappa"  # Gappa cross-check of duff_branchless, scripts/gappa.sh
+# Shaders: lavapipe (a conforming Vulkan 1.3 device on the CPU), the Vulkan
+# loader and headers, GLSL/HLSL to SPIR-V (glslang) and spirv-tools.
+TEST="$TEST mesa-vulkan-drivers libvulkan-dev glslang-tools spirv-tools"
 case "${1:-}" in
 "") ;;
 --plots) PKGS="$PKGS $PLOTS" ;;

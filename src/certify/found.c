@@ -37,34 +37,6 @@
 static uint64_t rnd(probe_env *e) { return rng_mix64(e->rng++); }
 static double rnd01(probe_env *e) { return (double)(rnd(e) >> 11) * 0x1p-53; }
 
-/* a b as an unevaluated sum hi + lo (exact), and s += v kept as a
-   double-double with Neumaier's compensation. */
-static void two_prod(double a, double b, double *hi, double *lo)
-{
-	*hi = a * b;
-	*lo = fma(a, b, -*hi);
-}
-
-static void acc(double *s, double *c, double v)
-{
-	double t = *s + v;
-	*c += fabs(*s) >= fabs(v) ? (*s - t) + v : (v - t) + *s;
-	*s = t;
-}
-
-/* p . q - sub, to a relative error far below 1e-20 of the terms' size. */
-double found_dot_dd(const double *p, const double *q, double sub)
-{
-	double s = -sub, c = 0.0, hi, lo;
-	int i;
-	for (i = 0; i < 3; i++) {
-		two_prod(p[i], q[i], &hi, &lo);
-		acc(&s, &c, hi);
-		acc(&s, &c, lo);
-	}
-	return s + c;
-}
-
 /* The screened defect of kernel output b (6 values) on input n. */
 static double screen_defect(const double n[3], const double b[6])
 {
@@ -99,14 +71,6 @@ static void keep_top(probe_env *e, const double n[3], double d)
 		return;
 	e->top[low].d = d;
 	memcpy(e->top[low].n, n, 3 * sizeof *n);
-}
-
-int found_worth_measuring(probe_env *e, double d)
-{
-	if (!(d >= e->res->found * (1.0 - 1e-9)) || !(d > e->gate * (1.0 + 0x1p-40)))
-		return 0;
-	e->gate = d;
-	return 1;
 }
 
 double found_try(probe_env *e, const double n[3], int in_domain)
@@ -179,11 +143,11 @@ static double complete_f64(double a, double b)
 	double s = 1.0, cc = 0.0, p, sh, sl, c0, c1, u, t;
 	int k;
 	p = a * a;
-	acc(&s, &cc, -p);
-	acc(&s, &cc, -fma(a, a, -p));
+	found_acc(&s, &cc, -p);
+	found_acc(&s, &cc, -fma(a, a, -p));
 	p = b * b;
-	acc(&s, &cc, -p);
-	acc(&s, &cc, -fma(b, b, -p));
+	found_acc(&s, &cc, -p);
+	found_acc(&s, &cc, -fma(b, b, -p));
 	sh = s + cc;
 	sl = cc - (sh - s);
 	if (!(sh > 0.25))

@@ -17,7 +17,7 @@
  */
 #include <math.h>
 #include <string.h>
-#include "found.h"
+#include "found_dir.h"
 #include "inputs/inputs.h"
 #include "inputs/rng.h"
 

@@ -6,7 +6,7 @@
  * cannot clash with a renderer's own onb.h; its guard is LIBONB_ONB_H.
  *
  * Index
- *   Types ............ onb_vec3 (double), onb_vec3f (float), onb_method
+ *   Types ............ onb_vec3 (double), onb_vec3f (float), onb_vec3h (half), onb_method
  *   Methods .......... one static inline pair per method, double plain,
  *                      float with the `f` suffix (as in <math.h>):
  *     onb_naive            onb_naivef             Frisvad 2012 Listing 1
@@ -45,6 +45,10 @@
  *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
  *     (float only)         onb_duff_widef         this project: Duff in double
  *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
+ *   Half (binary16) .. onb_NAMEh for every method above (onb_frisvadh, ...),
+ *                      onb_vec3h, onb_NAME_arrayh on bit patterns; out of
+ *                      line, each operation rounded to binary16; only where
+ *                      ONB_HAVE_HALF is 1 (a compiler with _Float16)
  *   Tools ............ onb_frisvad_threshold[f]  Listing 2 with t as a parameter
  *                      onb_frisvad_rotate[f]     Frisvad 2012 Equation 3
  *                      onb_basis_checked[f]      normalize + status + method
@@ -259,6 +263,28 @@ extern "C" {
 
 typedef struct { double x, y, z; } onb_vec3;
 typedef struct { float  x, y, z; } onb_vec3f;
+
+/* binary16 ("half": GLSL mediump, HLSL half, CUDA __half).  ONB_HAVE_HALF
+   is 1 where the compiler has _Float16 (GCC >= 12 and clang >= 15 on
+   x86-64 and arm64; __FLT16_MAX__ says so), else 0, and then this header
+   declares no half entry point: the library builds without them (C99 has
+   no binary16 type).  Define ONB_NO_HALF to leave them out anyway.  The
+   half kernels are out of line only (src/lib/half.c), compiled with the
+   library's flags, and every operation in them is rounded to binary16 on
+   its own, as a GPU's half arithmetic does: x86-64 compilers evaluate
+   `_Float16` expressions in float and round once at the end
+   (FLT_EVAL_METHOD 0 with _Float16 promoted, or -fexcess-precision), so
+   the kernels never write a bare half expression (half.c says how).
+   The registry reaches them through onb_method.arrayh, on binary16 bit
+   patterns (uint16_t), which every build can declare. */
+#if !defined(ONB_NO_HALF) && defined(__FLT16_MAX__) && (defined(__x86_64__) || defined(__aarch64__)) && \
+    (defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 12))
+#define ONB_HAVE_HALF 1
+__extension__ typedef _Float16 onb_half;
+typedef struct { onb_half x, y, z; } onb_vec3h;
+#else
+#define ONB_HAVE_HALF 0
+#endif
 
 /* ------------------------------------------------------------------ */
 /* Reciprocal square roots of Frisvad 2012, Listing 3                  */
@@ -1195,6 +1221,9 @@ typedef void (*onb_basis_fn) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2);
 typedef void (*onb_basisf_fn)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2);
 typedef void (*onb_array_fn) (const double *n, double *b1, double *b2);
 typedef void (*onb_arrayf_fn)(const float  *n, float  *b1, float  *b2);
+/* binary16 bit patterns (IEEE 754 binary16 in a uint16_t): n[3] read,
+   b1[3] and b2[3] written. */
+typedef void (*onb_arrayh_fn)(const uint16_t *n, uint16_t *b1, uint16_t *b2);
 
 /* Structure-of-arrays batch: for i < count, (b1[i], b2[i]) = method(n[i]).
    The nine arrays must not overlap.  Bit-identical to the scalar function
@@ -1245,6 +1274,7 @@ typedef struct onb_method {
 	onb_batchf_fn batchf;     /* SoA batch, float                              */
 	onb_array_fn  array;      /* onb_NAME_array, double (NULL: float only)     */
 	onb_arrayf_fn arrayf;     /* onb_NAME_arrayf                               */
+	onb_arrayh_fn arrayh;     /* onb_NAME_arrayh, binary16 bits (NULL: no half) */
 	const onb_provenance *prov; /* shipped code: where it is; NULL for papers  */
 } onb_method;
 
@@ -1871,6 +1901,36 @@ static inline onb_status onb__basis_arrayf(const onb_method *method, const float
 	void onb_##m##_arrayf(const float *n, float *b1, float *b2);
 ONB_FLOAT_METHOD_LIST(ONB__DECLARE_ARRAY_F)
 #undef ONB__DECLARE_ARRAY_F
+
+/* binary16 (ONB_HAVE_HALF): onb_NAMEh(n, &b1, &b2) for every method of
+   both lists, out of line, each operation rounded to binary16 (see
+   ONB_HAVE_HALF above); onb_NAME_arrayh the same on bit patterns (the
+   registry's arrayh).  Constants are the float kernel's, rounded to
+   binary16 as a mediump literal is: Frisvad's and Max's thresholds, Quake
+   II RTX's and Filament's all become -1 (so Listing 2 has no fallback left
+   in half: n = -z gives 1 + n.z = 0 and a NaN basis), PhysX's 0.9999f
+   becomes 1, MuJoCo's 1e-15 becomes 0; Eigen's precision is its
+   NumTraits<half>::dummy_precision(), 1e-2.  The approximate
+   normalizations run on the input widened to float (exact): _invsqrt the
+   float bit trick's seed rounded to binary16 and Listing 3's Newton step
+   in half, _rsqrt rsqrtss rounded to binary16 (+ the Newton step in half
+   for _rsqrt_nr), Listing 3's rsqrt (double)1/sqrt rounded once; embree
+   the same estimate and its Newton step in half.  pbrt_v3's cross and
+   duff_wide compute in double and round each output once, as their float
+   kernels do.  fma (cycles_cross111_avx2, jolt_fma, duff_comp) is the
+   double fma rounded once, which is the correctly rounded binary16 fma
+   (half.c gives the argument). */
+#if ONB_HAVE_HALF
+#define ONB__DECLARE_H(m) \
+	void onb_##m##h(onb_vec3h n, onb_vec3h *b1, onb_vec3h *b2); \
+	void onb_##m##_arrayh(const uint16_t *n, uint16_t *b1, uint16_t *b2);
+ONB_METHOD_LIST(ONB__DECLARE_H)
+ONB_FLOAT_METHOD_LIST(ONB__DECLARE_H)
+#undef ONB__DECLARE_H
+#define ONB_FRISVAD_TH ((onb_half)ONB_FRISVAD_TF) /* -1 in binary16 */
+void onb_frisvad_thresholdh(onb_vec3h n, onb_half t, onb_vec3h *b1, onb_vec3h *b2);
+onb_vec3h onb_frisvad_rotateh(onb_vec3h n, onb_half x, onb_half y, onb_half z);
+#endif
 
 /* The tools out of line, for callers whose flags could change their bits. */
 void onb_frisvad_threshold_outline (onb_vec3  n, double t, onb_vec3  *b1, onb_vec3  *b2);

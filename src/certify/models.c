@@ -88,5 +88,9 @@ const cm_method *cm_find_fma(const char *name)
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6])
 {
 	c->contract = m->contract;
+	if (P == PREC_HALF && c->backend == CM_MVF) {  /* no proof model of binary16 yet (model.h) */
+		c->failed = 1;
+		return;
+	}
 	m->fam->model(c, P, m->m, n, out);
 }

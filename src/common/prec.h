@@ -1,15 +1,43 @@
 /*
- * prec.h - the two precisions the study measures.  The ground floor:
- * every room may include it, and it includes nothing of the study.
+ * prec.h - the precisions the study measures.  The ground floor: every
+ * room may include it, and it includes nothing of the study.
  */
 #ifndef ONB_COMMON_PREC_H
 #define ONB_COMMON_PREC_H
 
-/* binary32 and binary64; also the index of per-precision arrays, and the
-   format of a rounding model's operation (src/model/model.h) */
-enum { PREC_FLOAT = 0, PREC_DOUBLE = 1 };
+/* binary32, binary64 and binary16; also the index of per-precision arrays
+   (those sized 2 hold float and double only), and the format of a
+   rounding model's operation (src/model/model.h) */
+enum { PREC_FLOAT = 0, PREC_DOUBLE = 1, PREC_HALF = 2 };
+#define PREC_COUNT 3
 
-/* The one spelling of a precision in every output: "float", "double". */
-static inline const char *prec_name(int p) { return p == PREC_FLOAT ? "float" : "double"; }
+/* A format's parameters, in one place for every room: p bits of
+   significand (the hidden bit counted), unit roundoff u = 2^-p, the
+   smallest normal 2^emin, the subnormal step 2^(emin - p + 1) (the
+   absolute error of an underflowing rounding is at most half of it), and
+   the largest finite value (2 - 2^(1-p)) 2^emax, above which a rounding
+   overflows to infinity. */
+typedef struct prec_format {
+	const char *name;   /* the one spelling in every output: "float", "double", "half" */
+	int bits;           /* p: 24, 53, 11                                   */
+	int emin, emax;     /* -126/127, -1022/1023, -14/15                    */
+	double u;           /* 2^-p                                            */
+	double normal_min;  /* 2^emin                                          */
+	double sub_step;    /* 2^(emin - p + 1): 2^-149, 2^-1074, 2^-24         */
+	double max;         /* largest finite: FLT_MAX, DBL_MAX, 65504          */
+} prec_format;
+
+static inline const prec_format *prec_fmt(int p)
+{
+	static const prec_format f[PREC_COUNT] = {
+		{ "float",  24, -126,  127,  0x1p-24, 0x1p-126,  0x1p-149,  0x1.fffffep+127 },
+		{ "double", 53, -1022, 1023, 0x1p-53, 0x1p-1022, 0x1p-1074, 0x1.fffffffffffffp+1023 },
+		{ "half",   11, -14,   15,   0x1p-11, 0x1p-14,   0x1p-24,   0x1.ffcp+15 },
+	};
+	return &f[p >= 0 && p < PREC_COUNT ? p : PREC_DOUBLE];
+}
+
+/* The one spelling of a precision in every output: "float", "double", "half". */
+static inline const char *prec_name(int p) { return prec_fmt(p)->name; }
 
 #endif

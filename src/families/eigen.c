@@ -51,7 +51,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    only when it fails, |y| > |z| p. */
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	const cv zp = MUL(n[2], K(P == PREC_FLOAT ? 1e-5 : 1e-12)); /* |RN(z p)| = RN(|z| p) */
+	const cv zp = MUL(n[2], K(P == PREC_FLOAT ? 1e-5 : P == PREC_HALF ? (double)1e-2f : 1e-12)); /* |RN(z p)| = RN(|z| p) */
 	cv r;
 	(void)m;
 	cm_formula_exact_n(c, 0, 1u << CQ_N2);   /* b1 unit and orthogonal to n, b2 = n x b1 */

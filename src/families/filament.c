@@ -108,7 +108,7 @@ static void model_fixed(cm *c, int P, const cv n[3], cv out[6])
    kernel's constant is. */
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	const double t = P == PREC_FLOAT ? (double)(float)m->threshold : m->threshold;
+	const double t = P == PREC_DOUBLE ? m->threshold : cm_round(c, P, (double)(float)m->threshold);
 	cv p[3], o[6];
 	if (m->norm == ONB__WILD_FIXED) {
 		model_fixed(c, P, n, out);

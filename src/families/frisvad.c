@@ -56,7 +56,7 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    kernel's constant is. */
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
-	const double t = P == PREC_FLOAT ? (double)(float)m->threshold : m->threshold;
+	const double t = P == PREC_DOUBLE ? m->threshold : cm_round(c, P, (double)(float)m->threshold);
 	mk_frisvad_listing2(c, P, t, n, out);
 }
 

@@ -80,7 +80,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		}
 		return;
 	}
-	for (i = 0; i < 3; i++) {  /* pbrt-v3's Cross: widened to double, then to float */
+	for (i = 0; i < 3; i++) {  /* pbrt-v3's Cross: widened to double, then to float (half) */
 		out[i] = u[i];
 		w[i] = cm_cvt(c, PREC_DOUBLE, n[i]);
 	}
@@ -88,7 +88,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		uw[i] = cm_cvt(c, PREC_DOUBLE, u[i]);
 	mk_cross(c, PREC_DOUBLE, w, uw, b);
 	for (i = 0; i < 3; i++)
-		out[3 + i] = cm_cvt(c, PREC_FLOAT, b[i]);
+		out[3 + i] = cm_cvt(c, P, b[i]);
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }

@@ -73,8 +73,17 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    (m > 0 on the unit sphere) */
 static void normalize(cm *c, int P, cv v[3])
 {
-	const cv f = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_zf(c, P, v, v)));
+	const cv s = cm_sqrt(c, P, mk_dot3_zf(c, P, v, v));
+	cv f;
 	int i;
+	/* the kernel's `if (m > 0)`: always taken on the unit sphere in float
+	   and double; in half the squares underflow near +-y (where 0.9999f
+	   is 1 and the fallback never comes), m = 0 and v stays unscaled.
+	   Branch point 1, in half only (the float and double models keep
+	   their one branch point). */
+	if (P == PREC_HALF && !cm_branch(c, 1, CM_GT, s, K(0.0)))
+		return;
+	f = DIV(K(1.0), s);
 	for (i = 0; i < 3; i++)
 		v[i] = MUL(v[i], f);
 }

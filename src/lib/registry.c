@@ -12,9 +12,15 @@
 #define ONB__HW (ONB_HW_RSQRT | ONB_FELL_BACK)
 #endif
 
+/* The binary16 entry (src/lib/half.c), or NULL in a build without _Float16. */
+#if ONB_HAVE_HALF
+#define ONB__HALF(m) onb_##m##_arrayh
+#else
+#define ONB__HALF(m) NULL
+#endif
 #define ONB__PTRS(m) onb_##m##_outline, onb_##m##_outlinef, onb_##m##_batch, onb_##m##_batchf, \
-	onb_##m##_array, onb_##m##_arrayf
-#define ONB__PTRS_F(m) NULL, onb_##m##_outlinef, NULL, onb_##m##_batchf, NULL, onb_##m##_arrayf
+	onb_##m##_array, onb_##m##_arrayf, ONB__HALF(m)
+#define ONB__PTRS_F(m) NULL, onb_##m##_outlinef, NULL, onb_##m##_batchf, NULL, onb_##m##_arrayf, ONB__HALF(m)
 
 #define SRC_L1 "Frisvad 2012, JGT 16(3), Listing 1"
 #define SRC_HM "Hughes & Moller 1999, JGT 4(4), as Frisvad 2012 Listing 1"

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <mpfr.h>
 #include "libonb/onb.h"
 #include "model.h"
 #include "model_int.h"
@@ -23,12 +24,79 @@ cm *cm_new(int backend)
 	return c;
 }
 
+/* CM_EXEC in binary16: each operation done by MPFR at 11 bits and
+   brought into binary16's range (prec.h's format table) by
+   mpfr_check_range and mpfr_subnormalize: underflow to a subnormal or to
+   zero, overflow to infinity, with no double rounding.  This shares no
+   code with libonb's half kernels (src/lib/half.c, which round float
+   results through _Float16 casts), so the model's bits checking theirs
+   (tests/test_half.c) is an independent per-operation evaluation. */
+struct cm_half { mpfr_t a, b, d, r; };
+enum { HX_SET, HX_ADD, HX_SUB, HX_MUL, HX_DIV, HX_SQRT, HX_FMA };
+
+static struct cm_half *half_scratch(cm *c)
+{
+	if (!c->half && (c->half = malloc(sizeof *c->half)) != NULL) {
+		mpfr_inits2(64, c->half->a, c->half->b, c->half->d, (mpfr_ptr)0);
+		mpfr_init2(c->half->r, prec_fmt(PREC_HALF)->bits);
+	}
+	return c->half;
+}
+
+static double half_op(cm *c, int op, double a, double b, double d)
+{
+	struct cm_half *h = half_scratch(c);
+	const prec_format *F = prec_fmt(PREC_HALF);
+	const mpfr_exp_t emin = mpfr_get_emin(), emax = mpfr_get_emax();
+	int t = 0;
+	if (!h) {
+		c->failed = 1;
+		return NAN;
+	}
+	mpfr_set_d(h->a, a, MPFR_RNDN);   /* exact: 64 >= 53 bits */
+	mpfr_set_d(h->b, b, MPFR_RNDN);
+	mpfr_set_d(h->d, d, MPFR_RNDN);
+	switch (op) {
+	case HX_ADD:  t = mpfr_add(h->r, h->a, h->b, MPFR_RNDN); break;
+	case HX_SUB:  t = mpfr_sub(h->r, h->a, h->b, MPFR_RNDN); break;
+	case HX_MUL:  t = mpfr_mul(h->r, h->a, h->b, MPFR_RNDN); break;
+	case HX_DIV:  t = mpfr_div(h->r, h->a, h->b, MPFR_RNDN); break;
+	case HX_SQRT: t = mpfr_sqrt(h->r, h->a, MPFR_RNDN); break;
+	case HX_FMA:  t = mpfr_fma(h->r, h->a, h->b, h->d, MPFR_RNDN); break;
+	default:      t = mpfr_set(h->r, h->a, MPFR_RNDN); break;
+	}
+	/* MPFR's x = m 2^e with m in [1/2, 1): binary16's subnormal step
+	   2^(emin - p + 1) is 2^(emin_mpfr - 1), its largest finite < 2^(emax + 1) */
+	mpfr_set_emin(F->emin - F->bits + 2);
+	mpfr_set_emax(F->emax + 1);
+	t = mpfr_check_range(h->r, t, MPFR_RNDN);
+	mpfr_subnormalize(h->r, t, MPFR_RNDN);
+	mpfr_set_emin(emin);
+	mpfr_set_emax(emax);
+	return mpfr_get_d(h->r, MPFR_RNDN);  /* exact */
+}
+
+double cm_round(cm *c, int f, double v)
+{
+	if (f == PREC_HALF)   /* a NaN keeps its sign bit, as a conversion does */
+		return isnan(v) ? v : half_op(c, HX_SET, v, 0.0, 0.0);
+	if (f == PREC_FLOAT) {
+		volatile float r = (float)v;
+		return r;
+	}
+	return v;
+}
+
 void cm_free(cm *c)
 {
 	if (!c)
 		return;
 	if (c->m)
 		mvf_free(c->m);
+	if (c->half) {
+		mpfr_clears(c->half->a, c->half->b, c->half->d, c->half->r, (mpfr_ptr)0);
+		free(c->half);
+	}
 	free(c);
 }
 
@@ -41,7 +109,7 @@ void cm_exec_begin(cm *c, int f, const double n[3], cv in[3])
 	c->n = 0;
 	c->failed = 0;
 	for (i = 0; i < 3; i++) {
-		c->x[c->n] = f == PREC_FLOAT ? (double)(float)n[i] : n[i];
+		c->x[c->n] = cm_round(c, f, n[i]);
 		in[i] = c->n++;
 	}
 }
@@ -81,39 +149,46 @@ cv cm_cst(cm *c, double v)
 cv cm_add(cm *c, int f, cv a, cv b)
 {
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_ADD, f, a, b, -1)
+	     : f == PREC_HALF ? put(c, half_op(c, HX_ADD, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] + c->x[b]));
 }
 cv cm_sub(cm *c, int f, cv a, cv b)
 {
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_SUB, f, a, b, -1)
+	     : f == PREC_HALF ? put(c, half_op(c, HX_SUB, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] - c->x[b]));
 }
 cv cm_mul(cm *c, int f, cv a, cv b)
 {
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_MUL, f, a, b, -1)
+	     : f == PREC_HALF ? put(c, half_op(c, HX_MUL, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] * c->x[b]));
 }
 cv cm_div(cm *c, int f, cv a, cv b)
 {
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_DIV, f, a, b, -1)
+	     : f == PREC_HALF ? put(c, half_op(c, HX_DIV, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] / c->x[b]));
 }
 cv cm_sqrt(cm *c, int f, cv a)
 {
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_SQRT, f, a, -1, -1)
+	     : f == PREC_HALF ? put(c, half_op(c, HX_SQRT, c->x[a], 0.0, 0.0))
 	                            : put(c, fmt(f, sqrt(c->x[a])));
 }
 cv cm_fma(cm *c, int f, cv a, cv b, cv d)
 {
 	if (c->backend == CM_MVF)
 		return mvf_op(c->m, MVF_FMA, f, a, b, d);
+	if (f == PREC_HALF)
+		return put(c, half_op(c, HX_FMA, c->x[a], c->x[b], c->x[d]));
 	if (f == PREC_FLOAT)
 		return put(c, (double)fmaf((float)c->x[a], (float)c->x[b], (float)c->x[d]));
 	return put(c, fma(c->x[a], c->x[b], c->x[d]));
 }
 cv cm_cvt(cm *c, int f, cv a)
 {
-	return c->backend == CM_MVF ? mvf_op(c->m, MVF_CVT, f, a, -1, -1) : put(c, fmt(f, c->x[a]));
+	return c->backend == CM_MVF ? mvf_op(c->m, MVF_CVT, f, a, -1, -1) : put(c, cm_round(c, f, c->x[a]));
 }
 cv cm_neg(cm *c, cv a)
 {
@@ -151,9 +226,9 @@ cv cm_newton(cm *c, int f, cv x, cv y)
 	double h, t;
 	if (c->backend == CM_MVF)
 		return mvf_newton(c->m, f, x, y, 0);
-	h = fmt(f, 0.5 * c->x[x]);
-	t = fmt(f, fmt(f, h * c->x[y]) * c->x[y]);
-	return put(c, fmt(f, c->x[y] * fmt(f, 1.5 - t)));
+	h = cm_round(c, f, 0.5 * c->x[x]);   /* each product and difference exact in double for float and half operands */
+	t = cm_round(c, f, cm_round(c, f, h * c->x[y]) * c->x[y]);
+	return put(c, cm_round(c, f, c->x[y] * cm_round(c, f, 1.5 - t)));
 }
 
 /* The contracted steps.  GCC fuses the last product of Listing 3's step

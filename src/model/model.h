@@ -46,7 +46,9 @@ int  cm_backend(const cm *c);
    an interval that is not finite, a path that no point can take). */
 int  cm_failed(const cm *c);
 
-/* Operations.  Each rounds once to format f (PREC_FLOAT or PREC_DOUBLE). */
+/* Operations.  Each rounds once to format f (PREC_FLOAT or PREC_DOUBLE;
+   PREC_HALF in CM_EXEC only, through MPFR at 11 bits with binary16's
+   range and subnormals: CM_MVF has no half model yet). */
 cv cm_cst(cm *c, double v);              /* exact constant                  */
 cv cm_add(cm *c, int f, cv a, cv b);
 cv cm_sub(cm *c, int f, cv a, cv b);
@@ -80,6 +82,9 @@ int cm_branch_abs(cm *c, int id, int op, cv a, cv b);
 /* The sign bit of a (copysign): 1 when it is set. */
 int cm_branch_sign(cm *c, int id, cv a);
 
+/* v rounded to format f as CM_EXEC rounds an operation's result (the
+   models' constants, K() in model_kit.h). */
+double cm_round(cm *c, int f, double v);
 /* CM_EXEC: the value of handle v (in its format, widened to double). */
 double cm_value(const cm *c, cv v);
 

@@ -50,6 +50,7 @@ struct cm {
 	   |d| <= cross_u, |eta| <= cross_eta; 0 neither */
 	int cross_kind;
 	double cross_u, cross_eta;
+	struct cm_half *half;  /* CM_EXEC in binary16: MPFR scratch (model.c) */
 };
 
 /* CM_EXEC: start a run on input n (rounded to format f); in[] receives the

@@ -3,7 +3,7 @@
  * with (src/families/): a kernel's operations in the model context
  * (model.h), in the same order and format as include/libonb/onb.h performs them.
  * C evaluates a*b*c as (a*b)*c and -a*b as (-a)*b; the models spell that
- * out.  The macros need `c` (the context) and `P` (PREC_FLOAT or PREC_DOUBLE) in
+ * out.  The macros need `c` (the context) and `P` (PREC_FLOAT, PREC_DOUBLE or PREC_HALF) in
  * scope.  The kit imports the model context alone.
  */
 #ifndef ONB_CERTIFY_MODEL_KIT_H
@@ -17,7 +17,7 @@
 #define SUB(a, b) cm_sub(c, P, a, b)
 #define MUL(a, b) cm_mul(c, P, a, b)
 #define DIV(a, b) cm_div(c, P, a, b)
-#define K(v)      cm_cst(c, P == PREC_FLOAT ? (double)(float)(v) : (v))
+#define K(v)      cm_cst(c, cm_round(c, P, (v)))   /* the constant rounded to the format */
 /* a*b + d (MADD), d + a*b (ADDM), a*b - d (MSUB) and d - a*b (SUBM) as
    the kernel writes them: two
    roundings, or, in a contracted model (c->contract: the kernel compiled
@@ -120,6 +120,8 @@ static inline cv mk_rsq(cm *c, int P, cv x, int norm)
 {
 	switch (norm) {
 	case ONB__NORM_INVSQRT:
+		if (P == PREC_HALF)   /* the float bit trick's seed of x widened, rounded to half (src/lib/half.c) */
+			return mk_newton(c, P, x, cm_cvt(c, P, cm_seed(c, SEED_INVSQRT_F, cm_cvt(c, PREC_FLOAT, x))));
 		return mk_newton(c, P, x, cm_seed(c, P == PREC_FLOAT ? SEED_INVSQRT_F : SEED_INVSQRT_D, x));
 	case ONB__NORM_RSQRT:
 	case ONB__NORM_RSQRT_NR: {

@@ -1,0 +1,194 @@
+/*
+ * test_half.c - the binary16 kernels round every operation to binary16.
+ *
+ * Each method's onb_NAME_arrayh (src/lib/half.c: float operations rounded
+ * through _Float16 casts) against its rounding model executed in binary16
+ * (src/model/model.c, CM_EXEC with PREC_HALF: every operation by MPFR at
+ * 11 bits, brought into binary16's exponent range with mpfr_check_range
+ * and mpfr_subnormalize), bit for bit on every output component (+0 and
+ * -0 apart; any NaN matches any NaN: the payload is the hardware's).  The
+ * two share no arithmetic code, so a kernel that rounds once per
+ * expression (as x86-64 compilers evaluate _Float16), contracts into an
+ * fma, or drops or moves a rounding fails here; so does a model that does.
+ *
+ * Inputs (argv[1] per method, default 50000; results/half/ holds a run of
+ * 10^6 per method): roundings to binary16 of unit vectors (uniform, both
+ * poles down to 1 + n.z = 1e-8, the branch thresholds, the approach to
+ * -x), the axes with signed zeros, components down in binary16's
+ * subnormals and below 2^-24 (rounded to 0), non-unit vectors (scaled by
+ * 2^-20 .. 2^16, past 65504 to infinity), and arbitrary bit patterns
+ * (NaN, infinities, subnormals).  An input with a NaN component is run
+ * (no crash, no undefined behaviour under the sanitizers) but not
+ * compared: the models' branches compare ordered values (eigen's |x| > zp
+ * where its kernel writes !(|x| <= zp)), which differ on NaN alone.
+ * argv[2]: one method alone.
+ * Where the compiler has no _Float16 (ONB_HAVE_HALF 0), the test checks
+ * that the registry offers no half entry.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "libonb/onb.h"
+#include "certify/models.h"
+#include "model/model_int.h"
+#include "inputs/rng.h"
+
+#if ONB_HAVE_HALF
+static double unif(uint64_t i, int k) { return (double)(rng_mix64(i * 16 + (uint64_t)k) >> 11) * 0x1p-53; }
+
+static uint16_t hbits(double v) { onb_half h = (onb_half)v; uint16_t b; memcpy(&b, &h, sizeof b); return b; }
+static double hval(uint16_t b) { onb_half h; memcpy(&h, &b, sizeof h); return (double)h; }
+
+static void from_z(double z, double phi, double u[3])
+{
+	const double r = sqrt((1.0 - z) * (1.0 + z));
+	u[0] = r * cos(phi);
+	u[1] = r * sin(phi);
+	u[2] = z;
+}
+
+/* Input i as three binary16 bit patterns. */
+static void input(uint64_t i, uint16_t h[3])
+{
+	const double tau = 6.283185307179586;
+	double u[3], phi = tau * unif(i, 1), r = unif(i, 2), s = 1.0;
+	int k;
+	switch (i % 10) {
+	case 0: from_z(2.0 * r - 1.0, phi, u); break;
+	case 1: from_z(-1.0 + pow(10.0, -8.0 * r), phi, u); break;
+	case 2: from_z(1.0 - pow(10.0, -8.0 * r), phi, u); break;
+	case 3: { /* |x| near 0.9, |x| = |y|, |y| near 1/2 and 1/sqrt(2) */
+		const double t[4] = { 0.9, 0x1.6a09e667f3bcdp-1, 0.5, 0.9999 };
+		const double x = t[i / 10 % 4] * (1.0 + (r - 0.5) * 4e-3) * (i & 32 ? -1 : 1), q = sqrt(1.0 - x * x);
+		u[i / 40 % 3] = x; u[(i / 40 + 1) % 3] = q * cos(phi); u[(i / 40 + 2) % 3] = q * sin(phi);
+		break;
+	}
+	case 4: { /* an axis, with signed zeros */
+		const int a = (int)(rng_mix64(i) % 3);
+		for (k = 0; k < 3; k++)
+			u[k] = (rng_mix64(i + (uint64_t)k) & 1) ? -0.0 : 0.0;
+		u[a] = (rng_mix64(i) & 8) ? -1.0 : 1.0;
+		break;
+	}
+	case 5: /* the n.z = +-0 seam and the approach to -x */
+		if (i & 16) { u[0] = cos(phi); u[1] = sin(phi); u[2] = (i & 32) ? -0.0 : 0.0; }
+		else { double e = pow(10.0, -8.0 * r), q = sqrt(e * (2.0 - e)); u[0] = -1.0 + e; u[1] = q * cos(phi); u[2] = q * sin(phi); }
+		break;
+	case 6: { /* components down to binary16's subnormals and below 2^-24 */
+		const double a = ldexp(unif(i, 3), -(int)(rng_mix64(i) % 30)), b = ldexp(unif(i, 4), -(int)(rng_mix64(i + 1) % 30));
+		u[0] = (i & 16) ? -a : a; u[1] = (i & 32) ? -b : b; u[2] = (i & 64 ? -1.0 : 1.0) * sqrt(fmax(0.0, 1.0 - a * a - b * b));
+		break;
+	}
+	case 7: from_z(2.0 * r - 1.0, phi, u); s = ldexp(1.0, (int)(rng_mix64(i) % 37) - 20); break; /* not unit */
+	case 8: /* any bit patterns: NaN, infinities, subnormals, huge */
+		for (k = 0; k < 3; k++)
+			h[k] = (uint16_t)(rng_mix64(i * 3 + (uint64_t)k) & 0xffffu);
+		return;
+	default: from_z(2.0 * r - 1.0, phi, u); break;
+	}
+	for (k = 0; k < 3; k++)
+		h[k] = hbits(u[k] * s);
+}
+
+static int same(uint16_t a, double model)
+{
+	const double b = model;
+	if (isnan(b) || (a & 0x7fffu) > 0x7c00u)
+		return isnan(b) && (a & 0x7fffu) > 0x7c00u;
+	return a == hbits(b) && hval(hbits(b)) == b;   /* the model's value is a binary16 value */
+}
+
+/* Mismatches of method m over count inputs. */
+static long check(const onb_method *m, const cm_method *cmm, long count, long *nan_in)
+{
+	cm *c = cm_new(CM_EXEC);
+	long bad = 0, i;
+	if (!c)
+		return -1;
+	for (i = 0; i < count; i++) {
+		uint16_t h[3], b[6];
+		double n[3];
+		cv in[3], out[6];
+		int k, ok = 1;
+		input((uint64_t)i, h);
+		for (k = 0; k < 3; k++)
+			n[k] = hval(h[k]);
+		m->arrayh(h, b, b + 3);
+		if (isnan(n[0]) || isnan(n[1]) || isnan(n[2])) {
+			(*nan_in)++;   /* run (no crash, no UB under the sanitizers), not compared */
+			continue;
+		}
+		cm_exec_begin(c, PREC_HALF, n, in);
+		cm_run(c, cmm, PREC_HALF, in, out);
+		for (k = 0; k < 6; k++)
+			ok &= same(b[k], cm_value(c, out[k]));
+		if (cm_failed(c))
+			ok = 0;
+		if (!ok && bad++ < 3)
+			printf("  %s half: n = (%a, %a, %a) [%04x %04x %04x]: kernel b1 (%a, %a, %a) b2 (%a, %a, %a), model b1 (%a, %a, %a) b2 (%a, %a, %a)\n",
+			       m->name, n[0], n[1], n[2], h[0], h[1], h[2], hval(b[0]), hval(b[1]), hval(b[2]), hval(b[3]), hval(b[4]), hval(b[5]),
+			       cm_value(c, out[0]), cm_value(c, out[1]), cm_value(c, out[2]), cm_value(c, out[3]), cm_value(c, out[4]), cm_value(c, out[5]));
+	}
+	cm_free(c);
+	return bad;
+}
+
+/* A bare _Float16 expression on this compiler: does it round per
+   operation?  (Informative: the kernels never rely on it.) */
+static void report_eval(void)
+{
+	volatile onb_half one = (onb_half)1.0, e = (onb_half)0x1p-11;
+	const onb_half r = one + e + e;
+	printf("note: this compiler evaluates (1 + 2^-11) + 2^-11 in _Float16 as %a (per operation: 0x1p+0)\n", (double)r);
+}
+
+int main(int argc, char **argv)
+{
+	const long count = argc > 1 ? atol(argv[1]) : 50000;
+	const char *only = argc > 2 ? argv[2] : NULL;
+	size_t nm, i;
+	const onb_method *ms = onb_methods(&nm);
+	int fail = 0, checked = 0;
+	if (count <= 0)
+		return 2;
+	report_eval();
+	for (i = 0; i < nm; i++) {
+		const cm_method *cmm = cm_find(ms[i].name);
+		long bad, nan_in = 0;
+		if (only && strcmp(only, ms[i].name) != 0)
+			continue;
+		if (!cmm || !ms[i].arrayh) {
+			printf("FAIL %s: no %s\n", ms[i].name, cmm ? "half entry (arrayh)" : "rounding model");
+			fail = 1;
+			continue;
+		}
+		bad = check(&ms[i], cmm, count, &nan_in);
+		checked++;
+		printf("%s %-24s half   %ld inputs, %ld compared, %ld not bit-identical\n", bad ? "FAIL" : "ok  ", ms[i].name, count, count - nan_in, bad);
+		fail |= bad != 0;
+	}
+	if (checked == 0) {
+		printf("FAIL: no method checked\n");
+		fail = 1;
+	}
+	printf("%s: %d methods, the half kernels %s the model's per-operation binary16 bits\n",
+	       fail ? "FAIL" : "ok", checked, fail ? "do not give" : "give");
+	return fail;
+}
+#else
+int main(void)
+{
+	size_t nm, i;
+	const onb_method *ms = onb_methods(&nm);
+	int fail = 0;
+	for (i = 0; i < nm; i++)
+		if (ms[i].arrayh) {
+			printf("FAIL %s: a half entry in a build without _Float16\n", ms[i].name);
+			fail = 1;
+		}
+	printf("%s: no _Float16 here (ONB_HAVE_HALF 0): the registry has %s half entries\n", fail ? "FAIL" : "ok", fail ? "" : "no");
+	return fail;
+}
+#endif

@@ -283,14 +283,36 @@ int cli_name_list(const char *opt, const char *arg, int *on, const char *const *
 	return 0;
 }
 
+/* The names every --precision takes; each command says which it measures. */
+static const char *const prec_names[] = { "float", "double", "both", "half", "all" };
+
 int cli_precision(const char *opt, const char *arg, int on[2])
 {
-	static const char *const names[] = { "float", "double", "both" };
-	const int i = cli_choice(opt, arg, names, 3);
+	const int i = cli_choice(opt, arg, prec_names, 5);
 	if (i < 0)
 		return -1;
+	if (i >= 3) {
+		study_error("%s %s: this command does not measure binary16 yet (onbstudy threshold --precision half does)", opt, arg);
+		return -1;
+	}
 	on[0] = i != 1;
 	on[1] = i != 0;
+	return 0;
+}
+
+int cli_precision_half(const char *opt, const char *arg, int on[PREC_COUNT])
+{
+	const int i = cli_choice(opt, arg, prec_names, 5);
+	if (i < 0)
+		return -1;
+	on[PREC_FLOAT] = i == 0 || i == 2 || i == 4;
+	on[PREC_DOUBLE] = i == 1 || i == 2 || i == 4;
+	on[PREC_HALF] = i >= 3;
+	if (on[PREC_HALF] && !ONB_HAVE_HALF) {
+		study_error("%s %s: this build has no binary16 kernels: its compiler lacks _Float16 "
+		            "(GCC >= 12, or clang >= 15, on x86-64 or arm64); rebuild with one (make CC=gcc-12)", opt, arg);
+		return -1;
+	}
 	return 0;
 }
 

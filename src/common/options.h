@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stddef.h>
 #include "libonb/onb.h"
+#include "common/prec.h"
 
 /* Exit status for bad usage or input: one line on stderr, then 2. */
 #define ONB_EXIT_USAGE 2
@@ -70,6 +71,10 @@ int  cli_choice(const char *opt, const char *arg, const char *const *names, int 
 int  cli_name_order(const char *opt, const char *arg, int *idx, const char *const *names, int count);
 int  cli_name_list(const char *opt, const char *arg, int *on, const char *const *names, int count);
 int  cli_precision(const char *opt, const char *arg, int on[2]);   /* float, double or both */
+/* float, double, both (float and double), half or all three, into
+   on[PREC_*]; half on a build without _Float16 (ONB_HAVE_HALF 0) is
+   refused with a message (-1: the caller exits 2). */
+int  cli_precision_half(const char *opt, const char *arg, int on[PREC_COUNT]);
 int  cli_shard(const char *opt, const char *arg, int *k, int *n);  /* K/N, 0-based */
 /* "1, 3, 4" (the first 20, then "...") of the shards 0 .. n-1 not seen, for merge's messages. */
 void study_missing_shards(const unsigned char *seen, int n, char *buf, size_t len);

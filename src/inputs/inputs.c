@@ -31,8 +31,24 @@ int dist_find(const char *name)
    drops the (float) rounding in (double)(float)(double)(long double
    expression) when the expression comes from sinl/cosl (a miscompilation
    found by tests/test_sweep.c: uniform float inputs came out as doubles). */
+/* binary16 in plain C (the study builds without _Float16 too): the
+   quantum of x's binade, floored at the subnormal step 2^-24, and
+   nearbyint's ties to even; past the largest finite, infinity. */
+static double half_round(double x)
+{
+	const prec_format *F = prec_fmt(PREC_HALF);
+	double q, r;
+	if (!isfinite(x) || x == 0.0)
+		return x;
+	q = ldexp(1.0, (ilogb(x) < F->emin ? F->emin : ilogb(x)) - (F->bits - 1));
+	r = nearbyint(x / q) * q;   /* x / q and the product exact: q is a power of 2 >= 2^-24 */
+	return fabs(r) > F->max ? copysign(INFINITY, x) : r;
+}
+
 double fmt_round(double x, int prec)
 {
+	if (prec == PREC_HALF)
+		return half_round(x);
 	if (prec == PREC_FLOAT) {
 		volatile float f = (float)x;
 		return f;
@@ -44,6 +60,15 @@ double fmt_round(double x, int prec)
    consecutive ordinals, -0 and +0 both 0. */
 static int64_t ordinal(double x, int prec)
 {
+	if (prec == PREC_HALF) {   /* the binary16 encoding's magnitude bits, from the value */
+		const double a = fabs(x);
+		int64_t m;
+		if (a < 0x1p-14)
+			m = (int64_t)(a * 0x1p24);
+		else
+			m = (int64_t)(ilogb(a) + 15) * 1024 + (int64_t)(ldexp(a, 10 - ilogb(a)) - 1024.0);
+		return signbit(x) ? -m : m;
+	}
 	if (prec == PREC_FLOAT) {
 		float f = (float)x;
 		uint32_t u;
@@ -58,6 +83,12 @@ static int64_t ordinal(double x, int prec)
 
 static double from_ordinal(int64_t o, int prec)
 {
+	if (prec == PREC_HALF) {
+		const int64_t m = o < 0 ? -o : o;
+		const double a = m < 1024 ? (double)m * 0x1p-24
+		                          : ldexp(1024.0 + (double)(m % 1024), (int)(m / 1024) - 25);
+		return m >= 0x7c00 ? (o < 0 ? -INFINITY : INFINITY) : (o < 0 ? -a : a);
+	}
 	if (prec == PREC_FLOAT) {
 		uint32_t u = o < 0 ? (uint32_t)(-o) | 0x80000000u : (uint32_t)o;
 		float f;

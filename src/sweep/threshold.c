@@ -34,26 +34,26 @@
 #include "inputs/inputs.h"
 #include "inputs/rng.h"
 
-#define TH_MAGIC "onbthresh-state1"
+#define TH_MAGIC "onbthresh-state2"   /* 2: three precisions */
 
 typedef struct {
 	char magic[24];
 	uint64_t seed;
-	int prec_on[2], consecutive, logspaced, azimuths, ref_bits, shard_k, shard_n;
-	int count[2];                 /* number of n.z values per precision */
+	int prec_on[PREC_COUNT], consecutive, logspaced, azimuths, ref_bits, shard_k, shard_n;
+	int count[PREC_COUNT];        /* number of n.z values per precision */
 } th_cfg;
 
 typedef struct {
 	th_cfg cfg;
-	double *v[2];                 /* n.z values, increasing            */
-	double *fn[2], *fo[2], *bn[2], *bo[2];
-	unsigned char *done[2];
+	double *v[PREC_COUNT];        /* n.z values, increasing            */
+	double *fn[PREC_COUNT], *fo[PREC_COUNT], *bn[PREC_COUNT], *bo[PREC_COUNT];
+	unsigned char *done[PREC_COUNT];
 } th_state;
 
 static void th_free(th_state *s)
 {
 	int p;
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < PREC_COUNT; p++) {
 		free(s->v[p]); free(s->fn[p]); free(s->fo[p]); free(s->bn[p]); free(s->bo[p]); free(s->done[p]);
 		s->v[p] = s->fn[p] = s->fo[p] = s->bn[p] = s->bo[p] = NULL;
 		s->done[p] = NULL;
@@ -98,6 +98,25 @@ static int build_values(th_state *s, int p)
 
 static double nmax(double a, double b) { return b > a || isnan(b) ? b : a; }
 
+/* Listing 2's formula in binary16 (never the fallback: t = -2), each
+   operation rounded to binary16 (libonb's onb_frisvad_thresholdh); the
+   caller refused half where the build has none. */
+static void frisvad_formula_half(const double n[3], double b[6])
+{
+#if ONB_HAVE_HALF
+	const onb_vec3h nh = { (onb_half)n[0], (onb_half)n[1], (onb_half)n[2] };
+	onb_vec3h b1, b2;
+	onb_frisvad_thresholdh(nh, (onb_half)-2.0, &b1, &b2);
+	b[0] = (double)b1.x; b[1] = (double)b1.y; b[2] = (double)b1.z;
+	b[3] = (double)b2.x; b[4] = (double)b2.y; b[5] = (double)b2.z;
+#else
+	int k;
+	(void)n;
+	for (k = 0; k < 6; k++)
+		b[k] = NAN;
+#endif
+}
+
 static void measure(th_state *s, ref_ctx *rc, int p, int j)
 {
 	const double z = s->v[p][j];
@@ -117,7 +136,9 @@ static void measure(th_state *s, ref_ctx *rc, int p, int j)
 		n[0] = fmt_round((double)(r * cosl(phi)), p);
 		n[1] = fmt_round((double)(r * sinl(phi)), p);
 		n[2] = z;
-		if (p == PREC_FLOAT) {
+		if (p == PREC_HALF) {
+			frisvad_formula_half(n, b);
+		} else if (p == PREC_FLOAT) {
 			const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
 			onb_vec3f b1, b2;
 			onb_frisvad_thresholdf(nf, -2.0f, &b1, &b2); /* the formula, never the fallback */
@@ -194,7 +215,7 @@ static int th_write(th_state *s, const char *out, int threads)
 	fprintf(o.f, "# max_normality: max | |b_i| - 1 |; max_orthogonality: max(|b1.n|, |b2.n|, |b1.b2|); over all inputs, for threshold t\n");
 	fprintf(o.f, "precision,t_hex,t,one_plus_t,max_normality,max_orthogonality,max_both\n");
 	printf("%-7s %-10s %-26s %-14s %-12s %-12s %-12s\n", "prec", "criterion", "t", "1+t", "max normal.", "max orthog.", "max both");
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < PREC_COUNT; p++) {
 		const int n = s->cfg.count[p];
 		double *mN, *mO, *mB;
 		const char *pn = prec_name(p);
@@ -226,8 +247,8 @@ static int th_write(th_state *s, const char *out, int threads)
 			        crit[c], s->v[p][b], s->v[p][b], 1.0 + s->v[p][b], mN[b], mO[b], mB[b]);
 		}
 		{
-			const double pub[2] = { fmt_round(p == PREC_FLOAT ? (double)ONB_FRISVAD_TF : ONB_FRISVAD_T, p),
-			                        fmt_round(p == PREC_FLOAT ? (double)ONB_FRISVAD_MAX_TF : ONB_FRISVAD_MAX_T, p) };
+			const double pub[2] = { fmt_round(p != PREC_DOUBLE ? (double)ONB_FRISVAD_TF : ONB_FRISVAD_T, p),
+			                        fmt_round(p != PREC_DOUBLE ? (double)ONB_FRISVAD_MAX_TF : ONB_FRISVAD_MAX_T, p) };
 			const char *who[2] = { "Frisvad 2012", "Max 2017" };
 			int q;
 			for (q = 0; q < 2; q++) {
@@ -271,7 +292,7 @@ static int th_save(const th_state *s, const char *out)
 	if (study_mkdir_p(out) != 0 || study_out_open(&o, out, name) != 0)
 		return -1;
 	bad |= fwrite(&s->cfg, sizeof s->cfg, 1, o.f) != 1;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < PREC_COUNT; p++)
 		if (s->cfg.prec_on[p])
 			bad |= state_file_parts(o.f, parts, th_parts(s, p, parts), 1) != 0;
 	if (bad) {
@@ -295,7 +316,7 @@ static int th_load(th_state *s, const char *path)
 	if (!(f = state_file_open(path, &s->cfg, sizeof s->cfg, TH_MAGIC, "threshold state file")))
 		return -1;
 	bad = s->cfg.shard_n < 1 || s->cfg.shard_n > 1000000 || s->cfg.shard_k < 0 || s->cfg.shard_k >= s->cfg.shard_n;
-	for (p = 0; p < 2 && !bad; p++) {
+	for (p = 0; p < PREC_COUNT && !bad; p++) {
 		if (!s->cfg.prec_on[p])
 			continue;
 		if (s->cfg.count[p] < 1 || s->cfg.count[p] > (1 << 26)) { bad = 1; break; }
@@ -346,7 +367,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 			return ONB_EXIT_USAGE;
 		}
 		seen[one.cfg.shard_k] = 1;
-		for (p = 0; p < 2; p++)
+		for (p = 0; p < PREC_COUNT; p++)
 			if (acc.cfg.prec_on[p])
 				for (j = 0; j < acc.cfg.count[p]; j++)
 					if (one.done[p][j]) {
@@ -365,7 +386,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 		nmiss += !seen[i];
 	study_missing_shards(seen, acc.cfg.shard_n, miss, sizeof miss);
 	free(seen);
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < PREC_COUNT; p++)
 		if (acc.cfg.prec_on[p])
 			for (j = 0; j < acc.cfg.count[p]; j++)
 				if (!acc.done[p][j]) {
@@ -386,7 +407,7 @@ int threshold_merge(int nfiles, char **files, const char *out, int threads)
 
 static void usage(FILE *f)
 {
-	fprintf(f, "usage: onbstudy threshold [--precision float|double|both] [--consecutive C]\n"
+	fprintf(f, "usage: onbstudy threshold [--precision float|double|both|half|all] [--consecutive C]\n"
 	           "        [--logspaced M] [--azimuths A] [--seed S] [--threads T] [--out DIR] [--shard K/N]\n"
 	           "Nelson Max's analysis of Frisvad's threshold: for each t near -1, the largest\n"
 	           "normality and orthogonality error of Listing 2 with that t over inputs near -z;\n"
@@ -394,7 +415,9 @@ static void usage(FILE *f)
 	           "threshold.csv for plotting (default C = 4096, M = 8192, A = 64), written into\n"
 	           "the current run (results/latest) unless --out DIR names another.\n"
 	           "--shard K/N runs slice K of N (0-based, 0 <= K < N) and saves a state for\n"
-	           "'onbstudy merge'.  Options take '--opt value' or '--opt=value'.\n");
+	           "'onbstudy merge'.  Options take '--opt value' or '--opt=value'.\n"
+	           "--precision half (or all) adds binary16: libonb's onb_frisvad_thresholdh, each\n"
+	           "operation rounded to binary16 (a build whose compiler has _Float16).\n");
 }
 
 /* One option into the plan; 0 or -1 after a message. */
@@ -403,7 +426,7 @@ static int th_option(th_state *s, int v, const char *a, int *threads, const char
 	long l;
 	unsigned long long u;
 	switch (v) {
-	case 'p': return cli_precision("--precision", a, s->cfg.prec_on);
+	case 'p': return cli_precision_half("--precision", a, s->cfg.prec_on);
 	case 'c': if (parse_int("--consecutive", a, 2, 1 << 24, &l)) return -1; s->cfg.consecutive = (int)l; return 0;
 	case 'l': if (parse_int("--logspaced", a, 0, 1 << 24, &l)) return -1; s->cfg.logspaced = (int)l; return 0;
 	case 'a': if (parse_int("--azimuths", a, 1, 4096, &l)) return -1; s->cfg.azimuths = (int)l; return 0;
@@ -458,7 +481,7 @@ static int th_parse(th_state *s, int argc, char **argv, int *threads, char *outb
 static int th_run(th_state *s, int threads)
 {
 	int p, fail = 0;
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < PREC_COUNT; p++) {
 		int j;
 		if (!s->cfg.prec_on[p])
 			continue;

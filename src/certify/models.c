@@ -6,6 +6,7 @@
 #include <string.h>
 #include "certify/models.h"
 #include "model/model_int.h"
+#include "methods/kernels.h"
 
 #define CM_ONE(m) + 1
 enum { CM_NMETHODS = 0 ONB_METHOD_LIST(CM_ONE) ONB_FLOAT_METHOD_LIST(CM_ONE) };
@@ -62,7 +63,7 @@ const cm_method *cm_find(const char *name)
 	const onb_method *m = onb_find(name);
 	const cm_method *r = NULL;
 	size_t i;
-	const int rot = !m && strcmp(name, "frisvad_rotate") == 0;
+	const int rot = !m && kernels_direction(name) != NULL;
 	if (!m && !rot)
 		return NULL;
 #pragma omp critical(cm_find)

@@ -12,12 +12,22 @@
 
 #include <stdint.h>
 
-static inline uint64_t rng_mix64(uint64_t z)
+/* SplitMix64's Weyl increment (2^64 / the golden ratio), and its
+   finalizer (a bijection of 64-bit words): the one definition in src/. */
+#define RNG_GOLDEN 0x9e3779b97f4a7c15u
+#define RNG_FMIX_M1 0xbf58476d1ce4e5b9u
+
+static inline uint64_t rng_fmix64(uint64_t z)
 {
-	z += 0x9e3779b97f4a7c15u;
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+	z = (z ^ (z >> 30)) * RNG_FMIX_M1;
 	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
 	return z ^ (z >> 31);
+}
+
+/* One SplitMix64 step from state z. */
+static inline uint64_t rng_mix64(uint64_t z)
+{
+	return rng_fmix64(z + RNG_GOLDEN);
 }
 
 static inline uint64_t rng_u64(uint64_t seed, uint64_t stream, uint64_t index)

@@ -25,20 +25,28 @@ ONB_METHOD_LIST(FMA_DEF)
 ONB_FLOAT_METHOD_LIST(FMA_DEF_F)
 #undef FMA_DEF_F
 
-static onb_vec3  fma_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
-static onb_vec3f fma_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
+#define FMA_DEF_DIR(d) \
+	static onb_vec3  fma_##d   (onb_vec3  n, double x, double y, double z) { return onb_##d(n, x, y, z); } \
+	static onb_vec3f fma_##d##f(onb_vec3f n, float x, float y, float z)    { return onb_##d##f(n, x, y, z); }
+STUDY_DIRECTION_LIST(FMA_DEF_DIR)
+#undef FMA_DEF_DIR
 
 static const struct {
 	const char *name;
 	onb_basis_fn basis;
 	onb_basisf_fn basisf;
+	rotate_fn rot;          /* the direction kernels' rows (kernels.h) */
+	rotatef_fn rotf;
 } fma_table[] = {
-#define FMA_ROW(m) { #m, fma_##m, fma_##m##f },
+#define FMA_ROW(m) { #m, fma_##m, fma_##m##f, NULL, NULL },
 	ONB_METHOD_LIST(FMA_ROW)
 #undef FMA_ROW
-#define FMA_ROW_F(m) { #m, NULL, fma_##m##f },
+#define FMA_ROW_F(m) { #m, NULL, fma_##m##f, NULL, NULL },
 	ONB_FLOAT_METHOD_LIST(FMA_ROW_F)
 #undef FMA_ROW_F
+#define FMA_ROW_DIR(d) { #d, NULL, NULL, fma_##d, fma_##d##f },
+	STUDY_DIRECTION_LIST(FMA_ROW_DIR)
+#undef FMA_ROW_DIR
 };
 
 int fma_available(void)
@@ -56,15 +64,12 @@ int fma_available(void)
 int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rotate_fn *rot, rotatef_fn *rotf)
 {
 	size_t i;
-	if (strcmp(name, "frisvad_rotate") == 0) {
-		*rot = fma_rot;
-		*rotf = fma_rotf;
-		return 0;
-	}
 	for (i = 0; i < sizeof fma_table / sizeof fma_table[0]; i++)
 		if (strcmp(fma_table[i].name, name) == 0) {
 			*basis = fma_table[i].basis;
 			*basisf = fma_table[i].basisf;
+			*rot = fma_table[i].rot;
+			*rotf = fma_table[i].rotf;
 			return 0;
 		}
 	return -1;

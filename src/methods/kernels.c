@@ -12,26 +12,60 @@ int kernels_branch(const study_kernel *k, int prec, const double n[3])
 	return k->fam->branch(k->m, prec, n);
 }
 
-static onb_vec3  plain_rot (onb_vec3  n, double x, double y, double z) { return onb_frisvad_rotate(n, x, y, z); }
-static onb_vec3f plain_rotf(onb_vec3f n, float x, float y, float z)    { return onb_frisvad_rotatef(n, x, y, z); }
+#define DIR_DEF(d) \
+	static onb_vec3  plain_##d   (onb_vec3  n, double x, double y, double z) { return onb_##d(n, x, y, z); } \
+	static onb_vec3f plain_##d##f(onb_vec3f n, float x, float y, float z)    { return onb_##d##f(n, x, y, z); }
+STUDY_DIRECTION_LIST(DIR_DEF)
+#undef DIR_DEF
+
+static const study_direction directions[] = {
+#define DIR_ROW(d) { #d, plain_##d, plain_##d##f },
+	STUDY_DIRECTION_LIST(DIR_ROW)
+#undef DIR_ROW
+};
+
+const study_direction *kernels_directions(size_t *count)
+{
+	*count = sizeof directions / sizeof directions[0];
+	return directions;
+}
+
+const study_direction *kernels_direction(const char *name)
+{
+	size_t i;
+	for (i = 0; i < sizeof directions / sizeof directions[0]; i++)
+		if (strcmp(directions[i].name, name) == 0)
+			return &directions[i];
+	return NULL;
+}
+
+/* The message for an unknown name: every method, then every direction. */
+static void unknown_method(const char *name)
+{
+	char all[2048];
+	size_t i, n, len = 0;
+	const onb_method *ms = onb_methods(&n);
+	all[0] = '\0';
+	for (i = 0; i < n && len + 64 < sizeof all; i++)
+		len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", ms[i].name);
+	for (i = 0; i < sizeof directions / sizeof directions[0] && len + 64 < sizeof all; i++)
+		len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", directions[i].name);
+	study_error("unknown method '%s' (valid: %san alias of 'onbstudy list --aliases', or all)", name, all);
+}
 
 static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int *k)
 {
 	study_kernel *s;
+	const study_direction *dir;
 	const onb_method *m = onb_find(name);
 	const onb_alias *al = m ? NULL : onb_find_alias(name);
 	if (al) { /* an alias runs its target, under the target's name */
 		name = al->target;
 		m = onb_find(name);
 	}
-	if (!m && strcmp(name, "frisvad_rotate") != 0) {
-		char all[2048];
-		size_t i, n, len = 0;
-		const onb_method *ms = onb_methods(&n);
-		all[0] = '\0';
-		for (i = 0; i < n && len + 64 < sizeof all; i++)
-			len += (size_t)snprintf(all + len, sizeof all - len, "%s, ", ms[i].name);
-		study_error("unknown method '%s' (valid: %sfrisvad_rotate, an alias of 'onbstudy list --aliases', or all)", name, all);
+	dir = m ? NULL : kernels_direction(name);
+	if (!m && !dir) {
+		unknown_method(name);
 		return -1;
 	}
 	if (*k >= cap) {
@@ -59,8 +93,8 @@ static int add_kernel(const char *name, int fma, study_kernel *out, int cap, int
 			s->basis = m->basis;
 			s->basisf = m->basisf;
 		} else {
-			s->rot = plain_rot;
-			s->rotf = plain_rotf;
+			s->rot = dir->rot;
+			s->rotf = dir->rotf;
 		}
 		s->branch = kernels_branch;
 	}
@@ -77,8 +111,9 @@ int kernels_select(const char *names, int fma, study_kernel *out, int cap)
 			for (i = 0; i < n; i++)
 				if (add_kernel(ms[i].name, pass, out, cap, &k) != 0)
 					return -1;
-			if (add_kernel("frisvad_rotate", pass, out, cap, &k) != 0)
-				return -1;
+			for (i = 0; i < sizeof directions / sizeof directions[0]; i++)
+				if (add_kernel(directions[i].name, pass, out, cap, &k) != 0)
+					return -1;
 		} else {
 			char buf[2048], *tok, *save = NULL;
 			if (strlen(names) >= sizeof buf) {

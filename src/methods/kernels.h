@@ -38,6 +38,24 @@ typedef struct study_kernel {
 	int (*branch)(const struct study_kernel *k, int prec, const double n[3]);
 } study_kernel;
 
+/* The study's kernels that rotate a direction instead of returning a
+   basis: they have no libonb registry row (their study_kernel's m is
+   NULL), so this list is their registry, named once here; kernels.c and
+   fma_kernels.c make their rows from it (onb_NAME and onb_NAMEf, plain and
+   contracted).  A kernel is a direction kernel by having a row here, and
+   nowhere by its name. */
+#define STUDY_DIRECTION_LIST(X) X(frisvad_rotate)
+
+typedef struct {
+	const char *name;
+	rotate_fn   rot;        /* plain, with the library's flags */
+	rotatef_fn  rotf;
+} study_direction;
+
+/* Every direction row (*count of them), and the one called name or NULL. */
+const study_direction *kernels_directions(size_t *count);
+const study_direction *kernels_direction(const char *name);
+
 /* The most kernels a command selects at once (every registry method,
    frisvad_rotate and their FMA copies fit): the capacity of its tables. */
 #define STUDY_MAX_KERNELS 256
@@ -69,6 +87,8 @@ int kernels_branch(const study_kernel *k, int prec, const double n[3]);
 
 /* fma_kernels.c: 1 when the CPU can run the FMA copies. */
 int fma_available(void);
+/* The contracted copy of the method or direction kernel called name: its
+   basis pointers, or its rotate pointers; -1 when there is none. */
 int fma_lookup(const char *name, onb_basis_fn *basis, onb_basisf_fn *basisf, rotate_fn *rot, rotatef_fn *rotf);
 int fma_branch(const study_kernel *k, int prec, const double n[3]);
 

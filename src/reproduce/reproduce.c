@@ -35,6 +35,7 @@
 #include "reproduce/reproduce.h"
 #include "common/options.h"
 #include "common/output.h"
+#include "inputs/rng.h"
 
 typedef void (*fnf)(onb_vec3f, onb_vec3f *, onb_vec3f *);
 
@@ -58,13 +59,11 @@ static void rp_add(rp_set *s, const char *paper, const char *item, const char *s
 	r->lo = lo; r->hi = hi; r->note = note;
 }
 
-/* splitmix64 on a counter: sample k of stream s is the same on every run */
+/* SplitMix64's finalizer on a counter: sample k of stream s is the same on
+   every run (its own keying, kept so that the committed figures stay). */
 static double rp_u01(uint64_t seed, uint64_t k)
 {
-	uint64_t z = seed * 0x9e3779b97f4a7c15ULL + (k + 1) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+	return (double)(rng_fmix64(seed * RNG_GOLDEN + (k + 1) * RNG_FMIX_M1) >> 11) * 0x1p-53;
 }
 
 /* A float unit vector with 1 + n.z = u (computed in double, then rounded) */

@@ -106,19 +106,16 @@ all: libonb.a onbstudy
 
 # Dependencies: installed by the script when missing (a stamp records
 # success): the study's few for `make`, the charts' for `make plots` and
-# `make render`, Open MPI for `make mpi`, and everything the tests and CI
-# use for `make test` (README, "Quick start: the full study", gives what
-# each costs).  The stamps come one after the other: two apt-get runs at
-# once would fight over dpkg's lock under make -j.
+# `make render`, and everything the tests and CI use for `make test`
+# (README, "Quick start: the full study", gives what each costs).  The
+# stamps come one after the other: two apt-get runs at once would fight
+# over dpkg's lock under make -j.
 $(B)/deps.stamp: scripts/install-deps.sh
 	@mkdir -p $(B)
 	sh scripts/install-deps.sh
 	@touch $@
 $(B)/plot-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
 	sh scripts/install-deps.sh --plots
-	@touch $@
-$(B)/mpi-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
-	sh scripts/install-deps.sh --mpi
 	@touch $@
 $(B)/test-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
 	sh scripts/install-deps.sh --test
@@ -331,13 +328,12 @@ clean:
 	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onb.pc   # onb.pc: left by older Makefiles
 
 # The MPI driver: `make mpi` builds onbstudy-mpi with Open MPI's
-# mpicc (installed by scripts/install-deps.sh --mpi when missing); the
-# default build does not need MPI.  It links the same study
+# mpicc; the default build does not need MPI.  It links the same study
 # library, so it runs the same engine as ./onbstudy.
 MPICC ?= mpicc
 .PHONY: mpi
 mpi: onbstudy-mpi
-$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp $(B)/mpi-deps.stamp
+$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp
 	@mkdir -p $(@D)
 	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a

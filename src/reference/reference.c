@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include "reference/reference.h"
 #include "arith/mpfr_kit.h"
+#include "reference/ziv.h"
 
 struct ref_ctx {
 	mpfr_prec_t prec;
@@ -29,8 +30,9 @@ struct ref_ctx {
 	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
 	double last_norm;
 	int have_last;
-	mpfr_t mid;      /* the floor's rounding check (floor_round)                */
-	ref_ctx *hi;     /* prec + 128 bits, made on the first hard rounding       */
+	int exact;       /* the formula's last evaluation was exact (ziv.h)         */
+	ziv_ctx *z;      /* the roundings of the formula, by Ziv's strategy        */
+	ziv_out zo;      /* and their results for the current kernel and input     */
 };
 
 
@@ -41,13 +43,17 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 		return NULL;
 	c->prec = prec;
 	c->have_last = 0;
+	c->z = NULL;
 	kit_init(&c->k, prec);
 	kit_vinit(c->n, 3, prec); kit_vinit(c->nn, 3, prec); kit_vinit(c->b1, 3, prec);
 	kit_vinit(c->b2, 3, prec); kit_vinit(c->r1, 3, prec); kit_vinit(c->r2, 3, prec);
 	kit_vinit(c->q, 4, prec < 106 ? 106 : prec);
 	mpfr_init2(c->inv_n, prec);
-	mpfr_init2(c->mid, prec);
-	c->hi = NULL;
+	c->z = ziv_new(prec);
+	if (!c->z) {
+		ref_free(c);
+		return NULL;
+	}
 	return c;
 }
 
@@ -60,8 +66,7 @@ void ref_free(ref_ctx *c)
 	kit_vclear(c->r1, 3); kit_vclear(c->r2, 3);
 	kit_vclear(c->q, 4);
 	mpfr_clear(c->inv_n);
-	mpfr_clear(c->mid);
-	ref_free(c->hi);
+	ziv_free(c->z);
 	free(c);
 }
 
@@ -137,38 +142,44 @@ static double norm_m1_exact(ref_ctx *c, mpfr_t *v, const double *dv)
    (src/families/). */
 static void reference(ref_ctx *c, const study_kernel *k, int br, const double loc[3])
 {
+	ziv_watch();
 	k->fam->mpfr(&c->k, k->m, br, loc, c->n, c->r1, c->r2);
+	c->exact = ziv_exact();
 }
 
-/* Forward error of component value cv against the exact value e. */
-static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s, double *refd)
+/* The forward error of component i, the kernel's cv against the
+   formula's exact X, from the roundings Ziv's strategy decided (c->zo):
+   abs_eps_max, ulp_max, the bits, and ref[i] = X to double.  A diff
+   RN(X - cv) left undecided (X = cv exactly, computed inexactly) enters
+   only the maxima: its bound goes to undet[0] (in eps) and undet[1] (in
+   ulps), which the caller compares with the maxima (forward_all). */
+static void forward(ref_ctx *c, int i, double cv, int prec, sample_metrics *s, double undet[2])
 {
-	const int p = prec == PREC_FLOAT ? 24 : 53;
-	const int emin = prec == PREC_FLOAT ? -125 : -1021; /* exponent of the smallest normal */
-	const double eps = prec == PREC_FLOAT ? 0x1p-23 : 0x1p-52;
-	double diff, rounded, bits;
-	*refd = mpfr_get_d(e, R);
-	if (!mpfr_number_p(e))
+	const ref_format *f = ref_format_of(prec);
+	const double eps = ldexp(1.0, 1 - f->p), rounded = c->zo.fmt[i];
+	const int have_diff = !isnan(c->zo.diff[i]);
+	const double diff = have_diff ? fabs(c->zo.diff[i]) : c->zo.diff_up[i];
+	s->ref[i] = c->zo.d[i];
+	if (!isfinite(s->ref[i]))
 		return;
-	mpfr_sub_d(c->k.t[4], e, cv, R);
-	diff = fabs(mpfr_get_d(c->k.t[4], R));
-	if (diff / eps > s->abs_eps_max)
+	if (have_diff && diff / eps > s->abs_eps_max)
 		s->abs_eps_max = diff / eps;
+	else if (!have_diff && diff / eps > undet[0])
+		undet[0] = diff / eps;
 	/* Components whose exact value is below eps (zero ones above all) are
 	   measured by the absolute error only: their ulps and bits would
 	   measure the reference's own last bits, not the method.  The ulp is
 	   that of the exact value rounded to the format (the same thing but
-	   at powers of two, where an exact 1 - 1e-40 would otherwise make the
-	   unit depend on the reference's precision), floored at the smallest
-	   normal's. */
-	rounded = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : *refd;
+	   at powers of two), floored at the smallest normal's. */
 	if (rounded != 0.0 && fabs(rounded) >= eps) {
 		int E;
-		double ulp;
+		double ulp, bits;
 		(void)frexp(rounded, &E);
-		ulp = ldexp(1.0, (E < emin ? emin : E) - p);
-		if (diff / ulp > s->ulp_max)
+		ulp = ldexp(1.0, (E < f->emin ? f->emin : E) - f->p);
+		if (have_diff && diff / ulp > s->ulp_max)
 			s->ulp_max = diff / ulp;
+		else if (!have_diff && diff / ulp > undet[1])
+			undet[1] = diff / ulp;
 		{
 			static const double small[4] = { 0.0, 1.0, 1.5849625007211562, 2.0 };
 			const double dist = ref_float_distance(cv, rounded, prec);
@@ -178,6 +189,24 @@ static void forward(ref_ctx *c, mpfr_t e, double cv, int prec, sample_metrics *s
 		s->nbits++;
 		if (bits > s->bits_max)
 			s->bits_max = bits;
+	}
+}
+
+/* Every component's forward error; the undecided diffs are decided
+   (ziv_diff) only when their bounds could raise a maximum. */
+static void forward_all(ref_ctx *c, int prec, sample_metrics *s)
+{
+	int i, pass;
+	for (pass = 0; pass < 2; pass++) {
+		double undet[2] = { 0.0, 0.0 };
+		s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
+		s->nbits = 0;
+		for (i = 0; i < s->ncomp; i++)
+			forward(c, i, s->out[i], prec, s, undet);
+		if (undet[0] <= s->abs_eps_max && undet[1] <= s->ulp_max)
+			return;
+		for (i = 0; i < s->ncomp; i++)
+			ziv_diff(c->z, i, &c->zo);
 	}
 }
 
@@ -233,93 +262,8 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
 /* The floor of a kernel on an input: the metrics of its family's exact
    formula, on the kernel's branch, with each output component rounded
    ONCE (to nearest, ties to even) to the format: what a perfect
-   implementation of that formula would return.
-
-   Rounding without double rounding.  The reference holds each exact
-   component x as e, computed at P = c->prec bits, with |e - x| <= 2^(40-P)
-   max(|e|, 1): every family's intermediate quantities are O(1) for
-   unit-to-rounding input (the inputs are within |n| <= 1.01), and the
-   worst amplification of the reference's own 2^-P roundings (1/|u| of
-   naive's normalization near -x, 1/(1 + n.z) of frisvad near -z) stays
-   far below 2^40 on every input the sweep generates; the two-precision
-   check re-evaluates the floor at P + 64 bits and must agree (ref_agree).
-   RN(e) is RN(x) unless e lies within that bound of a rounding boundary
-   (the midpoint between two neighbouring format values); floor_round says
-   when, and such a component is decided from the formula re-evaluated at
-   P + 128 bits (c->hi), where an exact midpoint (a value with one bit
-   more than the format) stays exactly on it and rounds to even. */
-static int floor_round(ref_ctx *c, mpfr_t e, int prec, double *out)
-{
-	const long P = (long)mpfr_get_prec(e);
-	double f, g;
-	long ee, em;
-	int cmp;
-	if (!mpfr_number_p(e)) {
-		*out = NAN;
-		return 0;
-	}
-	f = prec == PREC_FLOAT ? (double)mpfr_get_flt(e, R) : mpfr_get_d(e, R);
-	*out = f;
-	cmp = mpfr_cmp_d(e, f);
-	if (cmp == 0 || isinf(f))
-		return 0;
-	g = prec == PREC_FLOAT ? (double)nextafterf((float)f, cmp > 0 ? INFINITY : -INFINITY)
-	                       : nextafter(f, cmp > 0 ? INFINITY : -INFINITY);
-	if (isinf(g))
-		return 0;
-	mpfr_set_d(c->mid, f, R);
-	mpfr_add_d(c->mid, c->mid, g, R);   /* exact: two neighbours need <= 55 bits */
-	mpfr_div_2ui(c->mid, c->mid, 1, R); /* the rounding boundary between them */
-	mpfr_sub(c->mid, e, c->mid, R);
-	if (mpfr_zero_p(c->mid))
-		return 1;
-	ee = mpfr_get_exp(e);
-	em = mpfr_get_exp(c->mid);          /* |e - mid| >= 2^(em - 1) */
-	return em - 1 < 40 - P + (ee > 1 ? ee : 1);
-}
-
-/* The exact formula of k on n (branch br) rounded once: fb[6] (or the
-   direction in fb[0..2] for frisvad_rotate).  The formula is in c->r1,
-   c->r2 already; hard components are redone at c->prec + 128 bits.
-   Returns 1 when that was needed. */
-static int floor_basis(ref_ctx *c, const study_kernel *k, int prec, int br, const double n[3],
-                       const double loc[3], double fb[6])
-{
-	const int nc = k->m ? 6 : 3, zero = k->m ? k->fam->exact_zero(k->m, br) : -1;
-	int i, hard = 0;
-	for (i = 0; i < nc; i++)
-		hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &fb[i]);
-	/* a component identically zero in the exact formula (naive's b2 = n x
-	   (e - n (n.e)) = n x e has no e component, for any n), where the
-	   reference's cross product leaves a rounding residue */
-	if (zero >= 0 && isfinite(fb[zero])) {
-		fb[zero] = 0.0;
-		if (!hard)
-			return 0;
-		/* hard only through that residue? */
-		for (i = 0, hard = 0; i < nc; i++)
-			if (i != zero) {
-				double t;
-				hard |= floor_round(c, i < 3 ? c->r1[i] : c->r2[i - 3], prec, &t);
-			}
-	}
-	if (!hard)
-		return 0;
-	if (!c->hi)
-		c->hi = ref_new(c->prec + 128);
-	if (!c->hi) { /* out of memory: keep the P-bit rounding, say so */
-		fprintf(stderr, "onbstudy: out of memory for the floor's %ld-bit re-evaluation\n", (long)c->prec + 128);
-		return 1;
-	}
-	kit_set3(c->hi->n, n[0], n[1], n[2]);
-	c->hi->have_last = 0;
-	reference(c->hi, k, br, loc);
-	for (i = 0; i < nc; i++)
-		if (i != zero)
-			(void)floor_round(c->hi, i < 3 ? c->hi->r1[i] : c->hi->r2[i - 3], prec, &fb[i]);
-	return 1;
-}
-
+   implementation of that formula would return.  The roundings are Ziv's
+   (ziv.c, c->zo.fmt): correct whatever the reference's precision. */
 /* s->floor, s->floor_dir_norm, s->floor_dir_cos (NaN when the exact
    formula is not finite there, e.g. tangent_cross_z at +-z).  For a basis
    method the floor's direction is w = x b1 + y b2 + z n from the rounded
@@ -331,7 +275,7 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 	double fb[6], w[3], d[NDEF];
 	int i;
 	s->floor = s->floor_dir_norm = s->floor_dir_cos = s->floor_ratio = NAN;
-	(void)floor_basis(c, k, prec, s->branch, n, loc, fb);
+	memcpy(fb, c->zo.fmt, sizeof fb);
 	if (!finite6(fb, k->m ? 6 : 3))
 		return;
 	if (k->m) {
@@ -503,6 +447,7 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 			s->ref[i] = NAN;
 		/* the floor does not depend on the kernel's output */
 		reference(c, k, s->branch, loc);
+		ziv_round(c->z, k, prec, s->branch, n, loc, c->r1, c->r2, c->exact, NULL, &c->zo);
 		floor_eval(c, k, prec, n, loc, normalize_n, s);
 		return;
 	}
@@ -512,12 +457,8 @@ void ref_eval(ref_ctx *c, const study_kernel *k, int prec, const double n_in[3],
 
 	/* Forward error against the kernel's own formula. */
 	reference(c, k, s->branch, loc);
-	s->ulp_max = s->abs_eps_max = s->bits_sum = s->bits_max = 0.0;
-	for (i = 0; i < 3; i++)
-		forward(c, c->r1[i], s->out[i], prec, s, &s->ref[i]);
-	if (k->m)
-		for (i = 0; i < 3; i++)
-			forward(c, c->r2[i], s->out[3 + i], prec, s, &s->ref[3 + i]);
+	ziv_round(c->z, k, prec, s->branch, n, loc, c->r1, c->r2, c->exact, s->out, &c->zo);
+	forward_all(c, prec, s);
 
 	/* Direction error: | |w| - 1 | and | w.n - z |. */
 	dir_errors(c, s->w, n, loc, prec, normalize_n, &s->dir_norm, &s->dir_cos);

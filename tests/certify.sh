@@ -29,6 +29,18 @@ data "$C" | awk -F, 'NR > 1 && $12 !~ /^(proven|singular|budget)$/ { n++ } END {
 data "$C" | awk -F, '$1 == "naive" && $5 <= 180 && $6 >= 180 && $3 <= 0 && $4 >= 0 && $12 == "singular" { s++ } END { exit !(s > 0) }' && ok || bad "naive not singular at -x"
 data "$C" | awk -F, '$1 == "frisvad" && $12 == "singular" { s++ } END { exit s > 0 }' && ok || bad "frisvad reported singular"
 
+# 1b. the profile: certify-times.csv has each region of certify.csv (its
+#     rows less the whole-sphere ones) with six phases' CPU seconds, their
+#     sum in the '# profile' line and on stderr
+P="$T/a/certify-times.csv"
+data "$C" | awk -F, 'NR > 1 && !($3 == -1 && $4 == 1 && $5 == 0 && $6 == 360) { print $1 "," $2 "," $3 "," $4 "," $5 "," $6 }' > "$T/reg.c"
+data "$P" | awk -F, 'NR > 1 { print $1 "," $2 "," $3 "," $4 "," $5 "," $6 }' > "$T/reg.t"
+[ -s "$T/reg.t" ] && cmp -s "$T/reg.c" "$T/reg.t" && ok || bad "certify-times.csv's regions differ from certify.csv's"
+data "$P" | awk -F, 'NR > 1 { for (i = 7; i <= 12; i++) { if (!($i + 0 >= 0)) b++; s += $i } } END { exit !(s > 0 && !b) }' \
+	&& ok || bad "certify-times.csv: a negative or no CPU time"
+grep -q '^# profile: CPU per phase: sampling .* s (.*), walks .*boxes .*refinement .* s in all' "$C" && ok || bad "no '# profile' line in certify.csv"
+grep -q '^certify: CPU per phase: ' "$T/a.err" && grep -q '^certify: CPU per method' "$T/a.err" && ok || bad "no profile on stderr"
+
 # 2. 1 and 2 threads: the same float rows
 data "$T/b/certify.csv" > "$T/b1"
 data "$C" | awk -F, -v m=",$M1," 'NR == 1 || ($2 == "float" && index(m, "," $1 ","))' > "$T/a1"

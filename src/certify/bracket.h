@@ -39,6 +39,10 @@ typedef struct {
 	long nstarts;               /* kernel, precision and region)            */
 } cert_opts;
 
+/* The phases of a region's bracket whose CPU time is kept (certify's
+   profile: stderr and certify-times.csv, never certify.csv's rows). */
+enum { CERT_T_SAMPLE = 0, CERT_T_WALKS, CERT_T_BOXES, CERT_T_PROBES, CERT_T_IMAGES, CERT_T_REFINE, CERT_NT };
+
 typedef struct {
 	double bound;       /* certified: no input of the region exceeds it (+inf: none) */
 	double found;       /* the largest defect measured on an input of the region */
@@ -50,6 +54,8 @@ typedef struct {
 	long probes;        /* inputs of the region the found side evaluated      */
 	double keep_n[CERT_KEEP][3];   /* its best inputs by screened defect, largest first */
 	int nkeep;
+	double cpu[CERT_NT]; /* CPU seconds per phase: sampling, walks, bounding boxes,
+	                        the probes of the branch and bound, images, refinement */
 } cert_result;
 
 /* An input of the images pass's pool; sure: known to be in the domain. */

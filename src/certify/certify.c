@@ -33,6 +33,7 @@ typedef struct {
 	double refine_s;        /* ... in this many seconds                */
 	long pool;              /* inputs the images pass pooled ...       */
 	double images_s;        /* ... in this many seconds                */
+	double run_s;           /* the regions' first pass, wall seconds   */
 	double band_lo, band_hi;
 	int quick;
 	int quiet;
@@ -69,7 +70,10 @@ static void usage(FILE *f)
 	"The domain: every rounding of a real unit vector (default), or with\n"
 	"--tolerance T every n with | |n| - 1 | <= T.  status: proven, singular (the\n"
 	"method can return NaN or inf there: not bounded) or budget (bound holds, not\n"
-	"yet within 1.25x).  Writes DIR/certify.csv (default: the current run).\n\n"
+	"yet within 1.25x).  Writes DIR/certify.csv (default: the current run) and\n"
+	"DIR/certify-times.csv (the profile: each region's CPU seconds in sampling,\n"
+	"walks, boxes, box probes, images and refinement; the totals on stderr and\n"
+	"in certify.csv's '# profile' line).\n\n"
 	"  --methods LIST    comma-separated registry names, or all (default)\n"
 	"  --precision P     float, double or both (default both)\n"
 	"  --budget N        boxes bounded per region at most (default 6000)\n"
@@ -415,7 +419,7 @@ static void refine_one(cert_ctx *x, int j, void *arg)
 
 /* Every region of every kernel and precision, in parallel. */
 static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
-                   const cert_cli *c, cert_result *res)
+                   cert_cli *c, cert_result *res)
 {
 	const task_set s = { ks, ms, reg, t, c, res, NULL, NULL };
 	study_progress pr;
@@ -425,6 +429,7 @@ static int run_all(const study_kernel *ks, const cm_method **ms, const cert_regi
 	pr.t0 = study_now();
 	pr.total = (unsigned long long)nt;
 	fail = run_tasks(nt, run_one, (void *)&s, &pr);
+	c->run_s = study_now() - pr.t0;
 	if (pr.bar)
 		fprintf(stderr, "\n");
 	if (fail)
@@ -656,6 +661,92 @@ static void seeds_provenance(FILE *f, const study_kernel *ks, int nk)
 	}
 }
 
+static const char *const phase_names[CERT_NT] = { "sampling", "walks", "boxes", "box probes", "images", "refinement" };
+
+/* The CPU seconds of every phase over all regions into sum (CERT_NT). */
+static void phase_sums(const cert_result *res, int nt, double *sum)
+{
+	int i, j;
+	for (j = 0; j < CERT_NT; j++)
+		sum[j] = 0.0;
+	for (i = 0; i < nt; i++)
+		for (j = 0; j < CERT_NT; j++)
+			sum[j] += res[i].cpu[j];
+}
+
+/* "sampling 1.2 s, walks ..." of the CPU seconds in sum. */
+static void phase_line(FILE *f, const double *sum)
+{
+	int j;
+	double all = 0.0;
+	for (j = 0; j < CERT_NT; j++)
+		all += sum[j];
+	for (j = 0; j < CERT_NT; j++)
+		fprintf(f, "%s%s %.1f s (%.0f%%)", j ? ", " : "", phase_names[j], sum[j], all > 0 ? 100.0 * sum[j] / all : 0.0);
+	fprintf(f, "; %.1f s in all", all);
+}
+
+static double region_cpu(const cert_result *r)
+{
+	double s = 0.0;
+	int j;
+	for (j = 0; j < CERT_NT; j++)
+		s += r->cpu[j];
+	return s;
+}
+
+/* The profile on stderr: CPU seconds per phase, wall seconds per pass, and
+   the methods that took longest. */
+static void print_profile(const study_kernel *ks, int nk, const task *t, int nt, const cert_result *res,
+                          const cert_cli *c)
+{
+	double sum[CERT_NT], *per = calloc((size_t)(2 * nk) + 1, sizeof *per);
+	int i, shown;
+	phase_sums(res, nt, sum);
+	fprintf(stderr, "certify: CPU per phase: ");
+	phase_line(stderr, sum);
+	fprintf(stderr, "\ncertify: wall: regions %.1f s, images %.1f s, refinement %.1f s on %d threads\n", c->run_s,
+	        c->images_s, c->refine_s, cert_threads());
+	if (!per)
+		return;
+	for (i = 0; i < nt; i++)
+		per[group_of(&t[i])] += region_cpu(&res[i]);
+	fprintf(stderr, "certify: CPU per method (the longest):");
+	for (shown = 0; shown < 5; shown++) {
+		int g, top = -1;
+		for (g = 0; g < 2 * nk; g++)
+			if (per[g] > 0.0 && (top < 0 || per[g] > per[top]))
+				top = g;
+		if (top < 0)
+			break;
+		fprintf(stderr, "%s %s %s %.1f s", shown ? "," : "", ks[top / 2].name, prec_name(top % 2), per[top]);
+		per[top] = 0.0;
+	}
+	fprintf(stderr, "; every region's in certify-times.csv\n");
+	free(per);
+}
+
+/* certify-times.csv: every region's CPU seconds per phase (the profile
+   and the per-region cost the MPI scaling figures come from). */
+static int write_times(FILE *f, const study_kernel *ks, const cert_region *reg, const task *t, int nt,
+                       const cert_result *res, const cert_cli *c)
+{
+	int i, j;
+	study_provenance(f, "certify", (unsigned long long)c->o.seed, cert_threads());
+	fprintf(f, "# CPU seconds of each region's phases (thread CPU time); wall: regions %.1f s, images %.1f s, "
+	        "refinement %.1f s\n", c->run_s, c->images_s, c->refine_s);
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,sampling_s,walks_s,boxes_s,box_probes_s,images_s,refine_s,boxes\n");
+	for (i = 0; i < nt; i++) {
+		const cert_region *r = &reg[t[i].prec * MAXREG + t[i].reg];
+		fprintf(f, "%s,%s,%.17g,%.17g,%g,%g", ks[t[i].k].name, prec_name(t[i].prec), r->nz_lo, r->nz_hi, r->phi_lo,
+		        r->phi_hi);
+		for (j = 0; j < CERT_NT; j++)
+			fprintf(f, ",%.6f", res[i].cpu[j]);
+		fprintf(f, ",%ld\n", res[i].boxes);
+	}
+	return ferror(f) ? -1 : 0;
+}
+
 static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region *reg, const task *t, int nt,
                      const cert_result *res, const cert_cli *c)
 {
@@ -669,6 +760,13 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	        "region's best and the --starts of its method and precision) that fall in it (%.0f s)\n", c->pool, c->images_s);
 	fprintf(f, "# refine: %ld regions that set a whole-sphere bound wider than %.0fx found bounded again without the "
 	        "stall stop (%.0f s)\n", c->refined, REFINE_ABOVE, c->refine_s);
+	{
+		double sum[CERT_NT];
+		phase_sums(res, nt, sum);
+		fprintf(f, "# profile: CPU per phase: ");
+		phase_line(f, sum);
+		fprintf(f, "; every region's in certify-times.csv\n");
+	}
 	fprintf(f, "# budget: %ld boxes per region, %ld samples, target bound <= %.2f found, %d sectors\n",
 	        c->o.budget, c->o.samples, c->o.target, c->sectors);
 	if (c->fma) {
@@ -813,7 +911,15 @@ int cmd_certify(int argc, char **argv)
 		study_error("%s/certify.csv: write failed; nothing written", dir);
 		goto done;
 	}
+	if (study_out_open(&out, dir, "certify-times.csv"))
+		goto done;
+	if (write_times(out.f, ks, reg, t, nt, res, &c) || study_out_commit(&out)) {
+		study_out_abort(&out);
+		study_error("%s/certify-times.csv: write failed", dir);
+		goto done;
+	}
 	print_summary(ks, nk, t, nt, res);
+	print_profile(ks, nk, t, nt, res, &c);
 	fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
 	rc = 0;
 done:

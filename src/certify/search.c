@@ -25,6 +25,7 @@
 #include "model/model_int.h"
 #include "found.h"
 #include "inputs/rng.h"
+#include "common/progress.h"
 
 /* How wide a box is, in a measure that splits where the error varies:
    near the poles log2 of the ratio of 1 -+ z across it (a quarter per
@@ -209,7 +210,8 @@ static int worst_leaf(const leaf *l, int nl, double *worst)
    with the largest bounds, samples / 16 + 8 in each. */
 #define PROBE_LEAVES 32
 
-static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0)
+/* cpu[0] gains the CPU time of bounding boxes, cpu[1] that of the probes. */
+static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0, double cpu[2])
 {
 	const long cap = e->o->budget + 8;
 	leaf *l = malloc((size_t)cap * sizeof *l);
@@ -220,6 +222,7 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 		e->res->bound = INFINITY;
 		return;
 	}
+	double t = study_thread_cpu(), t1;
 	l[0].b = *b0;
 	l[0].bound = bound_box(e->x->b, m, b0);
 	l[0].stuck = 0;
@@ -248,13 +251,20 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 			l[at].b = c[j];
 			l[at].bound = v <= parent ? v : parent;   /* the parent's bound holds on its part too */
 			l[at].stuck = 0;
+			t1 = study_thread_cpu();
+			cpu[0] += t1 - t;
 			probe_box(e, &c[j]);
+			t = study_thread_cpu();
+			cpu[1] += t - t1;
 		}
 		e->res->boxes += k;
 	}
 	e->res->bound = worst;
+	t1 = study_thread_cpu();
+	cpu[0] += t1 - t;
 	if (!(worst <= e->o->target * e->res->found))
 		probe_worst_leaves(e, l, nl, PROBE_LEAVES, e->o->samples / 16 + 8);
+	cpu[1] += study_thread_cpu() - t1;
 	if (e->o->leaf_fn)
 		for (i = 0; i < nl; i++)
 			e->o->leaf_fn(e->o->leaf_arg, &l[i].b, l[i].bound);
@@ -288,19 +298,25 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	memset(res, 0, sizeof *res);
 	memset(&e, 0, sizeof e);
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
+	double t = study_thread_cpu(), t1;
 	e.rng = region_seed(o->seed, r);
 	found_sample(&e);
+	t1 = study_thread_cpu();
+	res->cpu[CERT_T_SAMPLE] = t1 - t;
 	found_walks(&e, 1);
 	found_keep(&e);
+	res->cpu[CERT_T_WALKS] = study_thread_cpu() - t1;
 	if (region_meets_singular(k, r) || res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
 		return;
 	}
 	region_box(r, prec, o->tolerance, &b);
-	branch_and_bound(&e, m, &b);
+	branch_and_bound(&e, m, &b, &res->cpu[CERT_T_BOXES]);
+	t = study_thread_cpu();
 	found_walks(&e, 0);
 	found_keep(&e);
+	res->cpu[CERT_T_WALKS] += study_thread_cpu() - t;
 	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
@@ -312,10 +328,12 @@ void cert_region_images(cert_ctx *x, const study_kernel *k, int prec, const cert
                         const cert_pool_in *pool, long np, cert_result *res)
 {
 	probe_env e;
+	const double t = study_thread_cpu();
 	memset(&e, 0, sizeof e);
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
 	e.rng = region_seed(o->seed ^ UINT64_C(0x696d61676573), r);   /* "images" */
 	found_images(&e, pool, np);
+	res->cpu[CERT_T_IMAGES] += study_thread_cpu() - t;
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
@@ -337,6 +355,7 @@ void cert_region_refine(cert_ctx *x, const study_kernel *k, const cm_method *m, 
 	const long boxes = res->boxes;
 	probe_env e;
 	mvf_box b;
+	double cpu[2] = { 0.0, 0.0 };
 	if (res->status != CERT_BUDGET)
 		return;
 	memset(&e, 0, sizeof e);
@@ -344,7 +363,8 @@ void cert_region_refine(cert_ctx *x, const study_kernel *k, const cm_method *m, 
 	e.rng = region_seed(o->seed ^ UINT64_C(0x726566696e65), r);   /* "refine": other draws */
 	e.no_stall = 1;
 	region_box(r, prec, o->tolerance, &b);
-	branch_and_bound(&e, m, &b);
+	branch_and_bound(&e, m, &b, cpu);
+	res->cpu[CERT_T_REFINE] += cpu[0] + cpu[1];
 	if (!(res->bound <= old))
 		res->bound = old;
 	res->boxes += boxes;

@@ -13,6 +13,16 @@ double study_now(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double study_thread_cpu(void)
+{
+#ifdef CLOCK_THREAD_CPUTIME_ID
+	struct timespec ts;
+	if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) == 0)
+		return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#endif
+	return study_now();
+}
+
 /* Fixed width: "  42 s  ", " 3.2 min", " 1.5 h  ", " 2.0 days". */
 static void print_eta(double s)
 {

@@ -16,6 +16,9 @@ typedef struct {
 } study_progress;
 
 double study_now(void);                              /* monotonic seconds */
+/* CPU seconds of the calling thread (its own work, whatever the load of
+   the machine); study_now() where the system has no thread clock. */
+double study_thread_cpu(void);
 /* "\r<label> 42.0%  ETA 3.2 min" on stderr. */
 void   study_progress_line(const char *label, const study_progress *pr);
 

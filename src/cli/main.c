@@ -14,6 +14,7 @@
 /* up: the commands of the other folders */
 #include "sweep/sweep.h"
 #include "sweep/threshold.h"
+#include "sweep/halfscan.h"
 #include "certify/certify.h"
 #include "scene/scene.h"
 #include "bench/bench.h"
@@ -31,6 +32,7 @@ static const struct {
 	{ "sweep", cmd_sweep, "MPFR-referenced error of every method over every input distribution" },
 	{ "eval", cmd_eval, "one input: every method's outputs (hex) and every metric" },
 	{ "threshold", cmd_threshold, "Nelson Max's analysis of Frisvad's threshold t near -1" },
+	{ "halfscan", cmd_halfscan, "every method in binary16 near each axis: largest defect in u = 2^-11, non-finite bases" },
 	{ "merge", cmd_merge, "combine 'sweep --shard K/N' outputs into one run's files" },
 	{ "scene", cmd_scene, "a scene's own normals (OBJ, PLY, glTF 2.0): every method, and the one to use" },
 	{ "bench", cmd_bench, "batch and per-call speed of every method, beside a copy roofline and a yardstick" },

@@ -15,6 +15,8 @@
 #                               '# published KEY' lines (key: both,
 #                               orthogonality, Frisvad, Max; field: t, 1pt,
 #                               max_normality, max_orthogonality, max_both)
+#   {{THH precision key field}}  the same from results/half/threshold/threshold.csv
+#                               (threshold --precision all: float, double, half)
 #   {{X method precision column}}  a tradeoff.csv value
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
@@ -335,8 +337,11 @@ generate() {
 		close(f)
 		print "findings: no " key " in mutation.txt" > "/dev/stderr"; bad = 1; return "?"
 	}
-	function TH(p, key, field,   lines, n, i, l, s, parts, v) {
-		n = split(thc[p], lines, "\n")
+	function TH(p, key, field) { return THX(thc, "", p, key, field) }
+	# the same from results/half/threshold/threshold.csv (onbstudy threshold --precision all)
+	function THH(p, key, field) { return THX(thh, "half/", p, key, field) }
+	function THX(arr, what, p, key, field,   lines, n, i, l, s, parts, v) {
+		n = split(arr[p], lines, "\n")
 		for (i = 1; i <= n; i++) {
 			l = lines[i]
 			if (l !~ ("^# (minimax|published) " key)) continue
@@ -345,9 +350,9 @@ generate() {
 				return sprintf("%.9g", v)
 			}
 			if (field == "1pt") field = "one_plus_t"
-			if (match(l, field " [-0-9.e+]+")) { s = substr(l, RSTART, RLENGTH); split(s, parts, " "); return fmt(parts[2]) }
+			if (match(l, field " [-+0-9.einf]+")) { s = substr(l, RSTART, RLENGTH); split(s, parts, " "); return fmt(parts[2]) }
 		}
-		print "findings: no threshold " p " " key " " field > "/dev/stderr"; bad = 1; return "?"
+		print "findings: no " what "threshold " p " " key " " field > "/dev/stderr"; bad = 1; return "?"
 	}
 	# the whole-sphere row of certify.csv (results/certify): the found
 	# maximum or the proven bound ("singular" where the method has NaN/inf)
@@ -577,6 +582,12 @@ generate() {
 			else if (line ~ /^# (minimax|published)/ && sect != "") thc[sect] = thc[sect] line "\n"
 		}
 		close(tf)
+		tf = REF "/../half/threshold/threshold.csv"; sect = ""
+		while ((getline line < tf) > 0) {
+			if (line ~ /^(float|double|half),/) { split(line, f, ","); sect = f[1] }
+			else if (line ~ /^# (minimax|published)/ && sect != "") thh[sect] = thh[sect] line "\n"
+		}
+		close(tf)
 		xf = REF "/tradeoff.csv"
 		if ((getline line < xf) > 0) {
 			close(xf)
@@ -607,6 +618,7 @@ generate() {
 			else if (a[1] == "PARETO" && nt == 2) rep = PARETO(a[2])
 			else if (a[1] == "R" && nt == 3) rep = RN(a[2], a[3])
 			else if (a[1] == "TH" && nt == 4) rep = TH(a[2], a[3], a[4])
+			else if (a[1] == "THH" && nt == 4) rep = THH(a[2], a[3], a[4])
 			else if (a[1] == "MUT" && nt == 2) rep = MUT(a[2])
 			else if (a[1] == "TABLE" && a[2] == "accuracy") rep = table_accuracy(a[3])
 			else if (a[1] == "TABLE" && a[2] == "tradeoff") rep = table_tradeoff()

@@ -15,6 +15,7 @@
 
 struct bound_ctx {
 	cm *c;
+	int unb_op;   /* bound_unbounded_op */
 };
 
 bound_ctx *bound_new(void)
@@ -24,6 +25,8 @@ bound_ctx *bound_new(void)
 		free(b);
 		return NULL;
 	}
+	if (b)
+		b->unb_op = -1;
 	return b;
 }
 
@@ -124,7 +127,7 @@ static int run_path(cm *c, const cm_method *m, const mvf_box *x, unsigned path, 
 		return -1;
 	mvf_quantities(c->m, n, out, q);
 	c->cross_kind = 0;
-	if (c->cross_to) {
+	if (c->cross_to && !c->ar) {   /* the cross rule is proven for round to nearest */
 		const cv *o = out + 3 * (c->cross_to - 1);
 		if (o[0] == c->cross_q[0] && o[1] == c->cross_q[1] && o[2] == c->cross_q[2])
 			c->cross_kind = 1;
@@ -447,12 +450,24 @@ double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x)
 	return bound_box_ablate(b, m, x, 0);
 }
 
+void bound_set_arith(bound_ctx *b, const arith_profile *p)
+{
+	cm_set_arith(b->c, p);
+	b->unb_op = -1;
+}
+
+int bound_unbounded_op(const bound_ctx *b) { return b->unb_op; }
+
 double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop)
 {
 	unsigned path, npath = 1u << m->nbranch, seen[1u << BOUND_MAXBRANCH];
 	double best = 0.0;
 	if (m->nbranch > BOUND_MAXBRANCH)
 		return INFINITY;   /* no model has so many (models.c checks) */
+	if (m->direction && b->c->ar) {   /* dir_bound is proven for round to nearest */
+		b->unb_op = AR_NOPS;
+		return INFINITY;
+	}
 	for (path = 0; path < npath; path++) {
 		const int copy = same_as_earlier(path, seen);
 		double v;
@@ -467,6 +482,8 @@ double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsi
 			v = path_bound(b->c, m, x, path);
 		}
 		seen[path] = b->c->seen;
+		if (b->unb_op < 0 && cm_unbounded_op(b->c) >= 0)
+			b->unb_op = cm_unbounded_op(b->c);
 		if (!(v <= best))
 			best = v;   /* an infeasible path gives -1 */
 	}

@@ -20,6 +20,12 @@ void bound_free(bound_ctx *b);
    the bound is on its direction error max(| |w| - 1 |, |w.n - z|) over
    every loc = (x, y, z) that is a rounding of a unit vector. */
 double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x);
+/* The arithmetic profile of the bounds to come (arith.h; NULL or ieee: the
+   IEEE model), and the operation kind (AR_*; AR_NOPS: a rule proven for
+   round to nearest alone, frisvad_rotate's direction bound) whose
+   allowance left some box without a bound since then (-1: none). */
+void bound_set_arith(bound_ctx *b, const arith_profile *p);
+int  bound_unbounded_op(const bound_ctx *b);
 /* The same with terms of frisvad_rotate's bound left out, which makes it
    unsound: tests/test_certify_dir.c shows that its checks catch that. */
 #define BOUND_DROP_DOT 1u   /* the rounding of w's dot products */

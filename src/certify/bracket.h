@@ -9,7 +9,8 @@
 #include <stdint.h>
 #include "model/mvf.h"
 
-enum { CERT_PROVEN = 0, CERT_SINGULAR, CERT_BUDGET };
+enum { CERT_PROVEN = 0, CERT_SINGULAR, CERT_BUDGET,
+       CERT_UNBOUNDED /* --arith: an operation's allowance gives no bound (cert_result.unb_op) */ };
 
 /* The found side's best inputs a region keeps for the images pass
    (found_images.c). */
@@ -37,6 +38,11 @@ typedef struct {
 	void *leaf_arg;
 	const cert_start *starts;   /* walks also start from these (those of the */
 	long nstarts;               /* kernel, precision and region)            */
+	/* The arithmetic profile (src/model/arith.h; NULL: ieee): the bound
+	   holds for every result it allows at every operation, and the found
+	   side also takes the adversarial emulation's worst at the region's
+	   best inputs (src/certify/emulate.c). */
+	const arith_profile *arith;
 } cert_opts;
 
 /* The phases of a region's bracket whose CPU time is kept (certify's
@@ -56,6 +62,7 @@ typedef struct {
 	int nkeep;
 	double cpu[CERT_NT]; /* CPU seconds per phase: sampling, walks, bounding boxes,
 	                        the probes of the branch and bound, images, refinement */
+	int unb_op;         /* --arith: the operation (AR_*) that left it unbounded, -1 */
 } cert_result;
 
 /* An input of the images pass's pool; sure: known to be in the domain. */

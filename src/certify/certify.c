@@ -39,6 +39,7 @@ typedef struct {
 	int quiet;
 	int fma;                /* --fma: also the contracted kernels */
 	const char *starts;     /* --starts FILE[,FILE...] */
+	int arith_given;        /* --arith P other than ieee: its rows and header */
 } cert_cli;
 
 typedef struct {
@@ -53,7 +54,7 @@ static void usage(FILE *f)
 	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
 	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
 	"                        [--band LO,HI] [--starts FILE[,FILE...]] [--seed S]\n"
-	"                        [--fma] [--quick] [--quiet]\n\n"
+	"                        [--fma] [--arith PROFILE] [--quick] [--quiet]\n\n"
 	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
 	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
 	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|)\n"
@@ -91,6 +92,12 @@ static void usage(FILE *f)
 	"  --fma             also the methods' --fma copies (compiled with -mfma\n"
 	"                    -ffp-contract=fast), as METHOD+fma rows, where a contracted\n"
 	"                    rounding model exists (docs/certify.md lists which)\n"
+	"  --arith PROFILE   the bound for every implementation the profile allows\n"
+	"                    (`onbstudy list --arith`: ieee, vulkan, vulkan-precise,\n"
+	"                    d3d11, opencl, cuda-fast, contract-any; docs/gpu.md); the\n"
+	"                    found side also takes an adversarial emulation's worst;\n"
+	"                    status unbounded names the operation whose allowance gives\n"
+	"                    no bound (ieee: the default, byte for byte)\n"
 	"  --quick           budget 40, samples 150 (walks a quarter as long), 2 sectors:\n"
 	"                    a run of under a minute\n");
 }
@@ -232,7 +239,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "tolerance", required_argument, NULL, 't' }, { "seed", required_argument, NULL, 'S' },
 		{ "quick", no_argument, NULL, 'q' }, { "quiet", no_argument, NULL, 'Q' },
 		{ "band", required_argument, NULL, 'B' }, { "starts", required_argument, NULL, 'T' },
-		{ "fma", no_argument, NULL, 'F' },
+		{ "fma", no_argument, NULL, 'F' }, { "arith", required_argument, NULL, 'A' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args a;
@@ -268,11 +275,24 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'B': if (parse_band(a.arg, c)) goto bad; break;
 		case 'T': c->starts = a.arg; break;
 		case 'F': c->fma = 1; break;
+		case 'A':
+			if (!(c->o.arith = arith_find(a.arg))) {
+				char names[256];
+				arith_names(names, sizeof names);
+				study_error("--arith: unknown profile '%s' (one of: %s)", a.arg, names);
+				goto bad;
+			}
+			c->arith_given = !arith_is_ieee(c->o.arith);
+			break;
 		default: goto bad;
 		}
 	}
 	if (cli_no_rest(&a))
 		goto bad;
+	if (c->arith_given && c->fma) {
+		study_error("--arith and --fma exclude each other (a profile's contraction covers the +fma copies)");
+		goto bad;
+	}
 	cli_end(&a);
 	if (c->quick) {
 		if (!budget_set) c->o.budget = 40;
@@ -297,8 +317,12 @@ static int cert_threads(void)
 
 static const char *status_name(int s)
 {
-	return s == CERT_PROVEN ? "proven" : s == CERT_SINGULAR ? "singular" : "budget";
+	return s == CERT_PROVEN ? "proven" : s == CERT_SINGULAR ? "singular" : s == CERT_UNBOUNDED ? "unbounded" : "budget";
 }
+
+/* The operation an unbounded row names (AR_NOPS: frisvad_rotate's
+   direction rule, proven for round to nearest alone). */
+static const char *unb_name(int op) { return op == AR_NOPS ? "direction-rule" : arith_op_name(op); }
 
 static double unit_of(int prec) { return prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53; }
 
@@ -322,18 +346,22 @@ static void whole_sphere(const cert_result *res, const task *t, int nt, int k, i
 		}
 		if (r->status == CERT_SINGULAR)
 			w->status = CERT_SINGULAR;
+		if (r->status == CERT_UNBOUNDED && w->status != CERT_SINGULAR) {
+			w->status = CERT_UNBOUNDED;
+			w->unb_op = r->unb_op;
+		}
 		w->boxes += r->boxes;
 		w->probes += r->probes;
 	}
 	if (!any)
 		w->status = -1;
-	else if (w->status != CERT_SINGULAR)
+	else if (w->status != CERT_SINGULAR && w->status != CERT_UNBOUNDED)
 		w->status = w->bound <= 1.25 * w->found ? CERT_PROVEN : CERT_BUDGET;
 	if (w->status == CERT_SINGULAR)
 		w->bound = INFINITY;
 }
 
-static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region *r, const cert_result *x)
+static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region *r, const cert_result *x, int arith)
 {
 	fprintf(f, "%s,%s,%.17g,%.17g,%g,%g,", name, prec_name(p),
 	        r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
@@ -347,9 +375,12 @@ static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region
 		fprintf(f, "0,,,,%s,", status_name(x->status));
 	fprintf(f, "%ld", x->probes);   /* inputs the found side evaluated */
 	if (dir && x->found > 0.0)     /* frisvad_rotate: the found input's loc */
-		fprintf(f, ",%a,%a,%a\n", x->found_loc[0], x->found_loc[1], x->found_loc[2]);
+		fprintf(f, ",%a,%a,%a", x->found_loc[0], x->found_loc[1], x->found_loc[2]);
 	else
-		fprintf(f, ",,,\n");
+		fprintf(f, ",,,");
+	if (arith)   /* --arith: the operation an unbounded row owes it to */
+		fprintf(f, ",%s", x->status == CERT_UNBOUNDED ? unb_name(x->unb_op) : "");
+	fprintf(f, "\n");
 }
 
 /* fn(x, j, arg) for j = 0..n-1 in parallel, each thread with its own
@@ -779,7 +810,15 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	if (c->band)
 		fprintf(f, "# band: %.17g <= n.z <= %.17g (the first row of each method is this band, not the sphere)\n",
 		        c->band_lo, c->band_hi);
-	fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt, subnormals kept (no FTZ/DAZ)\n");
+	if (c->arith_given) {
+		char d[2048];
+		arith_describe(c->o.arith, d, sizeof d);
+		fprintf(f, "# arith: %s (%s; %s)\n", c->o.arith->name, c->o.arith->title, c->o.arith->spec);
+		fprintf(f, "# model: the IEEE model's operations, each widened to the profile's allowance (src/model/arith.c): %s\n", d);
+		fprintf(f, "# found: the largest of the IEEE kernel's defect and an adversarial emulation's (src/certify/emulate.c, 1 greedy pass) at each region's 4 best inputs\n");
+	} else {
+		fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt, subnormals kept (no FTZ/DAZ)\n");
+	}
 	seeds_provenance(f, ks, nk);
 	if (c->starts)
 		fprintf(f, "# starts: the found side also walked from the %ld inputs of %s\n", c->o.nstarts, c->starts);
@@ -787,7 +826,8 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 		;
 	if (i < nt)
 		fprintf(f, "# frisvad_rotate: bound and found are its direction error max(| |w| - 1 |, |w.n - z|) for w the kernel's output on the local direction loc = (x, y, z), over every loc that is a rounding of a unit vector; found_lx,found_ly,found_lz: the found input's loc (empty on the other methods' rows)\n");
-	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated,found_lx,found_ly,found_lz\n");
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated,found_lx,found_ly,found_lz%s\n",
+	        c->arith_given ? ",unbounded_by" : "");
 	for (k = 0; k < nk; k++)
 		for (p = 0; p < 2; p++) {
 			cert_result w;
@@ -799,10 +839,10 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 			whole_sphere(res, t, nt, k, p, &w);
 			if (w.status < 0)
 				continue;
-			csv_row(f, ks[k].name, !ks[k].m, p, &all, &w);
+			csv_row(f, ks[k].name, !ks[k].m, p, &all, &w, c->arith_given);
 			for (i = 0; i < nt; i++)
 				if (t[i].k == k && t[i].prec == p)
-					csv_row(f, ks[k].name, !ks[k].m, p, &reg[p * MAXREG + t[i].reg], &res[i]);
+					csv_row(f, ks[k].name, !ks[k].m, p, &reg[p * MAXREG + t[i].reg], &res[i], c->arith_given);
 		}
 	return ferror(f) ? -1 : 0;
 }
@@ -814,16 +854,19 @@ static void print_summary(const study_kernel *ks, int nk, const task *t, int nt,
 	for (k = 0; k < nk; k++)
 		for (p = 0; p < 2; p++) {
 			cert_result w;
-			int i, cnt[3] = { 0, 0, 0 };
+			int i, cnt[4] = { 0, 0, 0, 0 };
 			whole_sphere(res, t, nt, k, p, &w);
 			if (w.status < 0)
 				continue;
 			for (i = 0; i < nt; i++)
 				if (t[i].k == k && t[i].prec == p)
 					cnt[res[i].status]++;
-			printf("%-24s %-6s %12.4g %12.4g %7.3g  %s (%d/%d/%d)\n", ks[k].name, prec_name(p),
+			printf("%-24s %-6s %12.4g %12.4g %7.3g  %s (%d/%d/%d)", ks[k].name, prec_name(p),
 			       w.bound / unit_of(p), w.found / unit_of(p), w.found > 0 ? w.bound / w.found : NAN,
 			       status_name(w.status), cnt[0], cnt[1], cnt[2]);
+			if (cnt[3])
+				printf(" %d unbounded (%s)", cnt[3], unb_name(w.unb_op));
+			printf("\n");
 		}
 }
 

@@ -18,7 +18,8 @@ cert_ctx *cert_ctx_new(void)
 	mpfr_init2(x->s, 320);
 	x->b = bound_new();
 	x->rc = ref_new(127);
-	if (!x->b || !x->rc) {
+	x->emu = cm_new(CM_EXEC);
+	if (!x->b || !x->rc || !x->emu) {
 		cert_ctx_free(x);
 		return NULL;
 	}
@@ -30,6 +31,7 @@ void cert_ctx_free(cert_ctx *x)
 	if (!x)
 		return;
 	bound_free(x->b);
+	cm_free(x->emu);
 	mpfr_clear(x->t);
 	mpfr_clear(x->s);
 	if (x->rc)

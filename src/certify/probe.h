@@ -19,6 +19,7 @@ void cert_ctx_free(cert_ctx *x);
 struct cert_ctx {
 	bound_ctx *b;
 	ref_ctx *rc;
+	cm *emu;       /* CM_EXEC: --arith's emulations (emulate.h) */
 	mpfr_t t, s;   /* scratch of the completion of an input to unit length */
 };
 

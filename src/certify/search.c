@@ -21,6 +21,7 @@
 #include <string.h>
 #include <mpfr.h>
 #include "search.h"
+#include "emulate.h"
 #include "inputs/inputs.h"
 #include "model/model_int.h"
 #include "found.h"
@@ -290,6 +291,25 @@ static uint64_t region_seed(uint64_t seed, const cert_region *r)
 	return h;
 }
 
+/* --arith: the adversarial emulation (emulate.h) at the region's best
+   inputs; found rises to its worst (a conforming implementation's defect
+   on an input of the region). */
+static void arith_found(probe_env *e, const cm_method *m)
+{
+	unsigned char ch[CM_EMU_MAXOP];
+	emu_eval ev;
+	int i;
+	if (arith_is_ieee(e->o->arith) || m->direction)
+		return;
+	for (i = 0; i < e->res->nkeep && i < 4; i++) {
+		emu_adversarial(e->x->emu, e->x->rc, m, e->prec, e->res->keep_n[i], e->o->arith, 1, ch, &ev);
+		if (isfinite(ev.defect) && ev.defect > e->res->found) {
+			e->res->found = ev.defect;
+			memcpy(e->res->found_n, e->res->keep_n[i], sizeof e->res->found_n);
+		}
+	}
+}
+
 void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec,
                      const cert_region *r, const cert_opts *o, cert_result *res)
 {
@@ -297,6 +317,8 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	mvf_box b;
 	memset(res, 0, sizeof *res);
 	memset(&e, 0, sizeof e);
+	res->unb_op = -1;
+	bound_set_arith(x->b, o->arith);
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
 	double t = study_thread_cpu(), t1;
 	e.rng = region_seed(o->seed, r);
@@ -306,6 +328,7 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	found_walks(&e, 1);
 	found_keep(&e);
 	res->cpu[CERT_T_WALKS] = study_thread_cpu() - t1;
+	arith_found(&e, m);
 	if (region_meets_singular(k, r) || res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
@@ -317,10 +340,13 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	found_walks(&e, 0);
 	found_keep(&e);
 	res->cpu[CERT_T_WALKS] += study_thread_cpu() - t;
+	arith_found(&e, m);
 	res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
+	} else if (!(res->bound < INFINITY) && (res->unb_op = bound_unbounded_op(x->b)) >= 0) {
+		res->status = CERT_UNBOUNDED;
 	}
 }
 
@@ -337,7 +363,7 @@ void cert_region_images(cert_ctx *x, const study_kernel *k, int prec, const cert
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
-	} else if (res->status != CERT_SINGULAR) {
+	} else if (res->status != CERT_SINGULAR && res->status != CERT_UNBOUNDED) {
 		res->status = res->bound <= o->target * res->found ? CERT_PROVEN : CERT_BUDGET;
 	}
 }
@@ -358,6 +384,7 @@ void cert_region_refine(cert_ctx *x, const study_kernel *k, const cm_method *m, 
 	double cpu[2] = { 0.0, 0.0 };
 	if (res->status != CERT_BUDGET)
 		return;
+	bound_set_arith(x->b, o->arith);
 	memset(&e, 0, sizeof e);
 	e.x = x; e.k = k; e.prec = prec; e.r = r; e.o = o; e.res = res;
 	e.rng = region_seed(o->seed ^ UINT64_C(0x726566696e65), r);   /* "refine": other draws */

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "cli/list.h"
+#include "model/arith.h"
 #include "common/options.h"
 
 /* x as %g, every NaN as "nan" (its sign bit differs between CPUs). */
@@ -93,29 +94,35 @@ int cmd_list(int argc, char **argv)
 {
 	static const struct option lo[] = {
 		{ "format", required_argument, NULL, 'f' }, { "axes", no_argument, NULL, 'a' },
-		{ "aliases", no_argument, NULL, 'l' },
+		{ "aliases", no_argument, NULL, 'l' }, { "arith", no_argument, NULL, 'r' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t n, i;
 	const onb_method *m = onb_methods(&n);
-	int csv = 0, axes = 0, aliases = 0, v, rc = 0;
+	int csv = 0, axes = 0, aliases = 0, arith = 0, v, rc = 0;
 	cli_args c;
 	if (cli_begin(&c, "list", argc, argv))
 		return 1;
 	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
 		if (v == CLI_HELP) {
-			printf("usage: onbstudy list [--axes | --aliases] [--format table|csv]\n"
+			printf("usage: onbstudy list [--axes | --aliases | --arith] [--format table|csv]\n"
 			       "  The methods in the registry: name, handedness, singular directions, source;\n"
 			       "  then the aliases (an engine's code that is a method bit for bit).\n"
 			       "  CSV: one row per method, with the provenance of shipped code (repository,\n"
 			       "  commit, path:lines, license, language, precision, build).\n"
 			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there.\n"
-			       "  --aliases: the aliases alone (target, precisions, exceptions, provenance).\n");
+			       "  --aliases: the aliases alone (target, precisions, exceptions, provenance).\n"
+			       "  --arith: the arithmetic profiles of certify/sweep/eval --arith, per format:\n"
+			       "  each operation's allowance (RN: round to nearest; Nulp; rel: relative;\n"
+			       "  ulp24: in float ulps; mul+add, 1/rsqrt, x*rcp: performed as those;\n"
+			       "  none: unspecified), flushing, contraction, reassociation, zero signs.\n");
 			rc = -1;
 		} else if (v == 'a') {
 			axes = 1;
 		} else if (v == 'l') {
 			aliases = 1;
+		} else if (v == 'r') {
+			arith = 1;
 		} else if (v != 'f' || (csv = cli_format("--format", c.arg, 0)) < 0) {
 			rc = ONB_EXIT_USAGE;
 		}
@@ -125,9 +132,22 @@ int cmd_list(int argc, char **argv)
 	cli_end(&c);
 	if (rc)
 		return rc < 0 ? 0 : rc;
-	if (axes && aliases) {
-		study_error("list: --axes and --aliases exclude each other");
+	if (axes + aliases + arith > 1) {
+		study_error("list: --axes, --aliases and --arith exclude each other");
 		return ONB_EXIT_USAGE;
+	}
+	if (arith) {
+		int i2;
+		arith_print_table();
+		printf("\n");
+		for (i2 = 0; i2 < arith_count(); i2++) {
+			const arith_profile *p = arith_at(i2);
+			printf("%s: %s\n  spec: %s\n  float: %s\n  double: %s\n  half: %s\n  built-ins: %s\n", p->name, p->title,
+			       p->spec, p->fmt[PREC_FLOAT].note, p->fmt[PREC_DOUBLE].note,
+			       p->fmt[PREC_HALF].note ? p->fmt[PREC_HALF].note : "not transcribed here: every operation unbounded",
+			       p->compose);
+		}
+		return 0;
 	}
 	if (axes) {
 		list_axes(m, n, csv);

@@ -108,23 +108,52 @@ void cm_exec_begin(cm *c, int f, const double n[3], cv in[3])
 	int i;
 	c->n = 0;
 	c->failed = 0;
+	c->emu_k = 0;
+	c->exec_f = f;
 	for (i = 0; i < 3; i++) {
 		c->x[c->n] = cm_round(c, f, n[i]);
+		c->pa[c->n] = c->pb[c->n] = -1;
 		in[i] = c->n++;
 	}
 }
 
 double cm_value(const cm *c, cv v) { return c->x[v]; }
 
-static cv put(cm *c, double v)
+cv cm__put(cm *c, double v)
 {
 	if (c->n >= CM_MAXV) {
 		c->failed = 1;
 		return CM_MAXV - 1;
 	}
 	c->x[c->n] = v;
+	c->pa[c->n] = c->pb[c->n] = -1;
 	return c->n++;
 }
+#define put cm__put
+
+void cm_set_arith(cm *c, const arith_profile *p)
+{
+	c->ar = arith_is_ieee(p) ? NULL : p;
+	if (c->m)
+		mvf_set_arith(c->m, c->ar);
+}
+
+const arith_profile *cm_arith(const cm *c) { return c->ar ? c->ar : arith_ieee(); }
+int cm_unbounded_op(const cm *c) { return c->m ? mvf_unbounded_op(c->m) : -1; }
+
+void cm_set_emu(cm *c, int mode, unsigned long long seed, const unsigned char *choice, int n)
+{
+	c->emu_mode = mode;
+	c->emu_rng = seed;
+	c->emu_choice = choice;
+	c->emu_nchoice = n;
+}
+
+int cm_emu_ops(const cm *c) { return c->emu_k; }
+unsigned cm_emu_avail(const cm *c, int k) { return k >= 0 && k < CM_EMU_MAXOP ? c->emu_avail[k] : 0u; }
+
+/* An operation of CM_EXEC under a profile (emu.c). */
+#define EMU(op, f, a, b, d) if (c->ar && c->backend == CM_EXEC) return cm__emu_op(c, op, f, a, b, d)
 
 /* Round an exactly-or-correctly computed double to format f (through a
    volatile: GCC 12.2 at -O2 can drop a (double)(float) rounding, see
@@ -148,36 +177,42 @@ cv cm_cst(cm *c, double v)
 
 cv cm_add(cm *c, int f, cv a, cv b)
 {
+	EMU(MVF_ADD, f, a, b, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_ADD, f, a, b, -1)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_ADD, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] + c->x[b]));
 }
 cv cm_sub(cm *c, int f, cv a, cv b)
 {
+	EMU(MVF_SUB, f, a, b, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_SUB, f, a, b, -1)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_SUB, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] - c->x[b]));
 }
 cv cm_mul(cm *c, int f, cv a, cv b)
 {
+	EMU(MVF_MUL, f, a, b, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_MUL, f, a, b, -1)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_MUL, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] * c->x[b]));
 }
 cv cm_div(cm *c, int f, cv a, cv b)
 {
+	EMU(MVF_DIV, f, a, b, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_DIV, f, a, b, -1)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_DIV, c->x[a], c->x[b], 0.0))
 	                            : put(c, fmt(f, c->x[a] / c->x[b]));
 }
 cv cm_sqrt(cm *c, int f, cv a)
 {
+	EMU(MVF_SQRT, f, a, -1, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_SQRT, f, a, -1, -1)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_SQRT, c->x[a], 0.0, 0.0))
 	                            : put(c, fmt(f, sqrt(c->x[a])));
 }
 cv cm_fma(cm *c, int f, cv a, cv b, cv d)
 {
+	EMU(MVF_FMA, f, a, b, d);
 	if (c->backend == CM_MVF)
 		return mvf_op(c->m, MVF_FMA, f, a, b, d);
 	if (f == PREC_HALF)
@@ -188,6 +223,7 @@ cv cm_fma(cm *c, int f, cv a, cv b, cv d)
 }
 cv cm_cvt(cm *c, int f, cv a)
 {
+	EMU(MVF_CVT, f, a, -1, -1);
 	return c->backend == CM_MVF ? mvf_op(c->m, MVF_CVT, f, a, -1, -1) : put(c, cm_round(c, f, c->x[a]));
 }
 cv cm_neg(cm *c, cv a)
@@ -224,6 +260,9 @@ cv cm_seed(cm *c, seed_kind k, cv a)
 cv cm_newton(cm *c, int f, cv x, cv y)
 {
 	double h, t;
+	if (c->ar)   /* a profile: the operations one by one, as the kernel does them */
+		return cm_mul(c, f, y, cm_sub(c, f, cm_cst(c, 1.5),
+		              cm_mul(c, f, cm_mul(c, f, cm_mul(c, f, cm_cst(c, 0.5), x), y), y)));
 	if (c->backend == CM_MVF)
 		return mvf_newton(c->m, f, x, y, 0);
 	h = cm_round(c, f, 0.5 * c->x[x]);   /* each product and difference exact in double for float and half operands */
@@ -282,6 +321,8 @@ static int take(cm *c, int id, int exec_side, int lo_possible, int hi_possible)
 int cm_branch(cm *c, int id, int op, cv a, cv b)
 {
 	int t = 0, f = 0;
+	if (c->ar)
+		cm__emu_read2(c, &a, &b);
 	if (c->backend == CM_EXEC)
 		return op == CM_LT ? c->x[a] < c->x[b] : c->x[a] > c->x[b];
 	mvf_compare(c->m, op, 0, a, b, &t, &f);
@@ -294,6 +335,8 @@ int cm_branch(cm *c, int id, int op, cv a, cv b)
 int cm_branch_abs(cm *c, int id, int op, cv a, cv b)
 {
 	int t = 0, f = 0;
+	if (c->ar)
+		cm__emu_read2(c, &a, &b);
 	if (c->backend == CM_EXEC)
 		return op == CM_LT ? fabs(c->x[a]) < fabs(c->x[b]) : fabs(c->x[a]) > fabs(c->x[b]);
 	mvf_compare(c->m, op, 1, a, b, &t, &f);
@@ -306,6 +349,10 @@ int cm_branch_abs(cm *c, int id, int op, cv a, cv b)
 int cm_branch_sign(cm *c, int id, cv a)
 {
 	int t = 0, f = 0;
+	if (c->ar && c->backend == CM_EXEC)
+		return cm__emu_sign(c, a);
+	if (c->ar)
+		a = mvf_read(c->m, a);
 	if (c->backend == CM_EXEC)
 		return signbit(c->x[a]) != 0;
 	mvf_sign_possible(c->m, a, &t, &f);

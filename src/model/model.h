@@ -88,4 +88,34 @@ double cm_round(cm *c, int f, double v);
 /* CM_EXEC: the value of handle v (in its format, widened to double). */
 double cm_value(const cm *c, cv v);
 
+/* Arithmetic profiles (arith.h).  cm_set_arith: the profile of the runs to
+   come (NULL or ieee: the IEEE model, unchanged).  Under another profile,
+   CM_MVF widens every operation's enclosure by the profile's allowance
+   (mvf.c), and cm_unbounded_op names the operation kind (AR_*) whose
+   allowance left the last run without a bound (-1: none).  CM_EXEC then
+   emulates a conforming implementation: each operation takes its
+   round-to-nearest result (CM_EMU_NEAREST), a random allowed result
+   (CM_EMU_RANDOM, from seed), or the choice given for it (CM_EMU_CHOICE:
+   choice[k] for the k-th operation of the run, 0 beyond n): CM_CH_LO the
+   lowest allowed result, CM_CH_HI the highest, both a random one; operands
+   (FLUSH_IN) or the result (FLUSH_OUT) flushed where subnormal; a product
+   read exact in the sum it feeds (FUSE: a contraction); a zero's sign
+   read the other way (ZSIGN, at a sign test).  cm_emu_avail: the bits
+   that made a difference to operation k of the last run. */
+#include "arith.h"
+void cm_set_arith(cm *c, const arith_profile *p);
+const arith_profile *cm_arith(const cm *c);
+int  cm_unbounded_op(const cm *c);
+enum { CM_EMU_NEAREST = 0, CM_EMU_RANDOM, CM_EMU_CHOICE };
+#define CM_CH_LO        1u
+#define CM_CH_HI        2u
+#define CM_CH_FLUSH_IN  4u
+#define CM_CH_FLUSH_OUT 8u
+#define CM_CH_FUSE      16u
+#define CM_CH_ZSIGN     32u
+#define CM_EMU_MAXOP    512
+void cm_set_emu(cm *c, int mode, unsigned long long seed, const unsigned char *choice, int n);
+int  cm_emu_ops(const cm *c);
+unsigned cm_emu_avail(const cm *c, int k);
+
 #endif

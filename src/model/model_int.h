@@ -6,6 +6,7 @@
 #define ONB_CERTIFY_MODEL_INT_H
 
 #include "model.h"
+#include "arith.h"
 
 #define CM_MAXV 256   /* values of one model run (the largest uses ~90)   */
 
@@ -51,6 +52,18 @@ struct cm {
 	int cross_kind;
 	double cross_u, cross_eta;
 	struct cm_half *half;  /* CM_EXEC in binary16: MPFR scratch (model.c) */
+	/* An arithmetic profile other than ieee (cm_set_arith), or NULL; and
+	   CM_EXEC's emulation of a conforming implementation under it
+	   (cm_set_emu): mode, generator, the choices of the operations, the
+	   choice bits that applied to each operation of the last run, the
+	   operations counted, and the products (value v = x[pa[v]] * x[pb[v]]
+	   rounded; -1 none) a contraction may read exact. */
+	const arith_profile *ar;
+	int emu_mode, emu_nchoice, emu_k, exec_f;
+	unsigned long long emu_rng;
+	const unsigned char *emu_choice;
+	unsigned char emu_avail[CM_EMU_MAXOP];
+	short pa[CM_MAXV], pb[CM_MAXV];
 };
 
 /* CM_EXEC: start a run on input n (rounded to format f); in[] receives the
@@ -74,6 +87,13 @@ void cm_formula_exact_n(cm *c, unsigned zero, unsigned norm);
 void cm_formula_zero_after(cm *c, unsigned zero);
 int  mvf_nvar(const mvf *m);
 
+/* model.c and emu.c: CM_EXEC's values, and its emulation of a conforming
+   implementation under a profile (model.h, cm_set_emu). */
+cv   cm__put(cm *c, double v);
+cv   cm__emu_op(cm *c, int op, int f, cv a, cv b, cv d);
+void cm__emu_read2(cm *c, cv *a, cv *b);   /* comparison operands as read */
+int  cm__emu_sign(cm *c, cv a);            /* CM_EXEC's sign test         */
+
 /* mvf.c */
 enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG };
 mvf *mvf_new(void);
@@ -92,5 +112,12 @@ void mvf_sign_possible(mvf *m, cv a, int *can_set, int *can_clear);
 void mvf_constrain(mvf *m, int op, int absolute, cv a, cv b, int side);
 void mvf_constrain_sign(mvf *m, cv a, int set);
 void mvf_note_strict(mvf *m, int op, int absolute, cv a, cv b, int side);
+/* Arithmetic profiles (arith.h; mvf.c's last section): the profile of the
+   runs to come (NULL or ieee: the IEEE model as it is), the operation kind
+   (AR_*) that left this run unbounded (-1: none), and operand a as a
+   comparison reads it (flushed where it may be subnormal). */
+void mvf_set_arith(mvf *m, const arith_profile *p);
+int  mvf_unbounded_op(const mvf *m);
+cv   mvf_read(mvf *m, cv a);
 
 #endif

@@ -31,6 +31,7 @@
 #include "model_int.h"
 #include "mvf.h"
 #include "newton_f.h"
+#include "arith.h"
 
 #define MV_PREC   80
 #define MV_MAXVAR 192
@@ -60,6 +61,10 @@ typedef struct {
 	   What the actual value is known to be (not the points between u and
 	   n): nonzero, an integer multiple of quantum (0: unknown), at least
 	   act_lo in magnitude; sub_a, sub_b: an exact a - b (-1: not one). */
+	/* An arithmetic profile's run (mvf_set_arith): the value is a rounded
+	   product pa * pb (or its negation, pneg), which a contracting
+	   implementation may read exact where it feeds a sum (-1: none). */
+	int pa, pb, pneg;
 	int base, bsign, theta_free, nonzero, opaque;
 	double quantum, act_lo;
 	cv sub_a, sub_b;
@@ -107,6 +112,11 @@ struct mvf {
 	int zero_e;            /* every e is 0: values only, no gradients */
 	int nograd;            /* values over the whole box, no gradients */
 	int centred;           /* with zero_e: gradients in the inputs' offsets */
+	/* An arithmetic profile other than ieee (arith.h), or NULL; unb_op:
+	   the first operation (AR_ kind) whose allowance gave no bound in this
+	   run (-1: none). */
+	const arith_profile *ar;
+	int unb_op;
 	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
 	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
 	mpfi_t one, mone;
@@ -223,6 +233,8 @@ static cv fresh(mvf *m, int fmt)
 	x->ls_sg = 1;
 	x->tg_p = 0;
 	x->tg_var = -1;
+	x->pa = x->pb = -1;
+	x->pneg = 0;
 	return m->n++;
 }
 
@@ -1398,9 +1410,13 @@ static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
 	}
 }
 
+static cv prof_op(mvf *m, int op, int f, cv ia, cv ib, cv id);
 cv mvf_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 {
-	cv ir = op_value(m, op, f, ia, ib, id);
+	cv ir;
+	if (m->ar)
+		return prof_op(m, op, f, ia, ib, id);
+	ir = op_value(m, op, f, ia, ib, id);
 	len_track(m, op, f, ir, ia, ib, id);
 	return ir;
 }
@@ -1562,6 +1578,7 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->failed = 0;
 	m->no_point = 0;
 	m->grad_lost = 0;
+	m->unb_op = -1;
 	m->nst = 0;
 	m->tol = b->tolerance;
 	m->nh[0] = m->nh[1] = m->nh[2] = 0.0;
@@ -2008,7 +2025,7 @@ int mvf_scaled_of(const mvf *m, const cv out[3], const cv q[3], double *u, doubl
 {
 	int i, k = -1;
 	*u = *eta = 0.0;
-	if (m->failed || m->zero_e)
+	if (m->failed || m->zero_e || m->ar)
 		return 0;
 	for (i = 0; i < 3; i++) {
 		const mval *b = &m->val[out[i]];
@@ -2043,9 +2060,9 @@ void mvf_quantities(mvf *m, const cv n[3], const cv out[6], cv q[5])
 {
 	int i;
 	for (i = 0; i < 2; i++)
-		m->len_ok[i] = !m->failed && !m->zero_e && len_direct(m, out + 3 * i, &m->len_lo[i], &m->len_hi[i]);
+		m->len_ok[i] = !m->ar && !m->failed && !m->zero_e && len_direct(m, out + 3 * i, &m->len_lo[i], &m->len_hi[i]);
 	for (i = 0; i < 2; i++)
-		m->orth_ok[i] = !m->failed && !m->zero_e && orth_direct(m, out + 3 * i, n, &m->orth_u[i], &m->orth_eta[i]);
+		m->orth_ok[i] = !m->ar && !m->failed && !m->zero_e && orth_direct(m, out + 3 * i, n, &m->orth_u[i], &m->orth_eta[i]);
 	cv one = mvf_cst(m, 1.0);
 	/* |b|^2 - 1, not |b| - 1: a wide box's b.b can reach 0, where the
 	   derivative of the square root is unbounded (bound.c converts) */
@@ -2213,7 +2230,7 @@ cv mvf_newton_embree(mvf *m, int f, cv ix, cv iy, int fused)
 	const mval *x = &m->val[ix];
 	mval *r;
 	double e;
-	if (m->failed || newton_rel(m, f, ix, iy, k) < 0.0)
+	if (m->ar || m->failed || newton_rel(m, f, ix, iy, k) < 0.0)
 		return -1;
 	ir = newton_common(m, f, ix, iy, k);
 	r = &m->val[ir];
@@ -2258,4 +2275,237 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 	grad_lin(m, r, x, m->s2, NULL, NULL);
 	set_grad(r, new_var(m, e), m->s1);
 	return ir;
+}
+
+/* ---- Arithmetic profiles (arith.h) ----
+   Under a profile other than ieee, every operation is the exact operation
+   on its operands as read, plus one error term of the size the profile
+   allows (arith_err_abs: ulps of the result's binade, or relative, plus
+   the smallest normal where a result may be flushed).  None of the tags
+   above (norm, length, cross, Newton, Sterbenz's and round_sum's
+   nearest-only caps) are used: they were proven for round to nearest.
+   Exactness is kept only where every allowed result is the exact one: a
+   product by 0 or +-1, a sum with 0, a widening (each in the format, and
+   no flush where the result can be subnormal).
+   An operand that may be subnormal may be read as 0 (a term of the
+   smallest normal at that use alone), and under contraction a rounded
+   product that feeds a sum is read again with a fresh rounding term: the
+   term's range holds 0 (the fused a*b + c, one rounding, of an allowance
+   no wider than the sum's) and the shared product's own rounding. */
+
+void mvf_set_arith(mvf *m, const arith_profile *p) { m->ar = arith_is_ieee(p) ? NULL : p; }
+int mvf_unbounded_op(const mvf *m) { return m->unb_op; }
+
+static void mag_range(mvf *m, mpfi_srcptr v, double *vmin, double *vmax)
+{
+	mpfi_mig(m->f1, v);
+	*vmin = mpfr_get_d(m->f1, MPFR_RNDD);
+	mpfi_mag(m->f1, v);
+	*vmax = mpfr_get_d(m->f1, MPFR_RNDU);
+}
+
+/* x += [-h, h] with a fresh error term (nothing in a run with every e 0);
+   no sign is kept: an allowance of several ulps can cross 0. */
+static void prof_term(mvf *m, cv ix, double h, int op)
+{
+	mval *x = &m->val[ix];
+	if (m->zero_e || h == 0.0)
+		return;
+	if (!(h < INFINITY)) {
+		if (m->unb_op < 0)
+			m->unb_op = op;
+		m->failed = 1;
+		return;
+	}
+	set_grad(x, new_var(m, h), m->one);
+	mpfi_interv_d(m->t1, -h, h);
+	mpfi_add(x->v, x->v, m->t1);
+}
+
+/* A copy of value ia in a fresh slot (value, gradient, format). */
+static cv prof_copy(mvf *m, cv ia)
+{
+	cv ir = fresh(m, m->val[ia].fmt);
+	mval *r = &m->val[ir];
+	mpfi_set(r->v, m->val[ia].v);
+	copy_grad(m, r, &m->val[ia]);
+	r->fmt = m->val[ia].fmt;
+	return ir;
+}
+
+/* Operand ia as an operation reads it (fuse: the operation is a sum, into
+   which a product may be contracted). */
+static cv prof_read(mvf *m, cv ia, int fuse)
+{
+	const mval *a = &m->val[ia];
+	double vmin, vmax;
+	cv ir = ia;
+	if (fuse && m->ar->contract && a->pa >= 0) {
+		const int neg = a->pneg, fa = a->fmt;
+		ir = fresh(m, fa);
+		if (!exact_eval(m, MVF_MUL, &m->val[ir], &m->val[a->pa], &m->val[a->pb], NULL)) {
+			m->failed = 1;
+			return ir;
+		}
+		mag_range(m, m->val[ir].v, &vmin, &vmax);
+		prof_term(m, ir, arith_err_abs(m->ar, AR_MUL, fa, vmin, vmax), AR_MUL);
+		if (neg) {
+			cv in = fresh(m, fa);
+			exact_eval(m, MVF_NEG, &m->val[in], &m->val[ir], NULL, NULL);
+			ir = in;
+		}
+		a = &m->val[ir];
+	}
+	if (a->is_cst || !m->ar->fmt[a->fmt].flush)
+		return ir;
+	mag_range(m, a->v, &vmin, &vmax);
+	if (vmin >= arith_normal_min(a->fmt))
+		return ir;
+	if (ir == ia)
+		ir = prof_copy(m, ia);
+	prof_term(m, ir, arith_normal_min(a->fmt), -1);
+	return ir;
+}
+
+cv mvf_read(mvf *m, cv ia)
+{
+	return m->ar && !m->failed ? prof_read(m, ia, 0) : ia;
+}
+
+static int prof_kind(int op)
+{
+	switch (op) {
+	case MVF_ADD: return AR_ADD;
+	case MVF_SUB: return AR_SUB;
+	case MVF_MUL: return AR_MUL;
+	case MVF_DIV: return AR_DIV;
+	case MVF_SQRT: return AR_SQRT;
+	case MVF_FMA: return AR_FMA;
+	default: return AR_CVT;
+	}
+}
+
+/* Every allowed result is the exact one (see above). */
+static int prof_exact(mvf *m, int op, int f, const mval *a, const mval *b, const mval *r)
+{
+	double vmin, vmax;
+	int ok;
+	switch (op) {
+	case MVF_NEG: return 1;
+	case MVF_CVT: ok = f == PREC_DOUBLE || a->fmt == PREC_FLOAT; break;
+	case MVF_MUL:
+		ok = is_zero(a) || is_zero(b) || ((is_cst(a, 1.0) || is_cst(a, -1.0)) && b->fmt <= f) ||
+		     ((is_cst(b, 1.0) || is_cst(b, -1.0)) && a->fmt <= f);
+		break;
+	case MVF_ADD: case MVF_SUB:
+		ok = (is_zero(a) && b->fmt <= f) || (is_zero(b) && a->fmt <= f);
+		break;
+	default: return 0;
+	}
+	if (!ok || !m->ar->fmt[f].flush)
+		return ok;
+	mag_range(m, r->v, &vmin, &vmax);
+	return vmax == 0.0 || vmin >= arith_normal_min(f);
+}
+
+/* The exact operation on the operands as read, then the allowance of
+   kind k in format f. */
+static cv prof_round(mvf *m, int op, int k, int f, cv ia, cv ib, cv id)
+{
+	const int fuse = op == MVF_ADD || op == MVF_SUB;
+	cv xa = prof_read(m, ia, fuse), xb = ib >= 0 ? prof_read(m, ib, fuse) : -1, xd = id >= 0 ? prof_read(m, id, 1) : -1;
+	cv ir = fresh(m, f);
+	mval *r = &m->val[ir];
+	const mval *a = &m->val[xa], *b = xb >= 0 ? &m->val[xb] : NULL;
+	double vmin, vmax;
+	if (m->failed)
+		return ir;
+	if (op == MVF_DIV && m->ar->fmt[f].div_lo > 0.0) {   /* the allowance's range of |y| */
+		mag_range(m, b->v, &vmin, &vmax);
+		if (vmin < m->ar->fmt[f].div_lo || vmax > m->ar->fmt[f].div_hi) {
+			prof_term(m, ir, INFINITY, k);
+			return ir;
+		}
+	}
+	if (a->opaque || (b && b->opaque) || !exact_eval(m, op, r, a, b, xd >= 0 ? &m->val[xd] : NULL) ||
+	    mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)) {
+		m->failed = 1;
+		return ir;
+	}
+	if (op == MVF_NEG) {
+		r->fmt = a->fmt;
+		r->pa = a->pa; r->pb = a->pb; r->pneg = !a->pneg;
+		return ir;
+	}
+	if (prof_exact(m, op, f, a, b, r)) {
+		if (op == MVF_CVT && a->fmt < r->fmt)
+			r->fmt = a->fmt;
+		return ir;
+	}
+	mag_range(m, r->v, &vmin, &vmax);
+	prof_term(m, ir, arith_err_abs(m->ar, k, f, vmin, vmax), k);
+	if (op == MVF_MUL) {
+		r->pa = xa;
+		r->pb = xb;
+	}
+	return ir;
+}
+
+/* An exact 1/sqrt(a) (two exact steps), then the allowance of kind k. */
+static cv prof_rsqrt(mvf *m, int k, int f, cv ia)
+{
+	cv xa = prof_read(m, ia, 0), is = fresh(m, f), ir = fresh(m, f);
+	double vmin, vmax;
+	if (m->failed)
+		return ir;
+	if (!exact_eval(m, MVF_SQRT, &m->val[is], &m->val[xa], NULL, NULL) ||
+	    !exact_eval(m, MVF_DIV, &m->val[ir], &m->val[mvf_cst(m, 1.0)], &m->val[is], NULL) ||
+	    !mpfi_bounded_p(m->val[ir].v)) {
+		m->failed = 1;
+		return ir;
+	}
+	mag_range(m, m->val[ir].v, &vmin, &vmax);
+	prof_term(m, ir, arith_err_abs(m->ar, k, f, vmin, vmax), k);
+	return ir;
+}
+
+/* An exact 1/b, then the allowance of a reciprocal (Direct3D's rcp). */
+static cv prof_rcp(mvf *m, int f, cv ib)
+{
+	cv xb = prof_read(m, ib, 0), ir = fresh(m, f);
+	double vmin, vmax;
+	if (m->failed)
+		return ir;
+	if (!exact_eval(m, MVF_DIV, &m->val[ir], &m->val[mvf_cst(m, 1.0)], &m->val[xb], NULL) ||
+	    !mpfi_bounded_p(m->val[ir].v)) {
+		m->failed = 1;
+		return ir;
+	}
+	mag_range(m, m->val[ir].v, &vmin, &vmax);
+	prof_term(m, ir, arith_err_abs(m->ar, AR_RCP, f, vmin, vmax), AR_RCP);
+	return ir;
+}
+
+static cv prof_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
+{
+	const int k = prof_kind(op);
+	const ar_allow *al = &m->ar->fmt[f].op[k];
+	if (m->failed)
+		return fresh(m, f);
+	if (op == MVF_CVT && (f == PREC_DOUBLE || m->val[ia].fmt == PREC_FLOAT))
+		return prof_round(m, op, k, f, ia, ib, id);   /* a widening: exact whatever the profile */
+	if (op != MVF_NEG && al->how == AR_NONE) {
+		cv ir = fresh(m, f);
+		prof_term(m, ir, INFINITY, k);
+		return ir;
+	}
+	if (op != MVF_NEG && al->how == AR_SPLIT) {
+		if (op == MVF_FMA)      /* a product, then a sum: two roundings */
+			return prof_op(m, MVF_ADD, f, prof_op(m, MVF_MUL, f, ia, ib, -1), id, -1);
+		if (op == MVF_SQRT)     /* 1.0/inversesqrt(a) */
+			return prof_op(m, MVF_DIV, f, mvf_cst(m, 1.0), prof_rsqrt(m, AR_RSQRT, f, ia), -1);
+		if (op == MVF_DIV)      /* a * rcp(b) */
+			return prof_op(m, MVF_MUL, f, ia, prof_rcp(m, f, ib), -1);
+	}
+	return prof_round(m, op, k, f, ia, ib, id);
 }

@@ -1,0 +1,228 @@
+/*
+ * arith.c - the arithmetic profiles (arith.h) as data, each row with the
+ * specification section it comes from.  docs/gpu.md prints this table
+ * (`onbstudy list --arith`) and says what each reading assumes.
+ *
+ * Readings (each a choice; docs/gpu.md gives the reasons):
+ *  - "Correctly rounded" without a fixed rounding mode (Vulkan without
+ *    RoundingModeRTE, Direct3D 11's "truncation allowed") is read as
+ *    either neighbouring float: |r - v| < 1 ulp.
+ *  - An ulp is that of the exact result's binade, 2^(E - p + 1) for
+ *    2^E <= |v| < 2^(E+1), E at least the format's smallest normal exponent.
+ *  - Vulkan's "the precision of double-precision instructions is at least
+ *    that of single precision": a double operation may err by the float
+ *    allowance in float ulps (ulp_bits 24), with double's exponent range.
+ *  - Flushing (Vulkan without DenormPreserve, Direct3D 11, CUDA -ftz,
+ *    OpenCL single precision without CL_FP_DENORM) may happen at every
+ *    operand and result, independently at each use.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "arith.h"
+#include "common/prec.h"
+
+#define RN    { AR_RN, 0.0 }
+#define ULP(x) { AR_ULP, (x) }
+#define REL(x) { AR_REL, (x) }
+#define SPLIT { AR_SPLIT, 0.0 }
+#define NONE  { AR_NONE, 0.0 }
+
+/*                          add     sub     mul     div        rcp        sqrt      rsqrt     fma    cvt */
+#define IEEE_OPS      { RN,     RN,     RN,     RN,        RN,        RN,       RN,       RN,    RN }
+#define VK_OPS        { ULP(1), ULP(1), ULP(1), ULP(2.5),  ULP(2.5),  SPLIT,    ULP(2),   SPLIT, ULP(1) }
+#define D3D_OPS       { ULP(1), ULP(1), ULP(1), SPLIT,     REL(0x1p-21), REL(0x1p-21), REL(0x1p-21), SPLIT, ULP(1) }
+#define CL_F_OPS      { RN,     RN,     RN,     ULP(2.5),  ULP(2.5),  ULP(3),   ULP(2),   RN,    RN }
+#define CL_D_OPS      { RN,     RN,     RN,     RN,        RN,        RN,       ULP(2),   RN,    RN }
+#define CUDA_F_OPS    { RN,     RN,     RN,     ULP(2),    ULP(2),    ULP(3),   ULP(2),   RN,    RN }
+#define NONE_OPS      { NONE,   NONE,   NONE,   NONE,      NONE,      NONE,     NONE,     NONE,  NONE }
+
+static const arith_profile profiles[] = {
+	{ "ieee", "IEEE 754 binary32/binary64, round to nearest, no contraction, subnormals kept (the C kernels as built)", 1,
+	  { { IEEE_OPS, 24, 0, 0.0, INFINITY, "IEEE 754-2019 section 4.3.1 (roundTiesToEven)" },
+	    { IEEE_OPS, 53, 0, 0.0, INFINITY, "IEEE 754-2019 section 4.3.1" },
+	    { IEEE_OPS, 11, 0, 0.0, INFINITY, "IEEE 754-2019 section 4.3.1" } },
+	  0, 0, 0, "IEEE 754-2019; ISO C99 F.3 (FP_CONTRACT off: the Makefile's -ffp-contract=off)",
+	  "dot, cross, normalize, length: the C source's own operations; copysign exact" },
+	{ "vulkan", "Vulkan 1.3 / SPIR-V without NoContraction, RoundingModeRTE, DenormPreserve or SignedZeroInfNanPreserve", 0,
+	  { { VK_OPS, 24, 1, 0x1p-126, 0x1p126,
+	      "OpFAdd/OpFSub/OpFMul/OpFConvert correctly rounded (rounding mode not fixed: < 1 ulp); OpFDiv 2.5 ulp for |y| in [2^-126, 2^126]; InverseSqrt 2 ulp; Sqrt inherited from 1.0/InverseSqrt; Fma inherited from OpFMul then OpFAdd" },
+	    { VK_OPS, 24, 1, 0x1p-126, 0x1p126,
+	      "\"the precision of double-precision instructions is at least that of single precision\": the float allowances, in float ulps" } },
+	  1, 1, 1, "Vulkan 1.3 spec, Appendix A (Vulkan Environment for SPIR-V): Precision and Operation of SPIR-V Instructions; SPIR-V 1.6 section 3.20 (NoContraction), 3.6 (DenormPreserve, SignedZeroInfNanPreserve); GLSL 4.60 section 4.7.1",
+	  "dot: OpFMul and OpFAdd; cross: OpFMul and OpFSub; length: Sqrt(Dot); normalize: x * InverseSqrt(Dot(x, x)); FAbs, FSign exact (GLSL sign(0) = 0); no copysign in GLSL" },
+	{ "vulkan-precise", "Vulkan 1.3 / SPIR-V with NoContraction on every operation (GLSL precise): no fusion, no reassociation", 0,
+	  { { VK_OPS, 24, 1, 0x1p-126, 0x1p126, "as vulkan, NoContraction on every operation" },
+	    { VK_OPS, 24, 1, 0x1p-126, 0x1p126, "as vulkan: single-precision allowances" } },
+	  0, 0, 1, "as vulkan; SPIR-V 1.6 section 3.20 NoContraction: no fusing into one operation, no reassociation",
+	  "as vulkan; an explicit fma() is still Fma, inherited from OpFMul then OpFAdd (two roundings)" },
+	{ "d3d11", "Direct3D 11 floating-point rules (HLSL without precise)", 0,
+	  { { D3D_OPS, 24, 1, 0.0, INFINITY,
+	      "add/sub/mul 0.5 ulp \"truncation allowed\" (read: < 1 ulp); rcp, rsq 2^-21 relative; x/y as x * rcp(y); sqrt read as rsq's 2^-21 (no separate figure); mad fused or two roundings; denormals flushed to sign-preserved zero" },
+	    { NONE_OPS, 53, 0, 0.0, INFINITY, "the Direct3D 11 double-precision rules are not transcribed here: nothing proven" } },
+	  1, 1, 0, "Direct3D 11 Programming Guide, Floating-point rules (32-bit floating-point rules)",
+	  "dot, cross, normalize, length: mul and add/mad; rsqrt: rsq; sign, abs exact" },
+	{ "opencl", "OpenCL C 3.0 full profile, default build options (FP_CONTRACT on, no -cl-fast-relaxed-math)", 0,
+	  { { CL_F_OPS, 24, 1, 0.0, INFINITY,
+	      "x+y, x-y, x*y, fma correctly rounded; x/y and 1/x 2.5 ulp; sqrt 3 ulp; rsqrt 2 ulp; denormals optional (CL_FP_DENORM): may flush" },
+	    { CL_D_OPS, 53, 0, 0.0, INFINITY, "x+y, x-y, x*y, x/y, 1/x, sqrt, fma correctly rounded; rsqrt 2 ulp; denormals supported" } },
+	  1, 0, 0, "OpenCL C 3.0 section 7.4 (Relative Error as ULPs), 7.5 (Edge Case Behavior in Flush To Zero Mode), 6.13.2 (FP_CONTRACT)",
+	  "dot, cross, length, normalize built-ins have their own ulp bounds (normalize 2 + n ulp); the C kernels use +, *, /, sqrt" },
+	{ "cuda-fast", "CUDA with --use_fast_math (-ftz=true -prec-div=false -prec-sqrt=false -fmad=true)", 0,
+	  { { CUDA_F_OPS, 24, 1, 0x1p-126, 0x1p126,
+	      "x/y 2 ulp for |y| in [2^-126, 2^126]; sqrtf 3 ulp; rsqrtf 2 ulp; +, -, *, fmaf IEEE; flushed to zero (NVIDIA: bounds tested, not guaranteed)" },
+	    { IEEE_OPS, 53, 0, 0.0, INFINITY, "fast math does not change double precision (but -fmad=true contracts it)" } },
+	  1, 0, 0, "CUDA C++ Programming Guide, Mathematical Functions appendix (single-precision functions, intrinsic functions) and nvcc --use_fast_math",
+	  "no dot/normalize built-ins in C++: the source's own operations" },
+	{ "contract-any", "IEEE rounding, every a*b + c may be fused or not (GCC -ffp-contract=fast, clang's default on arm64, shader compilers)", 0,
+	  { { IEEE_OPS, 24, 0, 0.0, INFINITY, "IEEE round to nearest; contraction per ISO C99 6.5 paragraph 8 and beyond" },
+	    { IEEE_OPS, 53, 0, 0.0, INFINITY, "the same" },
+	    { IEEE_OPS, 11, 0, 0.0, INFINITY, "the same" } },
+	  1, 0, 0, "ISO C99 6.5 paragraph 8 and 7.12.2 (FP_CONTRACT); GCC -ffp-contract=fast",
+	  "the C source's own operations, any product fused into any sum it feeds" },
+};
+
+#define NPROF ((int)(sizeof profiles / sizeof profiles[0]))
+
+int arith_count(void) { return NPROF; }
+const arith_profile *arith_at(int i) { return i >= 0 && i < NPROF ? &profiles[i] : NULL; }
+const arith_profile *arith_ieee(void) { return &profiles[0]; }
+int arith_is_ieee(const arith_profile *p) { return !p || p->ieee; }
+
+const arith_profile *arith_find(const char *s)
+{
+	int i;
+	for (i = 0; s && i < NPROF; i++)
+		if (strcmp(s, profiles[i].name) == 0)
+			return &profiles[i];
+	return NULL;
+}
+
+void arith_names(char *buf, size_t n)
+{
+	size_t used = 0;
+	int i;
+	if (n)
+		buf[0] = '\0';
+	for (i = 0; i < NPROF && used < n; i++)
+		used += (size_t)snprintf(buf + used, n - used, "%s%s", i ? ", " : "", profiles[i].name);
+}
+
+const char *arith_op_name(int op)
+{
+	static const char *const names[AR_NOPS] = { "add", "sub", "mul", "div", "rcp", "sqrt", "rsqrt", "fma", "cvt" };
+	return op >= 0 && op < AR_NOPS ? names[op] : "?";
+}
+
+int arith_bits(int f) { return prec_fmt(f)->bits; }
+int arith_emin(int f) { return prec_fmt(f)->emin; }
+double arith_normal_min(int f) { return prec_fmt(f)->normal_min; }
+double arith_unit(int f) { return prec_fmt(f)->u; }
+
+static double up(double x) { return x * (1.0 + 0x1p-50) + 0x1p-1074; }
+
+double arith_err_abs(const arith_profile *p, int op, int f, double vmin, double vmax)
+{
+	const ar_format *af = &p->fmt[f];
+	const ar_allow *a = &af->op[op];
+	const int emin = arith_emin(f);
+	double h;
+	int e;
+	if (a->how == AR_NONE || a->how == AR_SPLIT)
+		return INFINITY;
+	if (!(vmax > 0.0))
+		return vmax == 0.0 ? 0.0 : INFINITY;
+	frexp(vmax, &e);
+	e -= 1;                         /* 2^e <= vmax < 2^(e+1) */
+	if (e < emin)
+		e = emin;
+	if (a->how == AR_RN)
+		h = ldexp(1.0, e - arith_bits(f));
+	else if (a->how == AR_ULP)
+		h = a->x * ldexp(1.0, e - af->ulp_bits + 1);
+	else   /* AR_REL; below the smallest normal also half a subnormal step */
+		h = a->x * vmax + (vmin < arith_normal_min(f) ? ldexp(1.0, emin - arith_bits(f)) : 0.0);
+	if (af->flush && vmin < arith_normal_min(f))
+		h += arith_normal_min(f);   /* a subnormal result may be flushed */
+	return up(h);
+}
+
+double arith_err_rel(const arith_profile *p, int op, int f)
+{
+	const ar_format *af = &p->fmt[f];
+	const ar_allow *a = &af->op[op];
+	switch (a->how) {
+	case AR_RN: return arith_unit(f);
+	case AR_ULP: return a->x * ldexp(1.0, 1 - af->ulp_bits);
+	case AR_REL: return a->x;
+	default: return INFINITY;
+	}
+}
+
+static void allow_text(const arith_profile *p, int f, int op, char *b, size_t n)
+{
+	const ar_allow *a = &p->fmt[f].op[op];
+	switch (a->how) {
+	case AR_RN: snprintf(b, n, "RN"); break;
+	case AR_ULP:
+		if (p->fmt[f].ulp_bits != arith_bits(f))
+			snprintf(b, n, "%gulp%d", a->x, p->fmt[f].ulp_bits);
+		else
+			snprintf(b, n, "%gulp", a->x);
+		break;
+	case AR_REL: {
+		int e;
+		if (frexp(a->x, &e) == 0.5)
+			snprintf(b, n, "rel2^%d", e - 1);
+		else
+			snprintf(b, n, "rel%g", a->x);
+		break;
+	}
+	case AR_SPLIT:
+		snprintf(b, n, "%s", op == AR_FMA ? "mul+add" : op == AR_SQRT ? "1/rsqrt" : op == AR_DIV ? "x*rcp" : "split");
+		break;
+	default: snprintf(b, n, "none"); break;
+	}
+}
+
+void arith_describe(const arith_profile *p, char *buf, size_t n)
+{
+	size_t used;
+	int f, op;
+	used = (size_t)snprintf(buf, n, "%s: contract %s, reassociation %s, signed zeros %s;", p->name,
+	                        p->contract ? "any a*b+c" : "no",
+	                        p->reassoc ? "allowed by the spec (proven: the source's order, every contraction choice)" : "no",
+	                        p->zero_sign ? "may be lost" : "kept");
+	for (f = 0; f < PREC_COUNT && used < n; f++) {
+		used += (size_t)snprintf(buf + used, n - used, " %s:", prec_name(f));
+		for (op = 0; op < AR_NOPS && used < n; op++) {
+			char t[32];
+			allow_text(p, f, op, t, sizeof t);
+			used += (size_t)snprintf(buf + used, n - used, " %s %s", arith_op_name(op), t);
+		}
+		if (used < n)
+			used += (size_t)snprintf(buf + used, n - used, ", flush %s%s", p->fmt[f].flush ? "yes" : "no",
+			                         f + 1 < PREC_COUNT ? ";" : "");
+	}
+}
+
+void arith_print_table(void)
+{
+	int i, f, op;
+	printf("%-15s %-6s", "profile", "format");
+	for (op = 0; op < AR_NOPS; op++)
+		printf(" %-10s", arith_op_name(op));
+	printf(" %-5s %-8s %-7s %-5s\n", "flush", "contract", "reassoc", "-0");
+	for (i = 0; i < NPROF; i++)
+		for (f = 0; f < PREC_COUNT; f++) {
+			const arith_profile *p = &profiles[i];
+			printf("%-15s %-6s", p->name, prec_name(f));
+			for (op = 0; op < AR_NOPS; op++) {
+				char t[32];
+				allow_text(p, f, op, t, sizeof t);
+				printf(" %-10s", t);
+			}
+			printf(" %-5s %-8s %-7s %-5s\n", p->fmt[f].flush ? "yes" : "no", p->contract ? "yes" : "no",
+			       p->reassoc ? "yes" : "no", p->zero_sign ? "lost" : "kept");
+		}
+}

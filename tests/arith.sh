@@ -1,0 +1,60 @@
+#!/bin/sh
+# arith.sh - arithmetic profiles (src/model/arith.c, docs/gpu.md) through
+# `onbstudy certify --arith`: ieee is byte for byte the plain run; every
+# profile's --quick run on a few methods keeps found <= bound wherever a
+# bound is claimed and names the operation of every unbounded row; the
+# profile's whole-sphere bound is never below the defect ieee found; bad input
+# exits 2 with the list of profiles.  (tests/test_arith.c checks the
+# emulated implementations against the bounds.)
+. "$(dirname "$0")/lib.sh"
+T=$tmp
+data() { grep -v '^#' "$1"; }
+M=frisvad,duff,hughes_moeller
+Q="--quick --quiet --methods $M --samples 60 --budget 24"
+
+# 1. ieee: the plain model, byte for byte (provenance lines aside)
+./onbstudy certify $Q --out "$T/plain" >/dev/null 2>&1 || bad "certify --quick failed"
+./onbstudy certify $Q --arith ieee --out "$T/ieee" >/dev/null 2>&1 || bad "certify --arith ieee failed"
+strip() { grep -v -e '^# date:' -e '^# command:' "$1"; }
+[ "$(strip "$T/plain/certify.csv")" = "$(strip "$T/ieee/certify.csv")" ] && ok || bad "--arith ieee differs from the plain run"
+
+# 2. every profile: the header names it, found <= bound where a bound is
+#    claimed, an unbounded row names its operation, and a profile's
+#    whole-sphere bound is never below the defect ieee found (every profile
+#    allows the IEEE results, flushing aside)
+for p in vulkan vulkan-precise d3d11 opencl cuda-fast contract-any; do
+	C="$T/$p/certify.csv"
+	./onbstudy certify $Q --arith $p --out "$T/$p" >"$T/$p.out" 2>&1 || { bad "certify --arith $p failed: $(tail -2 "$T/$p.out")"; continue; }
+	grep -q "^# arith: $p " "$C" && ok || bad "$p: no '# arith' provenance line"
+	[ "$(data "$C" | head -1)" = "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,evaluated,found_lx,found_ly,found_lz,unbounded_by" ] \
+		&& ok || bad "$p: header $(data "$C" | head -1)"
+	data "$C" | awk -F, 'NR > 1 && $12 != "singular" && $12 != "unbounded" && !($7 + 0 >= $8 + 0) { n++; print } END { exit n > 0 }' > "$T/inv" \
+		&& ok || bad "$p: found above bound: $(head -2 "$T/inv")"
+	data "$C" | awk -F, 'NR > 1 && ($12 == "unbounded") != ($17 != "") { n++ } END { exit n > 0 }' && ok || bad "$p: unbounded rows and their operation disagree"
+	data "$C" | awk -F, 'NR > 1 && $12 == "unbounded" && $7 != "inf" { n++ } END { exit n > 0 }' && ok || bad "$p: an unbounded row with a number"
+	whole() { data "$1" | awk -F, -v c="$2" 'NR > 1 && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 { print $1 "/" $2 "," $c }' | sort; }
+	whole "$T/ieee/certify.csv" 8 > "$T/w0"
+	whole "$C" 7 > "$T/w1"
+	join -t, "$T/w0" "$T/w1" | awk -F, '$3 != "inf" && $3 + 0 < $2 + 0 { n++; print } END { exit n > 0 }' > "$T/less" \
+		&& ok || bad "$p: a whole-sphere bound below ieee's found: $(head -2 "$T/less")"
+done
+# d3d11's doubles are not transcribed: unbounded, never a number
+data "$T/d3d11/certify.csv" | awk -F, '$2 == "double" && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 && $12 != "unbounded" { n++ } END { exit n > 0 }' \
+	&& ok || bad "d3d11 double rows not unbounded"
+# the double under vulkan is only as precise as float: far above ieee's
+a=$(data "$T/ieee/certify.csv" | awk -F, '$1 == "duff" && $2 == "double" && $3 == -1 && $4 == 1 && $5 == 0 { print $7 }')
+b=$(data "$T/vulkan/certify.csv" | awk -F, '$1 == "duff" && $2 == "double" && $3 == -1 && $4 == 1 && $5 == 0 { print $7 }')
+awk -v a="$a" -v b="$b" 'BEGIN { exit !(b > 1000 * a) }' && ok || bad "vulkan's double bound $b not far above ieee's $a"
+
+# 3. bad input: exit 2, the valid profiles listed, nothing written
+./onbstudy certify --arith metal --quick --out "$T/bad" >/dev/null 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] && ok || bad "unknown profile: exit $rc"
+grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "$T/err" && ok || bad "unknown profile: $(cat "$T/err")"
+[ ! -e "$T/bad/certify.csv" ] && ok || bad "unknown profile: a file was written"
+./onbstudy certify --arith vulkan --fma --quick --out "$T/bad" >/dev/null 2>&1; rc=$?
+[ $rc -eq 2 ] && ok || bad "--arith with --fma: exit $rc"
+./onbstudy certify --arith >/dev/null 2>&1; rc=$?
+[ $rc -eq 2 ] && ok || bad "--arith without a profile: exit $rc"
+./onbstudy list --arith > "$T/list" 2>&1 && ok || bad "list --arith failed"
+[ "$(grep -c -e '^vulkan ' -e '^d3d11 ' "$T/list")" -eq 4 ] && ok || bad "list --arith: $(head -3 "$T/list")"
+finish arith.sh

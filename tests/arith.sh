@@ -56,5 +56,5 @@ grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "
 ./onbstudy certify --arith >/dev/null 2>&1; rc=$?
 [ $rc -eq 2 ] && ok || bad "--arith without a profile: exit $rc"
 ./onbstudy list --arith > "$T/list" 2>&1 && ok || bad "list --arith failed"
-[ "$(grep -c -e '^vulkan ' -e '^d3d11 ' "$T/list")" -eq 4 ] && ok || bad "list --arith: $(head -3 "$T/list")"
+[ "$(grep -c -e "^vulkan " -e "^d3d11 " "$T/list")" -eq 6 ] && ok || bad "list --arith: $(head -3 "$T/list")"
 finish arith.sh

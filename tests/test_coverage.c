@@ -123,7 +123,7 @@ static void check_input(env *e, mpfr_srcptr z, mpfr_srcptr phi, const double n[3
 		e->claims++;
 		claimed = 1;
 		if (!e->lv[i]) {
-			cert_opts o = { 150, 50, 1.25, -1.0, 31, keep_leaf, NULL, NULL, 0 };
+			cert_opts o = { 150, 50, 1.25, -1.0, 31, keep_leaf, NULL, NULL, 0, NULL };
 			o.tolerance = e->tol;
 			cert_result res;
 			e->lv[i] = calloc(1, sizeof *e->lv[i]);

@@ -149,7 +149,7 @@ typedef struct {
 static void measure(cert_ctx *x, const study_kernel *k, const cm_method *m, const double *in, long long count,
                     double *d, const cert_region *r, one_out *o)
 {
-	const cert_opts opt = { 120, 100, 1.25, -1.0, 22, NULL, NULL, NULL, 0 };
+	const cert_opts opt = { 120, 100, 1.25, -1.0, 22, NULL, NULL, NULL, 0, NULL };
 	int nf = 0;
 	if (cert_enumerate(x, k, in, count, d, &o->e)) {
 		o->run = -1;

@@ -223,7 +223,7 @@ int scene_certify(const char *path, char up, int prec, double E, const onb_metho
 	unsigned char hit[MAXREG];
 	scene_bound *sb = calloc(nm ? nm : 1, sizeof *sb);
 	size_t nreg = regions_default(prec, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
-	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0 };
+	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0, NULL };
 	double zmin = 2.0, zmax = -2.0;
 	o.tolerance = prec == PREC_FLOAT ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
 	memset(hit, 0, sizeof hit);

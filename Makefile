@@ -284,8 +284,12 @@ bench: onbstudy
 	./onbstudy bench
 
 # make plots [RUN=results/<run>]: charts of a run (default results/latest)
+# The run's data is looked for first, before anything is built or installed.
 RUN ?= results/latest
-plots: onbstudy $(B)/plot-deps.stamp
+plots:
+	@test -f $(RUN)/summary.csv && test -f $(RUN)/by_nz.csv || { \
+	  echo "plots: no sweep data in $(RUN) (summary.csv, by_nz.csv): run a sweep first, \`make && ./onbstudy sweep\`, or give RUN=DIR" >&2; exit 2; }
+	$(MAKE) --no-print-directory onbstudy $(B)/plot-deps.stamp
 	sh scripts/plots.sh $(RUN)
 
 # # make robustness: the hardening run (scripts/harden.sh, ~10 min on 2 cores),

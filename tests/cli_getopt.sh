@@ -83,9 +83,18 @@ done
 # unknown names list the valid ones
 ./onbstudy sweep --dists uniform,poles > /dev/null 2> "$tmp/e"
 grep -q "unknown name 'poles' (valid: uniform, north, south, threshold, exhaustive, nonunit" "$tmp/e" && ok || bad "--dists: $(cat "$tmp/e")"
-for c in sweep bench eval; do
+for c in sweep bench eval; do   # the same words and exit code in every command
 	./onbstudy $c --methods duff,nosuch $([ $c = eval ] && echo 0 0 1) > /dev/null 2> "$tmp/e"
-	grep -q "nosuch.*valid: naive, .*duff" "$tmp/e" && ok || bad "$c --methods: $(cat "$tmp/e")"
+	rc=$?
+	grep -q "^onbstudy: unknown method 'nosuch' (valid: naive, .*duff" "$tmp/e" && [ $rc -eq 2 ] && ok ||
+		bad "$c --methods: exit $rc, $(cat "$tmp/e")"
+done
+# a count that must be positive says so, for 0 as for -5
+for v in 0 -5; do
+	./onbstudy sweep --samples $v > /dev/null 2> "$tmp/e"
+	rc=$?
+	grep -qx "onbstudy: --samples: expected a positive integer, got '$v'" "$tmp/e" && [ $rc -eq 2 ] && ok ||
+		bad "--samples $v: exit $rc, $(cat "$tmp/e")"
 done
 ./onbstudy sweep --precision quarter > /dev/null 2> "$tmp/e"
 grep -qx "onbstudy: --precision: expected float, double, both, half or all, not 'quarter'" "$tmp/e" && ok || bad "--precision: $(cat "$tmp/e")"

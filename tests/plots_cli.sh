@@ -33,6 +33,12 @@ T=$tmp
 if ! command -v gnuplot >/dev/null 2>&1; then
 	echo "plots_cli: gnuplot missing: scripts/install-deps.sh --test must install it"; exit 1
 fi
+# without a run's data, `make plots` says so at once (exit 2), building and
+# installing nothing (B= a fresh build directory stays absent)
+env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory plots RUN="$T/none" B="$T/nob" > "$T/log" 2>&1
+rc=$?
+[ $rc -eq 2 ] && grep -q 'run a sweep first' "$T/log" && [ ! -e "$T/nob" ] && ok ||
+	bad "make plots without a run: exit $rc, $(cat "$T/log")"
 ./onbstudy sweep --samples 2000 --exhaustive-count 1024 --azimuths 2 --grid 8x16 --quiet --out "$T/run" >/dev/null 2>&1 || bad "small sweep failed"
 ./onbstudy threshold --logspaced 300 --consecutive 256 --azimuths 4 --out "$T/run" >/dev/null 2>&1 || bad "threshold failed"
 if [ -x ./onbstudy ] && ./onbstudy bench --help >/dev/null 2>&1; then

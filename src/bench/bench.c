@@ -88,6 +88,27 @@ static const char usage_text[] =
 	"                         core, fast reference and MPFR alone, on the default sweep's\n"
 	"                         inputs (bench-reference.csv; about a minute, --quick seconds)\n";
 
+/* A name of the list v that is not a registry method, in the words of the
+   other commands' --methods (methods/kernels.c): 0, or -1 after the message. */
+static int bench_unknown(const char *v, const char *const *names, size_t nm)
+{
+	char buf[2048], all[2048], *tok, *save = NULL;
+	size_t i, len = 0;
+	if (strlen(v) >= sizeof buf || v[0] == ',' || (v[0] && v[strlen(v) - 1] == ',') || strstr(v, ",,"))
+		return 0;   /* cli_name_order says "list too long" or "empty name" */
+	strcpy(buf, v);
+	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+		if (onb_find(tok))
+			continue;
+		all[0] = '\0';
+		for (i = 0; i < nm && len + 64 < sizeof all; i++)
+			len += (size_t)snprintf(all + len, sizeof all - len, "%s%s", i ? ", " : "", names[i]);
+		study_error("unknown method '%s' (valid: %s)", tok, all);
+		return -1;
+	}
+	return 0;
+}
+
 /* --methods a,b,...: registry methods, each once, in the order given. */
 static int bench_methods(const char *v, bench_opts *o)
 {
@@ -99,7 +120,7 @@ static int bench_methods(const char *v, bench_opts *o)
 		nm = 64;
 	for (i = 0; i < nm; i++)
 		names[i] = all[i].name;
-	if ((n = cli_name_order("--methods", v, idx, names, (int)nm)) < 0)
+	if (bench_unknown(v, names, nm) != 0 || (n = cli_name_order("--methods", v, idx, names, (int)nm)) < 0)
 		return -1;
 	o->nmeth = n;
 	for (k = 0; k < n; k++)

@@ -40,10 +40,10 @@ void study_error(const char *fmt, ...)
 
 /* The digits of s (after one '-' when neg_ok) as a magnitude; a digit
    must come first (strtoull would skip blanks and accept " -1" as
-   2^64-1).  0, or -1 after "OPT: expected an integer, got 'S'". */
-static int parse_whole(const char *opt, const char *s, int neg_ok, unsigned long long *mag, int *neg)
+   2^64-1).  0, or -1 after "OPT: expected WHAT, got 'S'" (WHAT: "an
+   integer", "a positive integer", ...). */
+static int parse_whole(const char *opt, const char *s, int neg_ok, const char *what, unsigned long long *mag, int *neg)
 {
-	const char *what = neg_ok ? "an integer" : "a non-negative integer";
 	char *end;
 	*neg = neg_ok && s && *s == '-';
 	if (!s || !(s[*neg] >= '0' && s[*neg] <= '9')) {
@@ -63,8 +63,13 @@ int parse_u64(const char *opt, const char *s, unsigned long long lo, unsigned lo
 {
 	unsigned long long v;
 	int neg;
-	if (parse_whole(opt, s, 0, &v, &neg) != 0)
+	const char *what = lo == 1 ? "a positive integer" : "a non-negative integer";
+	if (parse_whole(opt, s, 0, what, &v, &neg) != 0)
 		return -1;
+	if (v == 0 && lo == 1) {   /* 0 where the count must be positive */
+		study_error("%s: expected %s, got '%s'", opt, what, s);
+		return -1;
+	}
 	if (v < lo || v > hi) {
 		study_error("%s: %llu is out of range [%llu, %llu]", opt, v, lo, hi);
 		return -1;
@@ -78,7 +83,7 @@ int parse_int(const char *opt, const char *s, long lo, long hi, long *out)
 	unsigned long long mag;
 	long v;
 	int neg;
-	if (parse_whole(opt, s, 1, &mag, &neg) != 0)
+	if (parse_whole(opt, s, 1, "an integer", &mag, &neg) != 0)
 		return -1;
 	/* -(LONG_MAX + 1) without overflow: negate the magnitude less one */
 	v = !neg ? (long)mag : mag == 0 ? 0 : -(long)(mag - 1) - 1;

@@ -6,6 +6,7 @@
 #   make bench      the default benchmark run
 #   make plots      charts of the newest run
 #   make mpi        onbstudy-mpi, the MPI driver of the sweep (needs Open MPI's mpicc)
+#   make gpu        onbstudy-gpu and the shader kernels (libvulkan, glslang; make test builds it)
 #   make robustness the hardening checks, then results/robustness.md
 #   make install    PREFIX=/usr/local DESTDIR=  (libonb/onb.h, libonb.a, onb.pc,
 #                   onb.3, onbstudy.1; make install-compat adds the old <onb.h>)
@@ -82,13 +83,13 @@ LIB_DEPS = $(B)/deps.stamp
 endif
 # --- end libonb ------------------------------------------------------------
 # The study: every src/<folder>/*.c but src/lib/ (libonb) and src/mpi/ (the
-# MPI driver, built by `make mpi` only).  A new folder src/<name>/ is picked
+# MPI driver, built by `make mpi` only) and src/gpu/ (onbstudy-gpu, `make gpu`).  A new folder src/<name>/ is picked
 # up by these wildcards with no edit here; its objects go to build/<name>/.
 # Includes name their folder from -Isrc ("sweep/engine.h"); libonb/onb.h
 # comes from -Iinclude.
-STUDY_SRC = $(filter-out src/lib/% src/mpi/%,$(wildcard src/*/*.c))
+STUDY_SRC = $(filter-out src/lib/% src/mpi/% src/gpu/%,$(wildcard src/*/*.c))
 STUDY_OBJ = $(STUDY_SRC:src/%.c=$(B)/%.o)
-STUDY_HDR = $(filter-out src/lib/%,$(wildcard src/*/*.h src/*/*.inc))
+STUDY_HDR = $(filter-out src/lib/% src/gpu/%,$(wildcard src/*/*.h src/*/*.inc))
 MAIN_OBJ  = $(B)/cli/main.o
 # Everything of the study but main(), so tests can link the study's modules.
 STUDY_LIB = $(B)/libstudy.a
@@ -254,7 +255,7 @@ TEST_SH = $(filter-out tests/lib.sh $(if $(SANITIZE),$(SANITIZE_SKIP)),$(wildcar
 # everything the tests need, built (in parallel with make -jN test-build:
 # CI does that first); `make test` itself then runs the tests one by one
 .PHONY: test-build
-test-build: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX)
+test-build: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX) gpu
 test: test-build
 	@fail=0; : > $(B)/test-times.tsv; \
 	$(if $(SANITIZE),echo "make test: not run under SANITIZE: $(SANITIZE_SKIP)";) \
@@ -329,7 +330,7 @@ install-compat: install
 	install -m 644 include/compat/onb.h $(DESTDIR)$(PREFIX)/include/onb.h
 
 clean:
-	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onb.pc   # onb.pc: left by older Makefiles
+	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onbstudy-gpu onb.pc   # onb.pc: left by older Makefiles
 
 # The MPI driver: `make mpi` builds onbstudy-mpi with Open MPI's
 # mpicc; the default build does not need MPI.  It links the same study
@@ -342,6 +343,48 @@ $(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/libonb/onb.
 	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 	$(MPICC) $(BASE) $(OMP) -o $@ $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
+
+# The shader study: `make gpu` builds onbstudy-gpu, which runs libonb's
+# GLSL and HLSL kernels (include/libonb/onb.glsl, onb.hlsl) and the shader
+# engines' lines on a Vulkan driver (Mesa's lavapipe) against the C
+# kernels, and compiles those kernels to SPIR-V with glslang.  It links
+# libvulkan, so it comes with the test packages (install-deps.sh --test)
+# and `make test` builds it; `make` and `make lib` never need Vulkan.
+# The kernels: GLSL as written and with ONB_PRECISE=precise (every
+# operation NoContraction), the same two through glslang's HLSL front end
+# (-D -e main), and GLSL without ONB_FLOAT64 (compiled only: onb.glsl
+# must build on a device without shaderFloat64).
+GLSLANG ?= glslangValidator
+GPU_SRC  = $(wildcard src/gpu/*.c)
+GPU_OBJ  = $(GPU_SRC:src/%.c=$(B)/%.o)
+GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv wild.spv)
+GPU_KDEPS = include/libonb/onb.glsl include/libonb/onb.hlsl src/gpu/methods.inc $(B)/test-deps.stamp
+GLSLC    = $(GLSLANG) -V -Iinclude -Isrc --quiet
+.PHONY: gpu
+gpu: onbstudy-gpu $(GPU_SPV)
+$(GPU_OBJ): $(B)/%.o: src/%.c $(wildcard src/gpu/*.h) src/gpu/methods.inc $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/test-deps.stamp $(B)/rev.stamp
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(WARN) $(PROV) -DONB_GLSLANG='"$(shell $(GLSLANG) --version 2>/dev/null | head -1)"' -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
+onbstudy-gpu: $(GPU_OBJ) $(STUDY_LIB) libonb.a
+	$(CC) $(BASE) $(OMP) -o $@ $(GPU_OBJ) $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lvulkan
+$(B)/gpu/onb_glsl.spv: src/gpu/kernel.comp $(GPU_KDEPS)
+	@mkdir -p $(@D)
+	$(GLSLC) -DONB_FLOAT64 $< -o $@
+$(B)/gpu/onb_glsl_precise.spv: src/gpu/kernel.comp $(GPU_KDEPS)
+	@mkdir -p $(@D)
+	$(GLSLC) -DONB_FLOAT64 -DONB_PRECISE=precise $< -o $@
+$(B)/gpu/onb_glsl_nof64.spv: src/gpu/kernel.comp $(GPU_KDEPS)
+	@mkdir -p $(@D)
+	$(GLSLC) $< -o $@
+$(B)/gpu/onb_hlsl.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
+	@mkdir -p $(@D)
+	$(GLSLC) -D -e main -S comp -DONB_FLOAT64 $< -o $@
+$(B)/gpu/onb_hlsl_precise.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
+	@mkdir -p $(@D)
+	$(GLSLC) -D -e main -S comp -DONB_FLOAT64 -DONB_PRECISE=precise $< -o $@
+$(B)/gpu/%.spv: src/gpu/%.comp $(B)/test-deps.stamp
+	@mkdir -p $(@D)
+	$(GLSLC) $< -o $@
 
 # The example renderer links libonb.a and libm, as a user's would, and the
 # scene reader (meshio, whose glTF part links cJSON) for --obj.

@@ -1,0 +1,67 @@
+/*
+ * compare.h - the shader kernels against libonb's C kernels (gpu_compare.c)
+ * and the report of a comparison run (gpu_report.c).
+ */
+#ifndef ONB_GPU_COMPARE_H
+#define ONB_GPU_COMPARE_H
+
+#include <stddef.h>
+#include "gpu/gpu.h"
+
+typedef struct {
+	int id;             /* specialization constant of kernel.comp / kernel.hlsl */
+	const char *name;   /* the method (libonb's registry name)                 */
+	const char *twin;   /* its bits when fma() rounds twice, or "none"          */
+	int f64;            /* 1: needs shaderFloat64; 2: and a double sqrt (GLSL only) */
+} gpu_method;
+
+const gpu_method *gpu_methods(size_t *count);
+
+/* D of outputs b (b1, b2) for input n, long double; +inf if not finite. */
+double gpu_defect(const float n[3], const float b[6]);
+/* libonb's C float kernel `name` on every input; -1 if unknown. */
+int gpu_c_outputs(const char *name, const gpu_inputs *in, float *b);
+/* How the outputs of C (a) and of the driver (b) for one input differ. */
+enum { GPU_SAME = 0, GPU_NAN, GPU_ZERO, GPU_NONFINITE, GPU_VALUE, GPU_NCLASS };
+int gpu_class(const float *a, const float *b);
+/* whole-sphere float bound of `name` in a certify CSV; inf: singular; -1: absent */
+double gpu_bound(const char *csv, const char *name);
+
+/* One variant of the shaders: its SPIR-V file (under the SPIR-V folder). */
+typedef struct {
+	const char *label, *spv;
+} gpu_variant;
+
+/* The comparison of one method, per variant and over them. */
+#define GPU_NVAR 4
+typedef struct {
+	const gpu_method *m;
+	const char *expect;      /* the C kernel it must match                 */
+	size_t n[GPU_NVAR][GPU_NCLASS]; /* inputs per variant and class (gpu_class) */
+	int ran[GPU_NVAR];       /* 0: the variant cannot hold the method     */
+	size_t first;            /* first input differing by value (or, if none, at all), or count */
+	int first_cls;
+	int first_var;
+	float first_out[6], first_ref[6]; /* the driver's and C's outputs there */
+	size_t domain;           /* rounded unit inputs                         */
+	double dmax;             /* largest D over them, every variant          */
+	size_t dmax_at;
+	double bound;            /* -1: no bound applies                        */
+	const char *bound_of;    /* the kernel whose bound it is                */
+	size_t above;            /* domain inputs with D > bound                */
+	size_t above_at;
+} gpu_cmp;
+
+/* The comparison of method m on the inputs (ref, got: 6 floats per input, scratch). */
+int gpu_compare_one(gpu_dev *d, const char *spvdir, const gpu_inputs *in, const gpu_method *m,
+                    int fma_fused, const char *bounds, float *ref, float *got, gpu_cmp *c);
+/* Every method (or those of the comma-separated list) as a markdown table;
+   the number not explained or outside their envelope, or -1. */
+int gpu_compare_all(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, int fused,
+                    const char *bounds, const char *methods);
+/* -1 with a message when --methods names a method not in methods.inc. */
+int gpu_methods_check(const char *list);
+/* The engines' own lines (wild.comp) against their C rows; as above. */
+int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds);
+
+#endif

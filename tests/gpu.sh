@@ -1,0 +1,60 @@
+#!/bin/sh
+# gpu.sh - libonb's shader kernels on a real Vulkan driver (Mesa's
+# lavapipe; docs/gpu.md, "On a real driver: lavapipe"):
+#   - the device is created: no lavapipe is a failure, not a skip
+#     (scripts/install-deps.sh --test installs mesa-vulkan-drivers);
+#   - include/libonb/onb.hlsl is scripts/onb-hlsl.sh's output of onb.glsl;
+#   - `onbstudy-gpu compare`: every method of onb.glsl and onb.hlsl, as
+#     written and all precise, on the sweep's distributions and the
+#     extremes, gives the C kernel's bits but where the driver's own
+#     rounding (its fma, its signed zeros and NaNs) explains it, and every
+#     result on a rounded unit input lies within certify's bound;
+#   - the checks can fail: the deliberately broken kernel (GLSL's sign()
+#     in Duff's formula) is caught by both, and a bound tightened below
+#     the found defect is reported outside;
+#   - the shader engines' own lines (wild) lie within their C rows' bounds;
+#   - bad usage exits 2, an absent device 3, with a message.
+. "$(dirname "$0")/lib.sh"
+# Under ASan, the driver's own allocations that it never frees (LLVM's
+# JIT, Mesa's caches) would fail every run at exit: leak detection is off
+# for onbstudy-gpu only (as tests/mpi.sh does for Open MPI); ASan's other
+# checks and UBSan stay on for the harness's code.
+if [ -n "$SAN" ]; then export ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
+make -s gpu > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; bad "make gpu"; finish gpu; }
+G=./onbstudy-gpu
+
+$G info > "$tmp/info" 2>&1 && grep -q 'device: llvmpipe' "$tmp/info" && ok ||
+	{ cat "$tmp/info"; bad "no lavapipe device (scripts/install-deps.sh --test installs mesa-vulkan-drivers)"; finish gpu; }
+
+sh scripts/onb-hlsl.sh include/libonb/onb.glsl "$tmp/onb.hlsl" && cmp -s "$tmp/onb.hlsl" include/libonb/onb.hlsl && ok ||
+	bad "include/libonb/onb.hlsl is stale: run sh scripts/onb-hlsl.sh"
+
+$G ops --count 20000 > "$tmp/ops" 2>&1 && grep -q '^| `a / b` | IEEE | 20000 |' "$tmp/ops" && ok ||
+	{ cat "$tmp/ops"; bad "ops: the driver's division is not IEEE on every operand, or ops failed"; }
+
+$G compare --per 2000 > "$tmp/cmp" 2>&1; rc=$?
+[ $rc -eq 0 ] && [ "$(grep -c '^| `' "$tmp/cmp")" -eq 34 ] && ! grep -q 'outside' "$tmp/cmp" && ok ||
+	{ cat "$tmp/cmp"; bad "compare: exit $rc (want 0 and 34 methods inside their envelopes)"; }
+grep -q '^| `duff_branchless` | `duff_branchless` | all [0-9]* (NaN payloads aside) | all' "$tmp/cmp" && ok ||
+	bad "compare: duff_branchless is not bit-identical to C in GLSL and GLSL precise"
+
+# The checks can fail: a broken kernel, and a bound below the defect found.
+$G compare --per 500 --methods broken_duff_sign > "$tmp/broken" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '^| `broken_duff_sign` .*\*\*value: [1-9].*\*\*outside\*\*' "$tmp/broken" && ok ||
+	{ cat "$tmp/broken"; bad "the broken kernel was not caught (exit $rc)"; }
+grep -v '^duff_branchless,float,-1,1,0,360,' results/certify/certify.csv > "$tmp/tight.csv"
+echo 'duff_branchless,float,-1,1,0,360,1e-7,0,0,0,0,proven,0,,,' >> "$tmp/tight.csv"
+$G compare --per 500 --methods duff_branchless --bounds "$tmp/tight.csv" > "$tmp/tight" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '1e-07 (duff_branchless) | \*\*outside\*\*' "$tmp/tight" && ok ||
+	{ cat "$tmp/tight"; bad "a bound of 1e-7 for duff_branchless was not reported outside (exit $rc)"; }
+
+$G wild --per 2000 > "$tmp/wild" 2>&1; rc=$?
+[ $rc -eq 0 ] && [ "$(grep -c '| inside |' "$tmp/wild")" -eq 4 ] && ok ||
+	{ cat "$tmp/wild"; bad "wild: exit $rc (want 0, four engines inside)"; }
+
+$G frobnicate > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "an unknown command does not exit 2"
+$G compare --methods duff,nosuch > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 2 ] && grep -q 'valid:.*duff_branchless' "$tmp/err" && ok || bad "--methods nosuch: exit $rc, $(cat "$tmp/err")"
+$G info --device 'no such device' > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 3 ] && grep -q 'no Vulkan device named like' "$tmp/err" && ok || bad "--device absent: exit $rc, $(cat "$tmp/err")"
+finish gpu

@@ -357,7 +357,7 @@ onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
 GLSLANG ?= glslangValidator
 GPU_SRC  = $(wildcard src/gpu/*.c)
 GPU_OBJ  = $(GPU_SRC:src/%.c=$(B)/%.o)
-GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv wild.spv)
+GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv ops_preserve.spv wild.spv)
 GPU_KDEPS = include/libonb/onb.glsl include/libonb/onb.hlsl src/gpu/methods.inc $(B)/test-deps.stamp
 GLSLC    = $(GLSLANG) -V -Iinclude -Isrc --quiet
 .PHONY: gpu
@@ -382,6 +382,9 @@ $(B)/gpu/onb_hlsl.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
 $(B)/gpu/onb_hlsl_precise.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
 	@mkdir -p $(@D)
 	$(GLSLC) -D -e main -S comp -DONB_FLOAT64 -DONB_PRECISE=precise $< -o $@
+$(B)/gpu/ops_preserve.spv: src/gpu/ops.comp $(B)/test-deps.stamp
+	@mkdir -p $(@D)
+	$(GLSLC) -DONB_PRESERVE $< -o $@
 $(B)/gpu/%.spv: src/gpu/%.comp $(B)/test-deps.stamp
 	@mkdir -p $(@D)
 	$(GLSLC) $< -o $@

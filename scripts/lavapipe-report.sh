@@ -21,8 +21,7 @@ dumps() { # VAR: does the driver print a list of its values for VAR=help?
 	else echo "- \`$1=help\`: prints nothing (the variable is compiled out of this build)"; fi
 }
 {
-	sed '2a\\
-- made by: sh scripts/lavapipe-report.sh '"$out"' (the command below is its onbstudy-gpu run)' "$tmp/report.md"
+	awk -v l="- made by: sh scripts/lavapipe-report.sh $out (the command line below is its onbstudy-gpu run)" 'NR == 3 { print l } { print }' "$tmp/report.md"
 	printf '\n- exit status of onbstudy-gpu report: %s (0: every difference explained, every result inside)\n' "$rc"
 	printf '\n### Packages\n\n'
 	dpkg-query -W -f '- ${Package} ${Version}\n' mesa-vulkan-drivers libvulkan1 glslang-tools spirv-tools 2>/dev/null || echo "- (dpkg-query unavailable)"

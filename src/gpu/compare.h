@@ -39,6 +39,7 @@ typedef struct {
 	const char *expect;      /* the C kernel it must match                 */
 	size_t n[GPU_NVAR][GPU_NCLASS]; /* inputs per variant and class (gpu_class) */
 	int ran[GPU_NVAR];       /* 0: the variant cannot hold the method     */
+	size_t un[GPU_NCLASS];   /* rounded unit inputs per class, GLSL precise */
 	size_t first;            /* first input differing by value (or, if none, at all), or count */
 	int first_cls;
 	int first_var;

@@ -20,19 +20,24 @@ typedef struct {
 	int unary_pos;    /* operands made |a| (sqrt, inversesqrt) */
 	int ref;          /* the reference (ieee()): the IEEE operation, or a model */
 	const char *against;
+	int preserve;     /* run from ops_preserve.spv (SignedZeroInfNanPreserve) */
 } op_row;
 
 static const op_row ops[] = {
-	{ 0, "a + b", 0, 0, "IEEE" }, { 11, "a - b", 0, 11, "IEEE" }, { 1, "a * b", 0, 1, "IEEE" },
-	{ 2, "a / b", 0, 2, "IEEE" }, { 3, "1.0 / a", 0, 3, "IEEE" }, { 4, "sqrt(a)", 1, 4, "IEEE" },
-	{ 5, "inversesqrt(a)", 1, 5, "correctly rounded 1/sqrt(a)" },
-	{ 6, "1.0 / sqrt(a)", 1, 6, "IEEE, two roundings" },
-	{ 7, "fma(a, b, c)", 0, 7, "fused (one rounding)" },
-	{ 7, "fma(a, b, c)", 0, 8, "a * b, then + c (two roundings)" },
-	{ 8, "precise a * b + c", 0, 8, "two roundings" },
-	{ 9, "a * b + c (not precise)", 0, 8, "two roundings" },
-	{ 10, "sign(a)", 0, 10, "GLSL: 1, 0 (either zero) or -1" },
-	{ 12, "abs(a)", 0, 12, "IEEE" }, { 13, "-a", 0, 13, "IEEE" },
+	{ 0, "a + b", 0, 0, "IEEE", 0 }, { 11, "a - b", 0, 11, "IEEE", 0 }, { 1, "a * b", 0, 1, "IEEE", 0 },
+	{ 2, "a / b", 0, 2, "IEEE", 0 }, { 3, "1.0 / a", 0, 3, "IEEE", 0 }, { 4, "sqrt(a)", 1, 4, "IEEE", 0 },
+	{ 5, "inversesqrt(a)", 1, 5, "correctly rounded 1/sqrt(a)", 0 },
+	{ 6, "1.0 / sqrt(a)", 1, 6, "IEEE, two roundings", 0 },
+	{ 7, "fma(a, b, c)", 0, 7, "fused (one rounding)", 0 },
+	{ 7, "fma(a, b, c)", 0, 8, "a * b, then + c (two roundings)", 0 },
+	{ 8, "precise a * b + c", 0, 8, "two roundings", 0 },
+	{ 9, "a * b + c (not precise)", 0, 8, "two roundings", 0 },
+	{ 10, "sign(a)", 0, 10, "GLSL: 1, 0 (either zero) or -1", 0 },
+	{ 12, "abs(a)", 0, 12, "IEEE", 0 }, { 13, "-a", 0, 13, "IEEE", 0 },
+	{ 14, "0.0 - a", 0, 14, "IEEE", 0 }, { 15, "a * 0.0", 0, 15, "IEEE", 0 }, { 16, "a + 0.0", 0, 16, "IEEE", 0 },
+	{ 14, "0.0 - a, SignedZeroInfNanPreserve", 0, 14, "IEEE", 1 },
+	{ 15, "a * 0.0, SignedZeroInfNanPreserve", 0, 15, "IEEE", 1 },
+	{ 16, "a + 0.0, SignedZeroInfNanPreserve", 0, 16, "IEEE", 1 },
 };
 #define NOPS (sizeof ops / sizeof ops[0])
 
@@ -101,6 +106,9 @@ static float ieee(int id, float a, float b, float c, mpfr_t t)
 	case 8: case 9: p = a * b; return p + c;
 	case 10: return a > 0.0f ? 1.0f : a < 0.0f ? -1.0f : 0.0f;
 	case 12: return fabsf(a);
+	case 14: return 0.0f - a;
+	case 15: return a * 0.0f;
+	case 16: return a + 0.0f;
 	default: return -a;
 	}
 }
@@ -145,7 +153,7 @@ int gpu_ops(gpu_dev *d, const char *spvdir, FILE *f, uint64_t seed, size_t count
 {
 	float *in = malloc(3 * count * sizeof *in), *use = malloc(3 * count * sizeof *use);
 	uint32_t *out = malloc(count * sizeof *out);
-	char spv[4096];
+	char spv[4096], spvp[4096];
 	size_t i, k;
 	int bad = 0;
 	mpfr_t t;
@@ -155,6 +163,7 @@ int gpu_ops(gpu_dev *d, const char *spvdir, FILE *f, uint64_t seed, size_t count
 		return -1;
 	}
 	snprintf(spv, sizeof spv, "%s/ops.spv", spvdir);
+	snprintf(spvp, sizeof spvp, "%s/ops_preserve.spv", spvdir);
 	mpfr_init2(t, 128);
 	for (i = 0; i < count; i++)
 		for (k = 0; k < 3; k++)
@@ -163,7 +172,7 @@ int gpu_ops(gpu_dev *d, const char *spvdir, FILE *f, uint64_t seed, size_t count
 	for (k = 0; k < NOPS && bad >= 0; k++) {
 		for (i = 0; i < 3 * count; i++)
 			use[i] = ops[k].unary_pos ? fabsf(in[i]) : in[i];
-		if (gpu_run(d, spv, ops[k].id, (const uint32_t *)(const void *)use, 3 * count, out, count,
+		if (gpu_run(d, ops[k].preserve ? spvp : spv, ops[k].id, (const uint32_t *)(const void *)use, 3 * count, out, count,
 		            (uint32_t)((count + 63) / 64)) != 0) {
 			bad = -1;
 			break;

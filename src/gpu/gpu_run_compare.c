@@ -41,6 +41,8 @@ static void tally(gpu_cmp *c, int v, const gpu_inputs *in, const float *ref, con
 			const double d = gpu_defect(in->n + 3 * i, got + 6 * i);
 			if (v == 0)
 				c->domain++;
+			if (v == 1)
+				c->un[k]++;
 			if (d > c->dmax) {
 				c->dmax = d;
 				c->dmax_at = i;
@@ -132,7 +134,7 @@ static void row(FILE *f, const gpu_inputs *in, const gpu_cmp *c, int explained)
 	} else {
 		fprintf(f, " - |");
 	}
-	fprintf(f, " %zu | %.3g |", c->domain, c->dmax);
+	fprintf(f, " %zu | %zu / %zu / %zu | %.3g |", c->domain, c->un[GPU_ZERO], c->un[GPU_NONFINITE], c->un[GPU_VALUE], c->dmax);
 	if (!c->bound_of)
 		fprintf(f, " none: its IEEE bound needs a fused fma | - |\n");
 	else if (c->bound == INFINITY)
@@ -193,15 +195,15 @@ int gpu_compare_all(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *i
 		free(ref); free(got);
 		return -1;
 	}
-	fprintf(f, "| method | C kernel | GLSL | GLSL precise | HLSL | HLSL precise | first input that differs most | unit inputs | largest D there | bound | envelope |\n"
-	           "|---|---|---|---|---|---|---|---|---|---|---|\n");
+	fprintf(f, "| method | C kernel | GLSL | GLSL precise | HLSL | HLSL precise | first input that differs most | unit inputs | of which differ in GLSL precise: +-0 / NaN-inf / value | largest D there | bound | envelope |\n"
+	           "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 	for (k = 0; k < nm && rc == 0; k++) {
 		gpu_cmp c;
 		int explained, value;
 		if (!wanted(methods, ms[k].name))
 			continue;
 		if (ms[k].f64 && !gpu_float64(d)) {
-			fprintf(f, "| `%s` | - | needs shaderFloat64, which the device lacks | | | | | | | | |\n", ms[k].name);
+			fprintf(f, "| `%s` | - | needs shaderFloat64, which the device lacks | | | | | | | | | |\n", ms[k].name);
 			continue;
 		}
 		if ((rc = gpu_compare_one(d, spvdir, in, &ms[k], fused, bounds, ref, got, &c)) != 0)

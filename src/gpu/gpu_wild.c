@@ -38,7 +38,7 @@ static void first_diff(FILE *f, const gpu_inputs *in, const float *ref, const fl
 static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const wild_row *r,
                const char *bounds, float *ref, float *got, int *bad)
 {
-	size_t i, same = 0, zero = 0, nonfin = 0, value = 0, first = in->count, above = 0;
+	size_t i, same = 0, zero = 0, nonfin = 0, value = 0, value_bad_in = 0, first = in->count, above = 0;
 	double dmax = 0.0, bound = gpu_bound(bounds, r->row);
 	if (bound < 0.0 || gpu_c_outputs(r->row, in, ref) != 0)
 		return -1;
@@ -51,6 +51,7 @@ static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const
 		zero += k == GPU_ZERO;
 		nonfin += k == GPU_NONFINITE;
 		value += k == GPU_VALUE;
+		value_bad_in += k == GPU_VALUE && !(isfinite(in->n[3 * i]) && isfinite(in->n[3 * i + 1]) && isfinite(in->n[3 * i + 2]));
 		if (k >= GPU_ZERO && first == in->count)
 			first = i;
 		if (in->unit[i]) {
@@ -59,8 +60,9 @@ static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const
 			if (!(dd <= bound)) above++;
 		}
 	}
-	fprintf(f, "| `%s` | %s | `%s` | %zu | %zu | %zu | %s%zu%s | %.3g | %.3g | %s | ", r->engine, r->lines, r->row,
-	        same, zero, nonfin, value ? "**" : "", value, value ? "**" : "", dmax, bound, above ? "**outside**" : "inside");
+	fprintf(f, "| `%s` | %s | `%s` | %zu | %zu | %zu | %s%zu%s (%zu at a NaN/inf input) | %.3g | %.3g | %s | ", r->engine, r->lines,
+	        r->row, same, zero, nonfin, value ? "**" : "", value, value ? "**" : "", value_bad_in, dmax, bound,
+	        above ? "**outside**" : "inside");
 	if (first < in->count)
 		first_diff(f, in, ref, got, first);
 	else

@@ -6,6 +6,10 @@
  * rounded result.  Operands and results travel as bits (uint), so no load
  * or store can change them.  The list is gpu_ops.c's ops[].
  */
+#ifdef ONB_PRESERVE  /* SignedZeroInfNanPreserve: ops_preserve.spv */
+#extension GL_EXT_spirv_intrinsics : require
+spirv_execution_mode(extensions = ["SPV_KHR_float_controls"], capabilities = [4466], 4461, 32);
+#endif
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const int OP = 0;
 layout(std430, binding = 0) readonly buffer In { uint v[]; } inp;
@@ -38,6 +42,9 @@ void main()
 	case 11: r = a - b; break;
 	case 12: r = abs(a); break;
 	case 13: r = -a; break;
+	case 14: r = 0.0 - a; break;
+	case 15: r = a * 0.0; break;
+	case 16: r = a + 0.0; break;
 	default: r = 0.0; break;
 	}
 	outp.v[i] = floatBitsToUint(r);

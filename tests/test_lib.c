@@ -235,10 +235,56 @@ static int same3f(onb_vec3f a, onb_vec3f b)
 	return bits32(a.x) == bits32(b.x) && bits32(a.y) == bits32(b.y) && bits32(a.z) == bits32(b.z);
 }
 
-/* Batch, out-of-line and inline give the same bits, on random inputs and
-   on the special ones, for counts that exercise the vector epilogues and
-   the 256-element blocks of the rsqrt loops. */
 #define NB 1037
+
+/* The array entry (the registry row's, = onb_NAME_array[f]) gives the
+   inline kernel's bits: each entry stores its outputs its own way
+   (src/lib/split.h, ONB__STORE3), so each is compared.  Returns 1 when
+   they agree. */
+static int array_same(const onb_method *m, size_t i, onb_vec3 n, onb_vec3f nf)
+{
+	double a[6];
+	float af[6];
+	onb_vec3 c1, c2, w1, w2;
+	onb_vec3f c1f, c2f, w1f, w2f;
+	int same = 1;
+	if (m->array) {
+		m->array(&n.x, a, a + 3);
+		inlines[i].f(n, &c1, &c2);
+		w1.x = a[0]; w1.y = a[1]; w1.z = a[2]; w2.x = a[3]; w2.y = a[4]; w2.z = a[5];
+		same = same3(w1, c1) && same3(w2, c2);
+	}
+	m->arrayf(&nf.x, af, af + 3);
+	inlines[i].ff(nf, &c1f, &c2f);
+	w1f.x = af[0]; w1f.y = af[1]; w1f.z = af[2]; w2f.x = af[3]; w2f.y = af[4]; w2f.z = af[5];
+	return same && same3f(w1f, c1f) && same3f(w2f, c2f);
+}
+
+/* onb_frisvad_threshold_outline[f] == the inline tool, bitwise, at the
+   published t, at Max's and at -2 (never the fallback). */
+static void threshold_identity(const double *nx, const double *ny, const double *nz)
+{
+	static const double ts[] = { -0.9999999, -0.999805696, -2.0 };
+	size_t k, j;
+	int bad = 0;
+	for (j = 0; j < sizeof ts / sizeof ts[0]; j++)
+		for (k = 0; k < NB; k++) {
+			onb_vec3 n, b1, b2, c1, c2;
+			onb_vec3f nf, b1f, b2f, c1f, c2f;
+			n.x = nx[k]; n.y = ny[k]; n.z = nz[k];
+			nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+			onb_frisvad_threshold_outline(n, ts[j], &b1, &b2);
+			onb_frisvad_threshold(n, ts[j], &c1, &c2);
+			onb_frisvad_threshold_outlinef(nf, (float)ts[j], &b1f, &b2f);
+			onb_frisvad_thresholdf(nf, (float)ts[j], &c1f, &c2f);
+			bad += !same3(b1, c1) || !same3(b2, c2) || !same3f(b1f, c1f) || !same3f(b2f, c2f);
+		}
+	CHECK(bad == 0, "frisvad_threshold: inline == out-of-line bitwise (%d differ)", bad);
+}
+
+/* Batch, out-of-line, array and inline give the same bits, on random
+   inputs and on the special ones, for counts that exercise the vector
+   epilogues and the 256-element blocks of the rsqrt loops. */
 static void test_bit_identity(void)
 {
 	size_t count, i, k;
@@ -264,7 +310,7 @@ static void test_bit_identity(void)
 	}
 	for (i = 0; i < count; i++) {
 		const onb_method *m = &ms[i];
-		int bad_d = 0, bad_f = 0, bad_i = 0;
+		int bad_d = 0, bad_f = 0, bad_i = 0, bad_a = 0;
 		CHECK(strcmp(m->name, inlines[i].name) == 0, "registry order %s vs header list %s", m->name, inlines[i].name);
 		CHECK(!m->basis == !m->batch && !m->basis == !inlines[i].f && !m->basis == !!(m->flags & ONB_FLOAT_ONLY),
 		      "%s: float-only methods have neither double scalar nor double batch", m->name);
@@ -298,12 +344,15 @@ static void test_bit_identity(void)
 			}
 			if (!same3f(b1f, c1f) || !same3f(b2f, c2f))
 				bad_i++;
+			bad_a += !array_same(m, i, n, nf);
 		}
 		CHECK(bad_d == 0, "%s: double batch == scalar bitwise (%d differ)", m->name, bad_d);
 		CHECK(bad_f == 0, "%s: float batch == scalar bitwise (%d differ)", m->name, bad_f);
 		CHECK(bad_i == 0, "%s: inline == out-of-line bitwise (%d differ)", m->name, bad_i);
+		CHECK(bad_a == 0, "%s: inline == array entry bitwise (%d differ)", m->name, bad_a);
 	}
-	printf("  bit identity: batch (isa %s) vs scalar vs inline, %d inputs x %zu methods\n", onb_batch_isa(), NB, count);
+	printf("  bit identity: batch (isa %s) vs scalar vs array vs inline, %d inputs x %zu methods\n", onb_batch_isa(), NB, count);
+	threshold_identity(nx, ny, nz);
 }
 
 /* The published failures, reproduced, not fixed. */

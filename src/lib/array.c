@@ -19,8 +19,8 @@
 		onb_vec3 v, u1, u2;                                                    \
 		v.x = n[0]; v.y = n[1]; v.z = n[2];                                    \
 		onb_##m(v, &u1, &u2);                                                  \
-		b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;                              \
-		b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;                              \
+		ONB__STORE3(double, b1, u1);                                           \
+		ONB__STORE3(double, b2, u2);                                           \
 	}
 #define ONB__ARRAY_F(m)                                                        \
 	void onb_##m##_arrayf(const float *n, float *b1, float *b2)               \
@@ -28,8 +28,8 @@
 		onb_vec3f v, u1, u2;                                                   \
 		v.x = n[0]; v.y = n[1]; v.z = n[2];                                    \
 		onb_##m##f(v, &u1, &u2);                                               \
-		b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;                              \
-		b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;                              \
+		ONB__STORE3(float, b1, u1);                                            \
+		ONB__STORE3(float, b2, u2);                                            \
 	}
 ONB__SPLIT(ONB__ARRAY_D, ONB__ARRAY_F)
 
@@ -41,9 +41,7 @@ ONB__SPLIT(ONB__ARRAY_D, ONB__ARRAY_F)
    three stores into the struct (the struct goes in registers, x and y in
    one 8-byte lane: a load of two 4-byte stores just made is not forwarded
    from the store buffer, a stall of about 15 cycles), which needs structs
-   without padding: */
-typedef char onb__vec3_unpadded[sizeof(onb_vec3) == 3 * sizeof(double) ? 1 : -1];
-typedef char onb__vec3f_unpadded[sizeof(onb_vec3f) == 3 * sizeof(float) ? 1 : -1];
+   without padding (split.h checks). */
 
 /* Apart, so that the usual path below needs no stack frame of its own. */
 #if defined(__GNUC__)
@@ -56,8 +54,8 @@ static ONB__APART onb_status onb__by_value(const onb_method *method, const doubl
 	onb_vec3 v, u1, u2;
 	memcpy(&v, n, sizeof v);
 	method->basis(v, &u1, &u2);
-	b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;
-	b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;
+	ONB__STORE3(double, b1, u1);
+	ONB__STORE3(double, b2, u2);
 	return ONB_OK;
 }
 
@@ -66,8 +64,8 @@ static ONB__APART onb_status onb__by_valuef(const onb_method *method, const floa
 	onb_vec3f v, u1, u2;
 	memcpy(&v, n, sizeof v);
 	method->basisf(v, &u1, &u2);
-	b1[0] = u1.x; b1[1] = u1.y; b1[2] = u1.z;
-	b2[0] = u2.x; b2[1] = u2.y; b2[2] = u2.z;
+	ONB__STORE3(float, b1, u1);
+	ONB__STORE3(float, b2, u2);
 	return ONB_OK;
 }
 

@@ -24,5 +24,5 @@ do for [term_i = 1:NTERM] {
     eval term(term_i, W_MULTI * 3 / 4, H_SINGLE)
     set output out.ext(term_i)
     plot file using 0:2:(0.8):3:xtic(1) with boxes lc rgb variable notitle, \
-         cell with lines dt 2 lw 1.5 lc rgb "#555555" title "the cell size: what a continuous frame field jumps"
+         cell with lines dt 2 lw 1.5 lc rgb "#555555" title "the cell size: what b1 jumps where it turns no faster than n"
 }

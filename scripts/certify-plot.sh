@@ -25,6 +25,23 @@ command -v gnuplot >/dev/null 2>&1 || { echo "certify-plot: gnuplot is not insta
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
 sh "$HERE/styles.sh" "$DIR/certify.csv" > "$W/styles"
+# keys "FILES" "NAMES" "PANELS": per method, "DUP FILL TITLE": a bracket
+# that is, band for band, an earlier one's of its panel is said once: its
+# title "m = other", DUP 1 (not drawn again); FILL: 0 for the first shade
+# of a panel, a hatch pattern (4-7) for the next ones, so that stacked
+# shades keep their own colours; frisvad_rotate's rows are its direction
+# error, and its title says so
+keys() {
+	awk -v files="$1" -v names="$2" -v panels="$3" 'BEGIN {
+		n = split(files, f, " "); split(names, nm, " "); split(panels, pa, " ")
+		for (i = 1; i <= n; i++) {
+			s = ""; while ((getline l < f[i]) > 0) s = s l ";"; close(f[i]); sig[i] = s
+			t = nm[i]; d = 0
+			for (j = 1; j < i; j++) if (pa[j] == pa[i] && sig[j] == s) { t = t " = " nm[j]; d = 1; break }
+			if (nm[i] == "frisvad_rotate") t = t " (its direction error)"
+			fill = d ? 0 : (k[pa[i]]++ ? 3 + (k[pa[i]] - 2) % 4 + 1 : 0)
+			print d, fill, t } }'
+}
 for p in float double; do
 	# the bands of this precision, in order, each a slot k (0, 1, ...); per
 	# method and band: k found bound ratio (bound and ratio "nan" where
@@ -84,7 +101,8 @@ for p in float double; do
 		panels="$panels $(awk -v m="$m" '$1 == m { print $2 }' "$W/styles")"
 	done
 	[ -n "$files" ] || { echo "certify-plot: no $p rows in $DIR/certify.csv" >&2; continue; }
-	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'"
+	keys "$files" "$names" "$panels" > "$W/keys.$p"
+	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'; keys='$W/keys.$p'"
 	gnuplot -e "$v; ratio=0; out='$DIR/certify_$p'" "$HERE/certify.gp"
 	gnuplot -e "$v; ratio=1; out='$DIR/certify_ratio_$p'" "$HERE/certify.gp"
 	outs="$DIR/certify_$p $DIR/certify_ratio_$p"
@@ -93,7 +111,8 @@ for p in float double; do
 	if [ -n "${FIGS:-}" ] && [ "$p" = float ] && [ -n "$sel" ]; then
 		mkdir -p "$FIGS"
 		sv=$(for m in $sel; do awk -v m="$m" '$1 == m { print $3, $4, $5 }' "$W/styles"; done)
-		gnuplot -e "$v; single=1; files='$(for m in $sel; do printf '%s ' "$W/$m.$p"; done)'; names='$sel'; colors='$(echo "$sv" | awk '{ print $1 }' | tr '\n' ' ')'; dashes='$(echo "$sv" | awk '{ print $2 }' | tr '\n' ' ')'; points='$(echo "$sv" | awk '{ print $3 }' | tr '\n' ' ')'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ratio=0; out='$FIGS/certify_frisvad_duff_$p'" "$HERE/certify.gp"
+		keys "$(for m in $sel; do printf '%s ' "$W/$m.$p"; done)" "$sel" "$(echo $sel | sed 's/[^ ]*/1/g')" > "$W/keys1.$p"
+		gnuplot -e "$v; single=1; files='$(for m in $sel; do printf '%s ' "$W/$m.$p"; done)'; names='$sel'; colors='$(echo "$sv" | awk '{ print $1 }' | tr '\n' ' ')'; dashes='$(echo "$sv" | awk '{ print $2 }' | tr '\n' ' ')'; points='$(echo "$sv" | awk '{ print $3 }' | tr '\n' ' ')'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; keys='$W/keys1.$p'; ratio=0; out='$FIGS/certify_frisvad_duff_$p'" "$HERE/certify.gp"
 		outs="$outs $FIGS/certify_frisvad_duff_$p"
 	fi
 	if command -v pngquant >/dev/null 2>&1; then

@@ -12,7 +12,10 @@
 # Called by certify-plot.sh with: prec, files (lines "k found bound ratio
 # singular"), names, colors, dashes, points, panels, xt (a file setting
 # the x tics, nbands, xs1, xs2, xs3), out, ratio,
-# here; optional single=1: one panel of all the files (the README's figure)
+# here, keys (a file, one line per method: "DUP FILL TITLE": DUP 1 for a
+# bracket that repeats an earlier one of its panel, drawn once, under the
+# earlier; FILL 0 a translucent shade, else a hatch pattern; the key
+# title); optional single=1: one panel of all the files (the README's figure)
 load here."/style.gp"
 set datafile separator whitespace
 load xt
@@ -59,7 +62,16 @@ set xtics rotate by 0 font F_TICK
 set grid ytics lc rgb "#e0e0e0"
 set key outside top center horizontal Left reverse maxcols 3 samplen 2.5 spacing 1.1 width 1 noenhanced
 set xlabel "band of n.z: 1 + n.z near -z | n.z from -0.9 to 0.9 (seam at 0) | 1 - n.z near +z" font F_AXIS
-set ylabel (ratio ? "proven bound / largest defect found" : "orthonormality defect, largest over the band") font F_AXIS
+kfield(i, k) = system(sprintf("awk -v i=%d -v k=%d 'NR == i { if (k < 3) print $k; else { sub(/^[^ ]+ [^ ]+ /, \"\"); print } }' '%s'", i, k, keys))
+DUPS = ""; FILLS = ""
+do for [i = 1:words(files)] { DUPS = DUPS." ".kfield(i, 1); FILLS = FILLS." ".kfield(i, 2) }
+dup(i) = int(word(DUPS, i))
+hatch(i) = int(word(FILLS, i))
+# frisvad_rotate's rows are its direction error: the y label of its panel says so
+rot = 0
+do for [i = 1:words(names)] { if (word(names, i) eq "frisvad_rotate") { rot = i } }
+ylab(p) = ratio ? "proven bound / largest defect found" : \
+    ((rot > 0 && in_panel(rot, p)) ? "largest defect or direction error, per band" : "orthonormality defect, largest over the band")
 if (!exists("single")) single = 0
 np = 0
 do for [i = 1:n] { if (int(word(panels, i)) > np) { np = int(word(panels, i)) } }
@@ -87,13 +99,15 @@ do for [term_i = 1:NTERM] {
     set output out.ext(term_i)
     set multiplot layout nrows, ncols title ttl font F_TITLE
     do for [p = 1:np] {
+        set ylabel ylab(p) font F_AXIS
         if (ratio) {
-        plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? word(names, i) : ""), \
+        plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? kfield(i, 3) : ""), \
              for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
         } else {
-        plot for [i = 1:n] st(2).word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0) with lines lw 2 lc rgb word(colors, i) title (in_panel(i, p) ? word(names, i) : ""), \
-             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent solid 0.18 noborder notitle, \
-             for [i = 1:n] st(3).word(files, i) using 1:(in_panel(i, p) ? $2 : 1/0) with lines lw 1.5 dt 2 lc rgb word(colors, i) notitle, \
+        plot for [i = 1:n] st(2).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? $2 : 1/0) with lines lw 2 lc rgb word(colors, i) title (in_panel(i, p) ? kfield(i, 3) : ""), \
+             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) && !dup(i) && !hatch(i) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent solid 0.18 noborder notitle, \
+             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) && !dup(i) && hatch(i) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent pattern hatch(i) noborder notitle, \
+             for [i = 1:n] st(3).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? $2 : 1/0) with lines lw 1.5 dt 2 lc rgb word(colors, i) notitle, \
              for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
         }
     }

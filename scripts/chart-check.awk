@@ -14,7 +14,8 @@
 #    samples excepted: a key title may sit beside its own sample, never
 #    over another series' data);
 # 5. every accuracy-floor band names the methods of its own panel: a
-#    series titled "floor of A, B" needs series A and B in the same plot;
+#    series titled "floor of A, B" needs series A and B in the same plot
+#    ("floor of A, +_x": A and A_x);
 #    "floor of all N" needs N method series there, "floor of the other N"
 #    needs N that no other floor title of the plot names (a floor band
 #    titled without names, or with a method the panel does not draw, is
@@ -169,6 +170,7 @@ function floors(   s, t, a, k, nm, pl, named, other, cntm, x) {
 		if (t ~ /^floor of the other [0-9]+$/) { otherc[pl] = t; continue }
 		if (t !~ /^floor of [^ ]/) { fail(sprintf("floor band \"%s\" does not name whose floor it is", t)); continue }
 		sub(/^floor of /, "", t); k = split(t, a, /, /)
+		for (x = 2; x <= k; x++) if (a[x] ~ /^\+/) a[x] = a[1] substr(a[x], 2)
 		for (x = 1; x <= k; x++) {
 			if (!((pl, a[x]) in inpl)) fail(sprintf("floor band \"%s\" is the floor of %s, which its plot does not draw", st[s], a[x]))
 			else named[pl]++

@@ -38,7 +38,16 @@
 #                       column: max, maxat (its 1 + n.z), bandlo, bandhi
 #                       (the rows whose largest defect is above 0.01),
 #                       rowratio (the largest max / min within one such row)
+#   {{PCBAND method}}   where the method's rows are above 0.01, gaps said
 #   {{PCH key}}         its header: evals, secs, nz, az, procs
+#   {{THTR precision normality|orthogonality}}  how that error of
+#                       threshold.csv changes as 1 + t grows ("falls from
+#                       A to B", "rises ...", "falls ... then rises ..."),
+#                       failing on any other shape
+#   {{CONT precision list|max|next|cell}}  the continuous frame fields of
+#                       the grid (max_b1_jump < 0.5), their largest jump,
+#                       the smallest jump of the others, the cell size;
+#                       failing when no such gap exists
 #   {{RATE key}}        summary.csv's '# rate:' line: evals, secs,
 #                       persec, perthread, threads
 #   {{FASTEST precision}}  the fastest method, and what beats it by the rule
@@ -337,6 +346,56 @@ generate() {
 		close(f)
 		print "findings: no " key " in mutation.txt" > "/dev/stderr"; bad = 1; return "?"
 	}
+	# how an error of threshold.csv changes as 1 + t grows (finite rows, by
+	# 1 + t): "falls from A to B", "rises from A to B", or "falls from A to B
+	# at 1 + t = X, then rises to C"; any other shape fails the generation
+	function THTR(p, c,   n, i, j, k, v, x, o, lo, hi, ilo, ihi) {
+		n = nth[p]
+		if (n < 2 || (c != "normality" && c != "orthogonality")) { print "findings: no threshold rows " p " " c > "/dev/stderr"; bad = 1; return "?" }
+		for (i = 1; i <= n; i++) { o[i] = i }
+		for (i = 2; i <= n; i++) for (j = i; j > 1 && TRX[p, o[j - 1]] > TRX[p, o[j]]; j--) { k = o[j]; o[j] = o[j - 1]; o[j - 1] = k }
+		for (i = 1; i <= n; i++) { v[i] = (c == "normality") ? TRN[p, o[i]] : TRO[p, o[i]]; x[i] = TRX[p, o[i]]
+			if (i == 1 || v[i] < lo) { lo = v[i]; ilo = i } if (i == 1 || v[i] > hi) { hi = v[i]; ihi = i } }
+		if (ihi == 1 && ilo == n) return "falls from " fmt(v[1]) " to " fmt(v[n])
+		if (ilo == 1 && ihi == n) return "rises from " fmt(v[1]) " to " fmt(v[n])
+		if (ilo > 1 && ilo < n && (ihi == 1 || ihi == n)) return "falls from " fmt(v[1]) " to " fmt(lo) " at 1 + t = " sprintf("%.3g", x[ilo]) ", then rises to " fmt(v[n])
+		print "findings: the " p " " c " error of threshold.csv neither falls, rises nor falls then rises with 1 + t" > "/dev/stderr"; bad = 1; return "?"
+	}
+	# the rows of polecap.csv above 0.01 for a method: "in every row of 1 +
+	# n.z from LO to HI" or "in N of the M rows of 1 + n.z from LO to HI (the
+	# other K reach A to B)": the band is said as it is, gaps included
+	function PCBAND(m,   lo, hi, k, d, a, nin, nabove, glo, ghi) {
+		if (!((m, "bandlo") in PCS)) { print "findings: no " m " row above 0.01 in polecap.csv" > "/dev/stderr"; bad = 1; return "?" }
+		lo = PCS[m, "bandlo"]; hi = PCS[m, "bandhi"]; nin = nabove = 0
+		for (k in rows) { split(k, a, SUBSEP); if (a[1] != m) continue; d = a[2] + 0
+			if (d < lo || d > hi) continue
+			nin++; if (rmx[m, a[2]] > 0.01) nabove++
+			else { if (!glo || rmx[m, a[2]] < glo) glo = rmx[m, a[2]]; if (rmx[m, a[2]] > ghi) ghi = rmx[m, a[2]] } }
+		if (nabove == nin) return sprintf("in every row of 1 + n.z from %.2g to %.2g", lo, hi)
+		return sprintf("in %d of the %d rows of 1 + n.z from %.2g to %.2g (the other %d reach %s to %s)", nabove, nin, lo, hi, nin - nabove, fmt(glo), fmt(ghi))
+	}
+	# the continuous frame fields of the grid rows of a precision: the methods
+	# whose largest jump of b1 between neighbouring cells (max_b1_jump) is
+	# below 0.5, far from the jump of a seam (b1 flips: up to 2); CONT p list
+	# (their names, in the order of the registry), max (their largest jump), next
+	# (the smallest jump of the others), cell (the cell size of the grid, the
+	# dashed line of the continuity chart); fails when none is below 0.5 or the
+	# next is not at least twice the largest
+	function CONT(p, what,   i, m, k, v, l, n, mx, nx, c, r, a) {
+		n = 0; mx = -1; nx = -1; l = ""
+		for (i = 1; i <= nmeth; i++) { m = meth[i]; k = m SUBSEP p SUBSEP "grid"
+			if (!((k, "max_b1_jump") in SUM) || SUM[k, "max_b1_jump"] ~ /nan/) continue
+			v = SUM[k, "max_b1_jump"] + 0
+			if (v < 0.5) { n++; l = l (l == "" ? "" : "|") m; if (v > mx) mx = v }
+			else if (nx < 0 || v < nx) nx = v }
+		if (!n || (nx >= 0 && nx < 2 * mx)) { print "findings: the " p " grid has no continuous field apart from the seams (max_b1_jump < 0.5, the next at least twice as large)" > "/dev/stderr"; bad = 1; return "?" }
+		if (what == "max") return fmt(mx)
+		if (what == "next") return fmt(nx)
+		if (what == "cell") { if (GRIDV == "") return "?"; split(GRIDV, a, "x"); r = 2 / a[1]; c = 6.283185307 / a[2]; return fmt(r > c ? r : c) }
+		k = split(l, a, "|"); r = ""
+		for (i = 1; i <= k; i++) r = r (i > 1 ? (i == k ? " and " : ", ") : "") "`" a[i] "`"
+		return r
+	}
 	function TH(p, key, field) { return THX(thc, "", p, key, field) }
 	# the same from results/half/threshold/threshold.csv (onbstudy threshold --precision all)
 	function THH(p, key, field) { return THX(thh, "half/", p, key, field) }
@@ -578,7 +637,9 @@ generate() {
 		}
 		tf = REF "/threshold.csv"
 		while ((getline line < tf) > 0) {
-			if (line ~ /^(float|double),/) { split(line, f, ","); sect = f[1] }
+			if (line ~ /^(float|double),/) { split(line, f, ","); sect = f[1]
+				# the finite rows, for THTR: 1 + t, normality, orthogonality
+				if (f[5] !~ /nan|inf/ && f[6] !~ /nan|inf/) { nth[sect]++; TRX[sect, nth[sect]] = f[4] + 0; TRN[sect, nth[sect]] = f[5] + 0; TRO[sect, nth[sect]] = f[6] + 0 } }
 			else if (line ~ /^# (minimax|published)/ && sect != "") thc[sect] = thc[sect] line "\n"
 		}
 		close(tf)
@@ -630,6 +691,9 @@ generate() {
 			else if (a[1] == "CP" && nt == 2) rep = CP(a[2])
 			else if (a[1] == "ONBH" && nt == 1) rep = table_onbh()
 			else if (a[1] == "PC" && nt == 3) rep = PC(a[2], a[3])
+			else if (a[1] == "PCBAND" && nt == 2) rep = PCBAND(a[2])
+			else if (a[1] == "THTR" && nt == 3) rep = THTR(a[2], a[3])
+			else if (a[1] == "CONT" && nt == 3) rep = CONT(a[2], a[3])
 			else if (a[1] == "V" && nt == 4) rep = V(a[2], a[3], a[4], 0)
 			else if (a[1] == "VC" && nt == 4) rep = V(a[2], a[3], a[4], 1)
 			else if (a[1] == "BZ" && nt == 5) rep = BZ(a[2], a[3], a[4], a[5])

@@ -3,12 +3,15 @@
 # floor_max, the largest over the chart's distributions per bin), merged
 # within a panel where two methods' floors agree (floor_max within 1.3x in
 # every bin), so that a panel shows one band per distinct floor, in the
-# colour of its first method, titled with the methods whose floor it is.
+# colour of its methods (grey when they differ), the first band of a panel
+# solid and the next ones hatched, titled with the methods whose floor it is.
 # awk -F, -v p=PREC -v ds="DIST ..." -v ax=AXIS -v sc=lin|log [-v zx=X]
 #     -v methods="M1 M2 ..." -v panels="P1 P2 ..." -v colors="C1 C2 ..."
 #     -v out=PREFIX -f floor-bands.awk by_nz.csv
 # writes PREFIX_K.dat (x rms max, by x) per band and prints one line per
-# band: "PREFIX_K.dat panel colour title".  Titles: "floor of A", "floor
+# band: "PREFIX_K.dat panel colour fill title" (fill: 0 solid, else a
+# gnuplot hatch pattern).  In a long title, a name that extends the first
+# is written "+SUFFIX" ("floor of cycles_cross111, +_avx2").  Titles: "floor of A", "floor
 # of A, B", "floor of all N" (every method of a panel of 3 or more), "floor of the
 # other N" (the N methods of the panel that no other band names);
 # scripts/chart-check.awk checks that each names methods of its own panel
@@ -59,9 +62,19 @@ END {
 			if (g[j] == i) names = names (names == "" ? "" : ", ") M[j]
 			else { others = others (others == "" ? "" : ", ") M[j]; no++ }
 		}
+		# a long list whose later names extend the first (cycles_cross111,
+		# cycles_cross111_avx2) says the extensions alone: "+_avx2"
+		if (length(names) > 26) { k = split(names, nn, /, /); ab = nn[1]
+			for (j = 2; j <= k; j++) ab = ab ", " (index(nn[j], nn[1]) == 1 && length(nn[j]) > length(nn[1]) ? "+" substr(nn[j], length(nn[1]) + 1) : nn[j])
+			names = ab }
 		if (cnt[i] > 2 && no == 0) t = "floor of all " cnt[i]
 		else if (cnt[i] > 2 && !(PN[i] in other)) { t = "floor of the other " cnt[i]; other[PN[i]] = 1 }
 		else t = "floor of " names
-		print f, PN[i], CO[i], t
+		# the colour: its methods' when they share one, else grey; the fill:
+		# the first band of a panel solid, the next ones hatched (4, 5, 6, 7),
+		# so that bands in shades of one hue stay apart
+		c = CO[i]; for (j = i + 1; j <= n; j++) if (g[j] == i && CO[j] != c) c = "#9a9a9a"
+		fill = kp[PN[i]]++ ? 3 + (kp[PN[i]] - 2) % 4 + 1 : 0
+		print f, PN[i], c, fill, t
 	}
 }

@@ -20,9 +20,11 @@
 #   optional zero_x: where the pole bin is drawn (an x tic "-z", or
 #     zero_label: "+z" at the north pole)
 #   optional bands: a file (scripts/floor-bands.awk's output), one line per
-#     accuracy-floor band: "data-file panel colour title...", each drawn
-#     under the methods of its panel, translucent, in its colour
+#     accuracy-floor band: "data-file panel colour fill title...", each
+#     drawn under the methods of its panel in its colour, translucent
+#     (fill 0) or hatched (fill: a pattern number)
 #   optional single=1: one panel (the README's figures), W_SINGLE wide
+#   optional wide: the names of the wide series, for the subtitle
 load here."/style.gp"
 if (exists("yl_key")) yl = value(yl_key)
 set datafile separator whitespace
@@ -30,7 +32,19 @@ set logscale y
 if (logx) set logscale x; set format x "10^{%L}"
 set format y "10^{%L}"
 set xrange [xmin:xmax]
-if (exists("zero_x")) set xtics add ((exists("zero_label") ? zero_label : "-z") zero_x)
+# the pole slot: its tick, a decade left of the first bin, an axis break
+# between, and no line across it (the pole's points are drawn alone)
+has_zx = exists("zero_x")
+zx = has_zx ? zero_x : 0
+off(x) = has_zx && x < zx * 1.5
+# (x tics by hand, one a decade from the first clear of the slot's tick)
+if (has_zx) {
+    set xtics ()
+    do for [d = ceil(log10(zx * 4)):floor(log10(xmax))] { set xtics add (sprintf("10^{%d}", d) 10.0**d) }
+    set mxtics 10
+    set xtics add ((exists("zero_label") ? zero_label : "-z") zero_x)
+    eval xbreak(zx * sqrt(10.0), xmin, xmax)
+}
 has_nf = exists("nf") ? nf : (ymax >= ceil)
 if (has_nf) { ymax = ceil * 5; set ytics add ("non-finite" ceil) }
 set yrange [ymin:ymax]
@@ -57,29 +71,46 @@ if (!exists("single")) single = 0
 np = single ? 1 : words(ptitles)
 ncols = (np > 1) ? 2 : 1
 nrows = (np + ncols - 1) / ncols
-W = single ? W_SINGLE : W_MULTI
-H = single ? H_SINGLE : 90 + H_PANEL_ROW * nrows
 in_panel(i, p) = single ? 1 : (int(word(panels, i)) == p)
 nb = exists("bands") ? int(system(sprintf("awk 'END { print NR }' '%s'", bands))) : 0
-bfield(b, k) = system(sprintf("awk -v b=%d -v k=%d 'NR == b { if (k < 4) print $k; else { sub(/^[^ ]+ [^ ]+ [^ ]+ /, \"\"); print } }' '%s'", b, k, bands))
-BF = ""; BP = ""; BC = ""
-do for [b = 1:nb] { BF = BF." ".bfield(b, 1); BP = BP." ".bfield(b, 2); BC = BC." ".bfield(b, 3) }
+bfield(b, k) = system(sprintf("awk -v b=%d -v k=%d 'NR == b { if (k < 5) print $k; else { sub(/^[^ ]+ [^ ]+ [^ ]+ [^ ]+ /, \"\"); print } }' '%s'", b, k, bands))
+BF = ""; BP = ""; BC = ""; BS = ""
+do for [b = 1:nb] { BF = BF." ".bfield(b, 1); BP = BP." ".bfield(b, 2); BC = BC." ".bfield(b, 3); BS = BS." ".bfield(b, 4) }
+hatched(b) = int(word(BS, b)) > 0
 in_band(b, p) = single ? 1 : (int(word(BP, b)) == p)
-# the key above each panel: room for its entries, two to a row
-most = 0
-do for [p = 1:np] {
-    e = 0
-    do for [i = 1:n] { if (in_panel(i, p)) { e = e + 1 } }
-    do for [b = 1:nb] { if (in_band(b, p)) { e = e + 1 } }
-    if (e > most) { most = e }
-}
 title(i) = system(sprintf("sed -n '%dp' '%s'", i, titles))
+# the key above each panel, in columns (vertical, at most krows rows, so
+# gnuplot adds the columns), as many as the longest title of the panel
+# lets fit in its cell (at most 3), and room above every graph for the
+# most rows any panel needs, so that no key reaches a frame; a canvas
+# 200 px wider when that keeps every key within 5 rows
+CHW = 6.4
+do for [wide_try = 0:1] {
+    W = single ? W_SINGLE : W_MULTI + 200 * wide_try
+    KW = (single ? W : W / 2) - 60
+    krows = 1
+    do for [p = 1:np] {
+        e = 0; L = 0
+        do for [i = 1:n] { if (in_panel(i, p)) { e = e + 1; if (strlen(title(i)) > L) { L = strlen(title(i)) } } }
+        do for [b = 1:nb] { if (in_band(b, p)) { e = e + 1; if (strlen(bfield(b, 5)) > L) { L = strlen(bfield(b, 5)) } } }
+        c = int(KW / (L * CHW + 70)); c = (c < 1) ? 1 : ((c > 3) ? 3 : c)
+        r = ceil(e * 1.0 / c)
+        if (r > krows) { krows = r }
+    }
+    if (krows <= 5 || single) { break }
+}
+set key vertical maxrows krows
 # fixed margins, so that every panel's graph has the same size
-set tmargin 2.2 + 1.25 * ceil(most / (single ? 3.0 : 2.0))
+set tmargin 2.5 + 1.5 * krows
+# (and a taller canvas for a key of more rows than the usual, so that the
+# graphs keep their height)
+H = single ? H_SINGLE + 24 * (krows > 3 ? krows - 3 : 0) : 90 + (H_PANEL_ROW + 24 * (krows > 4 ? krows - 4 : 0)) * nrows
 set bmargin 3.5
 set lmargin 14
 set rmargin 10
-note = sprintf("zero error drawn at %.0e; wide lines: frisvad, frisvad\\_max, duff", floor)
+# the wide lines named from the series drawn (wide: their names, escaped
+# for enhanced text, from plots.sh or poles.sh; none when all or none are wide)
+note = sprintf("zero error drawn at %.0e", floor).((exists("wide") && wide ne "") ? "; wide lines: ".wide : "")
 if (nb > 0) note = note."}\n{/*0.8 bands: each method's own accuracy floor (its exact formula rounded once), RMS to max per bin, in its colour"
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
@@ -90,17 +121,23 @@ do for [term_i = 1:NTERM] {
         unset title
         # (gnuplot evaluates an empty iteration's colour once: no bands, no clause)
         if (nb > 0) {
-        plot for [b = 1:nb] word(BF, b) using 1:(in_band(b, p) ? $2 : 1/0):3 with filledcurves fc rgb word(BC, b) \
-                 fs transparent solid 0.22 noborder title (in_band(b, p) ? bfield(b, 4) : ""), \
-             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) ? column(col) : 1/0) with linespoints \
+        plot for [b = 1:nb] word(BF, b) using 1:(in_band(b, p) && !off($1) && !hatched(b) ? $2 : 1/0):3 with filledcurves fc rgb word(BC, b) \
+                 fs transparent solid 0.22 noborder title (in_band(b, p) && !hatched(b) ? bfield(b, 5) : ""), \
+             for [b = 1:nb] word(BF, b) using 1:(in_band(b, p) && !off($1) && hatched(b) ? $2 : 1/0):3 with filledcurves fc rgb word(BC, b) \
+                 fs transparent pattern int(word(BS, b)) border lc rgb word(BC, b) title (in_band(b, p) && hatched(b) ? bfield(b, 5) : ""), \
+             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && !off($1) ? column(col) : 1/0) with linespoints \
                  pt int(word(points, i)) ps 0.6 pi 4 lw real(word(widths, i)) lc rgb word(colors, i) dt int(word(dashes, i)) \
                  title (in_panel(i, p) ? title(i) : ""), \
+             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && off($1) ? column(col) : 1/0) with points \
+                 pt int(word(points, i)) ps 0.8 lc rgb word(colors, i) notitle, \
              for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && column(4) > 0 ? ceil : 1/0) with points \
                  pt int(word(points, i)) ps 1.2 lc rgb word(colors, i) notitle
         } else {
-        plot for [i = 1:n] word(files, i) using 1:(in_panel(i, p) ? column(col) : 1/0) with linespoints \
+        plot for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && !off($1) ? column(col) : 1/0) with linespoints \
                  pt int(word(points, i)) ps 0.6 pi 4 lw real(word(widths, i)) lc rgb word(colors, i) dt int(word(dashes, i)) \
                  title (in_panel(i, p) ? title(i) : ""), \
+             for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && off($1) ? column(col) : 1/0) with points \
+                 pt int(word(points, i)) ps 0.8 lc rgb word(colors, i) notitle, \
              for [i = 1:n] word(files, i) using 1:(in_panel(i, p) && column(4) > 0 ? ceil : 1/0) with points \
                  pt int(word(points, i)) ps 1.2 lc rgb word(colors, i) notitle
         }

@@ -83,6 +83,16 @@ series() {
 	awk -F, -v m="$1" -v p="$P" -v ds="$2" -v ax="$3" -v sc="$4" -v fl="$FLOOR" -v ce="$5" -v zx="$ZX" \
 		-f "$HERE/series.awk" "$RUN/by_nz.csv" "$RUN/by_nz.csv" | sort -g
 }
+# wide_of "NAMES" "WIDTHS": the names of the wide series (the headline
+# methods, styles.awk), escaped for gnuplot's enhanced text; nothing when
+# all or none of the series drawn are wide
+wide_of() {
+	awk -v n="$1" -v w="$2" 'BEGIN { k = split(n, a, " "); split(w, b, " "); lo = hi = b[1]
+		for (i = 1; i <= k; i++) { if (b[i] + 0 < lo + 0) lo = b[i]; if (b[i] + 0 > hi + 0) hi = b[i] }
+		if (lo + 0 == hi + 0) exit
+		for (i = 1; i <= k; i++) if (b[i] + 0 == hi + 0) { m = a[i]; gsub(/_/, "\\\\_", m); s = s (s == "" ? "" : ", ") m }
+		print s }'
+}
 # titles "FILES" COL CEIL: the key titles (scripts/series-titles.awk)
 titles() { awk -v files="$1" -v names="$names" -v panels="$panels" -v col="$2" -v ce="$3" -f "$HERE/series-titles.awk"; }
 # nonfinite "FILES" CEIL: 1 when any bin holds a non-finite output
@@ -135,7 +145,7 @@ polecap() {
 
 for P in float double; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
-	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=1.5e-8; else FLOOR=1e-20; EPS=2.22e-16; ZX=1e-18; fi
+	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=7.5e-9; else FLOOR=1e-20; EPS=2.22e-16; ZX=1.33e-17; fi
 	CEIL=10
 	awk -F, -v p="$P" '/^#/ || $1 == "method" || $2 == p' "$RUN/summary.csv" > "$W/summary_$P.csv"
 	# styles from both precisions, so that the panels group the same
@@ -168,7 +178,7 @@ for P in float double; do
 	b1=$(bands fb1_$P uniform nz lin "$names" "$panels" "$colors")
 	b2=$(bands fb2_$P "south exhaustive uniform" log10_1pnz log "$names" "$panels" "$colors")
 	b6=$(bands fb6_$P nonunit log10_absnorm log "$names" "$panels" "$colors")
-	common="here='$HERE'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR"
+	common="here='$HERE'; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; wide='$(wide_of "$names" "$widths")'"
 	n=$(samples "$first" "$P" uniform)
 	if [ -n "$n" ]; then
 		titles "$files1" 2 "$C1" > "$W/t1.txt"; titles "$files1" 3 "$C1" > "$W/t1r.txt"
@@ -182,7 +192,8 @@ for P in float double; do
 	titles "$files2" 2 "$C2" > "$W/t2.txt"
 	set -- $(range "$files2" 2 1)
 	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (distance from the south pole; -z: n.z = -1 exactly)'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs $FRP'"
-	# the README's figure (float): frisvad, frisvad_max and duff alone, one panel
+	# the README's figure (float): frisvad, frisvad_max and duff alone (those
+	# of them in the run), one panel, titled from the data (pole-title.awk)
 	sel=$(for m in frisvad frisvad_max duff; do echo "$pmethods" | grep -qx "$m" && printf '%s ' "$m"; done)
 	if [ "$P" = float ] && [ -n "$sel" ]; then
 		mkdir -p "$FIGS"
@@ -191,7 +202,7 @@ for P in float double; do
 		awk -v files="$sf" -v names="$sel" -v panels="$(echo $sel | sed 's/[^ ]*/1/g')" -v col=2 -v ce="$C2" -f "$HERE/series-titles.awk" > "$W/t2s.txt"
 		bs=$(bands fbs_$P "south exhaustive uniform" log10_1pnz log "$sel" "$(echo $sel | sed 's/[^ ]*/1/g')" "$sc")
 		set -- $(range "$sf" 2 1)
-		gp lines.gp "$bs here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$P near n.z = -1: frisvad fails on its own floor, duff stays at its floor'"
+		gp lines.gp "$bs here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$(awk -F, -v p="$P" -v ds="south exhaustive uniform" -v methods="$sel" -f "$HERE/pole-title.awk" "$RUN/summary.csv")'"
 	fi
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)

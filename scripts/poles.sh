@@ -20,7 +20,7 @@ for s in south north; do
 done
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
-P=float; FLOOR=1e-12; CEIL=10; ZX=1.5e-8
+P=float; FLOOR=1e-12; CEIL=10; ZX=7.5e-9
 awk -F, -v p="$P" '/^#/ || $1 == "method" || $2 == p' "$DIR/south/summary.csv" > "$W/summary.csv"
 sh "$HERE/styles.sh" "$W/summary.csv" > "$W/styles"
 sty() { awk -v m="$1" -v c="$2" '$1 == m { print $c }' "$W/styles"; }
@@ -54,7 +54,11 @@ for s in south north; do
 	band=""; [ -s "$W/floor_$s.bands" ] && band="bands='$W/floor_$s.bands';"
 	inputs=$(awk -F, '!/^#/ && $3 == "exhaustive" { print $4; exit }' "$DIR/$s/summary.csv")
 	az=$(sed -n 's/^# exhaustive: .* \([0-9]*\) azimuths.*/\1/p' "$DIR/$s/summary.csv" | head -1)
-	common="here='$HERE'; nosvg=${NOSVG:-0}; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL"
+	common="here='$HERE'; nosvg=${NOSVG:-0}; colors='$colors'; dashes='$dashes'; points='$points'; widths='$widths'; panels='$panels'; ptitles='$ptitles'; floor=$FLOOR; ceil=$CEIL; wide='$(awk -v n="$names" -v w="$widths" 'BEGIN { k = split(n, a, " "); split(w, b, " "); lo = hi = b[1]
+		for (i = 1; i <= k; i++) { if (b[i] + 0 < lo + 0) lo = b[i]; if (b[i] + 0 > hi + 0) hi = b[i] }
+		if (lo + 0 == hi + 0) exit
+		for (i = 1; i <= k; i++) if (b[i] + 0 == hi + 0) { m = a[i]; gsub(/_/, "\\\\_", m); s = s (s == "" ? "" : ", ") m }
+		print s }')'"
 	set -- $(range "$files" 2)
 	gnuplot -e "$band $common; files='$files'; titles='$W/titles_$s'; nf=$nf; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; zero_label='$zl'; xl='$xl'; yl_key='YL_ERROR'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method; frisvad\\_rotate: its direction error)'" "$HERE/lines.gp"
 	command -v pngquant >/dev/null 2>&1 && { pngquant --force --skip-if-larger --speed 1 --output "$DIR/${s}_pole_float.png" 64 "$DIR/${s}_pole_float.png" || true; }

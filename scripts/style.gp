@@ -47,3 +47,14 @@ ext(i) = (i == 1) ? ".png" : ".svg"
 # how many outputs: PNG only when nosvg=1 is passed
 if (!exists("nosvg")) nosvg = 0
 NTERM = nosvg ? 1 : 2
+# xbreak(x, lo, hi): the commands (for eval) that mark a break in a log x
+# axis from lo to hi at x: a gap in the bottom and top borders with two
+# slanted strokes, between a slot (the "-z" or "t = -1" tick, a decade
+# left of the first point) and the data; no line is drawn across it
+xbreak(x, lo, hi) = sprintf("XBF = (%g / %g) ** 0.005; XB = %g; ", hi, lo, x) . \
+    "set object 95 rect from first XB / XBF, graph -0.015 to first XB * XBF, graph 0.015 fc rgb 'white' fs solid 1.0 noborder front; " . \
+    "set object 96 rect from first XB / XBF, graph 0.985 to first XB * XBF, graph 1.015 fc rgb 'white' fs solid 1.0 noborder front; " . \
+    "set arrow 95 from first XB / XBF ** 2, graph -0.02 to first XB / XBF ** 0.5, graph 0.02 nohead lw 1 lc rgb '#000000' front; " . \
+    "set arrow 96 from first XB * XBF ** 0.5, graph -0.02 to first XB * XBF ** 2, graph 0.02 nohead lw 1 lc rgb '#000000' front; " . \
+    "set arrow 97 from first XB / XBF ** 2, graph 0.98 to first XB / XBF ** 0.5, graph 1.02 nohead lw 1 lc rgb '#000000' front; " . \
+    "set arrow 98 from first XB * XBF ** 0.5, graph 0.98 to first XB * XBF ** 2, graph 1.02 nohead lw 1 lc rgb '#000000' front"

@@ -29,10 +29,11 @@ if (STATS_max > y1) { y1 = STATS_max }
 if (!exists("nfrows")) nfrows = 0
 # the non-finite rows: at a tick "t = -1" left of the data, in a band
 # above it
-# (x tics by hand, one a decade, so that "t = -1" sits a decade below the
-# first and collides with none)
+# (x tics by hand, one a decade; "t = -1" sits a full decade left of the
+# first point, with an axis break between, and collides with none)
 d0 = ceil(log10(x0)); d1 = floor(log10(x1))
-xnf = 10.0**(d0 - 1)
+xnf = x0 / 10.0
+if (10.0**d0 < x0 * 1.5 && d0 < d1) { d0 = d0 + 1 }
 set xtics ()
 do for [d = d0:d1] { set xtics add (sprintf("10^{%d}", d) 10.0**d) }
 set mxtics 10
@@ -48,6 +49,7 @@ set xrange [(nfrows > 0 ? xnf / 2.5 : x0 / 1.5) : x1 * 1.5]
 set yrange [y0 / 3 : (nfrows > 0 ? ynf * 6 : y1 * 3)]
 if (nfrows > 0) {
     set xtics add ((nft eq "-1" ? "t = -1" : "non-finite") xnf)
+    eval xbreak(sqrt(xnf * x0), xnf / 2.5, x1 * 1.5)
     set ytics add ("non-finite" ynf)
     set object 13 rect from graph 0, first ynf / 3 to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
 }

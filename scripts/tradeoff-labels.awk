@@ -1,5 +1,7 @@
 # tradeoff-labels.awk - labels of tradeoff.gp that never overprint:
-# points that coincide on the chart share one label ("a = b"); each label
+# points that coincide on the chart share one label ("a ≈ b", an
+# almost-equal sign: the markers overlap, the methods need not be
+# bit-for-bit the same, which "=" says elsewhere); each label
 # goes right of its point, or, when that spot is taken, up or down to the
 # nearest free spot, joined to its point by a grey leader line.
 # awk -v col=2|6 -v xmin= -v xmax= -v ymin= -v ymax= -v gw= -v gh= -f tradeoff-labels.awk tradeoff_P.dat
@@ -30,7 +32,7 @@ END {
 		if (gone[i]) continue
 		t = name[i]
 		for (j = i + 1; j <= n; j++)
-			if (!gone[j] && (px[i] - px[j]) ^ 2 + ((py[i] - py[j]) * 0.5) ^ 2 < 0.005 ^ 2) { t = t " = " name[j]; gone[j] = 1 }
+			if (!gone[j] && (px[i] - px[j]) ^ 2 + ((py[i] - py[j]) * 0.5) ^ 2 < 0.005 ^ 2) { t = t " \342\211\210 " name[j]; gone[j] = 1 }
 		text[i] = t
 	}
 	# place, from the top down

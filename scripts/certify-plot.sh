@@ -25,22 +25,34 @@ command -v gnuplot >/dev/null 2>&1 || { echo "certify-plot: gnuplot is not insta
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
 sh "$HERE/styles.sh" "$DIR/certify.csv" > "$W/styles"
-# keys "FILES" "NAMES" "PANELS": per method, "DUP FILL TITLE": a bracket
-# that is, band for band, an earlier one's of its panel is said once: its
-# title "m = other", DUP 1 (not drawn again); FILL: 0 for the first shade
-# of a panel, a hatch pattern (4-7) for the next ones, so that stacked
-# shades keep their own colours; frisvad_rotate's rows are its direction
-# error, and its title says so
+# keys "FILES" "NAMES" "PANELS": per method, "DUP FILL TITLE", and a sixth
+# column in each file: 1 where the band's bracket (found, bound) is an
+# earlier method's of the same panel, said once: drawn for the earlier
+# method only, and the key title says "m = other" (every band) or "m (=
+# other in N bands)"; DUP 1 when every band repeats.  FILL: 0 for the first
+# shade of a panel, a hatch pattern (4-7) for the next ones, so that stacked
+# shades keep their own colours.  frisvad_rotate's rows are its direction
+# error, and its title says so.
 keys() {
 	awk -v files="$1" -v names="$2" -v panels="$3" 'BEGIN {
 		n = split(files, f, " "); split(names, nm, " "); split(panels, pa, " ")
+		for (i = 1; i <= n; i++) { nl[i] = 0
+			while ((getline l < f[i]) > 0) { split(l, c, " "); nl[i]++; L[i, nl[i]] = c[1] " " c[2] " " c[3] " " c[4] " " c[5]; B[i, c[1]] = c[2] " " c[3] " " c[5] }
+			close(f[i]) }
 		for (i = 1; i <= n; i++) {
-			s = ""; while ((getline l < f[i]) > 0) s = s l ";"; close(f[i]); sig[i] = s
-			t = nm[i]; d = 0
-			for (j = 1; j < i; j++) if (pa[j] == pa[i] && sig[j] == s) { t = t " = " nm[j]; d = 1; break }
+			t = nm[i]; nd = 0; split("", with)
+			for (r = 1; r <= nl[i]; r++) { split(L[i, r], c, " "); d = 0
+				for (j = 1; j < i && !d; j++) if (pa[j] == pa[i] && ((j, c[1]) in B) && B[j, c[1]] == c[2] " " c[3] " " c[5]) { d = j; with[j]++ }
+				D[i, r] = d ? 1 : 0; nd += d ? 1 : 0 }
+			best = 0; for (j in with) if (!best || with[j] > with[best]) best = j
+			if (nd == nl[i] && nd > 0 && with[best] == nd) t = t " = " nm[best]
+			else if (nd > 0) t = t sprintf(" (= %s in %d band%s)", nm[best], with[best], with[best] == 1 ? "" : "s")
 			if (nm[i] == "frisvad_rotate") t = t " (its direction error)"
-			fill = d ? 0 : (k[pa[i]]++ ? 3 + (k[pa[i]] - 2) % 4 + 1 : 0)
-			print d, fill, t } }'
+			all = (nd == nl[i] && nd > 0)
+			fill = all ? 0 : (k[pa[i]]++ ? 3 + (k[pa[i]] - 2) % 4 + 1 : 0)
+			for (r = 1; r <= nl[i]; r++) print L[i, r], D[i, r] > f[i]
+			close(f[i])
+			print (all ? 1 : 0), fill, t } }'
 }
 for p in float double; do
 	# the bands of this precision, in order, each a slot k (0, 1, ...); per

@@ -88,7 +88,11 @@ set lmargin 12
 set rmargin 3
 W = single ? W_SINGLE : W_MULTI; H = single ? H_SINGLE + 60 : 100 + H_PANEL_ROW * nrows
 # steps: each band a slot from k to k + 1
-st(c) = sprintf("< awk '{ print $1, $%d; print $1 + 1, $%d; print \"\" }' ", c, c)
+# (column 3 of a step: 1 where the band repeats an earlier bracket, not drawn)
+st(c) = sprintf("< awk '{ print $1, $%d, $6; print $1 + 1, $%d, $6; print \"\" }' ", c, c)
+# the shade of a band: found, bound, and 1 where it is not drawn (singular,
+# or a repeat)
+shade(i) = "< awk '{ print $1, $2, $3, $5 + $6; print $1 + 1, $2, $3, $5 + $6; print \"\" }' ".word(files, i)
 sub1 = ratio ? "proven bound / largest defect found, per band (1: tight; the run's target 1.25, dotted; 100 or more drawn at 100)" \
              : "largest defect found (solid) <= true maximum (in the shade) <= proven bound (dashed), per band"
 ttl = sprintf("%s: onbstudy certify, %s\n{/*0.8 %s; u = 2^{%d}}%s", \
@@ -101,13 +105,13 @@ do for [term_i = 1:NTERM] {
     do for [p = 1:np] {
         set ylabel ylab(p) font F_AXIS
         if (ratio) {
-        plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? kfield(i, 3) : ""), \
+        plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) && !dup(i) && $3 == 0 ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? kfield(i, 3) : ""), \
              for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
         } else {
-        plot for [i = 1:n] st(2).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? $2 : 1/0) with lines lw 2 lc rgb word(colors, i) title (in_panel(i, p) ? kfield(i, 3) : ""), \
-             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) && !dup(i) && !hatch(i) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent solid 0.18 noborder notitle, \
-             for [i = 1:n] "< awk '$5 == 0 { print $1, $2, $3; print $1 + 1, $2, $3; print \"\" }' ".word(files, i) using 1:(in_panel(i, p) && !dup(i) && hatch(i) ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent pattern hatch(i) noborder notitle, \
-             for [i = 1:n] st(3).word(files, i) using 1:(in_panel(i, p) && !dup(i) ? $2 : 1/0) with lines lw 1.5 dt 2 lc rgb word(colors, i) notitle, \
+        plot for [i = 1:n] st(2).word(files, i) using 1:(in_panel(i, p) && !dup(i) && $3 == 0 ? $2 : 1/0) with lines lw 2 lc rgb word(colors, i) title (in_panel(i, p) ? kfield(i, 3) : ""), \
+             for [i = 1:n] shade(i) using 1:(in_panel(i, p) && !dup(i) && !hatch(i) && $4 == 0 ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent solid 0.18 noborder notitle, \
+             for [i = 1:n] shade(i) using 1:(in_panel(i, p) && !dup(i) && hatch(i) && $4 == 0 ? $2 : 1/0):3 with filledcurves fc rgb word(colors, i) fs transparent pattern hatch(i) noborder notitle, \
+             for [i = 1:n] st(3).word(files, i) using 1:(in_panel(i, p) && !dup(i) && $3 == 0 ? $2 : 1/0) with lines lw 1.5 dt 2 lc rgb word(colors, i) notitle, \
              for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle
         }
     }

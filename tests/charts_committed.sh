@@ -1,0 +1,84 @@
+#!/bin/sh
+# charts_committed.sh - the chart check on the inputs of every committed
+# chart, not only on fixtures: the reference run (with the pole-cap map and
+# the README figures), the wild run, the exhaustive pole runs and the
+# certify run are redrawn from their committed CSV files by the project's
+# own scripts, as SVG, and scripts/chart-check.awk checks each (the checks
+# are listed in tests/plots_cli.sh); then
+#   - no chart's text names a method of the registry that its run does not
+#     have (a title naming frisvad in a run without it);
+#   - the README pole figure's title (scripts/pole-title.awk) claims
+#     "fails" and "on its own floor" only where summary.csv shows them;
+#   - a run with a single method and no frisvad still draws every chart,
+#     each passing the check.
+# Not checked here: the PNGs themselves (the same gnuplot scripts draw
+# them; they are looked at by eye before each commit).
+. "$(dirname "$0")/lib.sh"
+command -v gnuplot >/dev/null 2>&1 || { echo "charts_committed: gnuplot missing: scripts/install-deps.sh --test must install it"; exit 1; }
+T=$tmp
+./onbstudy list --format csv | awk -F, 'NR > 1 { print $1 }' > "$T/registry"
+# check DIR RUN_SUMMARY...: chart-check every SVG of DIR, and no registry
+# method in any text of it that the run's summary (or certify) files lack
+check() {
+	dir=$1; shift
+	awk -F, 'FNR > 1 && !/^#/ { print $1 }' "$@" | sed 's/+fma$//' | sort -u > "$T/have"
+	n=0
+	for f in "$dir"/*.svg; do
+		[ -f "$f" ] || continue
+		n=$((n + 1))
+		case $(basename "$f") in maps_*) nl=1;; *) nl=0;; esac
+		out=$(awk -v nolabels=$nl -f scripts/chart-check.awk "$f" 2>&1) && ok || bad "chart check: $out"
+		# the texts of the chart, tags dropped, as words
+		sed -n 's/<[^>]*>/ /g; s/\\_/_/g; p' "$f" | tr -c 'a-z0-9_\n' ' ' | tr ' ' '\n' | sort -u > "$T/words"
+		absent=$(grep -Fxf "$T/registry" "$T/words" | grep -Fxvf "$T/have" | tr '\n' ' ')
+		[ -z "$absent" ] && ok || bad "$(basename "$f") names methods its run does not have: $absent"
+	done
+	[ "$n" -gt 0 ] && ok || bad "no SVG drawn in $dir"
+}
+# the reference run and its README figures, the pole-cap map
+mkdir -p "$T/ref" "$T/pc" "$T/fig"
+cp results/reference/*.csv "$T/ref/"; cp results/polecap/polecap.csv "$T/pc/"
+FIGS="$T/fig" PCDIR="$T/pc" sh scripts/plots.sh "$T/ref" > "$T/log" 2>&1 || bad "plots.sh on the reference run failed: $(cat "$T/log")"
+check "$T/ref" results/reference/summary.csv
+check "$T/fig" results/reference/summary.csv
+check "$T/pc" results/reference/summary.csv
+# the wild run (no frisvad, no threshold.csv)
+mkdir -p "$T/wild" "$T/wfig"
+cp results/wild/*.csv "$T/wild/"
+FIGS="$T/wfig" PCDIR="$T/wild" sh scripts/plots.sh "$T/wild" > "$T/log" 2>&1 || bad "plots.sh on the wild run failed: $(cat "$T/log")"
+check "$T/wild" results/wild/summary.csv
+check "$T/wfig" results/wild/summary.csv
+# the exhaustive pole runs
+mkdir -p "$T/poles/south" "$T/poles/north"
+cp results/poles/south/*.csv "$T/poles/south/"; cp results/poles/north/*.csv "$T/poles/north/"
+sh scripts/poles.sh "$T/poles" > "$T/log" 2>&1 || bad "poles.sh failed: $(cat "$T/log")"
+check "$T/poles" results/poles/south/summary.csv
+# the certify run and its README figure
+mkdir -p "$T/cert" "$T/cfig"
+cp results/certify/certify.csv "$T/cert/"
+FIGS="$T/cfig" sh scripts/certify-plot.sh "$T/cert" > "$T/log" 2>&1 || bad "certify-plot.sh failed: $(cat "$T/log")"
+grep -qi warning "$T/log" && bad "certify-plot: gnuplot warned: $(grep -i warning "$T/log" | head -3)" || ok
+check "$T/cert" results/certify/certify.csv
+check "$T/cfig" results/certify/certify.csv
+# the pole figure's title claims only what summary.csv shows
+t=$(awk -F, -v p=float -v ds="south exhaustive uniform" -v methods="frisvad frisvad_max duff" -f scripts/pole-title.awk results/wild/summary.csv)
+case "$t" in *"frisvad "*|*"frisvad,"*) bad "the wild pole title names frisvad: $t";; *) ok;; esac
+t=$(awk -F, -v p=float -v ds="south exhaustive uniform" -v methods="frisvad frisvad_max duff" -f scripts/pole-title.awk results/reference/summary.csv)
+case "$t" in *"frisvad fails on its own floor"*) ok;; *) bad "the reference pole title lost frisvad's failure: $t";; esac
+# frisvad's floor made 10x smaller: no longer "on its own floor"; its
+# defect made 0.05: no longer "fails"
+awk -F, 'BEGIN { OFS = "," } /^method,/ { for (i = 1; i <= NF; i++) h[$i] = i } $1 == "frisvad" && $2 == "float" { $h["max_floor"] = $h["max_floor"] / 10 } { print }' results/reference/summary.csv > "$T/s1.csv"
+t=$(awk -F, -v p=float -v ds="south exhaustive uniform" -v methods="frisvad duff" -f scripts/pole-title.awk "$T/s1.csv")
+case "$t" in *"frisvad fails,"*|*"frisvad fails") ok;; *) bad "a floor 10x below frisvad's defect still titled on its floor: $t";; esac
+awk -F, 'BEGIN { OFS = "," } /^method,/ { for (i = 1; i <= NF; i++) h[$i] = i } $1 == "frisvad" && $2 == "float" && $(h["max_defect"]) + 0 > 0.05 { $h["max_defect"] = 0.05 } { print }' results/reference/summary.csv > "$T/s2.csv"
+t=$(awk -F, -v p=float -v ds="south exhaustive uniform" -v methods="frisvad duff" -f scripts/pole-title.awk "$T/s2.csv")
+case "$t" in *"frisvad fails"*) bad "a defect of 0.05 titled a failure: $t";; *"frisvad reaches 0.05"*) ok;; *) bad "unexpected title: $t";; esac
+# a run with one method, no frisvad, no floor band to merge, no non-finite row
+./onbstudy sweep --methods duff --samples 2000 --exhaustive-count 1024 --azimuths 2 --grid 8x16 --quiet --out "$T/one" >/dev/null 2>&1 || bad "a one-method sweep failed"
+FIGS="$T/one/fig" PCDIR="$T/one" sh scripts/plots.sh "$T/one" > "$T/log" 2>&1 || bad "plots.sh on a one-method run failed: $(cat "$T/log")"
+for c in error_vs_nz_float south_pole_float nonunit_float maps_float continuity_float error_vs_nz_double; do
+	[ -s "$T/one/$c.svg" ] && ok || bad "a one-method run drew no $c"
+done
+check "$T/one" "$T/one/summary.csv"
+check "$T/one/fig" "$T/one/summary.csv"
+finish charts_committed

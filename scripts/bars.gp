@@ -11,7 +11,10 @@ set yrange [0:2.45]
 set ytics 0, 0.5, 2
 stats file using 2 nooutput
 nb = STATS_records
-set xrange [-0.7 : nb - 0.3]
+# (at least 12 slots, the bars centred: a run of few methods keeps bars
+# of the usual width, not one slab across the graph)
+pad = (nb < 12) ? (12 - nb) / 2.0 : 0
+set xrange [-0.7 - pad : nb - 0.3 + pad]
 set xtics rotate by -45 nomirror noenhanced
 set ylabel yl font F_AXIS
 set xlabel "method" font F_AXIS

@@ -26,7 +26,7 @@ n = words(files)
 last = 0
 do for [i = 1:n] { if (word(files, i) ne "-") { last = i } }
 W = W_MULTI
-H = 150 + 250 * nrows
+H = (nrows > 1) ? 150 + 250 * nrows : 480  # (one row: room for the colour-bar label)
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
     set output out.ext(term_i)
@@ -37,7 +37,7 @@ do for [term_i = 1:NTERM] {
         set title word(names, i) font F_PANEL offset 0,-0.5 noenhanced
         if (i == last) {
             set colorbox user origin screen 0.9, screen 0.12 size screen 0.018, screen 1 - 250.0/H
-            set cblabel "orthonormality defect in units of ".uname." (one scale for all; light grey: non-finite)" font F_AXIS offset 1.5,0
+            set cblabel (nrows > 1 ? "orthonormality defect in units of ".uname." (one scale for all; light grey: non-finite)" : "defect in units of ".uname."; light grey: non-finite") font F_AXIS offset 1.5,0
         } else { unset colorbox }
         # a non-finite cell leaves the light grey background
         plot word(files, i) using 1:2:(strcol(3) eq "nan" ? NaN : $3) with image

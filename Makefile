@@ -397,8 +397,21 @@ $(B)/aorender: examples/aorender.c $(MESHIO_SRC) $(wildcard src/mesh/*.h) libonb
 	$(CC) -std=c99 -O2 -ffp-contract=off $(SANFLAGS) -Wall -Wextra -Wpedantic -Wshadow -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -o $@ examples/aorender.c $(MESHIO_SRC) libonb.a -lcjson -lm
 RENDERS = results/reference/renders
 RENDER_GREY = frisvad tangent_cross_z
-.PHONY: render
-render: $(B)/aorender $(B)/plot-deps.stamp
+# the brushed-metal renders (aorender --brushed, scripts/brushed.gp): the
+# methods whose frames the metrics separate, one chart each, with its
+# scale and caption
+RENDER_BRUSHED = duff duff_branchless hughes_moeller frisvad frisvad_max naive_nonorm hughes_moeller_nonorm tangent_cross_z
+.PHONY: render render-brushed
+render-brushed: $(B)/aorender $(B)/plot-deps.stamp
+	@mkdir -p $(RENDERS)/brushed
+	@for m in $(RENDER_BRUSHED); do \
+	  l=$$($(B)/aorender --method $$m --precision float --brushed $(B)/brushed-$$m.dat) || exit 1; echo "$$l"; \
+	  mx=$$(echo "$$l" | sed 's/.*max |image - exact frame| \([^ ]*\) .*/\1/'); nn=$$(echo "$$l" | sed 's/.*NaN pixels //'); \
+	  e=$$(echo $$m | sed 's/_/\\_/g'); \
+	  gnuplot -e "here='scripts'; nosvg=1; file='$(B)/brushed-$$m.dat'; out='$(RENDERS)/brushed/$$m-float'; name='$$e'; prec='float'; maxd=$$mx; nan=$$nn" scripts/brushed.gp || exit 1; \
+	  if command -v pngquant >/dev/null 2>&1; then pngquant --force --skip-if-larger --speed 1 --output $(RENDERS)/brushed/$$m-float.png 64 $(RENDERS)/brushed/$$m-float.png || true; fi; \
+	done | tee $(RENDERS)/brushed/summary.txt
+render: $(B)/aorender $(B)/plot-deps.stamp render-brushed
 	@mkdir -p $(RENDERS)
 	$(B)/aorender --method duff_branchless --precision double --out $(RENDERS)/reference-double.png
 	@# every method's difference image; its grey image only for RENDER_GREY

@@ -6,6 +6,7 @@
  *
  *   aorender --method NAME [--precision float|double] --out FILE.png
  *            [--diff DIFF.png] [--spp N (256)] [--list]
+ *            [--brushed FILE.dat] (the brushed-metal highlight, below)
  *            [--mesh FILE [--up z|y|x] [--no-renormalize]]
  *
  * --mesh (or --obj) renders a mesh read by the scene reader: OBJ, PLY or
@@ -733,6 +734,117 @@ static void diff_legend(unsigned char *strip, const char *what, double maxd)
 	draw_text(strip, w, 12, 40, s, line, PAL_TEXT);
 }
 
+/* ---- --brushed: a brushed-metal highlight that uses b1 and b2 ----
+   Ambient occlusion only turns the hemisphere about n, so a frame's defect
+   and its seams hardly reach its pixels.  A brushed metal does: its
+   highlight is Ward's anisotropic lobe, exp(-((h.b1 / AX)^2 + (h.b2 /
+   AY)^2) / (h.n)^2) with h the half vector of the light L and the view,
+   rough along b2 and smooth along b1 (the grooves run along b1), peak 1.
+   The frame is the method's, in float (n rounded to float, the products
+   in double) or double; the reference is the method's own frame made
+   exact (frame_exact): a correct frame differs from it by rounding only,
+   a frame that is not orthonormal (nonorm, frisvad in float near -z)
+   stretches or turns the lobe, a non-finite one gives NaN, and a seam of
+   the frame (b1 jumping between neighbouring normals) is a line in the
+   highlight of both images.  No sampling: one evaluation a pixel. */
+#define AX 0.10
+#define AY 0.45
+/* a brushed ball hangs under the ceiling, off the dome, so that normals
+   far from -z (where the nonorm variants and the seams of duff, at n.z =
+   0, and hughes_moeller live) face the camera too */
+static const v3 BALL = { 0.45, 0.2, 1.05 };
+#define BALL_R 0.22
+static int hit_brushed(v3 o, v3 d, double *t, v3 *p, v3 *n)
+{
+	int any = hit(o, d, 1e30, t, p, n);
+	v3 oc = add(o, mul(BALL, -1.0));
+	double bq = dot(oc, d), cq = dot(oc, oc) - BALL_R * BALL_R, disc = bq * bq - cq, tt;
+	if (disc >= 0 && (tt = -bq - sqrt(disc)) > 1e-6 && (!any || tt < *t)) {
+		*t = tt; *p = add(o, mul(d, tt));
+		*n = norm(add(*p, mul(BALL, -1.0)));
+		any = 1;
+	}
+	return any;
+}
+static void frame_vecs(const onb_method *m, int fl, v3 n, v3 *b1, v3 *b2)
+{
+	if (fl) {
+		onb_vec3f nf, f1, f2;
+		nf.x = (float)n.x; nf.y = (float)n.y; nf.z = (float)n.z;
+		m->basisf(nf, &f1, &f2);
+		b1->x = f1.x; b1->y = f1.y; b1->z = f1.z;
+		b2->x = f2.x; b2->y = f2.y; b2->z = f2.z;
+	} else {
+		onb_vec3 nd, d1, d2;
+		nd.x = n.x; nd.y = n.y; nd.z = n.z;
+		m->basis(nd, &d1, &d2);
+		b1->x = d1.x; b1->y = d1.y; b1->z = d1.z;
+		b2->x = d2.x; b2->y = d2.y; b2->z = d2.z;
+	}
+}
+/* the method's frame made exact, as frame_dir_exact builds it */
+static void frame_exact(const onb_method *m, int fl, v3 n, v3 *b1, v3 *b2)
+{
+	v3 nh = norm(n), c;
+	double k;
+	frame_vecs(m, fl, n, b1, b2);
+	*b1 = add(*b1, mul(nh, -dot(*b1, nh)));
+	k = sqrt(dot(*b1, *b1));
+	if (!(k > 1e-3) || !isfinite(k)) {
+		frame_vecs(onb_find("duff_branchless"), 0, nh, b1, b2);
+		return;
+	}
+	*b1 = mul(*b1, 1.0 / k);
+	c.x = nh.y * b1->z - nh.z * b1->y; c.y = nh.z * b1->x - nh.x * b1->z; c.z = nh.x * b1->y - nh.y * b1->x;
+	*b2 = dot(c, *b2) < 0 ? mul(c, -1.0) : c;
+}
+static void render_brushed(const onb_method *m, int fl, int exact, double *img)
+{
+	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 }, lraw = { 0.25, 0.1, -1.0 };
+	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up, L = norm(lraw);
+	int x, y;
+	rt.x = fw.y * upv.z - fw.z * upv.y; rt.y = fw.z * upv.x - fw.x * upv.z; rt.z = fw.x * upv.y - fw.y * upv.x;
+	rt = norm(rt);
+	up.x = rt.y * fw.z - rt.z * fw.y; up.y = rt.z * fw.x - rt.x * fw.z; up.z = rt.x * fw.y - rt.y * fw.x;
+	for (y = 0; y < H; y++)
+		for (x = 0; x < W; x++) {
+			double sx = (2.0 * (x + 0.5) / W - 1.0) * 0.75 * W / H, sy = (1.0 - 2.0 * (y + 0.5) / H) * 0.75, t, hx, hy, hn;
+			v3 d = norm(add(fw, add(mul(rt, sx), mul(up, sy)))), p, n, b1, b2, h;
+			if (!hit_brushed(eye, d, &t, &p, &n)) {
+				img[y * W + x] = 0;
+				continue;
+			}
+			if (exact) frame_exact(m, fl, n, &b1, &b2);
+			else frame_vecs(m, fl, n, &b1, &b2);
+			h = norm(add(L, mul(d, -1.0)));
+			hx = dot(h, b1) / AX; hy = dot(h, b2) / AY; hn = dot(h, n);
+			/* a dim diffuse term shows the shapes; the lobe shows the frame */
+			img[y * W + x] = 0.15 * fmax(0.0, dot(L, n)) + 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
+		}
+}
+/* --brushed FILE: "x y image reference" per pixel (y up), for
+   scripts/brushed.gp; prints the summary line of make render */
+static int write_brushed(const char *path, const char *name, int fl, const double *img, const double *ref)
+{
+	FILE *f = fopen(path, "w");
+	double maxd = 0;
+	int nan = 0, x, y, over = 0;
+	if (!f) { fprintf(stderr, "aorender: cannot write '%s'\n", path); return 1; }
+	fprintf(f, "# aorender --brushed: %s %s; x y image reference (the method's frame made exact, double)\n", name, fl ? "float" : "double");
+	for (y = 0; y < H; y++) {
+		for (x = 0; x < W; x++) {
+			double a = img[y * W + x], b = ref[y * W + x], d = fabs(a - b);
+			if (d != d) nan++;
+			else { if (d > maxd) maxd = d; over += d > 0.01; }
+			fprintf(f, "%d %d %.9g %.9g\n", x, H - 1 - y, a, b);
+		}
+		fputc('\n', f);
+	}
+	if (fclose(f) != 0) { fprintf(stderr, "aorender: cannot write '%s'\n", path); return 1; }
+	printf("%-24s %-6s brushed: max |image - exact frame| %.3g  pixels > 0.01: %5d  NaN pixels %d\n", name, fl ? "float" : "double", maxd, over, nan);
+	return 0;
+}
+
 /* --diff: |img - ref| on the colour scale, written to path, its legend
    naming ref as `what`; prints the summary line make render collects
    (renders/summary.txt). */
@@ -763,7 +875,7 @@ static int write_diff(const char *path, const char *name, int fl, const char *wh
 
 int main(int argc, char **argv)
 {
-	const char *name = NULL, *out = NULL, *diff = NULL, *obj = NULL;
+	const char *name = NULL, *out = NULL, *diff = NULL, *obj = NULL, *brushed = NULL;
 	int fl = 1, spp = 256, k, i, renorm = 1;
 	char up = 'z';
 	const onb_method *m;
@@ -783,6 +895,7 @@ int main(int argc, char **argv)
 		} else if (k + 1 < argc && !strcmp(argv[k], "--method")) name = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--out")) out = argv[++k];
 		else if (k + 1 < argc && !strcmp(argv[k], "--diff")) diff = argv[++k];
+		else if (k + 1 < argc && !strcmp(argv[k], "--brushed")) brushed = argv[++k];
 		else if (k + 1 < argc && (!strcmp(argv[k], "--obj") || !strcmp(argv[k], "--mesh"))) obj = argv[++k];
 		else if (!strcmp(argv[k], "--no-renormalize")) renorm = 0;
 		else if (k + 1 < argc && !strcmp(argv[k], "--up")) {
@@ -802,18 +915,27 @@ int main(int argc, char **argv)
 			else if (!strcmp(argv[k], "double")) fl = 0;
 			else { fprintf(stderr, "aorender: --precision must be float or double\n"); return 2; }
 		} else {
-			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] [--mesh FILE [--up z|y|x] [--no-renormalize]] --out FILE.png [--diff DIFF.png] | --list\n");
+			fprintf(stderr, "usage: aorender --method NAME [--precision float|double] [--spp N] [--mesh FILE [--up z|y|x] [--no-renormalize]] --out FILE.png [--diff DIFF.png] [--brushed FILE.dat] | --list\n");
 			return 2;
 		}
 	}
-	if (!name || !out) {
-		fprintf(stderr, "aorender: --method and --out are required (--list names the methods)\n");
+	if (!name || (!out && !brushed)) {
+		fprintf(stderr, "aorender: --method and --out (or --brushed) are required (--list names the methods)\n");
 		return 2;
 	}
 	m = onb_find(name);
 	if (!m) {
 		fprintf(stderr, "aorender: unknown method '%s' (--list names them)\n", name);
 		return 2;
+	}
+	if (brushed) {
+		if (obj) { fprintf(stderr, "aorender: --brushed renders the default scene, not --mesh\n"); return 2; }
+		render_brushed(m, fl, 0, img);
+		render_brushed(m, fl, 1, ref);
+		if (write_brushed(brushed, name, fl, img, ref) != 0)
+			return 1;
+		if (!out)
+			return 0;
 	}
 	if (obj) {
 		char err[600], msg[700];

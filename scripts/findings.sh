@@ -20,6 +20,7 @@
 #   {{X method precision column}}  a tradeoff.csv value
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
+#   {{RB method field}}  from renders/brushed/summary.txt (max, pixels, nan)
 #   {{PARETO precision}}  the methods tradeoff.csv marks on the Pareto front
 #   {{MUT key}}  a 'key: value' line of mutation.txt (scripts/mutate.sh)
 #   {{TABLE accuracy precision}}    the accuracy table of one precision
@@ -174,6 +175,20 @@ generate() {
 		k = m SUBSEP p SUBSEP d
 		if (!((k, c) in FMA)) { print "findings: no " m "," p "," d "," c " in fma/summary.csv" > "/dev/stderr"; bad = 1; return "?" }
 		return fmt(FMA[k, c])
+	}
+	# the brushed renders (make render-brushed: renders/brushed/summary.txt)
+	function RB(m, field,   f, line, a, n) {
+		f = REF "/renders/brushed/summary.txt"
+		while ((getline line < f) > 0) {
+			n = split(line, a, /[ \t]+/)
+			if (a[1] != m || a[3] != "brushed:") continue
+			close(f)
+			if (field == "max") return a[9]
+			if (field == "pixels") return a[13]
+			if (field == "nan") return a[16]
+		}
+		close(f)
+		print "findings: no brushed render " m " " field > "/dev/stderr"; bad = 1; return "?"
 	}
 	function RN(m, field,   f, line, a, n, i) {
 		f = REF "/renders/summary.txt"
@@ -678,6 +693,7 @@ generate() {
 			else if (a[1] == "F" && nt == 5) rep = F(a[2], a[3], a[4], a[5])
 			else if (a[1] == "PARETO" && nt == 2) rep = PARETO(a[2])
 			else if (a[1] == "R" && nt == 3) rep = RN(a[2], a[3])
+			else if (a[1] == "RB" && nt == 3) rep = RB(a[2], a[3])
 			else if (a[1] == "TH" && nt == 4) rep = TH(a[2], a[3], a[4])
 			else if (a[1] == "THH" && nt == 4) rep = THH(a[2], a[3], a[4])
 			else if (a[1] == "MUT" && nt == 2) rep = MUT(a[2])

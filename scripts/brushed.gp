@@ -1,0 +1,38 @@
+# brushed.gp - one method's brushed-metal render (examples/aorender.c
+# --brushed): left the image, a grey scale from 0 to 1 beside it; right
+# | image - the method's own frame made exact |, on a scale from 0 to
+# dmax (larger values saturate), non-finite pixels in cyan.  The title
+# names the method and the largest difference; the caption says what to
+# look for.
+# Called by `make render` with: file (aorender's "x y image reference"),
+# out, name, prec, maxd (the largest finite difference), nan (the count of
+# non-finite pixels), here
+load here."/style.gp"
+set datafile separator whitespace
+dmax = 0.05
+set xrange [-0.5:159.5]
+set yrange [-0.5:119.5]
+set size ratio -1
+unset xtics; unset ytics; unset key; unset border
+W = 1100; H = 540
+sub = "{/*0.75 left: the highlight, Ward's lobe, grooves along b1 (ball: normals far from -z; centre: the dome, within 4e-6 of -z; corners: -z exactly)}\n" . \
+      "{/*0.75 right: |image - the same method's frame made exact in double|: black for a correct frame; a defect shows as structure}\n" . \
+      "{/*0.75 a seam of the frame (b1 jumping between neighbouring normals) is a line across the highlight, in the left image}"
+ttl = sprintf("%s, %s: brushed metal, max |difference| %.3g, %d non-finite pixels", name, prec, maxd, nan)
+do for [term_i = 1:NTERM] {
+    eval term(term_i, W, H)
+    set output out.ext(term_i)
+    set multiplot layout 1, 2 title ttl."\n".sub font F_TITLE
+    set palette grey
+    set cbrange [0:1]
+    set cbtics 0.25 font F_TICK
+    set cblabel "radiance (1: the lobe's peak)" font F_AXIS
+    set object 1 rect from graph 0, graph 0 to graph 1, graph 1 behind fc rgb "#00ffff" fs solid 1.0 noborder
+    plot file using 1:2:($3 == $3 ? $3 : NaN) with image
+    set palette defined (0 "#000000", 1 "#1f3fbf", 2 "#d02020", 3 "#ffe000")
+    set cbrange [0:dmax]
+    set cbtics ("0" 0, "0.025" 0.025, ">= 0.05" dmax) font F_TICK
+    set cblabel "|image - exact frame|; cyan: not finite" font F_AXIS
+    plot file using 1:2:(abs($3 - $4) == abs($3 - $4) ? (abs($3 - $4) > dmax ? dmax : abs($3 - $4)) : NaN) with image
+    unset multiplot
+}

@@ -27,6 +27,9 @@ int gpu_class(const float *a, const float *b);
 /* whole-sphere float bound of `name` in a certify CSV; inf: singular; -1: absent */
 double gpu_bound(const char *csv, const char *name);
 
+/* The profile of a certify CSV (its "# arith:" line); "ieee" without one. */
+void gpu_bounds_profile(const char *csv, char *name, size_t len);
+
 /* One variant of the shaders: its SPIR-V file (under the SPIR-V folder). */
 typedef struct {
 	const char *label, *spv;

@@ -125,8 +125,10 @@ static int run(gpu_dev *d, const char *cmd, const gpu_opts *o, FILE *f)
 	if ((fused = fma_fused(d, o->spv)) < 0 || gpu_inputs_make(&in, o->seed, o->per) != 0)
 		return -1;
 	if (strcmp(cmd, "compare") == 0 || strcmp(cmd, "report") == 0) {
-		fprintf(f, "\n### Methods (%zu inputs, seed %llu; fma() %s on this driver)\n\n", in.count, o->seed,
-		        fused ? "fused" : "rounded twice");
+		char prof[64];
+		gpu_bounds_profile(o->bounds, prof, sizeof prof);
+		fprintf(f, "\n### Methods (%zu inputs, seed %llu; fma() %s on this driver; bounds of profile %s)\n\n",
+		        in.count, o->seed, fused ? "fused" : "rounded twice", prof);
 		rc = gpu_compare_all(d, o->spv, f, &in, fused, o->bounds, o->methods);
 	}
 	if (rc >= 0 && (strcmp(cmd, "wild") == 0 || strcmp(cmd, "report") == 0)) {

@@ -125,3 +125,21 @@ double gpu_bound(const char *csv, const char *name)
 	fclose(f);
 	return b;
 }
+
+/* The profile a certify CSV was made under ("# arith: NAME ..."), into
+   name[len]; "ieee" when the CSV has no such line (a plain certify run). */
+void gpu_bounds_profile(const char *csv, char *name, size_t len)
+{
+	FILE *f = fopen(csv, "r");
+	char line[1024];
+	snprintf(name, len, "ieee");
+	if (!f)
+		return;
+	while (fgets(line, sizeof line, f) && line[0] == '#')
+		if (strncmp(line, "# arith: ", 9) == 0) {
+			const int n = (int)strcspn(line + 9, " \n");
+			snprintf(name, len, "%.*s", n, line + 9);
+			break;
+		}
+	fclose(f);
+}

@@ -743,8 +743,8 @@ static void diff_legend(unsigned char *strip, const char *what, double maxd)
    The frame is the method's, in float (n rounded to float, the products
    in double) or double; the reference is the method's own frame made
    exact (frame_exact): a correct frame differs from it by rounding only,
-   a frame that is not orthonormal (nonorm, frisvad in float near -z)
-   stretches or turns the lobe, a non-finite one gives NaN, and a seam of
+   a frame that is not orthonormal (nonorm on the ball's flank, frisvad in
+   float near -z) stretches or turns the lobe, a non-finite one gives NaN, and a seam of
    the frame (b1 jumping between neighbouring normals) is a line in the
    highlight of both images.  No sampling: one evaluation a pixel. */
 #define AX 0.10
@@ -800,8 +800,11 @@ static void frame_exact(const onb_method *m, int fl, v3 n, v3 *b1, v3 *b2)
 }
 static void render_brushed(const onb_method *m, int fl, int exact, double *img)
 {
-	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 }, lraw = { 0.25, 0.1, -1.0 };
-	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up, L = norm(lraw);
+	/* two lights: one whose highlight lies on the dome and the ceiling
+	   (normals at -z), one whose highlight lies on the ball's flank, where
+	   |n.x| is large and the nonorm variants' b1 is short */
+	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 }, lraw = { 0.25, 0.1, -1.0 }, l2raw = { -0.9, 0.0, -0.45 };
+	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up, L = norm(lraw), L2 = norm(l2raw);
 	int x, y;
 	rt.x = fw.y * upv.z - fw.z * upv.y; rt.y = fw.z * upv.x - fw.x * upv.z; rt.z = fw.x * upv.y - fw.y * upv.x;
 	rt = norm(rt);
@@ -816,10 +819,14 @@ static void render_brushed(const onb_method *m, int fl, int exact, double *img)
 			}
 			if (exact) frame_exact(m, fl, n, &b1, &b2);
 			else frame_vecs(m, fl, n, &b1, &b2);
+			/* a dim diffuse term shows the shapes; the lobes show the frame */
+			img[y * W + x] = 0.15 * fmax(0.0, dot(L, n));
 			h = norm(add(L, mul(d, -1.0)));
 			hx = dot(h, b1) / AX; hy = dot(h, b2) / AY; hn = dot(h, n);
-			/* a dim diffuse term shows the shapes; the lobe shows the frame */
-			img[y * W + x] = 0.15 * fmax(0.0, dot(L, n)) + 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
+			img[y * W + x] += 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
+			h = norm(add(L2, mul(d, -1.0)));
+			hx = dot(h, b1) / AX; hy = dot(h, b2) / AY; hn = dot(h, n);
+			img[y * W + x] += 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
 		}
 }
 /* --brushed FILE: "x y image reference" per pixel (y up), for

@@ -77,7 +77,9 @@ static void input(uint64_t i, uint16_t h[3])
 		else { double e = pow(10.0, -8.0 * r), q = sqrt(e * (2.0 - e)); u[0] = -1.0 + e; u[1] = q * cos(phi); u[2] = q * sin(phi); }
 		break;
 	case 6: { /* components down to binary16's subnormals and below 2^-24 */
-		const double a = ldexp(unif(i, 3), -(int)(rng_mix64(i) % 30)), b = ldexp(unif(i, 4), -(int)(rng_mix64(i + 1) % 30));
+		double a = ldexp(unif(i, 3), -(int)(rng_mix64(i) % 30)), b = ldexp(unif(i, 4), -(int)(rng_mix64(i + 1) % 30));
+		const double l = sqrt(a * a + b * b);
+		if (l > 1.0) { a /= l; b /= l; }   /* unit, z = +-0 (since revision 53778a5's kernels.txt run) */
 		u[0] = (i & 16) ? -a : a; u[1] = (i & 32) ? -b : b; u[2] = (i & 64 ? -1.0 : 1.0) * sqrt(fmax(0.0, 1.0 - a * a - b * b));
 		break;
 	}
@@ -135,6 +137,60 @@ static long check(const onb_method *m, const cm_method *cmm, long count, long *n
 	return bad;
 }
 
+/* onb_basis_checkedh on count inputs: every rounding of a unit vector
+   (input categories 0-6) passes unchanged and gets arrayh's bits; the
+   non-unit ones (category 7) come back renormalized to within the
+   tolerance; NaN, infinity, zero and a NULL method get their status and
+   the safe frame.  Returns the failures. */
+static long check_checked(const onb_method *m, long count)
+{
+	long bad = 0, i;
+	for (i = 0; i < count; i++) {
+		uint16_t h[3], b[6], c[6];
+		onb_vec3h n, b1, b2, nu;
+		double l2;
+		onb_status st;
+		int k, nonfin = 0;
+		input((uint64_t)i, h);
+		memcpy(&n.x, &h[0], 2); memcpy(&n.y, &h[1], 2); memcpy(&n.z, &h[2], 2);
+		for (k = 0; k < 3; k++)
+			nonfin |= !isfinite(hval(h[k]));
+		l2 = hval(h[0]) * hval(h[0]) + hval(h[1]) * hval(h[1]) + hval(h[2]) * hval(h[2]);
+		st = onb_basis_checkedh(m, n, &b1, &b2, &nu);
+		memcpy(&c[0], &b1.x, 2); memcpy(&c[1], &b1.y, 2); memcpy(&c[2], &b1.z, 2);
+		memcpy(&c[3], &b2.x, 2); memcpy(&c[4], &b2.y, 2); memcpy(&c[5], &b2.z, 2);
+		if (nonfin) {
+			bad += st != ONB_NONFINITE || c[0] != 0x3c00u || c[4] != 0x3c00u;
+			continue;
+		}
+		if (l2 == 0.0) {
+			bad += st != ONB_ZERO;
+			continue;
+		}
+		if (i % 10 <= 6 && st != ONB_OK) {
+			bad++;
+			if (bad < 4) printf("  checkedh %s: n = (%a, %a, %a), |n|^2 - 1 = %g: status %d, not ONB_OK\n", m->name, hval(h[0]), hval(h[1]), hval(h[2]), l2 - 1.0, (int)st);
+			continue;
+		}
+		{
+			uint16_t nb[3];
+			double u2;
+			memcpy(&nb[0], &nu.x, 2); memcpy(&nb[1], &nu.y, 2); memcpy(&nb[2], &nu.z, 2);
+			u2 = hval(nb[0]) * hval(nb[0]) + hval(nb[1]) * hval(nb[1]) + hval(nb[2]) * hval(nb[2]);
+			m->arrayh(nb, b, b + 3);
+			if (memcmp(b, c, sizeof b) != 0 || !(fabs(u2 - 1.0) <= ONB_CHECK_TOLH)) {
+				if (bad++ < 3) printf("  checkedh %s: n = (%a, %a, %a): status %d, n_used (%a, %a, %a), |n_used|^2 - 1 = %g\n", m->name,
+				                     hval(h[0]), hval(h[1]), hval(h[2]), (int)st, hval(nb[0]), hval(nb[1]), hval(nb[2]), u2 - 1.0);
+			}
+		}
+	}
+	{
+		onb_vec3h z = { (onb_half)0.0f, (onb_half)0.0f, (onb_half)1.0f }, b1, b2;
+		bad += onb_basis_checkedh(NULL, z, &b1, &b2, NULL) != ONB_BAD_METHOD;
+	}
+	return bad;
+}
+
 /* A bare _Float16 expression on this compiler: does it round per
    operation?  (Informative: the kernels never rely on it.) */
 static void report_eval(void)
@@ -168,6 +224,12 @@ int main(int argc, char **argv)
 		checked++;
 		printf("%s %-24s half   %ld inputs, %ld compared, %ld not bit-identical\n", bad ? "FAIL" : "ok  ", ms[i].name, count, count - nan_in, bad);
 		fail |= bad != 0;
+	}
+	if (!only || onb_find(only)) {
+		const onb_method *dm = onb_find(only ? only : "duff");
+		const long cb = check_checked(dm, count);
+		printf("%s onb_basis_checkedh (%s): %ld inputs, %ld wrong\n", cb ? "FAIL" : "ok  ", dm->name, count, cb);
+		fail |= cb != 0;
 	}
 	if (checked == 0) {
 		printf("FAIL: no method checked\n");

@@ -1824,6 +1824,16 @@ static inline void ONB__K(open3d_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *
    normal actually passed to the method. */
 onb_status onb_basis_checked (const onb_method *method, onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2, onb_vec3  *n_used);
 onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, onb_vec3f *n_used);
+#if ONB_HAVE_HALF
+/* binary16: every rounding of a unit vector to binary16 has | |n|^2 - 1 |
+   <= 2^-10 + 2^-22 (each component within u = 2^-11 relative), so
+   ONB_CHECK_TOLH = 2^-9 passes them all unchanged (ONB_OK); a vector
+   outside it is normalized in float and rounded to binary16 again
+   (ONB_RENORMALIZED: *n_used is then such a rounding itself).  The basis
+   is method->arrayh's (ONB_BAD_METHOD where the method has none). */
+#define ONB_CHECK_TOLH 0x1p-9f
+onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *b1, onb_vec3h *b2, onb_vec3h *n_used);
+#endif
 
 /* Out-of-line copies and batch kernels, one set per method.  Declared by
    an X-macro so the list stays in one place; registry.c defines them. */

@@ -72,3 +72,48 @@ onb_status onb_basis_checkedf(const onb_method *method, onb_vec3f n, onb_vec3f *
 	method->basisf(n, b1, b2);
 	return st;
 }
+
+#if ONB_HAVE_HALF
+/* Binary16: |n|^2 and the normalization in float, where the squares of
+   binary16 values are exact and nothing overflows or underflows (65504^2
+   and (2^-24)^2 are normal floats); n_used rounded back to binary16. */
+static void onb__put_h(const onb_vec3h *v, uint16_t b[3])
+{
+	memcpy(&b[0], &v->x, 2); memcpy(&b[1], &v->y, 2); memcpy(&b[2], &v->z, 2);
+}
+static void onb__get_h(const uint16_t b[3], onb_vec3h *v)
+{
+	memcpy(&v->x, &b[0], 2); memcpy(&v->y, &b[1], 2); memcpy(&v->z, &b[2], 2);
+}
+
+onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *b1, onb_vec3h *b2, onb_vec3h *n_used)
+{
+	onb_status st = ONB_OK;
+	const float x = (float)n.x, y = (float)n.y, z = (float)n.z;
+	const float l2 = x * x + y * y + z * z;
+	uint16_t nb[3], r1[3], r2[3];
+	b1->x = (onb_half)1.0f; b1->y = (onb_half)0.0f; b1->z = (onb_half)0.0f;
+	b2->x = (onb_half)0.0f; b2->y = (onb_half)1.0f; b2->z = (onb_half)0.0f;
+	if (n_used)
+		*n_used = n;
+	if (!method || !method->arrayh)
+		return ONB_BAD_METHOD;
+	if (!isfinite(x) || !isfinite(y) || !isfinite(z))
+		return ONB_NONFINITE;
+	if (!(fabsf(l2 - 1.0f) <= ONB_CHECK_TOLH)) {
+		float l;
+		if (l2 == 0.0f)
+			return ONB_ZERO;
+		l = sqrtf(l2);
+		n.x = (onb_half)(x / l); n.y = (onb_half)(y / l); n.z = (onb_half)(z / l);
+		st = ONB_RENORMALIZED;
+	}
+	if (n_used)
+		*n_used = n;
+	onb__put_h(&n, nb);
+	method->arrayh(nb, r1, r2);
+	onb__get_h(r1, b1);
+	onb__get_h(r2, b2);
+	return st;
+}
+#endif

@@ -79,7 +79,7 @@ static void input(uint64_t i, uint16_t h[3])
 	case 6: { /* components down to binary16's subnormals and below 2^-24 */
 		double a = ldexp(unif(i, 3), -(int)(rng_mix64(i) % 30)), b = ldexp(unif(i, 4), -(int)(rng_mix64(i + 1) % 30));
 		const double l = sqrt(a * a + b * b);
-		if (l > 1.0) { a /= l; b /= l; }   /* unit, z = +-0 (since revision 53778a5's kernels.txt run) */
+		if (l > 1.0) { a /= l; b /= l; }   /* unit, z = +-0 (since kernels.txt's run at e92113a) */
 		u[0] = (i & 16) ? -a : a; u[1] = (i & 32) ? -b : b; u[2] = (i & 64 ? -1.0 : 1.0) * sqrt(fmax(0.0, 1.0 - a * a - b * b));
 		break;
 	}

@@ -12,14 +12,25 @@
 #include "methods/kernels.h"
 #include "reference/reference.h"
 #include "inputs/inputs.h"
+#include "cli/eval_arith.h"
 
 static void usage(FILE *f)
 {
 	fprintf(f, "usage: onbstudy eval [--precision float|double|both] [--methods a,b] [--fma]\n"
 	           "                     [--ref-bits B] [--local x,y,z] X Y Z\n"
+	           "       onbstudy eval --arith PROFILE [--samples N] [--seed S] [--format table|csv]\n"
+	           "                     [--precision P] [--methods a,b] X Y Z\n"
 	           "Every method's outputs (hex and decimal) and every metric for one input.\n"
 	           "X Y Z may be decimal or C99 hex floats (as worst.csv prints them); each is\n"
-	           "rounded to the precision, and the rounding is reported.\n");
+	           "rounded to the precision, and the rounding is reported.\n"
+	           "With --arith PROFILE (onbstudy list --arith; docs/gpu.md): per method, what\n"
+	           "conforming implementations of the profile return at the input, emulated in C\n"
+	           "from the method's rounding model: every operation at round to nearest, N random\n"
+	           "implementations (--samples, default 256, from --seed) and a greedy adversary;\n"
+	           "the range of each output component and defect over all of them, and the proven\n"
+	           "bound over a box of ~8u around the input (certify --arith's mean value form).\n"
+	           "--format csv: rows method,precision,profile,quantity,lo,hi (hex floats;\n"
+	           "quantity b1x..b2z, n1, n2, d1n, d2n, d12, defect, bound).\n");
 }
 
 static void show3(const char *label, const double *v)
@@ -31,6 +42,10 @@ typedef struct {
 	const char *methods;
 	int prec_on[2], fma, npos;
 	long bits;
+	const arith_profile *arith;
+	long samples;
+	unsigned long long seed;
+	int csv;
 	double in[3], loc[3];
 } eval_opts;
 
@@ -48,6 +63,17 @@ static int eval_option(int v, const char *a, eval_opts *o)
 	case 'm': o->methods = a; return 0;
 	case 'b': return parse_int("--ref-bits", a, 64, 4096, &o->bits);
 	case 'f': o->fma = 1; return 0;
+	case 'A':
+		if (!(o->arith = arith_find(a))) {
+			char names[256];
+			arith_names(names, sizeof names);
+			study_error("--arith: unknown profile '%s' (one of: %s)", a, names);
+			return -1;
+		}
+		return 0;
+	case 'n': return parse_int("--samples", a, 0, 1000000, &o->samples);
+	case 'S': return parse_u64("--seed", a, 0, ~0ull, &o->seed);
+	case 'F': return (o->csv = cli_format("--format", a, 0)) < 0 ? -1 : 0;
 	case 'p': return cli_precision("--precision", a, o->prec_on);
 	case 'l':
 		if (sscanf(a, "%lf,%lf,%lf%c", &o->loc[0], &o->loc[1], &o->loc[2], &tail) != 3 || !isfinite(o->loc[0]) ||
@@ -78,7 +104,9 @@ static int eval_parse(int argc, char **argv, eval_opts *o)
 	static const struct option lo[] = {
 		{ "precision", required_argument, NULL, 'p' }, { "methods", required_argument, NULL, 'm' },
 		{ "ref-bits", required_argument, NULL, 'b' }, { "local", required_argument, NULL, 'l' },
-		{ "fma", no_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+		{ "fma", no_argument, NULL, 'f' }, { "arith", required_argument, NULL, 'A' },
+		{ "samples", required_argument, NULL, 'n' }, { "seed", required_argument, NULL, 'S' },
+		{ "format", required_argument, NULL, 'F' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	char **opts = malloc(((size_t)argc + 1) * sizeof *opts), **rest;
 	int i, n = 0, v, rc = 0, dashdash = 0;
@@ -186,7 +214,7 @@ static void eval_one(ref_ctx *rc, ref_ctx *rc2, long bits, const study_kernel *k
 
 int cmd_eval(int argc, char **argv)
 {
-	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
+	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, NULL, 256, 1, 0, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
 	const char *methods;
 	int prec_on[2], fma, i, p, k, nk;
 	long bits;
@@ -199,9 +227,19 @@ int cmd_eval(int argc, char **argv)
 	memcpy(in, o.in, sizeof in);
 	memcpy(loc, o.loc, sizeof loc);
 	if (fma && !fma_available()) { study_error("--fma: this CPU (or build) has no FMA"); return ONB_EXIT_USAGE; }
+	if (o.arith && (fma || o.bits != 127)) {
+		study_error("eval: --arith takes neither --fma nor --ref-bits (a profile's contraction covers the +fma copies)");
+		return ONB_EXIT_USAGE;
+	}
+	if (!o.arith && (o.csv || o.samples != 256 || o.seed != 1)) {
+		study_error("eval: --format, --samples and --seed go with --arith");
+		return ONB_EXIT_USAGE;
+	}
 	nk = kernels_select(methods, fma, ks, 256);
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
+	if (o.arith)
+		return eval_arith(o.arith, ks, nk, prec_on, in, (int)o.samples, o.seed, o.csv);
 	{
 		ref_ctx *rc = ref_new(bits), *rc2 = ref_new(bits + 64);
 		if (!rc || !rc2) { study_error("out of memory"); return 1; }

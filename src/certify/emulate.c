@@ -8,6 +8,7 @@
 #include <string.h>
 #include "emulate.h"
 #include "model/model_int.h"
+#include "bound.h"
 
 void emu_run(cm *c, ref_ctx *rc, const cm_method *m, int prec, const double n[3], const arith_profile *p,
              int mode, unsigned long long seed, const unsigned char *choice, int nchoice, emu_eval *r)
@@ -88,3 +89,34 @@ double emu_adversarial(cm *c, ref_ctx *rc, const cm_method *m, int prec, const d
 	}
 	return best->defect;
 }
+
+/* The proven bound over the box of unit vectors within about 8u of
+   n/|n| (bound_box); INFINITY when none. */
+double emu_point_bound(const cm_method *m, const arith_profile *p, int prec, const double n[3], int *unb)
+{
+	const double w = 8.0 * prec_fmt(prec)->u, l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	double z, r, phi, dphi, b;
+	mvf_box x;
+	bound_ctx *bc;
+	*unb = -1;
+	if (!(l > 0.0) || !isfinite(l) || !(bc = bound_new()))
+		return INFINITY;
+	z = n[2] / l;
+	r = sqrt(fmax(0.0, 1.0 - z * z));
+	phi = atan2(n[1], n[0]);
+	dphi = r > w ? fmin(3.141592653589793, 2.0 * w / r) : 3.141592653589793;
+	memset(&x, 0, sizeof x);
+	x.z_lo = fmax(-1.0, z - w);
+	x.z_hi = fmin(1.0, z + w);
+	x.phi_lo = dphi >= 3.141592653589793 ? -3.141592653589793 : phi - dphi;
+	x.phi_hi = dphi >= 3.141592653589793 ? 3.141592653589793 : phi + dphi;
+	x.nz_lo = x.nz_hi = n[2];
+	x.prec = prec;
+	x.tolerance = -1.0;
+	bound_set_arith(bc, p);
+	b = bound_box(bc, m, &x);
+	*unb = bound_unbounded_op(bc);
+	bound_free(bc);
+	return b;
+}
+

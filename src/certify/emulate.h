@@ -33,4 +33,11 @@ void emu_run(cm *c, ref_ctx *rc, const cm_method *m, int prec, const double n[3]
 double emu_adversarial(cm *c, ref_ctx *rc, const cm_method *m, int prec, const double n[3], const arith_profile *p,
                        int passes, unsigned char *ch, emu_eval *best);
 
+/* The proven bound under p over the box of real unit vectors within about
+   8u of n/|n| (z +- 8u, the azimuth alike), n.z fixed to n's (bound_box);
+   *unb the operation that left it unbounded (-1).  Every conforming
+   result at n stays below it when n is the rounding of a unit vector of
+   the box (`eval --arith` and tests/test_arith.c). */
+double emu_point_bound(const cm_method *m, const arith_profile *p, int prec, const double n[3], int *unb);
+
 #endif

@@ -43,36 +43,6 @@ static void env_add(envelope *e, const emu_eval *r)
 	}
 }
 
-/* The proven bound over the box of unit vectors within about 8u of
-   n/|n| (bound_box); INFINITY when none. */
-static double point_bound(const cm_method *m, const arith_profile *p, int prec, const double n[3], int *unb)
-{
-	const double w = 8.0 * prec_fmt(prec)->u, l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-	double z, r, phi, dphi, b;
-	mvf_box x;
-	bound_ctx *bc;
-	*unb = -1;
-	if (!(l > 0.0) || !isfinite(l) || !(bc = bound_new()))
-		return INFINITY;
-	z = n[2] / l;
-	r = sqrt(fmax(0.0, 1.0 - z * z));
-	phi = atan2(n[1], n[0]);
-	dphi = r > w ? fmin(3.141592653589793, 2.0 * w / r) : 3.141592653589793;
-	memset(&x, 0, sizeof x);
-	x.z_lo = fmax(-1.0, z - w);
-	x.z_hi = fmin(1.0, z + w);
-	x.phi_lo = dphi >= 3.141592653589793 ? -3.141592653589793 : phi - dphi;
-	x.phi_hi = dphi >= 3.141592653589793 ? 3.141592653589793 : phi + dphi;
-	x.nz_lo = x.nz_hi = n[2];
-	x.prec = prec;
-	x.tolerance = -1.0;
-	bound_set_arith(bc, p);
-	b = bound_box(bc, m, &x);
-	*unb = bound_unbounded_op(bc);
-	bound_free(bc);
-	return b;
-}
-
 static const char *const qname[6 + NDEF + 1] = { "b1x", "b1y", "b1z", "b2x", "b2y", "b2z",
 	"n1", "n2", "d1n", "d2n", "d12", "defect" };
 
@@ -133,7 +103,7 @@ static void eval_method(cm *c, ref_ctx *rc, const cm_method *m, const char *name
 	}
 	e.adversarial = emu_adversarial(c, rc, m, prec, n, p, 3, ch, &r);
 	env_add(&e, &r);
-	bound = point_bound(m, p, prec, n, &unb);
+	bound = emu_point_bound(m, p, prec, n, &unb);
 	print_env(name, prec, p, &e, samples, bound, unb, csv);
 }
 

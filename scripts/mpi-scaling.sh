@@ -9,7 +9,10 @@
 #                   azimuths x every method that runs in float - as counted
 #                   by `onbstudy sweep --dry-run`, and its wall time on 1, 64
 #                   and 1024 cores from the measured 1-rank per-core rate
-#                   (ideal scaling; the measured 2-rank efficiency beside it).
+#                   (ideal scaling; the measured 2-rank efficiency beside it);
+#   domain.csv      that count alone (methods, n.z values, azimuths,
+#                   evaluations), which docs/sweep.md quotes;
+#   load.csv        the load average before and after the timed runs.
 # About a minute on 2 cores.  The rate is only as good as the machine is
 # quiet: the load average is recorded.
 #   sh scripts/mpi-scaling.sh [COUNT] [REPEATS]   (default 4096 n.z values, 3)
@@ -18,7 +21,7 @@ cd "$(dirname "$0")/.."
 COUNT=${1:-4096}
 REPEATS=${2:-3}
 OUT=results/mpi-scaling
-command -v mpirun > /dev/null || { echo "mpi-scaling: no mpirun (scripts/install-deps.sh --test installs Open MPI)" >&2; exit 1; }
+command -v mpirun > /dev/null || { echo "mpi-scaling: no mpirun (scripts/install-deps.sh --mpi installs Open MPI)" >&2; exit 1; }
 make -s all mpi
 mkdir -p "$OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
@@ -35,6 +38,7 @@ run() {
 }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
+LOAD0=$(cut -d' ' -f1-3 /proc/loadavg)
 : > "$TMP/t1"; : > "$TMP/t2"
 i=1
 while [ $i -le "$REPEATS" ]; do
@@ -94,4 +98,22 @@ SPEED2=$(awk -v t1="$T1" -v t2="$T2" 'BEGIN { printf "%.2f", t1 / t2 }')
 	done
 } > "$OUT/projection.csv.tmp"
 mv "$OUT/projection.csv.tmp" "$OUT/projection.csv"
+{
+	prov
+	echo "# the full float domain as \`onbstudy sweep --dry-run --dists exhaustive --precision float --exhaustive-range -1:1 --azimuths 16\` counts it (docs/sweep.md quotes it; tests/findings.sh compares it with a fresh dry run)"
+	echo "what,value"
+	echo "methods,$NM"
+	echo "nz_values,$NZ"
+	echo "azimuths,16"
+	echo "evaluations,$FULL"
+} > "$OUT/domain.csv.tmp"
+mv "$OUT/domain.csv.tmp" "$OUT/domain.csv"
+{
+	prov
+	echo "# the load average (1, 5, 15 minutes) before the timed runs and after them: the README quotes it with the times"
+	echo "when,load_1min,load_5min,load_15min"
+	echo "start,$LOAD0" | tr ' ' ,
+	echo "end,$(cut -d' ' -f1-3 /proc/loadavg)" | tr ' ' ,
+} > "$OUT/load.csv.tmp"
+mv "$OUT/load.csv.tmp" "$OUT/load.csv"
 cat "$OUT/scaling.csv" "$OUT/projection.csv" | grep -v '^# \(compiler\|cpu\)'

@@ -17,7 +17,7 @@
 # per test beside it (test-times.csv); README.md, docs/bench.md and
 # docs/certify.md quote it (scripts/quotes.in, scripts/findings.sh --quotes).
 # Takes what the commands take: about 20 minutes on 2 idle cores.
-#   sh scripts/quickstart-times.sh [OUT]
+#   [STEPS="make sweep ..."] sh scripts/quickstart-times.sh [OUT]
 set -eu
 cd "$(dirname "$0")/.."
 out=${1:-results/quickstart/times.csv}
@@ -25,6 +25,7 @@ rev=$(git rev-parse --short=12 HEAD)
 dirty=$(git diff --quiet HEAD -- . ':(exclude)results' 2>/dev/null || echo " (the working tree differs from HEAD; the clone is HEAD)")
 T=$(mktemp -d /tmp/onb-quickstart.XXXXXX)
 trap 'rm -rf "$T"' EXIT
+trap 'exit 1' INT TERM
 git clone -q --shared . "$T/onb"
 git -C "$T/onb" checkout -q "$rev"
 load() { cut -d' ' -f1-3 /proc/loadavg; }
@@ -45,30 +46,44 @@ step() {
 }
 : > "$T/rows"
 start=$(date -u +%Y-%m-%dT%H:%MZ)
-step make "make"
-step sweep "./onbstudy sweep --out $T/run"
-step make-test "make test"
-step certify-quick "./onbstudy certify --quick --out $T/cert"
-step bench-quick "./onbstudy bench --quick --out $T/benchq"
-step bench "./onbstudy bench --out $T/bench"
-grep -q '^make test: all passed' "$T/make-test.log" || { echo "quickstart-times: make test did not pass" >&2; exit 1; }
-mkdir -p "$(dirname "$out")"
-{
-	echo "# scripts/quickstart-times.sh: the README's quick-start commands in a fresh clone, one after the other"
-	echo "# revision: $rev$dirty"
-	echo "# compiler: $(${CC:-cc} --version | head -1)"
-	echo "# cpu: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(awk '/MemTotal/ { printf "%.0f GB", $2 / 1048576 }' /proc/meminfo) RAM"
-	echo "# started $start, ended $(date -u +%Y-%m-%dT%H:%MZ); the load average (1, 5, 15 min) before and after each command is in its row"
-	echo "# the packages were installed before (downloads not timed); ./onbstudy sweep ran with --out into the temporary directory"
-	echo "# $(grep '^onbstudy: .* referenced evaluations in' "$T/sweep.log" | head -1)"
-	echo "key,command,wall_seconds,wall_minutes,cpu_seconds,cpu_minutes,load_before,load_after"
-	cat "$T/rows"
-} > "$out.tmp"
-mv "$out.tmp" "$out"
+# write OUT with what has run so far (a run cut short keeps its rows)
+write() {
+	mkdir -p "$(dirname "$out")"
+	{
+		echo "# scripts/quickstart-times.sh: the README's quick-start commands in a fresh clone, one after the other (STEPS: $STEPS)"
+		echo "# revision: $rev$dirty"
+		echo "# compiler: $(${CC:-cc} --version | head -1)"
+		echo "# cpu: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, $(awk '/MemTotal/ { printf "%.0f GB", $2 / 1048576 }' /proc/meminfo) RAM"
+		echo "# started $start, last row $(date -u +%Y-%m-%dT%H:%MZ); the load average (1, 5, 15 min) before and after each command is in its row"
+		echo "# the packages were installed before (downloads not timed); ./onbstudy sweep ran with --out into the temporary directory"
+		[ ! -f "$T/sweep.log" ] || echo "# $(grep '^onbstudy: .* referenced evaluations in' "$T/sweep.log" | head -1)"
+		echo "key,command,wall_seconds,wall_minutes,cpu_seconds,cpu_minutes,load_before,load_after"
+		cat "$T/rows"
+	} > "$out.tmp"
+	mv "$out.tmp" "$out"
+}
+# STEPS: which commands, in this order (default all; make comes first
+# whenever another step needs the build)
+STEPS=${STEPS:-make sweep make-test certify-quick bench-quick bench}
+for s in $STEPS; do
+	case $s in
+	make) step make "make" ;;
+	sweep) step sweep "./onbstudy sweep --out $T/run" ;;
+	make-test) step make-test "make test"
+		grep -q '^make test: all passed' "$T/make-test.log" || { echo "quickstart-times: make test did not pass" >&2; exit 1; } ;;
+	certify-quick) step certify-quick "./onbstudy certify --quick --out $T/cert" ;;
+	bench-quick) step bench-quick "./onbstudy bench --quick --out $T/benchq" ;;
+	bench) step bench "./onbstudy bench --out $T/bench" ;;
+	*) echo "quickstart-times: unknown step '$s'" >&2; exit 2 ;;
+	esac
+	write
+done
 # make test's own seconds per test (build/test-times.tsv), e.g. tests/mpi.sh's
-{
-	echo "# make test's seconds per test in the same run (its build/test-times.tsv); revision $rev; load in times.csv"
-	echo "test,seconds"
-	tr '\t' , < "$T/onb/build/test-times.tsv"
-} > "$(dirname "$out")/test-times.csv"
+if [ -f "$T/onb/build/test-times.tsv" ]; then
+	{
+		echo "# make test's seconds per test in the same run (its build/test-times.tsv); revision $rev; load in times.csv"
+		echo "test,seconds"
+		tr '\t' , < "$T/onb/build/test-times.tsv"
+	} > "$(dirname "$out")/test-times.csv"
+fi
 cat "$out"

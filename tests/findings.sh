@@ -18,8 +18,15 @@ sed 's/^| float | \([0-9,]*\) |/| float | 1\1 |/' docs/reference.md > "$tmp/qq/d
 cmp -s docs/reference.md "$tmp/qq/docs/reference.md" && bad "the quotes fixture changed nothing" || ok
 (cd "$tmp/qq" && REF="$OLDPWD/results/reference" sh "$OLDPWD/scripts/findings.sh" --quotes --check >/dev/null 2>&1) && bad "a changed rate in docs/reference.md passed the quotes check" || ok
 sh scripts/findings.sh --section sweeprate --check docs/sweep.md && ok || bad "docs/sweep.md's reference-run rate differs from summary.csv (scripts/findings.sh --section sweeprate)"
-# docs/scene.md's cube example is what onbstudy scene prints now
-sh scripts/scene-example.sh --check && ok || bad "docs/scene.md's cube example differs from onbstudy scene (sh scripts/scene-example.sh --update)"
+# docs/scene.md's cube and glTF examples are what onbstudy scene prints now
+sh scripts/scene-example.sh --check && ok || bad "docs/scene.md's examples differ from onbstudy scene (sh scripts/scene-example.sh --update)"
+# the full float domain that docs/sweep.md quotes (results/mpi-scaling/domain.csv)
+# is what a dry run counts now: a new method changes it
+./onbstudy sweep --dry-run --dists exhaustive --precision float --exhaustive-range -1:1 --azimuths 16 --threads 1 --out "$tmp/dry" > "$tmp/plan" 2>&1
+m=$(sed -n 's/^plan: \([0-9]*\) methods:.*/\1/p' "$tmp/plan")
+e=$(sed -n 's/^plan: \([0-9]*\) referenced evaluations.*/\1/p' "$tmp/plan")
+[ -n "$m" ] && grep -qx "methods,$m" results/mpi-scaling/domain.csv && grep -qx "evaluations,$e" results/mpi-scaling/domain.csv && ok ||
+	bad "results/mpi-scaling/domain.csv differs from a fresh dry run ($m methods, $e evaluations): rerun sh scripts/mpi-scaling.sh"
 sh scripts/findings.sh --charts --check docs/charts.md && ok || bad "docs/charts.md's numbers differ from results/ (scripts/findings.sh --charts)"
 # a deliberately broken caption: one number of docs/charts.md changed, then
 # one value of the CSV it quotes; both must fail the check

@@ -57,4 +57,6 @@ grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "
 [ $rc -eq 2 ] && ok || bad "--arith without a profile: exit $rc"
 ./onbstudy list --arith > "$T/list" 2>&1 && ok || bad "list --arith failed"
 [ "$(grep -c -e "^vulkan " -e "^d3d11 " "$T/list")" -eq 6 ] && ok || bad "list --arith: $(head -3 "$T/list")"
+# docs/gpu.md's table and the README's headline are those results/gpu gives
+sh scripts/gpu_table.sh --check > /dev/null 2>&1 && ok || bad "scripts/gpu_table.sh --check: docs/gpu.md or README.md differs from results/gpu"
 finish arith.sh

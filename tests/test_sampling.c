@@ -93,9 +93,16 @@
  *   - tangent_cross_z: cross(n, n + z) is 0 at n = -z exactly: NaN, must
  *     fail on -z exact; n.x^2 + n.y^2 is far above underflow on the other
  *     sets, where it is accurate: must pass.
- * Must-fail rows must fail, and their premise (at least 1e-2 of the
- * pooled normals, or one per-normal normal, with D > 0.1 or non-finite)
- * is checked too.
+ * Must-fail rows must fail: their premise is at least 1e-2 of the pooled
+ * normals, or one per-normal normal, with D > 0.1 or non-finite.
+ *
+ * Where the expectations come from.  Each row's expectation is computed
+ * from its own kernel's measured defects (expect_row: must pass under
+ * the must-pass premise, must fail under the must-fail premise, either
+ * way in between), never from the method's name, so a method added to
+ * the registry needs no edit here.  The notes per method above are what
+ * that rule gives for today's registry (frisvad_max in float on -z ulps
+ * stays below the 2e-3 line with the default seed: must pass there).
  */
 #include <float.h>
 #include <math.h>
@@ -324,23 +331,6 @@ static int classify(const double w[3], const double n[3])
 enum { EXP_ANY, EXP_PASS, EXP_FAIL };
 static const char *const exp_name[] = { "-", "must pass", "expected failure" };
 
-static int expect(const char *name, int prec, int set)
-{
-	if (set == SET_XEXACT) /* naive's b1 = x - n (n.x) cancels to 0 */
-		return !strncmp(name, "naive", 5) ? EXP_FAIL : EXP_PASS;
-	if (!strcmp(name, "tangent_cross_z"))
-		return set == SET_EXACT ? EXP_FAIL : EXP_PASS;
-	if (!strcmp(name, "naive_nonorm") || !strcmp(name, "hughes_moeller_nonorm"))
-		return set == SET_GENERIC ? EXP_FAIL : EXP_PASS;
-	if (!strcmp(name, "frisvad"))
-		return prec == PREC_FLOAT && (set == SET_ULPS || set == SET_LOG) ? EXP_FAIL : EXP_PASS;
-	if (!strcmp(name, "frisvad_max"))
-		return set == SET_LOG || (prec == PREC_FLOAT && set == SET_ULPS) ? EXP_ANY : EXP_PASS;
-	if (!strcmp(name, "q2rtx")) /* below t = -0.999805696f its fallback tilts by up to 0.0197 */
-		return set == SET_LOG ? EXP_ANY : EXP_PASS;
-	return EXP_PASS;
-}
-
 /* ---- one row ---- */
 typedef struct {
 	unsigned long cnt[NB], below, nonfinite, moved, big, huge, spot_bad;
@@ -348,6 +338,20 @@ typedef struct {
 	double chi2, p, schi2, sp;
 	int ok;
 } row;
+
+/* What a row must do, from its own kernel's defects (see the top):
+   pass when at most F_SMALL of the pooled normals and none of the
+   per-normal ones have D > D_SMALL; fail when at least 1e-2 of the pooled
+   normals, or one per-normal normal, have D > 0.1 or a non-finite basis;
+   either way in between. */
+static int expect_row(const row *r)
+{
+	if ((double)r->huge / NS >= 1e-2 || r->shuge > 0)
+		return EXP_FAIL;
+	if ((double)r->big / NS <= F_SMALL && r->sbig == 0)
+		return EXP_PASS;
+	return EXP_ANY;
+}
 
 static long double defect(const double b1[3], const double b2[3], const double n[3])
 {
@@ -517,11 +521,12 @@ int main(int argc, char **argv)
 			make_set(set, prec, seed);
 			for (j = 0; j < nm; j++) {
 				row r;
-				int e = expect(ms[j].name, prec, set);
+				int e;
 				const char *note = "";
 				if (prec == PREC_DOUBLE && !ms[j].basis)
 					continue; /* float only (ONB_FLOAT_ONLY) */
 				run_row(&ms[j], prec, &r);
+				e = expect_row(&r);
 				if (r.ok) npass++; else nfail++;
 				if ((e == EXP_PASS && !r.ok) || (e == EXP_FAIL && r.ok)) { note = "  UNEXPECTED"; nunexp++; }
 				printf("%-23s %-6s %-8s %8.1f %9.3g %8.1f %9.3g %5lu %6lu %5lu %6.4f %6.4f  %-7s %s%s\n", ms[j].name,
@@ -532,15 +537,9 @@ int main(int argc, char **argv)
 				if (e == EXP_PASS) {
 					CHECK(r.ok, "%s %s %s must pass: chi2 %.1f p %g below %lu nonfinite %lu", ms[j].name,
 					      prec_name(prec), set_name[set], r.chi2, r.p, r.below, r.nonfinite);
-					CHECK((double)r.big / NS <= F_SMALL && r.sbig == 0,
-					      "%s %s %s: premise of must-pass broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > %g",
-					      ms[j].name, prec_name(prec), set_name[set], r.big, NS, r.sbig, NG, D_SMALL);
 				} else if (e == EXP_FAIL) {
 					CHECK(!r.ok, "%s %s %s must fail but passed: chi2 %.1f p %g", ms[j].name,
 					      prec_name(prec), set_name[set], r.chi2, r.p);
-					CHECK((double)r.huge / NS >= 1e-2 || r.shuge > 0,
-					      "%s %s %s: premise of must-fail broken: %lu of %u (pooled), %lu of %d (per-normal) normals with D > 0.1",
-					      ms[j].name, prec_name(prec), set_name[set], r.huge, NS, r.shuge, NG);
 				}
 			}
 		}

@@ -17,6 +17,7 @@
 #include <string.h>
 #include <stdio.h>
 #include <stdint.h>
+#include <float.h>
 #include "reference/reference.h"
 #include "arith/mpfr_kit.h"
 #include "reference/ziv.h"
@@ -31,6 +32,10 @@ struct ref_ctx {
 	double last_norm;
 	int have_last;
 	int exact;       /* the formula's last evaluation was exact (ziv.h)         */
+	double sum_err;  /* exact_sum's bound on |out - exact sum|                  */
+	int sum_k;       /* and its number of terms, still in q[]                  */
+	mpfr_t lo, hi;   /* sum_d's interval                                       */
+	mpfr_t sc;       /* ref_round's scratch (its precision changes)            */
 	ziv_ctx *z;      /* the roundings of the formula, by Ziv's strategy        */
 	ziv_out zo;      /* and their results for the current kernel and input     */
 };
@@ -49,6 +54,9 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 	kit_vinit(c->b2, 3, prec); kit_vinit(c->r1, 3, prec); kit_vinit(c->r2, 3, prec);
 	kit_vinit(c->q, 4, prec < 106 ? 106 : prec);
 	mpfr_init2(c->inv_n, prec);
+	mpfr_init2(c->lo, prec);
+	mpfr_init2(c->hi, prec);
+	mpfr_init2(c->sc, 64);
 	c->z = ziv_new(prec);
 	if (!c->z) {
 		ref_free(c);
@@ -66,6 +74,9 @@ void ref_free(ref_ctx *c)
 	kit_vclear(c->r1, 3); kit_vclear(c->r2, 3);
 	kit_vclear(c->q, 4);
 	mpfr_clear(c->inv_n);
+	mpfr_clear(c->lo);
+	mpfr_clear(c->hi);
+	mpfr_clear(c->sc);
 	ziv_free(c->z);
 	free(c);
 }
@@ -88,7 +99,11 @@ mpfr_prec_t ref_prec(const ref_ctx *c) { return c->prec; }
    2^-125), mpfr_sum rounds the exact sum once instead.  Either way the
    result has a relative error below 2^-(prec-63), 2^-64 at 127 bits.
    The bound sum|term| is taken in double from da and db, which costs
-   nothing.  (A plain dot at 127 bits failed the two-precision check.) */
+   nothing.  (A plain dot at 127 bits failed the two-precision check.)
+   c->sum_err gets a rigorous bound on |out - sum| for sum_d: each of the
+   k - 1 <= 3 additions rounds by at most 2^-P of a partial sum, itself
+   at most sum|term| <= bound (1 + 5u); mpfr_sum, by 2^-P |out|.  Infinite
+   where the bound is too small to hold in a double. */
 static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
 {
 	mpfr_ptr q[4];
@@ -96,6 +111,8 @@ static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
 	mpfr_add(out, c->q[0], c->q[1], R);
 	for (i = 2; i < k; i++)
 		mpfr_add(out, out, c->q[i], R);
+	c->sum_k = k;
+	c->sum_err = bound == 0.0 ? 0.0 : bound >= 0x1p-800 ? 3.0 * ldexp(bound, -(int)c->prec) * (1.0 + 0x1p-40) : INFINITY;
 	if (bound == 0.0 || !isfinite(bound) || mpfr_nan_p(out) || mpfr_inf_p(out))
 		return; /* exact zero terms, or NaN/Inf: nothing to refine */
 	(void)frexp(bound, &e);
@@ -104,6 +121,34 @@ static void exact_sum(ref_ctx *c, mpfr_t out, int k, double bound)
 	for (i = 0; i < k; i++)
 		q[i] = c->q[i];
 	mpfr_sum(out, q, (unsigned long)k, R);
+	{
+		const double a = fabs(mpfr_get_d(out, MPFR_RNDA));
+		c->sum_err = a >= 0x1p-800 ? ldexp(a, -(int)c->prec) * (1.0 + 0x1p-40) : INFINITY;
+	}
+}
+
+/* RN to double of the exact sum that exact_sum has just left in out,
+   correct whatever the precision: decided from out and c->sum_err when
+   both ends round alike, else by mpfr_sum of the terms (still in c->q)
+   at double's quantum there (ref_round_sum). */
+static double sum_d(ref_ctx *c, mpfr_t out)
+{
+	mpfr_ptr q[4];
+	int i;
+	if (!mpfr_number_p(out) || c->sum_err == 0.0)
+		return ref_round(out, ref_format_of(PREC_DOUBLE), c->sc); /* NaN, inf, or exact */
+	if (c->sum_err < DBL_MAX) {
+		double a, b;
+		mpfr_sub_d(c->lo, out, c->sum_err, MPFR_RNDD);
+		mpfr_add_d(c->hi, out, c->sum_err, MPFR_RNDU);
+		a = ref_round(c->lo, ref_format_of(PREC_DOUBLE), c->sc);
+		b = ref_round(c->hi, ref_format_of(PREC_DOUBLE), c->sc);
+		if (memcmp(&a, &b, sizeof a) == 0)
+			return a;
+	}
+	for (i = 0; i < c->sum_k; i++)
+		q[i] = c->q[i];
+	return ref_round_sum(q, (unsigned long)c->sum_k, ref_format_of(PREC_DOUBLE), c->sc);
 }
 
 /* out = a.b - z */
@@ -133,7 +178,7 @@ static double norm_m1_exact(ref_ctx *c, mpfr_t *v, const double *dv)
 	mpfr_sqr(c->q[2], v[2], R);
 	mpfr_set_si(c->q[3], -1, R);
 	exact_sum(c, c->k.p0, 4, dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2] + 1.0);
-	e = mpfr_get_d(c->k.p0, R);
+	e = sum_d(c, c->k.p0);
 	return e / (sqrt(1.0 + e) + 1.0);
 }
 
@@ -232,11 +277,11 @@ static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int 
 	/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
 	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0);
 	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-	d[DEF_D1N] = mpfr_get_d(t[0], R);
+	d[DEF_D1N] = normalize_n ? mpfr_get_d(t[0], R) : sum_d(c, t[0]);
 	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0);
 	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-	d[DEF_D2N] = mpfr_get_d(t[0], R);
-	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+	d[DEF_D2N] = normalize_n ? mpfr_get_d(t[0], R) : sum_d(c, t[0]);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = sum_d(c, t[0]);
 }
 
 /* | |w| - 1 | and | w.n - z | (w.(n/|n|) - z when normalize_n) of the
@@ -252,10 +297,11 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
 		dot_exact(c, t[0], c->k.w, c->n, w, n, 0.0);
 		mpfr_mul(t[0], t[0], c->inv_n, R);
 		mpfr_sub_d(t[0], t[0], z, R);
+		*dir_cos = fabs(mpfr_get_d(t[0], R));
 	} else {
 		dot_exact(c, t[0], c->k.w, c->n, w, n, z);
+		*dir_cos = fabs(sum_d(c, t[0]));
 	}
-	*dir_cos = fabs(mpfr_get_d(t[0], R));
 }
 
 /* ---- the accuracy floor ------------------------------------ */
@@ -512,7 +558,7 @@ void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF
 	kit_set3(c->b2, b[3], b[4], b[5]);
 	d[DEF_N1] = norm_m1_exact(c, c->b1, b);
 	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
-	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = mpfr_get_d(t[0], R);
-	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0); d[DEF_D2N] = mpfr_get_d(t[0], R);
-	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = mpfr_get_d(t[0], R);
+	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0); d[DEF_D1N] = sum_d(c, t[0]);
+	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0); d[DEF_D2N] = sum_d(c, t[0]);
+	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = sum_d(c, t[0]);
 }

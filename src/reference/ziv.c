@@ -60,6 +60,48 @@ double ref_round(mpfr_srcptr x, const ref_format *f, mpfr_ptr t)
 	return mpfr_get_d(t, MPFR_RNDN); /* exact: at most 53 bits, in range */
 }
 
+double ref_round_sum(mpfr_ptr *q, unsigned long k, const ref_format *f, mpfr_ptr t)
+{
+	const long q0 = (long)f->emin - f->p;
+	long bits;
+	int cmp;
+	mpfr_set_prec(t, 2);
+	mpfr_sum(t, q, k, MPFR_RNDZ); /* its exponent is the exact sum's */
+	if (!mpfr_regular_p(t)) {
+		if (mpfr_zero_p(t))
+			mpfr_sum(t, q, k, MPFR_RNDN); /* an exact 0: RN's sign */
+		return mpfr_get_d(t, MPFR_RNDN);
+	}
+	bits = mpfr_get_exp(t) - q0;
+	if (bits > f->p)
+		bits = f->p;
+	if (bits >= 1) {
+		mpfr_set_prec(t, bits);
+		mpfr_sum(t, q, k, MPFR_RNDN); /* at the format's quantum there: correct */
+		if (mpfr_get_exp(t) > f->emax)
+			return mpfr_signbit(t) ? -INFINITY : INFINITY;
+		return mpfr_get_d(t, MPFR_RNDN);
+	}
+	/* |S| < 2^q0: compare |S| with the midpoint 2^(q0-1) */
+	{
+		const int neg = mpfr_signbit(t);
+		mpfr_ptr qq[8];
+		mpfr_t m;
+		unsigned long i;
+		if (k > 7)
+			return mpfr_get_d(t, MPFR_RNDN); /* not reached: sums of at most 4 */
+		mpfr_init2(m, 2);
+		mpfr_set_si_2exp(m, neg ? 1 : -1, q0 - 1, MPFR_RNDN);
+		for (i = 0; i < k; i++)
+			qq[i] = q[i];
+		qq[k] = m;
+		mpfr_sum(t, qq, k + 1, MPFR_RNDN); /* the sign of S -+ 2^(q0-1), exactly */
+		cmp = mpfr_sgn(t) * (neg ? -1 : 1);
+		mpfr_clear(m);
+		return copysign(cmp > 0 ? ldexp(1.0, (int)q0) : 0.0, neg ? -1.0 : 1.0);
+	}
+}
+
 typedef struct {
 	mpfr_kit k;
 	mpfr_t n[3], r1[3], r2[3];

@@ -31,6 +31,10 @@ const ref_format *ref_format_of(int prec);
    scratch (its precision is changed). */
 double ref_round(mpfr_srcptr x, const ref_format *f, mpfr_ptr t);
 
+/* RN to f of the exact sum of q[0..k-1] (k <= 7), by mpfr_sum at the
+   format's quantum at that exponent; t is scratch. */
+double ref_round_sum(mpfr_ptr *q, unsigned long k, const ref_format *f, mpfr_ptr t);
+
 /* The roundings of one formula evaluation, per output component. */
 typedef struct {
 	double fmt[6];   /* X to the format: the floor's basis, the forward error's unit */

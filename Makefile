@@ -171,6 +171,16 @@ $(B)/rev.stamp: FORCE
 	@echo '$(GIT_REV) $(BASE)' > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 $(B)/common/output.o $(MAIN_OBJ): $(B)/rev.stamp
+# certify's keys (src/certify/keys.c): a hash of the sources that decide a
+# region's result beyond its method; engine.stamp changes when it does.
+CERT_ENGINE_SRC = $(sort $(wildcard src/certify/*.[ch] src/model/*.[ch] src/reference/*.[ch] src/inputs/*.[ch] src/arith/*.[ch] src/common/prec.h))
+CERT_ENGINE := $(shell cat $(CERT_ENGINE_SRC) 2>/dev/null | cksum | cut -d' ' -f1)
+$(B)/engine.stamp: FORCE
+	@mkdir -p $(B)
+	@echo '$(CERT_ENGINE)' > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+$(B)/certify/keys.o: $(B)/engine.stamp
+$(B)/certify/keys.o: XFLAGS += -DONB_CERT_ENGINE='"$(CERT_ENGINE)"'
 .PHONY: FORCE
 FORCE:
 

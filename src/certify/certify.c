@@ -18,6 +18,10 @@
 #include "search.h"
 #include "model/seeds.h"
 #include "found.h"
+#include "keys.h"
+#include "checkpoint.h"
+#include <inttypes.h>
+#include <signal.h>
 
 #define MAXREG 1024
 #define MAXK STUDY_MAX_KERNELS
@@ -40,7 +44,23 @@ typedef struct {
 	int fma;                /* --fma: also the contracted kernels */
 	const char *starts;     /* --starts FILE[,FILE...] */
 	int arith_given;        /* --arith P other than ieee: its rows and header */
+	const char *resume;     /* --resume DIR */
+	const char *reuse;      /* --reuse DIR */
+	const char *check_keys; /* --check-keys DIR */
+	double ck_every;        /* --checkpoint-every S */
+	const unsigned char *frozen;   /* per group: re-used whole (--reuse), not refined */
+	int nreused;            /* groups re-used */
 } cert_cli;
+
+/* What the tasks commit to: the results, and the checkpoint. */
+typedef struct {
+	ck_state ck;            /* flags, base and refined results, keys */
+	const char *dir;        /* --resume: where the checkpoint goes; NULL none */
+	double every, last;
+	int failed;             /* a checkpoint could not be written: stop */
+	int kill_phase;         /* ONB_CERT_KILL=PHASE:N (tests): SIGKILL after */
+	long kill_at, commits;  /* the N-th commit of that phase */
+} run_ctl;
 
 typedef struct {
 	int k, prec, reg;   /* kernel, precision, region index */
@@ -54,7 +74,8 @@ static void usage(FILE *f)
 	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
 	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
 	"                        [--band LO,HI] [--starts FILE[,FILE...]] [--seed S]\n"
-	"                        [--fma] [--arith PROFILE] [--quick] [--quiet]\n\n"
+	"                        [--fma] [--arith PROFILE] [--quick] [--quiet] [--resume DIR]\n"
+	"                        [--checkpoint-every S] [--reuse DIR] [--check-keys DIR]\n\n"
 	"For each method, precision and region of the sphere (bands of n.z, log-spaced\n"
 	"near the poles, times azimuth sectors), a bracket  found <= true max <= bound  of\n"
 	"the orthonormality defect max(| |b1|-1 |, | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|)\n"
@@ -100,6 +121,21 @@ static void usage(FILE *f)
 	"                    no bound (ieee: the default, byte for byte)\n"
 	"  --quick           budget 40, samples 150 (walks a quarter as long), 2 sectors:\n"
 	"                    a run of under a minute\n");
+	fprintf(f,
+	"  --resume DIR      write to DIR and keep a checkpoint there (certify-checkpoint.bin,\n"
+	"                    removed at the end): run again with the same command line to\n"
+	"                    continue a run that was stopped; before the first checkpoint it\n"
+	"                    starts from the beginning, after the end it says the work is\n"
+	"                    done.  A checkpoint of other options, another revision of a\n"
+	"                    model or kernel, or a corrupted one is refused\n"
+	"  --checkpoint-every S  with --resume: at most every S seconds (default 60; 0:\n"
+	"                    after every region)\n"
+	"  --reuse DIR       take the results of every method and precision whose key (its\n"
+	"                    model's operations, kernel, format, settings and the certify\n"
+	"                    engine: DIR/certify-keys.csv, which every run writes) is\n"
+	"                    unchanged from DIR's certify.csv; compute the others\n"
+	"  --check-keys DIR  prove nothing: exit 0 when every key of this command line is\n"
+	"                    DIR's (DIR/certify.csv is current), else 1 naming the stale\n");
 }
 
 /* Split line s at commas into f (at most max fields); returns the count. */
@@ -240,6 +276,9 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "quick", no_argument, NULL, 'q' }, { "quiet", no_argument, NULL, 'Q' },
 		{ "band", required_argument, NULL, 'B' }, { "starts", required_argument, NULL, 'T' },
 		{ "fma", no_argument, NULL, 'F' }, { "arith", required_argument, NULL, 'A' },
+		{ "resume", required_argument, NULL, 'R' },
+		{ "reuse", required_argument, NULL, 'U' }, { "check-keys", required_argument, NULL, 'K' },
+		{ "checkpoint-every", required_argument, NULL, 'E' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args a;
@@ -251,6 +290,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 	c->prec_on[0] = c->prec_on[1] = 1;
 	c->o.budget = 6000; c->o.samples = 1000; c->o.target = 1.25; c->o.tolerance = -1.0; c->o.seed = 1;
 	c->sectors = 8;
+	c->ck_every = 60.0;
 	if (cli_begin(&a, "certify", argc, argv))
 		return ONB_EXIT_USAGE;
 	while ((v = cli_next(&a, lo)) != -1) {
@@ -284,6 +324,16 @@ static int parse(int argc, char **argv, cert_cli *c)
 			}
 			c->arith_given = !arith_is_ieee(c->o.arith);
 			break;
+		case 'R': c->resume = a.arg; break;
+		case 'U': c->reuse = a.arg; break;
+		case 'K': c->check_keys = a.arg; break;
+		case 'E':
+			if (parse_double("--checkpoint-every", a.arg, &c->ck_every)) goto bad;
+			if (!(c->ck_every >= 0.0)) {
+				study_error("--checkpoint-every: expected seconds >= 0, not '%s'", a.arg);
+				goto bad;
+			}
+			break;
 		default: goto bad;
 		}
 	}
@@ -294,6 +344,12 @@ static int parse(int argc, char **argv, cert_cli *c)
 		goto bad;
 	}
 	cli_end(&a);
+	if (c->resume && c->out && strcmp(c->resume, c->out) != 0) {
+		study_error("--resume %s: the output goes to the checkpoint's directory; drop --out %s", c->resume, c->out);
+		return ONB_EXIT_USAGE;
+	}
+	if (c->resume)
+		c->out = c->resume;
 	if (c->quick) {
 		if (!budget_set) c->o.budget = 40;
 		if (!samples_set) c->o.samples = 150;
@@ -430,29 +486,78 @@ typedef struct {
 	cert_result *res;
 	const int *pick;   /* refine_top: the regions of the round */
 	const struct image_pool_s *pool;   /* images_all: the pooled inputs */
+	run_ctl *ctl;
 } task_set;
+
+/* ONB_CERT_KILL=PHASE:N (the tests of --resume): the process kills itself
+   after the N-th task of phase run, images or refine that it finished. */
+static void kill_hook(run_ctl *c)
+{
+	const char *e = getenv("ONB_CERT_KILL");
+	static const char *const names[] = { "run", "images", "refine" };
+	int p;
+	c->kill_phase = 0;
+	for (p = 0; e && p < 3; p++)
+		if (strncmp(e, names[p], strlen(names[p])) == 0 && e[strlen(names[p])] == ':') {
+			c->kill_phase = 1 << p;
+			c->kill_at = atol(e + strlen(names[p]) + 1);
+		}
+}
+
+/* Task i's result r for phase flag (CK_*): into the results and the
+   checkpoint's state, the checkpoint written when due. */
+static void commit(const task_set *s, int i, const cert_result *r, int flag)
+{
+	run_ctl *c = s->ctl;
+#pragma omp critical(cert_commit)
+	{
+		s->res[i] = *r;
+		if (flag == CK_REFINED)
+			c->ck.ref[i] = *r;
+		else
+			c->ck.base[i] = *r;
+		c->ck.flag[i] |= (unsigned char)flag;
+		if (c->dir && !c->failed && study_now() - c->last >= c->every) {
+			c->failed = ck_write(c->dir, &c->ck) != 0;
+			c->last = study_now();
+		}
+		if (flag == c->kill_phase && ++c->commits == c->kill_at)
+			raise(SIGKILL);
+	}
+}
 
 static void run_one(cert_ctx *x, int i, void *arg)
 {
 	const task_set *s = arg;
 	const task *t = &s->t[i];
-	cert_region_run(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o, &s->res[i]);
+	cert_result r;
+	if ((s->ctl->ck.flag[i] & CK_RUN) || s->ctl->failed)
+		return;
+	cert_region_run(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o, &r);
+	commit(s, i, &r, CK_RUN);
 }
 
 static void refine_one(cert_ctx *x, int j, void *arg)
 {
 	const task_set *s = arg;
-	const int r = s->pick[j];
-	const task *t = &s->t[r];
-	cert_region_refine(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o,
-	                   &s->res[r]);
+	const int i = s->pick[j];
+	const task *t = &s->t[i];
+	cert_result r = s->res[i];
+	if (s->ctl->ck.flag[i] & CK_REFINED) {   /* refined before the run was stopped */
+		s->res[i] = s->ctl->ck.ref[i];
+		return;
+	}
+	if (s->ctl->failed)
+		return;
+	cert_region_refine(x, &s->ks[t->k], s->ms[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o, &r);
+	commit(s, i, &r, CK_REFINED);
 }
 
 /* Every region of every kernel and precision, in parallel. */
 static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
-                   cert_cli *c, cert_result *res)
+                   cert_cli *c, cert_result *res, run_ctl *ctl)
 {
-	const task_set s = { ks, ms, reg, t, c, res, NULL, NULL };
+	const task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl };
 	study_progress pr;
 	int fail;
 	memset(&pr, 0, sizeof pr);
@@ -509,12 +614,16 @@ static void images_one(cert_ctx *x, int i, void *arg)
 	const task *t = &s->t[i];
 	const image_pool *p = s->pool;
 	const int g = group_of(t);
+	cert_result r = s->res[i];
+	if ((s->ctl->ck.flag[i] & CK_IMAGES) || s->ctl->failed)
+		return;
 	cert_region_images(x, &s->ks[t->k], t->prec, &s->reg[t->prec * MAXREG + t->reg], &s->c->o,
-	                   p->in + p->off[g], p->off[g + 1] - p->off[g], &s->res[i]);
+	                   p->in + p->off[g], p->off[g + 1] - p->off[g], &r);
+	commit(s, i, &r, CK_IMAGES);
 }
 
 static int images_all(const study_kernel *ks, int nk, const cm_method **ms, const cert_region *reg, const task *t,
-                      int nt, cert_cli *c, cert_result *res)
+                      int nt, cert_cli *c, cert_result *res, run_ctl *ctl)
 {
 	const double t0 = study_now();
 	const int ng = 2 * nk;
@@ -530,7 +639,7 @@ static int images_all(const study_kernel *ks, int nk, const cm_method **ms, cons
 		p.in = malloc((size_t)(p.off[ng] > 0 ? p.off[ng] : 1) * sizeof *p.in);
 	}
 	if (p.in) {
-		task_set s = { ks, ms, reg, t, c, res, NULL, NULL };
+		task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl };
 		s.pool = &p;
 		memcpy(fill, p.off, (size_t)ng * sizeof *fill);
 		pool_pass(ks, nk, t, nt, res, &c->o, &p, fill, 1);
@@ -565,6 +674,7 @@ typedef struct {
 	double top, kept, found;   /* the largest bound, a refined region's, the largest found */
 	double before;             /* the largest bound of the round's regions before it */
 	int stop, count;
+	int frozen;                /* re-used whole (--reuse): its results are final */
 } refine_group;
 
 static void refine_tops(const task *t, int nt, const cert_result *res, const unsigned char *done, refine_group *g, int ng)
@@ -592,8 +702,8 @@ static int refine_pick(const task *t, int nt, const cert_result *res, const unsi
 	int i, np = 0;
 	refine_tops(t, nt, res, done, g, ng);
 	for (i = 0; i < ng; i++)
-		if (g[i].count == 0 && !(g[i].top > REFINE_ABOVE * g[i].found))
-			g[i].stop = 1;   /* within the target already */
+		if ((g[i].count == 0 && !(g[i].top > REFINE_ABOVE * g[i].found)) || g[i].frozen)
+			g[i].stop = 1;   /* within the target already, or re-used whole */
 	for (i = 0; i < nt; i++) {
 		refine_group *r = &g[group_of(&t[i])];
 		if (!r->stop && r->count < REFINE_MAX && !done[i] && res[i].status == CERT_BUDGET &&
@@ -630,7 +740,7 @@ static void refine_gain(const task *t, const cert_result *res, const int *pick, 
 }
 
 static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
-                      cert_cli *c, cert_result *res)
+                      cert_cli *c, cert_result *res, run_ctl *ctl)
 {
 	const double t0 = study_now();
 	unsigned char *done = calloc((size_t)nt, 1);
@@ -640,6 +750,8 @@ static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_r
 		if (group_of(&t[i]) >= ng)
 			ng = group_of(&t[i]) + 1;
 	g = calloc((size_t)ng + 1, sizeof *g);
+	for (i = 0; g && c->frozen && i < ng; i++)
+		g[i].frozen = c->frozen[i];
 	if (!done || !pick || !g) {
 		free(done);
 		free(pick);
@@ -648,7 +760,7 @@ static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_r
 		return -1;
 	}
 	while (!fail && (np = refine_pick(t, nt, res, done, g, ng, pick)) > 0) {
-		const task_set s = { ks, ms, reg, t, c, res, pick, NULL };
+		const task_set s = { ks, ms, reg, t, c, res, pick, NULL, ctl };
 		fail = run_tasks(np, refine_one, (void *)&s, NULL);
 		for (i = 0; i < np; i++)
 			done[pick[i]] = 1;
@@ -820,6 +932,9 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 		fprintf(f, "# model: IEEE binary32/binary64, round to nearest, no contraction, correctly rounded sqrt, subnormals kept (no FTZ/DAZ)\n");
 	}
 	seeds_provenance(f, ks, nk);
+	if (c->reuse)
+		fprintf(f, "# reuse: %d methods and precisions taken from %s/certify.csv, their keys unchanged (%s)\n",
+		        c->nreused, c->reuse, KEYS_NAME);
 	if (c->starts)
 		fprintf(f, "# starts: the found side also walked from the %ld inputs of %s\n", c->o.nstarts, c->starts);
 	for (i = 0; i < nt && ks[t[i].k].m; i++)
@@ -870,6 +985,338 @@ static void print_summary(const study_kernel *ks, int nk, const task *t, int nt,
 		}
 }
 
+/* The run's settings that enter every region's result, one line (the
+   checkpoint's and the keys file's; the methods are the groups). */
+static void settings_line(const cert_cli *c, char *buf, size_t cap)
+{
+	uint64_t h = CERT_FNV0, hp;
+	long i;
+	for (i = 0; i < c->o.nstarts; i++) {
+		const cert_start *st = &c->o.starts[i];
+		h = cert_hash_str(h, st->method);
+		h = cert_hash_bytes(h, &st->prec, sizeof st->prec);
+		h = cert_hash_bytes(h, st->n, sizeof st->n);
+		h = cert_hash_bytes(h, &st->has_loc, sizeof st->has_loc);
+		if (st->has_loc)
+			h = cert_hash_bytes(h, st->loc, sizeof st->loc);
+	}
+	{   /* the arithmetic profile: its name and every allowance (arith.h) */
+		char d[4096];
+		arith_describe(c->o.arith ? c->o.arith : arith_ieee(), d, sizeof d);
+		hp = cert_hash_str(CERT_FNV0, d);
+	}
+	snprintf(buf, cap, "budget=%ld samples=%ld sectors=%d target=%a tolerance=%a seed=%llu band=%s%a,%a starts=%ld:%016" PRIx64
+	         " arith=%s:%016" PRIx64, c->o.budget, c->o.samples, c->sectors, c->o.target, c->o.tolerance,
+	         (unsigned long long)c->o.seed, c->band ? "" : "none:", c->band ? c->band_lo : 0.0, c->band ? c->band_hi : 0.0,
+	         c->o.nstarts, h, (c->o.arith ? c->o.arith : arith_ieee())->name, hp);
+}
+
+/* Group (k, p)'s key: its method's (keys.c), the settings, the engine,
+   its regions and the --starts of its method and precision. */
+static uint64_t group_key(cert_ctx *x, const study_kernel *k, const cm_method *m, int p, const char *settings,
+                          const cert_region *reg, size_t nreg, const cert_opts *o)
+{
+	uint64_t h = cert_hash_str(CERT_FNV0, settings), mk = cert_method_key(x, k, m, p);
+	long s;
+	h = cert_hash_str(h, cert_engine());
+	h = cert_hash_bytes(h, &mk, sizeof mk);
+	h = cert_hash_bytes(h, reg, nreg * sizeof *reg);
+	for (s = 0; s < o->nstarts; s++)
+		if (found_start_fits(&o->starts[s], k->name, p))
+			h = cert_hash_bytes(h, &o->starts[s], sizeof o->starts[s]);
+	return h;
+}
+
+/* The run's groups (the methods and precisions with regions) and their
+   keys into ctl->ck; gi[2 k + p] the index of group (k, p), or -1. */
+static int make_groups(const study_kernel *ks, int nk, const cm_method **ms, const cert_region *reg,
+                       const size_t *nreg, const task *t, int nt, const cert_cli *c, run_ctl *ctl, int *gi)
+{
+	static char settings[1024];
+	ck_group *g = calloc((size_t)(2 * nk) + 1, sizeof *g);
+	cert_ctx *x = cert_ctx_new();
+	int i, ng = 0;
+	if (!g || !x) {
+		free(g);
+		cert_ctx_free(x);
+		study_error("out of memory");
+		return -1;
+	}
+	settings_line(c, settings, sizeof settings);
+	for (i = 0; i < 2 * nk; i++)
+		gi[i] = -1;
+	for (i = 0; i < nt; i++) {
+		const int k = t[i].k, p = t[i].prec;
+		if (gi[group_of(&t[i])] >= 0)
+			continue;
+		gi[group_of(&t[i])] = ng;
+		snprintf(g[ng].name, sizeof g[ng].name, "%s", ks[k].name);
+		g[ng].prec = p;
+		g[ng].key = group_key(x, &ks[k], ms[k], p, settings, reg + p * MAXREG, nreg[p], &c->o);
+		ng++;
+	}
+	cert_ctx_free(x);
+	ctl->ck.settings = settings;
+	ctl->ck.engine = cert_engine();
+	ctl->ck.ng = ng;
+	ctl->ck.nt = nt;
+	ctl->ck.g = g;
+	ctl->ck.flag = calloc((size_t)nt + 1, 1);
+	ctl->ck.base = calloc((size_t)nt + 1, sizeof *ctl->ck.base);
+	ctl->ck.ref = calloc((size_t)nt + 1, sizeof *ctl->ck.ref);
+	if (!ctl->ck.flag || !ctl->ck.base || !ctl->ck.ref) {
+		study_error("out of memory");
+		return -1;
+	}
+	return 0;
+}
+
+static void free_ctl(run_ctl *ctl)
+{
+	free((void *)ctl->ck.g);
+	free(ctl->ck.flag);
+	free(ctl->ck.base);
+	free(ctl->ck.ref);
+}
+
+/* Row s of a certify.csv (its fields split at commas) into *r. */
+static int parse_row(char **f, int nf, cert_result *r)
+{
+	char *e;
+	int j;
+	memset(r, 0, sizeof *r);
+	if (nf < 16)
+		return -1;
+	r->bound = strtod(f[6], &e);
+	r->found = strtod(f[7], &e);
+	for (j = 0; j < 3 && r->found > 0.0; j++) {
+		r->found_n[j] = strtod(f[8 + j], &e);
+		r->found_loc[j] = *f[13 + j] ? strtod(f[13 + j], &e) : 0.0;
+	}
+	r->status = strcmp(f[11], "proven") == 0 ? CERT_PROVEN : strcmp(f[11], "singular") == 0 ? CERT_SINGULAR
+	          : strcmp(f[11], "unbounded") == 0 ? CERT_UNBOUNDED : CERT_BUDGET;
+	r->probes = strtol(f[12], &e, 10);
+	r->unb_op = -1;
+	for (j = 0; r->status == CERT_UNBOUNDED && nf > 16 && j <= AR_NOPS; j++)
+		if (strcmp(f[16], unb_name(j)) == 0)
+			r->unb_op = j;
+	return 0;
+}
+
+/* Group gr's rows of DIR/certify.csv (its first, the whole sphere's,
+   left out) into res for its tasks, matched by region; the number taken
+   or -1. */
+static int reuse_group(FILE *in, const ck_group *gr, const cert_region *reg, const task *t, int nt, int gidx,
+                       const int *gi, cert_result *res, unsigned char *flag)
+{
+	char line[8192], want[512], *f[24];
+	int i = 0, first = 1, took = 0;
+	rewind(in);
+	while (fgets(line, sizeof line, in)) {
+		cert_result r;
+		int nf;
+		if (line[0] == '#')
+			continue;
+		nf = split_fields(line, f, 24);
+		if (nf < 16 || strcmp(f[0], gr->name) != 0 || strcmp(f[1], prec_name(gr->prec)) != 0)
+			continue;
+		if (first) {   /* the whole sphere (or --band) */
+			first = 0;
+			continue;
+		}
+		while (i < nt && gi[group_of(&t[i])] != gidx)
+			i++;
+		if (i == nt)
+			return -1;
+		snprintf(want, sizeof want, "%.17g,%.17g,%g,%g", reg[t[i].prec * MAXREG + t[i].reg].nz_lo,
+		         reg[t[i].prec * MAXREG + t[i].reg].nz_hi, reg[t[i].prec * MAXREG + t[i].reg].phi_lo,
+		         reg[t[i].prec * MAXREG + t[i].reg].phi_hi);
+		snprintf(line, sizeof line, "%s,%s,%s,%s", f[2], f[3], f[4], f[5]);
+		if (strcmp(line, want) != 0 || parse_row(f, nf, &r))
+			return -1;
+		res[i] = r;
+		flag[i] = CK_RUN | CK_IMAGES;
+		took++;
+		i++;
+	}
+	return took;
+}
+
+/* --reuse DIR: every group whose key DIR/certify-keys.csv holds, from
+   DIR/certify.csv, frozen (no images pass, no refinement). */
+static int reuse_dir(cert_cli *c, const cert_region *reg, const task *t, int nt, const int *gi, int ngi,
+                     run_ctl *ctl, cert_result *res, unsigned char *frozen)
+{
+	char path[4096];
+	int *cur = calloc((size_t)ctl->ck.ng + 1, sizeof *cur), g, i, rc;
+	FILE *in;
+	if (!cur || snprintf(path, sizeof path, "%s/certify.csv", c->reuse) >= (int)sizeof path || (rc = keys_compare(c->reuse, &ctl->ck, cur, 0)) < 0 || !(in = fopen(path, "r"))) {
+		study_error("--reuse %s: no certify.csv and %s there", c->reuse, KEYS_NAME);
+		free(cur);
+		return -1;
+	}
+	for (g = 0; g < ctl->ck.ng && rc == 0; g++) {
+		int want = 0;
+		for (i = 0; i < nt; i++)
+			want += gi[group_of(&t[i])] == g;
+		if (!cur[g] || reuse_group(in, &ctl->ck.g[g], reg, t, nt, g, gi, res, ctl->ck.flag) != want) {
+			for (i = 0; i < nt; i++)   /* not re-used: computed from scratch */
+				if (gi[group_of(&t[i])] == g)
+					ctl->ck.flag[i] = 0;
+			continue;
+		}
+		for (i = 0; i < ngi; i++)
+			if (gi[i] == g)
+				frozen[i] = 1;
+		c->nreused++;
+	}
+	fclose(in);
+	free(cur);
+	for (i = 0; i < nt; i++)
+		if (ctl->ck.flag[i])
+			ctl->ck.base[i] = res[i];
+	fprintf(stderr, "certify: --reuse %s: %d of %d methods and precisions re-used (their keys unchanged), %d to "
+	        "compute\n", c->reuse, c->nreused, ctl->ck.ng, ctl->ck.ng - c->nreused);
+	return 0;
+}
+
+/* --check-keys DIR: 0 when every group's key is DIR's, else 1 (the
+   stale named), 2 with no keys there. */
+static int check_keys(const cert_cli *c, run_ctl *ctl)
+{
+	int *cur = calloc((size_t)ctl->ck.ng + 1, sizeof *cur), g, stale = 0, rc;
+	if (!cur)
+		return 1;
+	rc = keys_compare(c->check_keys, &ctl->ck, cur, 0);
+	if (rc < 0) {
+		study_error("--check-keys %s: no %s there", c->check_keys, KEYS_NAME);
+		free(cur);
+		return 2;
+	}
+	for (g = 0; g < ctl->ck.ng; g++)
+		if (!cur[g]) {
+			printf("stale: %s %s (key %016" PRIx64 " now)\n", ctl->ck.g[g].name, prec_name(ctl->ck.g[g].prec),
+			       ctl->ck.g[g].key);
+			stale++;
+		}
+	printf("%s: %d of %d keys current%s\n", c->check_keys, ctl->ck.ng - stale, ctl->ck.ng,
+	       rc ? "; the settings or the engine differ" : "");
+	free(cur);
+	return stale || rc ? 1 : 0;
+}
+
+/* --resume DIR: the checkpoint's state into res; 0 to run, 1 when the
+   work is done already, -1 refused. */
+static int resume_dir(const cert_cli *c, run_ctl *ctl, cert_result *res)
+{
+	char path[4096];
+	int i, n = 0, r = ck_read(c->resume, &ctl->ck), *cur;
+	FILE *f;
+	if (r < 0)
+		return -1;
+	if (r == 0) {
+		for (i = 0; i < ctl->ck.nt; i++)
+			if (ctl->ck.flag[i]) {
+				res[i] = ctl->ck.base[i];
+				n++;
+			}
+		fprintf(stderr, "certify: --resume %s: continuing from its checkpoint (%d of %d regions run)\n", c->resume,
+		        n, ctl->ck.nt);
+		return 0;
+	}
+	if (snprintf(path, sizeof path, "%s/certify.csv", c->resume) >= (int)sizeof path)
+		return -1;
+	if (!(cur = calloc((size_t)ctl->ck.ng + 1, sizeof *cur)))
+		return -1;
+	r = keys_compare(c->resume, &ctl->ck, cur, 0);
+	for (i = 0; i < ctl->ck.ng && r == 0; i++)
+		if (!cur[i]) {
+			study_error("--resume %s: its finished run is of another revision of %s %s's model or kernel "
+			            "(--reuse %s recomputes only what changed)", c->resume, ctl->ck.g[i].name,
+			            prec_name(ctl->ck.g[i].prec), c->resume);
+			r = 1;
+		}
+	free(cur);
+	if (r > 0)
+		return -1;
+	if (r == 0 && (f = fopen(path, "r"))) {
+		fclose(f);
+		fprintf(stderr, "certify: --resume %s: the work is done (its certify.csv is of this command line and "
+		        "every key is current); nothing to do\n", c->resume);
+		return 1;
+	}
+	fprintf(stderr, "certify: --resume %s: no checkpoint there yet: starting from the beginning\n", c->resume);
+	return 0;
+}
+
+/* A checkpoint now (the end of a pass), with --resume; -1 when one
+   could not be written (the run stops: its last one is intact). */
+static int ck_now(run_ctl *ctl)
+{
+	if (!ctl->failed && ctl->dir) {
+		ctl->failed = ck_write(ctl->dir, &ctl->ck) != 0;
+		ctl->last = study_now();
+	}
+	if (ctl->failed)
+		study_error("the run stopped: the checkpoint in %s could not be written", ctl->dir);
+	return ctl->failed ? -1 : 0;
+}
+
+/* The keys, --check-keys, --reuse, --resume: 0 to run; else 1 + the exit
+   status (done or checked), or -1 refused. */
+static int prepare_state(cert_cli *c, const study_kernel *ks, int nk, const cm_method **ms, const cert_region *reg,
+                         const size_t *nreg, const task *t, int nt, cert_result *res, run_ctl *ctl, int *gi,
+                         unsigned char *frozen, const char *dir)
+{
+	int r;
+	if (make_groups(ks, nk, ms, reg, nreg, t, nt, c, ctl, gi))
+		return 2;
+	if (c->check_keys)
+		return 1 + check_keys(c, ctl);
+	if (study_mkdir_p(dir))
+		return 2;
+	kill_hook(ctl);
+	ctl->every = c->ck_every;
+	ctl->last = study_now();
+	if (c->reuse && reuse_dir(c, reg, t, nt, gi, 2 * nk, ctl, res, frozen))
+		return -1;
+	c->frozen = frozen;
+	if (c->resume) {
+		if ((r = resume_dir(c, ctl, res)) != 0)
+			return r > 0 ? 1 : -1;
+		ctl->dir = c->resume;
+	}
+	return 0;
+}
+
+/* The files of a finished run: certify.csv, certify-times.csv, the keys;
+   the checkpoint removed. */
+static int write_outputs(const char *dir, const study_kernel *ks, int nk, const cert_region *reg, const task *t,
+                         int nt, const cert_result *res, const cert_cli *c, const run_ctl *ctl)
+{
+	study_out out;
+	char path[4096];
+	if (study_out_open(&out, dir, "certify.csv"))
+		return -1;
+	if (write_csv(out.f, ks, nk, reg, t, nt, res, c) || study_out_commit(&out)) {
+		study_out_abort(&out);
+		study_error("%s/certify.csv: write failed; nothing written", dir);
+		return -1;
+	}
+	if (study_out_open(&out, dir, "certify-times.csv"))
+		return -1;
+	if (write_times(out.f, ks, reg, t, nt, res, c) || study_out_commit(&out)) {
+		study_out_abort(&out);
+		study_error("%s/certify-times.csv: write failed", dir);
+		return -1;
+	}
+	if (keys_write(dir, &ctl->ck, study_cmdline))
+		return -1;
+	if (snprintf(path, sizeof path, "%s/%s", dir, CK_NAME) < (int)sizeof path)
+		remove(path);
+	return 0;
+}
+
 int cmd_certify(int argc, char **argv)
 {
 	cert_cli c;
@@ -879,9 +1326,11 @@ int cmd_certify(int argc, char **argv)
 	size_t nreg[2];
 	task *t;
 	cert_result *res;
-	int nk, k, p, nt = 0, rc = 1, r;
+	int nk, k, p, nt = 0, rc = 1, r, gi[2 * MAXK];
+	static unsigned char frozen[2 * MAXK];
 	char dir[4096];
-	study_out out;
+	run_ctl ctl;
+	memset(&ctl, 0, sizeof ctl);
 	if ((r = parse(argc, argv, &c)) != 0)
 		return r < 0 ? 0 : r;
 	if (c.fma && !fma_available()) {
@@ -944,23 +1393,15 @@ int cmd_certify(int argc, char **argv)
 			}
 		}
 	}
-	if (study_mkdir_p(dir) || run_all(ks, ms, reg, t, nt, &c, res) ||
-	    images_all(ks, nk, ms, reg, t, nt, &c, res) || refine_top(ks, ms, reg, t, nt, &c, res))
-		goto done;
-	if (study_out_open(&out, dir, "certify.csv"))
-		goto done;
-	if (write_csv(out.f, ks, nk, reg, t, nt, res, &c) || study_out_commit(&out)) {
-		study_out_abort(&out);
-		study_error("%s/certify.csv: write failed; nothing written", dir);
+	if ((r = prepare_state(&c, ks, nk, ms, reg, nreg, t, nt, res, &ctl, gi, frozen, dir)) != 0) {
+		rc = r > 0 ? r - 1 : ONB_EXIT_USAGE;
 		goto done;
 	}
-	if (study_out_open(&out, dir, "certify-times.csv"))
+	if (run_all(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
+	    images_all(ks, nk, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
+	    refine_top(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
+	    write_outputs(dir, ks, nk, reg, t, nt, res, &c, &ctl))
 		goto done;
-	if (write_times(out.f, ks, reg, t, nt, res, &c) || study_out_commit(&out)) {
-		study_out_abort(&out);
-		study_error("%s/certify-times.csv: write failed", dir);
-		goto done;
-	}
 	print_summary(ks, nk, t, nt, res);
 	print_profile(ks, nk, t, nt, res, &c);
 	fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
@@ -968,6 +1409,7 @@ int cmd_certify(int argc, char **argv)
 done:
 	free(t);
 	free(res);
+	free_ctl(&ctl);
 	free((void *)c.o.starts);
 	return rc;
 }

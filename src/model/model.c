@@ -368,9 +368,9 @@ void cm_formula_nonzero(cm *c, unsigned mask)
 
 void cm_formula_zero_after(cm *c, unsigned zero)
 {
+	c->zero_late = zero;   /* CM_EXEC: kept for certify's keys (keys.c) */
 	if (c->backend != CM_MVF)
 		return;
-	c->zero_late = zero;
 	c->late_var = mvf_nvar(c->m);
 }
 

@@ -1,0 +1,124 @@
+#!/bin/sh
+# certify_resume.sh - `onbstudy certify --resume DIR`, `--reuse DIR` and
+# `--check-keys DIR` at a reduced size (--quick, three methods, float):
+#  - a run killed during the first pass, the images pass and the
+#    refinement (ONB_CERT_KILL=PHASE:N: the process kills itself after its
+#    N-th finished task of that phase), then the same command line: the
+#    same certify.csv rows and stdout as an uninterrupted run;
+#  - the same command line after completion says the work is done; before
+#    any checkpoint it starts from the beginning;
+#  - a checkpoint of other options, of another key (a model's revision),
+#    a corrupted one are refused with the difference named, exit 2;
+#  - a checkpoint that cannot be written (file size limit: disk full)
+#    stops the run with a message and leaves the last checkpoint intact;
+#  - --reuse: adding a method to a finished run computes that method only,
+#    a changed key is recomputed, and the rows equal a from-scratch run's;
+#  - --check-keys: 0 on a current run, 1 naming a stale key.
+. "$(dirname "$0")/lib.sh"
+T=$tmp
+data() { grep -v '^#' "$1"; }
+Q="--quick --quiet --precision float"
+M=frisvad,naive,rtow
+run() { ./onbstudy certify $Q "$@"; }
+same() { # DIR WHAT: DIR's rows and stdout against the uninterrupted run's
+	if data "$T/ref/certify.csv" | cmp -s - "$1/certify.csv.data" 2> /dev/null ||
+	   { data "$1/certify.csv" > "$1.data" 2> /dev/null && cmp -s "$T/ref.data" "$1.data"; }; then ok
+	else bad "$2: certify.csv's rows differ from the uninterrupted run's"; fi
+}
+run --methods $M --out "$T/ref" > "$T/ref.out" 2> "$T/ref.err" || bad "the reference run failed: $(cat "$T/ref.err")"
+data "$T/ref/certify.csv" > "$T/ref.data"
+[ -s "$T/ref/certify-keys.csv" ] && [ ! -e "$T/ref/certify-checkpoint.bin" ] && ok || bad "a finished run: no keys, or a checkpoint left"
+
+# 1. killed in each phase (every region checkpointed, then at 60 s: the
+#    images pass redone from the first pass's checkpoint), resumed
+for k in run:5 images:7 refine:1 images:20; do
+	d="$T/k-$k"
+	e=0; [ $k = images:20 ] && e=60
+	ONB_CERT_KILL=$k run --methods $M --resume "$d" --checkpoint-every $e > /dev/null 2> "$d.err1"
+	rc=$?
+	[ $rc -ne 0 ] && [ -f "$d/certify-checkpoint.bin" ] && [ ! -f "$d/certify.csv" ] && ok ||
+		bad "ONB_CERT_KILL=$k: exit $rc, a checkpoint $(ls "$d" 2> /dev/null | tr '\n' ' ')"
+	run --methods $M --resume "$d" --checkpoint-every $e > "$d.out" 2> "$d.err"
+	rc=$?
+	[ $rc -eq 0 ] && grep -q 'continuing from its checkpoint' "$d.err" && ok || bad "resume after $k: exit $rc: $(head -3 "$d.err")"
+	same "$d" "killed at $k, resumed"
+	cmp -s "$T/ref.out" "$d.out" && ok || bad "killed at $k, resumed: stdout differs"
+	[ ! -e "$d/certify-checkpoint.bin" ] && ok || bad "killed at $k: the checkpoint is left after the end"
+done
+
+# 2. the same command line after the end: done, nothing run
+d="$T/k-run:5"
+run --methods $M --resume "$d" > "$T/done.out" 2> "$T/done.err"
+rc=$?
+[ $rc -eq 0 ] && grep -q 'the work is done' "$T/done.err" && ok || bad "after the end: exit $rc: $(cat "$T/done.err")"
+# ... and with other options there: refused, named
+run --methods $M --seed 7 --resume "$d" > /dev/null 2> "$T/o.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'seed=1 there, seed=7 here' "$T/o.err" && ok || bad "a finished run of other options: exit $rc: $(cat "$T/o.err")"
+
+# 3. refusals of a checkpoint: other options, another key, corrupted
+ONB_CERT_KILL=images:3 run --methods $M --resume "$T/c" --checkpoint-every 0 > /dev/null 2>&1
+cp "$T/c/certify-checkpoint.bin" "$T/c.bin"
+run --methods $M --budget 41 --resume "$T/c" > /dev/null 2> "$T/c1.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'another command line: budget=40 there, budget=41 here' "$T/c1.err" && ok || bad "other options: exit $rc: $(cat "$T/c1.err")"
+run --methods frisvad,naive --resume "$T/c" > /dev/null 2> "$T/c2.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'methods differ' "$T/c2.err" && ok || bad "other methods: exit $rc: $(cat "$T/c2.err")"
+# naive's key changed, as another revision of its model would change it
+sed 's/^\(group naive float \)[0-9a-f]*$/\10123456789abcdef/' "$T/c.bin" > "$T/c/certify-checkpoint.bin"
+run --methods $M --resume "$T/c" > /dev/null 2> "$T/c3.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "another revision of naive float's model" "$T/c3.err" && ok || bad "another key: exit $rc: $(cat "$T/c3.err")"
+# a byte of the results flipped, and a truncated file
+cp "$T/c.bin" "$T/c/certify-checkpoint.bin"
+sz=$(wc -c < "$T/c.bin")
+printf '\377' | dd of="$T/c/certify-checkpoint.bin" bs=1 seek=$((sz - 1000)) conv=notrunc 2> /dev/null
+run --methods $M --resume "$T/c" > /dev/null 2> "$T/c4.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'corrupted' "$T/c4.err" && ok || bad "a flipped byte: exit $rc: $(cat "$T/c4.err")"
+head -c $((sz / 2)) "$T/c.bin" > "$T/c/certify-checkpoint.bin"
+run --methods $M --resume "$T/c" > /dev/null 2> "$T/c5.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'corrupted' "$T/c5.err" && ok || bad "a truncated checkpoint: exit $rc: $(cat "$T/c5.err")"
+[ ! -f "$T/c/certify.csv" ] && ok || bad "a refused checkpoint wrote certify.csv"
+
+# 4. no room for the checkpoint (a file size limit: writes fail as on a
+#    full disk): a clear error, the last checkpoint intact, then resumed
+cp "$T/c.bin" "$T/c/certify-checkpoint.bin"
+lim=$(( $(wc -c < "$T/c.bin") / 1024 - 8 ))
+( trap '' XFSZ; ulimit -f $lim; exec ./onbstudy certify $Q --methods $M --resume "$T/c" --checkpoint-every 0 ) > /dev/null 2> "$T/full.err"
+rc=$?
+[ $rc -ne 0 ] && grep -q 'could not be written' "$T/full.err" && ok || bad "no room: exit $rc: $(head -3 "$T/full.err")"
+cmp -s "$T/c.bin" "$T/c/certify-checkpoint.bin" && ok || bad "no room: the last checkpoint changed"
+run --methods $M --resume "$T/c" > /dev/null 2> "$T/c6.err" || bad "resume after no room: $(cat "$T/c6.err")"
+same "$T/c" "no room, then resumed"
+
+# 5. --resume DIR with no checkpoint yet: from the beginning
+run --methods $M --resume "$T/new" > /dev/null 2> "$T/new.err"
+grep -q 'no checkpoint there yet: starting from the beginning' "$T/new.err" && ok || bad "a new --resume DIR: $(cat "$T/new.err")"
+same "$T/new" "--resume into a new DIR"
+
+# 6. --reuse: frisvad and naive done; adding rtow computes it alone
+run --methods frisvad,naive --out "$T/two" > /dev/null 2>&1
+run --methods $M --reuse "$T/two" --out "$T/three" > "$T/three.out" 2> "$T/three.err"
+grep -q -- '--reuse .*: 2 of 3 methods and precisions re-used' "$T/three.err" 2> /dev/null && ok || bad "adding rtow: $(cat "$T/three.err")"
+data "$T/three/certify-times.csv" | awk -F, 'NR > 1 { s[$1] += $7 + $8 + $9 + $10 + $11 + $12 } END { exit !(s["frisvad"] == 0 && s["naive"] == 0 && s["rtow"] > 0) }' &&
+	ok || bad "adding rtow: CPU spent on a re-used method"
+same "$T/three" "--reuse, one method added"
+cmp -s "$T/ref.out" "$T/three.out" && ok || bad "--reuse: stdout differs"
+# naive's key changed (its model revised): naive recomputed, frisvad re-used
+sed 's/^naive,float,.*/naive,float,0123456789abcdef/' "$T/two/certify-keys.csv" > "$T/k" && mv "$T/k" "$T/two/certify-keys.csv"
+run --methods $M --reuse "$T/two" --out "$T/chg" > /dev/null 2> "$T/chg.err"
+grep -q '1 of 3 methods and precisions re-used' "$T/chg.err" && ok || bad "a changed key: $(cat "$T/chg.err")"
+data "$T/chg/certify-times.csv" | awk -F, 'NR > 1 { s[$1] += $7 + $8 + $9 + $10 + $11 + $12 } END { exit !(s["frisvad"] == 0 && s["naive"] > 0) }' &&
+	ok || bad "a changed key: naive not recomputed, or frisvad not re-used"
+same "$T/chg" "--reuse with a changed key"
+
+# 7. --check-keys: current, then stale
+run --methods $M --check-keys "$T/ref" > "$T/ck.out" 2>&1 && grep -q '3 of 3 keys current' "$T/ck.out" && ok || bad "--check-keys on a current run: $(cat "$T/ck.out")"
+run --methods $M --check-keys "$T/two" > "$T/ck2.out" 2>&1
+rc=$?
+[ $rc -eq 1 ] && grep -q '^stale: naive float' "$T/ck2.out" && grep -q '^stale: rtow float' "$T/ck2.out" && ok || bad "--check-keys on a stale run: exit $rc: $(cat "$T/ck2.out")"
+[ ! -e "$T/ck-none" ] && ok
+finish certify_resume

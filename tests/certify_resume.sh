@@ -120,5 +120,13 @@ run --methods $M --check-keys "$T/ref" > "$T/ck.out" 2>&1 && grep -q '3 of 3 key
 run --methods $M --check-keys "$T/two" > "$T/ck2.out" 2>&1
 rc=$?
 [ $rc -eq 1 ] && grep -q '^stale: naive float' "$T/ck2.out" && grep -q '^stale: rtow float' "$T/ck2.out" && ok || bad "--check-keys on a stale run: exit $rc: $(cat "$T/ck2.out")"
-[ ! -e "$T/ck-none" ] && ok
+# 8. bad input: exit 2, one message, nothing written
+for a in "--checkpoint-every -1" "--checkpoint-every x" "--resume $T/bad1 --out $T/bad2"; do
+	run --methods frisvad $a > /dev/null 2> "$T/bad.err"
+	rc=$?
+	[ $rc -eq 2 ] && [ "$(grep -c '^onbstudy: ' "$T/bad.err")" -eq 1 ] && [ ! -e "$T/bad1" ] && [ ! -e "$T/bad2" ] && ok ||
+		bad "certify $a: exit $rc: $(cat "$T/bad.err")"
+done
+run --methods frisvad --check-keys "$T/none" > /dev/null 2> "$T/bad.err"
+[ $? -eq 2 ] && grep -q 'no certify-keys.csv' "$T/bad.err" && ok || bad "--check-keys on a DIR without keys: $(cat "$T/bad.err")"
 finish certify_resume

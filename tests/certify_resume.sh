@@ -120,6 +120,10 @@ run --methods $M --check-keys "$T/ref" > "$T/ck.out" 2>&1 && grep -q '3 of 3 key
 run --methods $M --check-keys "$T/two" > "$T/ck2.out" 2>&1
 rc=$?
 [ $rc -eq 1 ] && grep -q '^stale: naive float' "$T/ck2.out" && grep -q '^stale: rtow float' "$T/ck2.out" && ok || bad "--check-keys on a stale run: exit $rc: $(cat "$T/ck2.out")"
+# ... another arithmetic profile is another key
+run --methods $M --arith vulkan --check-keys "$T/ref" > "$T/ck3.out" 2> "$T/ck3.err"
+[ $? -eq 1 ] && grep -q 'arith=ieee.* there, arith=vulkan' "$T/ck3.err" && ok || bad "--check-keys with --arith vulkan: $(cat "$T/ck3.out" "$T/ck3.err")"
+
 # 8. bad input: exit 2, one message, nothing written
 for a in "--checkpoint-every -1" "--checkpoint-every x" "--resume $T/bad1 --out $T/bad2"; do
 	run --methods frisvad $a > /dev/null 2> "$T/bad.err"

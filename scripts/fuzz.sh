@@ -35,7 +35,7 @@ SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-poin
 CFL="-std=c99 -O1 -g -fopenmp -ffp-contract=off -fno-math-errno -fno-trapping-math -Iinclude -Isrc -D_POSIX_C_SOURCE=200809L -Wno-unknown-pragmas"
 objs=""
 for src in src/*/*.c; do
-	case "$src" in src/cli/main.c|src/mpi/*) continue;; esac
+	case "$src" in src/cli/main.c|src/mpi/*|src/gpu/*) continue;; esac  # the MPI and Vulkan tools are binaries of their own
 	o="$out/obj/$(echo "$src" | tr / _ | sed 's/\.c$/.o/')"
 	extra=""
 	case "$src" in src/methods/fma_kernels.c) [ "$(uname -m)" = x86_64 ] && extra="-mfma -ffp-contract=fast";; esac

@@ -360,6 +360,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 
 /* the physics engines' ids first: indep_wild.h's alias table names ode */
 #include "indep_wild_b.h"
+#include "indep_wild_e.h"
 #include "indep_wild.h"
 
 /* One entry per registry method: name, and both precisions by an id. */
@@ -368,7 +369,7 @@ enum { IM_NAIVE, IM_HM, IM_FRISVAD, IM_FRISVAD_MAX, IM_DUFF, IM_DUFF_BL, IM_STAR
        IM_PBRT3, IM_RTOW, IM_BLOG, IM_DUFF_WIDE, IM_DUFF_COMP };
 static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
-	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2))
+	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naivef(n, b1, b2, k); break;
@@ -388,7 +389,7 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 }
 static void indep_d(int id, int k, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
-	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2))
+	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naived(n, b1, b2, k); break;

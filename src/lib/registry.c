@@ -216,6 +216,16 @@ static const onb_alias onb__aliases[] = {
 	{ "pasvulkan", "duff", "float", "PasVulkan getTangentSpaceBasisFromNormal, s = sign(sign(n.z) + 0.5)", "",
 	  { "github.com/BeRo1985/pasvulkan", "bc6681f3198632210c4382464c40a9ab163d1bc7", "src/assets/shaders/scene3d/tangentspacebasis.glsl:4-11",
 	    "Zlib", "GLSL", "float", "IEEE; sign(NaN) read as 0 (GLSL leaves it undefined); a driver may contract into fma: not modelled" } },
+	/* Duff et al. Listing 3 term for term in float: copysignf(1.0f, z), -1 / (sign + z) (the int literal
+	   converted), products left to right; b1 = u, b2 = v (the frame's first two columns) */
+	{ "osl_testrender", "duff_branchless", "float", "OpenShadingLanguage testrender TangentFrame::from_normal (sampling.h)", "",
+	  { "github.com/AcademySoftwareFoundation/OpenShadingLanguage", "ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa", "src/testrender/sampling.h:17-26",
+	    "BSD-3-Clause", "C++", "float (Vec3 = Imath::Vec3<Float>, Float = float)",
+	    "source-level IEEE (src/cmake/compiler.cmake adds -ffp-contract=off with -mfma; the OptiX/CUDA build (-ffast-math) not modelled)" } },
+	/* TangentFrame(n) since dd587677 (2018): Duff et al. Listing 3 term for term in float; b1 = tangent, b2 = bitangent */
+	{ "tungsten", "duff_branchless", "float", "Tungsten TangentFrame(const Vec3f &n) (Duff et al. 2017)", "",
+	  { "github.com/tunabrain/tungsten", "88ea02044dbaf20472a8173b6752460b50c096d8", "src/core/math/TangentFrame.hpp:22-31",
+	    "Zlib", "C++", "float (Vec3f)", "source-level IEEE; CMakeLists.txt adds Vc's architecture flags (-mfma on FMA hosts) and no -ffp-contract, so a GCC build there may fuse sign*x*x*a + 1: not modelled" } },
 };
 
 const onb_alias *onb_aliases(size_t *count)

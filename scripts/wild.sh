@@ -10,12 +10,15 @@
 #   ./onbstudy list --format csv, --aliases --format csv, --axes --format csv:
 #     the registry rows that carry a provenance (the engines' code), the
 #     aliases, and every method's b1, b2 at +-x, +-y, +-z;
-#   results/wild/summary.csv, worst.csv, tradeoff.csv (scripts/wild-run.sh;
-#     REF=DIR for another run): the largest
+#   results/wild/summary.csv, worst.csv, tradeoff.csv (scripts/wild-run.sh),
+#     then those of every results/wild/add/*/ (wild-run.sh --add: engines
+#     added after the full run; a method's rows come from the last directory
+#     that has it; REF="DIR ..." for other runs): the largest
 #     defect found on unit inputs (all distributions but nonunit), non-finite
 #     counts, the input of the largest defect, the speed (batch, 1 thread);
-#   results/wild/certify.csv, then results/certify/certify.csv (CERT="FILE
-#     ...": a later file's row wins): the whole-sphere row of each method and
+#   results/wild/certify.csv, then results/certify/certify.csv, then every
+#     results/wild/add/*/certify.csv (CERT="FILE ...": a later file's row
+#     wins): the whole-sphere row of each method and
 #     precision (proven bound, largest defect found and its input, status);
 #   scripts/wild.md.in: the text, with placeholders
 #     {{TABLE wild}}      one row per engine (aliases point at their target)
@@ -40,9 +43,10 @@ set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
 . "$HERE/splice.sh"
 ROOT=$HERE/..
-REF=${REF:-$ROOT/results/wild}
-# the paper methods' proven bounds, then the engines' run (its rows win)
-CERT=${CERT:-$ROOT/results/wild/certify.csv $ROOT/results/certify/certify.csv}
+ADDS=$(for d in "$ROOT"/results/wild/add/*/; do if [ -d "$d" ]; then printf "%s " "${d%/}"; fi; done)
+REF=${REF:-$ROOT/results/wild $ADDS}
+# the engines' run, the paper methods' proven bounds, the added engines'
+CERT=${CERT:-$ROOT/results/wild/certify.csv $ROOT/results/certify/certify.csv $(for d in $ADDS; do printf '%s ' "$d/certify.csv"; done)}
 ONBSTUDY=${ONBSTUDY:-$ROOT/onbstudy}
 TPL=${WILD_TPL:-$HERE/wild.md.in}
 BODY=$TPL
@@ -61,13 +65,18 @@ generate() {
 	"$ONBSTUDY" list --format csv > "$T2/methods.csv" &&
 	"$ONBSTUDY" list --aliases --format csv > "$T2/aliases.csv" &&
 	"$ONBSTUDY" list --axes --format csv > "$T2/axes.csv" || { rm -rf "$T2"; echo "wild: $ONBSTUDY list failed" >&2; return 1; }
-	# shellcheck disable=SC2086 # CERT is a list of files
-	for f in "$REF/summary.csv" "$REF/worst.csv" "$REF/tradeoff.csv" $CERT; do
+	# shellcheck disable=SC2086 # REF and CERT are lists
+	for f in $CERT $(for d in $REF; do printf '%s ' "$d/summary.csv" "$d/worst.csv" "$d/tradeoff.csv"; done); do
 		[ -r "$f" ] || { rm -rf "$T2"; echo "wild: cannot read $f" >&2; return 1; }
 	done
+	for k in summary worst tradeoff; do
+		# shellcheck disable=SC2086
+		awk -f "$HERE/wild-merge.awk" $(for d in $REF; do printf '%s ' "$d/$k.csv"; done) > "$T2/$k.csv" ||
+			{ rm -rf "$T2"; return 1; }
+	done
 	rc=0
-	awk -v M="$T2/methods.csv" -v A="$T2/aliases.csv" -v X="$T2/axes.csv" -v S="$REF/summary.csv" \
-	    -v WO="$REF/worst.csv" -v TR="$REF/tradeoff.csv" -v C="$CERT" -v TPL="$TPL" -f "$HERE/wild.awk" "$BODY" || rc=1
+	awk -v M="$T2/methods.csv" -v A="$T2/aliases.csv" -v X="$T2/axes.csv" -v S="$T2/summary.csv" \
+	    -v WO="$T2/worst.csv" -v TR="$T2/tradeoff.csv" -v C="$CERT" -v TPL="$TPL" -f "$HERE/wild.awk" "$BODY" || rc=1
 	rm -rf "$T2"
 	return $rc
 }

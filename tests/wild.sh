@@ -31,7 +31,7 @@ while IFS= read -r row; do
 	if [ -z "$cmd" ]; then
 		# only a method the committed run predates may lack its input
 		tgt=$(printf '%s\n' "$row" | sed -n 's/^| `[a-z0-9_]*` = `\([a-z0-9_]*\)`.*/\1/p'); [ -n "$tgt" ] || tgt=$name
-		if printf '%s\n' "$row" | grep -q 'not in the committed run' && ! grep -q "^$tgt," "${REF:-results/wild}/summary.csv"; then
+		if printf '%s\n' "$row" | grep -q 'not in the committed run' && ! cat results/wild/summary.csv results/wild/add/*/summary.csv 2> /dev/null | grep -q "^$tgt,"; then
 			echo "note: $name is not in the committed run yet"; ok
 		else bad "$name: no replayable input"; fi
 		continue
@@ -70,6 +70,17 @@ fi
 # --check notices a changed figure
 sed '0,/^| `/{s/^| `\([a-z0-9_]*\)` /| `\1` X/}' docs/wild.md > "$T/wild.md"
 if sh scripts/wild.sh --check "$T/wild.md" > /dev/null 2>&1; then bad "--check accepted a changed row"; else ok; fi
+
+# runs added after the full one (wild-run.sh --add): a method's rows come
+# from the last directory that has it; another header is refused
+printf '# a\nmethod,precision,error\nm1,float,1\nm2,float,2\nm2,double,3\n' > "$T/a.csv"
+printf '# b\nmethod,precision,error\nm2,float,9\n' > "$T/b.csv"
+printf 'method,precision,error2\nm3,float,1\n' > "$T/c.csv"
+got=$(awk -f scripts/wild-merge.awk "$T/a.csv" "$T/b.csv" | paste -sd' ' -)
+if [ "$got" = "# a method,precision,error m1,float,1 m2,float,9" ]; then ok; else bad "wild-merge.awk gave '$got'"; fi
+if awk -f scripts/wild-merge.awk "$T/a.csv" "$T/c.csv" > /dev/null 2> "$T/err"; then bad "wild-merge.awk mixed two headers"
+elif grep -q "header differs" "$T/err"; then ok; else bad "wild-merge.awk failed without naming the header"; fi
+if sh scripts/wild-run.sh --add 'Bad/Group' x > /dev/null 2>&1; then bad "wild-run.sh --add accepted the group 'Bad/Group'"; else ok; fi
 
 echo "wild: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -16,13 +16,16 @@
 
 static void usage(FILE *f)
 {
-	fprintf(f, "usage: onbstudy eval [--precision float|double|both] [--methods a,b] [--fma]\n"
+	fprintf(f, "usage: onbstudy eval [--precision float|double|both|half|all] [--methods a,b] [--fma]\n"
 	           "                     [--ref-bits B] [--local x,y,z] X Y Z\n"
 	           "       onbstudy eval --arith PROFILE [--samples N] [--seed S] [--format table|csv]\n"
 	           "                     [--precision P] [--methods a,b] X Y Z\n"
 	           "Every method's outputs (hex and decimal) and every metric for one input.\n"
 	           "X Y Z may be decimal or C99 hex floats (as worst.csv prints them); each is\n"
-	           "rounded to the precision, and the rounding is reported.\n"
+	           "rounded to the precision, and the rounding is reported.  --precision half (or all:\n"
+	           "float, double and half) runs libonb's binary16 kernels (each operation rounded to\n"
+	           "binary16) on the input rounded to binary16 (its encodings printed in hex);\n"
+	           "forward errors in binary16's ulps and eps = 2^-10, u = 2^-11.\n"
 	           "With --arith PROFILE (onbstudy list --arith; docs/gpu.md): per method, what\n"
 	           "conforming implementations of the profile return at the input, emulated in C\n"
 	           "from the method's rounding model: every operation at round to nearest, N random\n"
@@ -40,7 +43,7 @@ static void show3(const char *label, const double *v)
 
 typedef struct {
 	const char *methods;
-	int prec_on[2], fma, npos;
+	int prec_on[PREC_COUNT], fma, npos;
 	long bits;
 	const arith_profile *arith;
 	long samples;
@@ -74,7 +77,7 @@ static int eval_option(int v, const char *a, eval_opts *o)
 	case 'n': return parse_int("--samples", a, 0, 1000000, &o->samples);
 	case 'S': return parse_u64("--seed", a, 0, ~0ull, &o->seed);
 	case 'F': return (o->csv = cli_format("--format", a, 0)) < 0 ? -1 : 0;
-	case 'p': return cli_precision("--precision", a, o->prec_on);
+	case 'p': return cli_precision_half("--precision", a, o->prec_on);
 	case 'l':
 		if (sscanf(a, "%lf,%lf,%lf%c", &o->loc[0], &o->loc[1], &o->loc[2], &tail) != 3 || !isfinite(o->loc[0]) ||
 		    !isfinite(o->loc[1]) || !isfinite(o->loc[2])) {
@@ -154,7 +157,7 @@ static const char *branch_name(const study_kernel *k, int b, char *buf, size_t n
 static void input_warnings(const char *pn, const double n[3])
 {
 	const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-	const double tol = pn[0] == 'f' ? 1e-6 : 1e-12;
+	const double tol = pn[0] == 'f' ? 1e-6 : pn[0] == 'h' ? 0x1p-9 : 1e-12;
 	if (!isfinite(n[0]) || !isfinite(n[1]) || !isfinite(n[2]))
 		printf("   WARNING: the input is not finite: every method's output is garbage (onb_basis_checked refuses it)\n");
 	else if (l2 == 0.0)
@@ -173,7 +176,7 @@ static void eval_one(ref_ctx *rc, ref_ctx *rc2, long bits, const study_kernel *k
 	sample_metrics m, m2;
 	char why[256];
 	if (!kernel_runs(k, p)) {
-		printf("\n%s (%s): float only (no double version)\n", k->name, pn);
+		printf("\n%s (%s): %s\n", k->name, pn, p == PREC_HALF ? "no binary16 version" : "float only (no double version)");
 		return;
 	}
 	ref_eval(rc, k, p, n, lv, 0, &m);
@@ -214,16 +217,16 @@ static void eval_one(ref_ctx *rc, ref_ctx *rc2, long bits, const study_kernel *k
 
 int cmd_eval(int argc, char **argv)
 {
-	eval_opts o = { NULL, { 1, 1 }, 0, 0, 127, NULL, 256, 1, 0, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
+	eval_opts o = { NULL, { 1, 1, 0 }, 0, 0, 127, NULL, 256, 1, 0, { 0, 0, 0 }, { 0.6, 0.0, 0.8 } };
 	const char *methods;
-	int prec_on[2], fma, i, p, k, nk;
+	int prec_on[PREC_COUNT], fma, i, p, k, nk;
 	long bits;
 	double in[3], loc[3];
 	study_kernel ks[256];
 	if ((i = eval_parse(argc, argv, &o)) != 0)
 		return i == 1 ? 0 : i;
 	methods = o.methods; fma = o.fma; bits = o.bits;
-	prec_on[0] = o.prec_on[0]; prec_on[1] = o.prec_on[1];
+	memcpy(prec_on, o.prec_on, sizeof prec_on);
 	memcpy(in, o.in, sizeof in);
 	memcpy(loc, o.loc, sizeof loc);
 	if (fma && !fma_available()) { study_error("--fma: this CPU (or build) has no FMA"); return ONB_EXIT_USAGE; }
@@ -238,12 +241,16 @@ int cmd_eval(int argc, char **argv)
 	nk = kernels_select(methods, fma, ks, 256);
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
+	if (o.arith && prec_on[PREC_HALF]) {
+		study_error("eval: --arith has no binary16 profile (--precision float|double|both)");
+		return ONB_EXIT_USAGE;
+	}
 	if (o.arith)
 		return eval_arith(o.arith, ks, nk, prec_on, in, (int)o.samples, o.seed, o.csv);
 	{
 		ref_ctx *rc = ref_new(bits), *rc2 = ref_new(bits + 64);
 		if (!rc || !rc2) { study_error("out of memory"); return 1; }
-		for (p = 0; p < 2; p++) {
+		for (p = 0; p < PREC_COUNT; p++) {
 			double n[3], lv[3];
 			const char *pn = prec_name(p);
 			if (!prec_on[p])
@@ -253,6 +260,9 @@ int cmd_eval(int argc, char **argv)
 				lv[i] = fmt_round(loc[i], p);
 			}
 			printf("== %s: n = (%a, %a, %a)\n", pn, n[0], n[1], n[2]);
+			if (p == PREC_HALF)
+				printf("   binary16 encodings: (0x%04x, 0x%04x, 0x%04x)\n", prec_half_bits(n[0]), prec_half_bits(n[1]),
+				       prec_half_bits(n[2]));
 			for (i = 0; i < 3; i++)
 				if (n[i] != in[i] && !(isnan(n[i]) && isnan(in[i])))
 					printf("   note: component %d rounded to %s: %.17g -> %a\n", i, pn, in[i], n[i]);

@@ -27,16 +27,27 @@ static const char *vec(char *buf, size_t len, onb_vec3 v, int csv)
 	return buf;
 }
 
+/* The binary16 kernel on the encodings of v (an axis), widened. */
+static void axes_half(onb_arrayh_fn f, onb_vec3 v, onb_vec3 *b1, onb_vec3 *b2)
+{
+	uint16_t hn[3] = { prec_half_bits(v.x), prec_half_bits(v.y), prec_half_bits(v.z) }, hb[6];
+	f(hn, hb, hb + 3);
+	b1->x = prec_half_value(hb[0]); b1->y = prec_half_value(hb[1]); b1->z = prec_half_value(hb[2]);
+	b2->x = prec_half_value(hb[3]); b2->y = prec_half_value(hb[4]); b2->z = prec_half_value(hb[5]);
+}
+
 /* b1, b2 and det(b1, b2, n) of every method at the six axes: in double
    through method->basis, in float (widened) for the float-only methods. */
-static void list_axes(const onb_method *m, size_t n, int csv)
+static void list_axes(const onb_method *m, size_t n, int csv, int half)
 {
 	static const char *const an[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
 	size_t i, a;
 	if (csv)
 		printf("name,axis,b1x,b1y,b1z,b2x,b2y,b2z,det\n");
 	else
-		printf("# b1 and b2 at the six axes (double; float for float-only methods); det = det(b1, b2, n)\n"
+		printf(half ? "# b1 and b2 at the six axes (binary16: onb_NAME_arrayh, values exact); det = det(b1, b2, n)\n"
+		            "%-24s %-4s %-22s %-22s %s\n" :
+		       "# b1 and b2 at the six axes (double; float for float-only methods); det = det(b1, b2, n)\n"
 		       "%-24s %-4s %-22s %-22s %s\n", "name", "n", "b1", "b2", "det");
 	for (i = 0; i < n; i++)
 		for (a = 0; a < 6; a++) {
@@ -44,7 +55,11 @@ static void list_axes(const onb_method *m, size_t n, int csv)
 			char v1[128], v2[128], dd[32];
 			double d;
 			*(&v.x + a / 2) = (a % 2) ? -1.0 : 1.0;
-			if (m[i].basis) {
+			if (half) {
+				if (!m[i].arrayh)
+					break;
+				axes_half(m[i].arrayh, v, &b1, &b2);
+			} else if (m[i].basis) {
 				m[i].basis(v, &b1, &b2);
 			} else {
 				onb_vec3f vf = { (float)v.x, (float)v.y, (float)v.z }, f1, f2;
@@ -95,22 +110,24 @@ int cmd_list(int argc, char **argv)
 	static const struct option lo[] = {
 		{ "format", required_argument, NULL, 'f' }, { "axes", no_argument, NULL, 'a' },
 		{ "aliases", no_argument, NULL, 'l' }, { "arith", no_argument, NULL, 'r' },
-		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+		{ "precision", required_argument, NULL, 'p' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	size_t n, i;
 	const onb_method *m = onb_methods(&n);
-	int csv = 0, axes = 0, aliases = 0, arith = 0, v, rc = 0;
+	int csv = 0, axes = 0, aliases = 0, arith = 0, v, rc = 0, prec = -1, on[PREC_COUNT];
 	cli_args c;
 	if (cli_begin(&c, "list", argc, argv))
 		return 1;
 	while (rc == 0 && (v = cli_next(&c, lo)) != -1) {
 		if (v == CLI_HELP) {
-			printf("usage: onbstudy list [--axes | --aliases | --arith] [--format table|csv]\n"
+			printf("usage: onbstudy list [--axes [--precision double|half] | --aliases | --arith] [--format table|csv]\n"
 			       "  The methods in the registry: name, handedness, singular directions, source;\n"
 			       "  then the aliases (an engine's code that is a method bit for bit).\n"
 			       "  CSV: one row per method, with the provenance of shipped code (repository,\n"
 			       "  commit, path:lines, license, language, precision, build).\n"
-			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there.\n"
+			       "  --axes: each method's b1 and b2 at +-x, +-y, +-z, and det(b1, b2, n) there;\n"
+			       "  in double (float for float-only methods), or with --precision half in binary16\n"
+			       "  (libonb's onb_NAME_arrayh, each operation rounded to binary16).\n"
 			       "  --aliases: the aliases alone (target, precisions, exceptions, provenance).\n"
 			       "  --arith: the arithmetic profiles of certify/sweep/eval --arith, per format:\n"
 			       "  each operation's allowance (RN: round to nearest; Nulp; rel: relative;\n"
@@ -123,6 +140,14 @@ int cmd_list(int argc, char **argv)
 			aliases = 1;
 		} else if (v == 'r') {
 			arith = 1;
+		} else if (v == 'p') {
+			if (cli_precision_half("--precision", c.arg, on) != 0)
+				rc = ONB_EXIT_USAGE;
+			else if (on[PREC_FLOAT] || on[PREC_DOUBLE] + on[PREC_HALF] != 1) {
+				study_error("list --axes --precision: double or half, not '%s'", c.arg);
+				rc = ONB_EXIT_USAGE;
+			} else
+				prec = on[PREC_HALF] ? PREC_HALF : PREC_DOUBLE;
 		} else if (v != 'f' || (csv = cli_format("--format", c.arg, 0)) < 0) {
 			rc = ONB_EXIT_USAGE;
 		}
@@ -134,6 +159,10 @@ int cmd_list(int argc, char **argv)
 		return rc < 0 ? 0 : rc;
 	if (axes + aliases + arith > 1) {
 		study_error("list: --axes, --aliases and --arith exclude each other");
+		return ONB_EXIT_USAGE;
+	}
+	if (prec >= 0 && !axes) {
+		study_error("list: --precision goes with --axes");
 		return ONB_EXIT_USAGE;
 	}
 	if (arith) {
@@ -150,7 +179,7 @@ int cmd_list(int argc, char **argv)
 		return 0;
 	}
 	if (axes) {
-		list_axes(m, n, csv);
+		list_axes(m, n, csv, prec == PREC_HALF);
 		return 0;
 	}
 	if (aliases) {

@@ -5,6 +5,9 @@
 #ifndef ONB_COMMON_PREC_H
 #define ONB_COMMON_PREC_H
 
+#include <math.h>
+#include <stdint.h>
+
 /* binary32, binary64 and binary16; also the index of per-precision arrays
    (those sized 2 hold float and double only), and the format of a
    rounding model's operation (src/model/model.h) */
@@ -39,5 +42,39 @@ static inline const prec_format *prec_fmt(int p)
 
 /* The one spelling of a precision in every output: "float", "double", "half". */
 static inline const char *prec_name(int p) { return prec_fmt(p)->name; }
+
+/* binary16 in plain C (the study builds without _Float16 too): x rounded
+   to binary16 (the quantum of x's binade, floored at the subnormal step
+   2^-24, nearbyint's ties to even; past the largest finite, infinity),
+   as a double. */
+static inline double prec_half_round(double x)
+{
+	const prec_format *F = prec_fmt(PREC_HALF);
+	double q, r;
+	if (!isfinite(x) || x == 0.0)
+		return x;
+	q = ldexp(1.0, (ilogb(x) < F->emin ? F->emin : ilogb(x)) - (F->bits - 1));
+	r = nearbyint(x / q) * q;   /* x / q and the product exact: q is a power of 2 >= 2^-24 */
+	return fabs(r) > F->max ? copysign(INFINITY, x) : r;
+}
+
+/* The encoding of a binary16 value v (one prec_half_round returns), and
+   the value of an encoding. */
+static inline uint16_t prec_half_bits(double v)
+{
+	const double a = fabs(v);
+	uint16_t m;
+	if (isnan(v)) return 0x7e00u;
+	if (isinf(v)) m = 0x7c00u;
+	else if (a < 0x1p-14) m = (uint16_t)(a * 0x1p24);
+	else m = (uint16_t)((ilogb(a) + 15) * 1024 + (int)(ldexp(a, 10 - ilogb(a)) - 1024.0));
+	return (uint16_t)(signbit(v) ? m | 0x8000u : m);
+}
+static inline double prec_half_value(uint16_t b)
+{
+	const int e = (b >> 10) & 31, f = b & 1023;
+	const double a = e == 0 ? f * 0x1p-24 : e == 31 ? (f ? NAN : INFINITY) : ldexp(1024.0 + f, e - 25);
+	return (b & 0x8000u) ? -a : a;
+}
 
 #endif

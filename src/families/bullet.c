@@ -16,6 +16,8 @@ int FAMILY_BRANCH(bullet)(const onb_method *m, int prec, const double n[3])
 	(void)m;
 	if (prec == PREC_FLOAT)
 		return fabsf((float)n[2]) > 0x1.6a09e6p-1f;
+	if (prec == PREC_HALF)   /* SIMDSQRT12 in binary16 */
+		return fabs(n[2]) > prec_half_round(0x1.6a09e667f3bcdp-1);
 	return fabs(n[2]) > 0x1.6a09e667f3bcdp-1;
 }
 #endif

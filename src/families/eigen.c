@@ -17,6 +17,9 @@ int FAMILY_BRANCH(eigen)(const onb_method *m, int prec, const double n[3])
 	if (prec == PREC_FLOAT) {
 		const float zp = fabsf((float)n[2]) * 1e-5f;
 		return !(fabsf((float)n[0]) <= zp) || !(fabsf((float)n[1]) <= zp);
+	} else if (prec == PREC_HALF) {   /* NumTraits<Eigen::half>::dummy_precision() = half(1e-2f) */
+		const double zp = prec_half_round(fabs(n[2]) * prec_half_round((double)1e-2f));
+		return !(fabs(n[0]) <= zp) || !(fabs(n[1]) <= zp);
 	} else {
 		const double zp = fabs(n[2]) * 1e-12;
 		return !(fabs(n[0]) <= zp) || !(fabs(n[1]) <= zp);

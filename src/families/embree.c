@@ -20,6 +20,10 @@ int FAMILY_BRANCH(embree)(const onb_method *m, int prec, const double n[3])
 		const float x = (float)n[0], y = (float)n[1], z = (float)n[2], zz = z * z;
 		return zz + y * y > zz + x * x;
 	}
+	if (prec == PREC_HALF) {
+		const double zz = prec_half_round(n[2] * n[2]);
+		return prec_half_round(zz + prec_half_round(n[1] * n[1])) > prec_half_round(zz + prec_half_round(n[0] * n[0]));
+	}
 	return n[2] * n[2] + n[1] * n[1] > n[2] * n[2] + n[0] * n[0];
 }
 #endif

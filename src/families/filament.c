@@ -23,6 +23,8 @@ int FAMILY_BRANCH(filament)(const onb_method *m, int prec, const double n[3])
 		return prec == PREC_FLOAT ? (float)n[1] < 0.0f : n[1] < 0.0;
 	if (prec == PREC_FLOAT)
 		return (float)n[1] < (float)m->threshold;
+	if (prec == PREC_HALF)   /* the float constant rounded to binary16 */
+		return n[1] < prec_half_round((double)(float)m->threshold);
 	return n[1] < m->threshold;
 }
 #endif

@@ -15,6 +15,8 @@ int FAMILY_BRANCH(frisvad)(const onb_method *m, int prec, const double n[3])
 {
 	if (prec == PREC_FLOAT)
 		return (float)n[2] < (float)m->threshold;
+	if (prec == PREC_HALF)   /* the float constant rounded to binary16 */
+		return n[2] < prec_half_round((double)(float)m->threshold);
 	return n[2] < m->threshold;
 }
 #endif

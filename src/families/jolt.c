@@ -19,6 +19,8 @@ int FAMILY_BRANCH(jolt)(const onb_method *m, int prec, const double n[3])
 		const float x = (float)n[0], y = (float)n[1];
 		return x * x > y * y;
 	}
+	if (prec == PREC_HALF)
+		return prec_half_round(n[0] * n[0]) > prec_half_round(n[1] * n[1]);
 	return n[0] * n[0] > n[1] * n[1];
 }
 #endif

@@ -19,6 +19,9 @@ int FAMILY_BRANCH(luxcore)(const onb_method *m, int prec, const double n[3])
 		const float x = (float)n[0], y = (float)n[1];
 		return (double)sqrtf(x * x + y * y) < 1e-5;
 	}
+	if (prec == PREC_HALF)
+		return prec_half_round(sqrt(prec_half_round(prec_half_round(n[0] * n[0]) + prec_half_round(n[1] * n[1])))) <
+		       1e-5;
 	return sqrt(n[0] * n[0] + n[1] * n[1]) < 1e-5;
 }
 #endif

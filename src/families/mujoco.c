@@ -20,6 +20,12 @@ int FAMILY_BRANCH(mujoco)(const onb_method *m, int prec, const double n[3])
 		const float s = sqrtf(x * x + y * y + z * z);
 		const float my = s < 1e-15f ? 0.0f : y * (1.0f / s);
 		return my < 0.5f && my > -0.5f;
+	} else if (prec == PREC_HALF) {   /* 1e-15 is 0 in binary16 */
+		const double x = n[0], y = n[1], z = n[2];
+		const double s = prec_half_round(sqrt(prec_half_round(prec_half_round(prec_half_round(x * x) +
+		                 prec_half_round(y * y)) + prec_half_round(z * z))));
+		const double my = s < prec_half_round(1e-15) ? 0.0 : prec_half_round(y * prec_half_round(1.0 / s));
+		return my < 0.5 && my > -0.5;
 	} else {
 		const double x = n[0], y = n[1], z = n[2];
 		const double s = sqrt(x * x + y * y + z * z);

@@ -15,6 +15,8 @@ int FAMILY_BRANCH(naive)(const onb_method *m, int prec, const double n[3])
 	(void)m;
 	if (prec == PREC_FLOAT)
 		return (float)n[0] > 0.9f;
+	if (prec == PREC_HALF)
+		return n[0] > prec_half_round(0.9);
 	return n[0] > 0.9;
 }
 #endif

@@ -16,6 +16,13 @@
 #if FAMILY_RULE_PASS
 /* 1 when |a - n|^2 > 1e-3 (and, fixed, |a + n|^2 > 1e-3), with a = (0,1,1)
    (fixed: (0, c, c)); Eigen's summation order per type */
+/* v0^2 + (v1^2 + v2^2) in binary16, of the differences rounded to it */
+static double o3d_sq_h(double v0, double v1, double v2)
+{
+	const double a = prec_half_round(v0), b = prec_half_round(v1), c = prec_half_round(v2);
+	return prec_half_round(prec_half_round(a * a) +
+	                       prec_half_round(prec_half_round(b * b) + prec_half_round(c * c)));
+}
 int FAMILY_BRANCH(open3d)(const onb_method *m, int prec, const double n[3])
 {
 	const int fixed = m->norm == ONB__WILD_FIXED;
@@ -23,6 +30,9 @@ int FAMILY_BRANCH(open3d)(const onb_method *m, int prec, const double n[3])
 		const float x = (float)n[0], y = (float)n[1], z = (float)n[2], a = fixed ? 0x1.6a09e6p-1f : 1.0f;
 		const float dx = 0.0f - x, dy = a - y, dz = a - z, ex = 0.0f + x, ey = a + y, ez = a + z;
 		return dx * dx + (dy * dy + dz * dz) > 1e-3f && (!fixed || ex * ex + (ey * ey + ez * ez) > 1e-3f);
+	} else if (prec == PREC_HALF) {   /* Eigen's scalar order, each operation rounded to binary16 */
+		const double a = fixed ? prec_half_round(0x1.6a09e667f3bcdp-1) : 1.0, t = prec_half_round(1e-3);
+		return o3d_sq_h(0.0 - n[0], a - n[1], a - n[2]) > t && (!fixed || o3d_sq_h(n[0], a + n[1], a + n[2]) > t);
 	} else {
 		const double x = n[0], y = n[1], z = n[2], a = fixed ? 0x1.6a09e667f3bcdp-1 : 1.0;
 		const double dx = 0.0 - x, dy = a - y, dz = a - z, ex = 0.0 + x, ey = a + y, ez = a + z;

@@ -17,6 +17,8 @@ int FAMILY_BRANCH(physx)(const onb_method *m, int prec, const double n[3])
 	(void)m;
 	if (prec == PREC_FLOAT)
 		return !(fabsf((float)n[1]) <= 0.9999f);
+	if (prec == PREC_HALF)   /* 0.9999f is 1 in binary16 */
+		return !(fabs(n[1]) <= prec_half_round((double)0.9999f));
 	return !(fabs(n[1]) <= PHYSX_T);
 }
 #endif

@@ -16,6 +16,12 @@ int FAMILY_BRANCH(rtow)(const onb_method *m, int prec, const double n[3])
 		const float x = (float)n[0], y = (float)n[1], z = (float)n[2];
 		const float inv = 1.0f / sqrtf(x * x + y * y + z * z);
 		return fabsf(inv * x) > 0.9f;
+	} else if (prec == PREC_HALF) {
+		const double x = n[0], y = n[1], z = n[2];
+		const double d = prec_half_round(prec_half_round(prec_half_round(x * x) + prec_half_round(y * y)) +
+		                                 prec_half_round(z * z));
+		const double inv = prec_half_round(1.0 / prec_half_round(sqrt(d)));
+		return fabs(prec_half_round(inv * x)) > prec_half_round(0.9);
 	} else {
 		const double x = n[0], y = n[1], z = n[2];
 		const double inv = 1.0 / sqrt(x * x + y * y + z * z);

@@ -31,24 +31,10 @@ int dist_find(const char *name)
    drops the (float) rounding in (double)(float)(double)(long double
    expression) when the expression comes from sinl/cosl (a miscompilation
    found by tests/test_sweep.c: uniform float inputs came out as doubles). */
-/* binary16 in plain C (the study builds without _Float16 too): the
-   quantum of x's binade, floored at the subnormal step 2^-24, and
-   nearbyint's ties to even; past the largest finite, infinity. */
-static double half_round(double x)
-{
-	const prec_format *F = prec_fmt(PREC_HALF);
-	double q, r;
-	if (!isfinite(x) || x == 0.0)
-		return x;
-	q = ldexp(1.0, (ilogb(x) < F->emin ? F->emin : ilogb(x)) - (F->bits - 1));
-	r = nearbyint(x / q) * q;   /* x / q and the product exact: q is a power of 2 >= 2^-24 */
-	return fabs(r) > F->max ? copysign(INFINITY, x) : r;
-}
-
 double fmt_round(double x, int prec)
 {
 	if (prec == PREC_HALF)
-		return half_round(x);
+		return prec_half_round(x);
 	if (prec == PREC_FLOAT) {
 		volatile float f = (float)x;
 		return f;

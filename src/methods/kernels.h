@@ -67,10 +67,14 @@ const study_direction *kernels_direction(const char *name);
 int kernels_select(const char *names, int fma, study_kernel *out, int cap);
 
 /* 0 when the kernel has no code in that precision: the float-only
-   registry methods (ONB_FLOAT_ONLY, NULL basis) in double.  Every loop
-   over kernels and precisions skips those pairs. */
+   registry methods (ONB_FLOAT_ONLY, NULL basis) in double; in binary16
+   every registry method with a half entry (onb_NAME_arrayh; none on a
+   build without _Float16), not frisvad_rotate and not the FMA copies.
+   Every loop over kernels and precisions skips those pairs. */
 static inline int kernel_runs(const study_kernel *k, int prec)
 {
+	if (prec == PREC_HALF)
+		return k->m && k->m->arrayh && !k->fma;
 	return prec == PREC_FLOAT || !k->m || k->basis != NULL;
 }
 /* How many of the nk kernels run in precision prec. */

@@ -290,7 +290,7 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
                        int normalize_n, double *dir_norm, double *dir_cos)
 {
 	mpfr_t *t = c->k.t;
-	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : loc[2];
+	const double z = prec == PREC_FLOAT ? (double)(float)loc[2] : prec == PREC_HALF ? prec_half_round(loc[2]) : loc[2];
 	kit_set3(c->k.w, w[0], w[1], w[2]);
 	*dir_norm = fabs(norm_m1_exact(c, c->k.w, w));
 	if (normalize_n) {
@@ -302,6 +302,34 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
 		dot_exact(c, t[0], c->k.w, c->n, w, n, z);
 		*dir_cos = fabs(sum_d(c, t[0]));
 	}
+}
+
+/* ---- binary16 ---------------------------------------------- */
+/* w = x b1 + y b2 + z n in binary16 arithmetic, each operation rounded
+   (as the float kernels' w is in float): products and sums of binary16
+   values are exact in double, so one prec_half_round after each is the
+   correctly rounded binary16 result.  loc is rounded to binary16 first. */
+static void half_direction(const double b[6], const double n[3], const double loc[3], double w[3])
+{
+	const double x = prec_half_round(loc[0]), y = prec_half_round(loc[1]), z = prec_half_round(loc[2]);
+	int i;
+	for (i = 0; i < 3; i++)
+		w[i] = prec_half_round(prec_half_round(prec_half_round(x * b[i]) + prec_half_round(y * b[3 + i])) +
+		                       prec_half_round(z * n[i]));
+}
+
+/* The binary16 kernel (onb_NAME_arrayh, on encodings) on n (binary16
+   values): s->out and s->w.  kernel_runs() admits only kernels that have it. */
+static void run_kernel_half(const study_kernel *k, const double n[3], const double loc[3], sample_metrics *s)
+{
+	uint16_t hn[3], hb[6];
+	int i;
+	for (i = 0; i < 3; i++)
+		hn[i] = prec_half_bits(n[i]);
+	k->m->arrayh(hn, hb, hb + 3);
+	for (i = 0; i < 6; i++)
+		s->out[i] = prec_half_value(hb[i]);
+	half_direction(s->out, n, loc, s->w);
 }
 
 /* ---- the accuracy floor ------------------------------------ */
@@ -334,6 +362,8 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 				v[i] = x * b[i] + y * b[3 + i] + z * (float)n[i];
 				w[i] = v[i];
 			}
+		} else if (prec == PREC_HALF) {
+			half_direction(fb, n, loc, w);
 		} else {
 			for (i = 0; i < 3; i++)
 				w[i] = loc[0] * fb[i] + loc[1] * fb[3 + i] + loc[2] * n[i];
@@ -353,7 +383,7 @@ static void floor_eval(ref_ctx *c, const study_kernel *k, int prec, const double
 	   n = (-1, 0, -2^-126) in float the floor is 6.9e-77 and duff's defect
 	   1.2e-38, a raw ratio of 1.7e38 (onbstudy eval). */
 	if (!s->nonfinite) {
-		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : 0x1p-106;
+		const double u2 = prec == PREC_FLOAT ? 0x1p-48 : prec == PREC_HALF ? 0x1p-22 : 0x1p-106;
 		const double e = k->m ? s->defect : fmax(s->dir_norm, s->dir_cos);
 		const double f = k->m ? s->floor : fmax(s->floor_dir_norm, s->floor_dir_cos);
 		s->floor_ratio = fmax(e, u2) / fmax(f, u2);
@@ -369,6 +399,8 @@ static void read_input(const study_kernel *k, int prec, const double n_in[3], do
 		if (prec == PREC_FLOAT) {
 			volatile float f = (float)n_in[i];
 			n[i] = f;
+		} else if (prec == PREC_HALF) {
+			n[i] = prec_half_round(n_in[i]);
 		} else {
 			n[i] = n_in[i];
 		}
@@ -386,7 +418,9 @@ static void read_input(const study_kernel *k, int prec, const double n_in[3], do
 /* Run the kernel, and the direction through its basis: s->out, s->w. */
 static void run_kernel(const study_kernel *k, int prec, const double n[3], const double loc[3], sample_metrics *s)
 {
-	if (prec == PREC_FLOAT) {
+	if (prec == PREC_HALF) {
+		run_kernel_half(k, n, loc, s);
+	} else if (prec == PREC_FLOAT) {
 		const onb_vec3f nf = { (float)n[0], (float)n[1], (float)n[2] };
 		const float x = (float)loc[0], y = (float)loc[1], z = (float)loc[2];
 		onb_vec3f b1, b2, w;

@@ -93,10 +93,16 @@ void ref_defects(ref_ctx *c, const double n[3], const double b[6], double d[NDEF
    double and wrong_hand, as ref_eval sets them (shared with reffast.c). */
 void ref_defect_summary(const study_kernel *k, const double n[3], sample_metrics *s);
 
-/* Representable values of the format (PREC_FLOAT or PREC_DOUBLE) between
+/* Representable values of the format (PREC_FLOAT, PREC_DOUBLE or PREC_HALF) between
    a and b: the forward error in "bits" counts them. */
 static inline double ref_float_distance(double a, double b, int prec)
 {
+	if (prec == PREC_HALF) {   /* binary16 values: encodings' magnitudes, signed */
+		const uint16_t ua = prec_half_bits(a), ub = prec_half_bits(b);
+		const int32_t oa = (ua >> 15) ? -(int32_t)(ua & 0x7fffu) : (int32_t)ua;
+		const int32_t ob = (ub >> 15) ? -(int32_t)(ub & 0x7fffu) : (int32_t)ub;
+		return (double)(oa > ob ? oa - ob : ob - oa);
+	}
 	if (prec == PREC_FLOAT) {
 		float fa = (float)a, fb = (float)b;
 		uint32_t ua, ub;

@@ -27,10 +27,11 @@
 
 static const ref_format fmt_float = { 24, -125, 128 };
 static const ref_format fmt_double = { 53, -1021, 1024 };
+static const ref_format fmt_half = { 11, -13, 16 };
 
 const ref_format *ref_format_of(int prec)
 {
-	return prec == PREC_FLOAT ? &fmt_float : &fmt_double;
+	return prec == PREC_FLOAT ? &fmt_float : prec == PREC_HALF ? &fmt_half : &fmt_double;
 }
 
 double ref_round(mpfr_srcptr x, const ref_format *f, mpfr_ptr t)

@@ -1,0 +1,53 @@
+#!/bin/sh
+# half_study.sh - the study's commands in binary16 (issue 43, item 2):
+# `eval --precision half` and `list --axes --precision half`.
+#  1. eval rounds the input to binary16, prints its encodings and the
+#     roundings, and measures the half kernel against the MPFR reference
+#     at that rounded input: duff at (0.6, 0, 0.8) has the defect of the
+#     input's own |n| - 1 (the exact formula rounded once has the same:
+#     defect / floor 1) and a forward error within half an ulp;
+#  2. the branch rules in binary16: frisvad_max's threshold and PhysX's
+#     0.9999f round to -1 and 1 in half, so at n = -z and n = +y the half
+#     kernels take branch 0 (the formula), where a rule with the float
+#     constants would name branch 1; frisvad's basis is NaN there, physx's
+#     b1 = b2 = 0 (defect 1);
+#  3. list --axes --precision half: six rows per method, the half kernels'
+#     frames (frisvad NaN at -z, duff finite everywhere, physx 0 at +-y);
+#  4. refusals: --precision float with list --axes, --precision without
+#     --axes, eval --arith with half; a build without _Float16 refuses
+#     --precision half with exit 2 and says why.
+. "$(dirname "$0")/lib.sh"
+
+./onbstudy eval --precision half --methods duff 0.6 0 0.8 > "$tmp/e1" 2> "$tmp/err"; rc=$?
+if [ $rc -eq 2 ] && grep -q '_Float16' "$tmp/err"; then
+	ok; finish half_study
+fi
+[ $rc -eq 0 ] && ok || bad "eval --precision half failed (exit $rc): $(cat "$tmp/err")"
+grep -q '^== half: n = (0x1.334p-1, 0x0p+0, 0x1.998p-1)$' "$tmp/e1" && ok || bad "eval half: input not rounded to binary16: $(grep '^==' "$tmp/e1")"
+grep -q 'binary16 encodings: (0x38cd, 0x0000, 0x3a66)' "$tmp/e1" && ok || bad "eval half: encodings"
+grep -q 'note: component 2 rounded to half: 0.80000000000000004 -> 0x1.998p-1' "$tmp/e1" && ok || bad "eval half: rounding note"
+grep -q 'defect / floor: 1$' "$tmp/e1" && ok || bad "eval half: duff's defect is the input's |n|-1, the floor's: $(grep 'defect' "$tmp/e1")"
+awk '/forward: max/ { if ($3 + 0 <= 0.5 && $3 + 0 > 0) ok = 1 } END { exit !ok }' "$tmp/e1" && ok || bad "eval half: duff's forward error: $(grep forward "$tmp/e1")"
+grep -q 'ref b1 (0x1.998e38651f40ep-1' "$tmp/e1" && ok || bad "eval half: the reference is not at the rounded input"
+
+./onbstudy eval --precision half --methods frisvad_max,physx 0 0 -1 > "$tmp/e2" && ok || bad "eval half at -z"
+grep -q '^frisvad_max (half), branch 0 ' "$tmp/e2" && ok || bad "frisvad_max in half at -z: the threshold rounds to -1, branch 0: $(grep 'frisvad_max (' "$tmp/e2")"
+grep -q 'NON-FINITE' "$tmp/e2" && ok || bad "frisvad_max in half at -z must be non-finite"
+./onbstudy eval --precision float --methods frisvad_max 0 0 -1 | grep -q '^frisvad_max (float), branch 1 ' && ok || bad "frisvad_max in float at -z: branch 1"
+./onbstudy eval --precision half --methods physx 0 1 0 > "$tmp/e3" && ok || bad "eval half at +y"
+grep -q '^physx (half), branch 0 ' "$tmp/e3" && ok || bad "physx in half at +y: 0.9999f rounds to 1, branch 0"
+grep -q 'defects: .*(max 1)$' "$tmp/e3" && ok || bad "physx in half at +y: defect 1: $(grep defects "$tmp/e3")"
+./onbstudy eval --precision all --methods duff 0 0 1 | grep -c '^duff (' | grep -q '^3$' && ok || bad "eval --precision all: float, double and half"
+
+nm=$(./onbstudy list --format csv | tail -n +2 | wc -l)
+./onbstudy list --axes --precision half --format csv > "$tmp/a.csv" && ok || bad "list --axes --precision half"
+[ "$(tail -n +2 "$tmp/a.csv" | wc -l)" -eq $((6 * nm)) ] && ok || bad "list --axes half: want $((6 * nm)) rows"
+grep -q '^frisvad,-z,nan,nan,' "$tmp/a.csv" && ok || bad "list --axes half: frisvad at -z: $(grep '^frisvad,-z' "$tmp/a.csv")"
+awk -F, '$1 == "duff" && $2 == "-z" && $3 == 1 && $4 == 0 && $5 == 0 && $6 == 0 && $7 == -1 && $8 == 0 { f = 1 } END { exit !f }' "$tmp/a.csv" && ok || bad "list --axes half: duff at -z: $(grep '^duff,-z' "$tmp/a.csv")"
+awk -F, '$1 == "physx" && $2 == "+y" && $3 == 0 && $4 == 0 && $5 == 0 && $6 == 0 && $7 == 0 && $8 == 0 { f = 1 } END { exit !f }' "$tmp/a.csv" && ok || bad "list --axes half: physx at +y: $(grep '^physx,+y' "$tmp/a.csv")"
+./onbstudy list --axes --precision half > /dev/null && ok || bad "list --axes --precision half (table)"
+
+./onbstudy list --axes --precision float > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --axes --precision float must exit 2"
+./onbstudy list --precision half > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --precision without --axes must exit 2"
+./onbstudy eval --arith ieee --precision half 0 0 1 > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "eval --arith --precision half must exit 2"
+finish half_study

@@ -25,9 +25,9 @@
 struct ref_ctx {
 	mpfr_prec_t prec;
 	mpfr_kit k;      /* the formulas' scratch: t[], p0, p1 (products), u[], w[] */
-	mpfr_t n[3], nn[3], b1[3], b2[3], r1[3], r2[3];
+	mpfr_t n[3], b1[3], b2[3], r1[3], r2[3];
 	mpfr_t q[4];     /* exact products for dot_exact */
-	mpfr_t inv_n;    /* 1/|n| of the current input */
+	mpfr_t nsq[3];   /* the current input's squares, exact: |n|^2's terms */
 	double last[3];  /* the input of the previous call, its |n|-1 and n/|n| */
 	double last_norm;
 	int have_last;
@@ -50,10 +50,9 @@ ref_ctx *ref_new(mpfr_prec_t prec)
 	c->have_last = 0;
 	c->z = NULL;
 	kit_init(&c->k, prec);
-	kit_vinit(c->n, 3, prec); kit_vinit(c->nn, 3, prec); kit_vinit(c->b1, 3, prec);
+	kit_vinit(c->n, 3, prec); kit_vinit(c->nsq, 3, prec < 106 ? 106 : prec); kit_vinit(c->b1, 3, prec);
 	kit_vinit(c->b2, 3, prec); kit_vinit(c->r1, 3, prec); kit_vinit(c->r2, 3, prec);
 	kit_vinit(c->q, 4, prec < 106 ? 106 : prec);
-	mpfr_init2(c->inv_n, prec);
 	mpfr_init2(c->lo, prec);
 	mpfr_init2(c->hi, prec);
 	mpfr_init2(c->sc, 64);
@@ -70,10 +69,9 @@ void ref_free(ref_ctx *c)
 	if (!c)
 		return;
 	kit_clear(&c->k);
-	kit_vclear(c->n, 3); kit_vclear(c->nn, 3); kit_vclear(c->b1, 3); kit_vclear(c->b2, 3);
+	kit_vclear(c->n, 3); kit_vclear(c->nsq, 3); kit_vclear(c->b1, 3); kit_vclear(c->b2, 3);
 	kit_vclear(c->r1, 3); kit_vclear(c->r2, 3);
 	kit_vclear(c->q, 4);
-	mpfr_clear(c->inv_n);
 	mpfr_clear(c->lo);
 	mpfr_clear(c->hi);
 	mpfr_clear(c->sc);
@@ -264,6 +262,22 @@ static int finite6(const double *v, int k)
 	return 1;
 }
 
+/* RN to double of (a.n)/|n| - z for the dot whose exact products
+   dot_exact has just left in c->q[0..2], the input's |n|^2 from its
+   exact squares: correct whatever the context's precision
+   (ref_round_quot).  A product by a rounded 1/|n| rounded the result
+   twice. */
+static double over_norm(ref_ctx *c, double z)
+{
+	mpfr_ptr s[3], q[3];
+	int i;
+	for (i = 0; i < 3; i++) {
+		s[i] = c->q[i];
+		q[i] = c->nsq[i];
+	}
+	return ref_round_quot(s, 3, q, 3, z, ref_format_of(PREC_DOUBLE));
+}
+
 /* The five defects of the basis b (doubles) for the input n held in
    c->n: |b1|-1, |b2|-1, b1.n, b2.n (against n/|n| when normalize_n),
    b1.b2. */
@@ -276,11 +290,9 @@ static void basis_defects(ref_ctx *c, const double b[6], const double n[3], int 
 	d[DEF_N2] = norm_m1_exact(c, c->b2, b + 3);
 	/* b.n, or b.(n/|n|) = (b.n)/|n| against the normalized input */
 	dot_exact(c, t[0], c->b1, c->n, b, n, 0.0);
-	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-	d[DEF_D1N] = normalize_n ? mpfr_get_d(t[0], R) : sum_d(c, t[0]);
+	d[DEF_D1N] = normalize_n ? over_norm(c, 0.0) : sum_d(c, t[0]);
 	dot_exact(c, t[0], c->b2, c->n, b + 3, n, 0.0);
-	if (normalize_n) mpfr_mul(t[0], t[0], c->inv_n, R);
-	d[DEF_D2N] = normalize_n ? mpfr_get_d(t[0], R) : sum_d(c, t[0]);
+	d[DEF_D2N] = normalize_n ? over_norm(c, 0.0) : sum_d(c, t[0]);
 	dot_exact(c, t[0], c->b1, c->b2, b, b + 3, 0.0); d[DEF_D12] = sum_d(c, t[0]);
 }
 
@@ -295,9 +307,7 @@ static void dir_errors(ref_ctx *c, const double w[3], const double n[3], const d
 	*dir_norm = fabs(norm_m1_exact(c, c->k.w, w));
 	if (normalize_n) {
 		dot_exact(c, t[0], c->k.w, c->n, w, n, 0.0);
-		mpfr_mul(t[0], t[0], c->inv_n, R);
-		mpfr_sub_d(t[0], t[0], z, R);
-		*dir_cos = fabs(mpfr_get_d(t[0], R));
+		*dir_cos = fabs(over_norm(c, z));
 	} else {
 		dot_exact(c, t[0], c->k.w, c->n, w, n, z);
 		*dir_cos = fabs(sum_d(c, t[0]));
@@ -461,18 +471,17 @@ void ref_run_kernel(const study_kernel *k, int prec, const double n_in[3], const
 	run_kernel(k, prec, n, loc, s);
 }
 
-/* The input's own |n| - 1 and 1/|n| once per input, not per kernel:
+/* The input's own |n| - 1 and exact squares once per input, not per kernel:
    the sweep evaluates every kernel on an input in a row.  Compared by
    bit pattern, so -0 and +0 are different inputs. */
 static void input_norm(ref_ctx *c, const double n[3])
 {
-	mpfr_t *t = c->k.t;
 	if (!c->have_last || memcmp(c->last, n, sizeof c->last) != 0) {
 		kit_set3(c->n, n[0], n[1], n[2]);
 		c->last_norm = norm_m1_exact(c, c->n, n);
-		/* 1/|n| = 1/(1 + (|n| - 1)) at the context's precision */
-		kit_dot(&c->k, t[0], c->n, c->n);
-		mpfr_rec_sqrt(c->inv_n, t[0], R);
+		mpfr_sqr(c->nsq[0], c->n[0], R); /* exact: 106 bits or more */
+		mpfr_sqr(c->nsq[1], c->n[1], R);
+		mpfr_sqr(c->nsq[2], c->n[2], R);
 		memcpy(c->last, n, sizeof c->last);
 		c->have_last = 1;
 	}

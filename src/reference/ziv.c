@@ -103,6 +103,61 @@ double ref_round_sum(mpfr_ptr *q, unsigned long k, const ref_format *f, mpfr_ptr
 	}
 }
 
+/* One level of ref_round_quot at p bits: w = S/sqrt(Q) - z and the
+   interval [lo, hi] that holds the exact value.  The quotient's relative
+   error is below (1 + 2^-p)^3 (1 + 2^-(p+1)) - 1 < 2^(2-p): S and Q
+   rounded once each, the correctly rounded rec_sqrt (Q's error halved
+   under the root), the product; taken as 2^(3-p) of |v|, and the
+   difference's rounding as 2^(1-p) of |w|. */
+static void quot_level(mpfr_ptr *s, unsigned long ks, mpfr_ptr *q, unsigned long kq, double z,
+                       mpfr_prec_t p, mpfr_t v, mpfr_t w, mpfr_t e, mpfr_t lo, mpfr_t hi)
+{
+	mpfr_set_prec(v, p); mpfr_set_prec(w, p); mpfr_set_prec(e, 64);
+	mpfr_set_prec(lo, p); mpfr_set_prec(hi, p);
+	mpfr_sum(w, q, kq, MPFR_RNDN);
+	mpfr_rec_sqrt(w, w, MPFR_RNDN);
+	mpfr_sum(v, s, ks, MPFR_RNDN);
+	mpfr_mul(v, v, w, MPFR_RNDN);
+	mpfr_abs(e, v, MPFR_RNDU);
+	mpfr_mul_2si(e, e, 3 - (long)p, MPFR_RNDU);
+	mpfr_sub_d(w, v, z, MPFR_RNDN);
+	if (z != 0.0) {
+		mpfr_abs(lo, w, MPFR_RNDU);
+		mpfr_mul_2si(lo, lo, 1 - (long)p, MPFR_RNDU);
+		mpfr_add(e, e, lo, MPFR_RNDU);
+	}
+	mpfr_sub(lo, w, e, MPFR_RNDD);
+	mpfr_add(hi, w, e, MPFR_RNDU);
+}
+
+double ref_round_quot(mpfr_ptr *s, unsigned long ks, mpfr_ptr *q, unsigned long kq, double z,
+                      const ref_format *f)
+{
+	mpfr_t v, w, e, lo, hi, t;
+	mpfr_prec_t p;
+	double a = 0.0, b = 1.0;
+	mpfr_inits2(128, v, w, e, lo, hi, t, (mpfr_ptr)0);
+	for (p = 128; p <= 16384; p *= 2) {
+		quot_level(s, ks, q, kq, z, p, v, w, e, lo, hi);
+		if (mpfr_zero_p(e)) { /* S = 0 exactly: w = -z, exact */
+			a = b = ref_round(w, f, t);
+			break;
+		}
+		if (!mpfr_number_p(lo) || !mpfr_number_p(hi)) {
+			a = b = mpfr_get_d(w, MPFR_RNDN); /* NaN or infinite terms */
+			break;
+		}
+		a = ref_round(lo, f, t);
+		b = ref_round(hi, f, t);
+		if (memcmp(&a, &b, sizeof a) == 0)
+			break;
+	}
+	if (memcmp(&a, &b, sizeof a) != 0) /* at the cap */
+		a = (mpfr_sgn(lo) <= 0 && mpfr_sgn(hi) >= 0) ? 0.0 : ref_round(w, f, t);
+	mpfr_clears(v, w, e, lo, hi, t, (mpfr_ptr)0);
+	return a;
+}
+
 typedef struct {
 	mpfr_kit k;
 	mpfr_t n[3], r1[3], r2[3];

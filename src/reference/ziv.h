@@ -35,6 +35,16 @@ double ref_round(mpfr_srcptr x, const ref_format *f, mpfr_ptr t);
    format's quantum at that exponent; t is scratch. */
 double ref_round_sum(mpfr_ptr *q, unsigned long k, const ref_format *f, mpfr_ptr t);
 
+/* RN to f of S/sqrt(Q) - z, S the exact sum of s[0..ks-1], Q that of
+   q[0..kq-1] (Q > 0), z a double: b.n and w.n - z against n/|n| for a
+   non-unit input.  Ziv's strategy with a proven error: at p bits the
+   quotient is within 2^(3-p) of itself and the difference within
+   2^(1-p) more; the precision doubles from 128 bits until both ends of
+   that interval round alike (at most 16384 bits; beyond, an exact zero
+   is +0 and anything else is rounded from there).  ks, kq <= 7. */
+double ref_round_quot(mpfr_ptr *s, unsigned long ks, mpfr_ptr *q, unsigned long kq, double z,
+                      const ref_format *f);
+
 /* The roundings of one formula evaluation, per output component. */
 typedef struct {
 	double fmt[6];   /* X to the format: the floor's basis, the forward error's unit */

@@ -59,6 +59,29 @@ while IFS= read -r row; do
 	else bad "$name: '$cmd' gives defect $got, the row says $want (bound $bnd)"; fi
 done < "$T/rows"
 
+# results/wild/patches: each NAME.diff is the fix NAME of a registry
+# method F (NAME's family, an engine's method), against F's file at F's
+# commit, names F's license, is a unified diff of that file, and is listed
+# in the patches' README
+./onbstudy list --format csv > "$T/list"
+np=0
+for d in results/wild/patches/*.diff; do
+	[ -f "$d" ] || continue
+	np=$((np + 1)); p=$(basename "$d" .diff)
+	fam=$(awk -F, -v m="$p" '$1 == m { print $2 }' "$T/list")
+	if [ -z "$fam" ]; then bad "patches/$p.diff: $p is not a registry method"; continue; fi
+	line=$(grep "^$fam," "$T/list")
+	c=$(printf '%s\n' "$line" | grep -oE '[0-9a-f]{40}' | head -1)
+	f=$(printf '%s\n' "$line" | sed -n 's/.*,"\([^":]*\):[0-9]*-[0-9]*",.*/\1/p')
+	l=$(printf '%s\n' "$line" | sed -n 's/.*:[0-9]*-[0-9]*",\([^,]*\),.*/\1/p')
+	if [ -z "$c" ] || [ -z "$f" ] || [ -z "$l" ]; then bad "patches/$p.diff: $p's family $fam is not an engine's method with a commit, path and license"; continue; fi
+	if grep -q "^Of: .* at commit $c\$" "$d" && grep -q "^File: *$f\$" "$d" && grep -q "^License: $l " "$d" \
+		&& grep -q "^--- a/$f\$" "$d" && grep -q "^+++ b/$f\$" "$d" && grep -qE '^@@ -[0-9]+,[0-9]+ \+[0-9]+,[0-9]+ @@' "$d"; then ok
+	else bad "patches/$p.diff: not a diff of $fam's $f at $c naming its license $l"; fi
+	grep -q "($p.diff)" results/wild/patches/README.md && ok || bad "patches/$p.diff is not in results/wild/patches/README.md"
+done
+[ "$np" -ge 3 ] && ok || bad "results/wild/patches has $np diffs, fewer than 3"
+
 # a missing maintainer paragraph stops the generator
 awk '/^<!-- para / { skip = 1; next } skip && /^<!-- end -->$/ { skip = 0; next } !skip' scripts/wild.md.in > "$T/nopara.md.in"
 if grep -q '^### ' docs/wild.md; then

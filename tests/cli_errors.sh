@@ -94,7 +94,7 @@ R sweep --threads -1 $S
 R sweep --ref-bits 10 $S
 R sweep --ref-bits 100000 $S
 R sweep --check-every 0 $S
-R sweep --precision half $S
+R sweep --precision quarter $S
 R sweep --dists nosuch $S
 R sweep --dists , $S
 R sweep --methods nosuch $S

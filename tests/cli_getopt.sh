@@ -56,7 +56,7 @@ same_msg() { # OPTION VALUE COMMANDS...
 same_msg --precision quarter sweep eval threshold bench
 # binary16: refused with its reason by the commands that do not measure it yet
 # (exit 2), measured by threshold where the build has _Float16 (issue 43)
-same_msg --precision half sweep bench
+same_msg --precision half bench
 if ./onbstudy threshold --precision half --consecutive 16 --logspaced 4 --azimuths 2 --out "$tmp/thh" > "$tmp/e" 2>&1; then
 	grep -q '^half ' "$tmp/e" && ok || bad "threshold --precision half printed no half row"
 else

@@ -13,7 +13,13 @@
 #     b1 = b2 = 0 (defect 1);
 #  3. list --axes --precision half: six rows per method, the half kernels'
 #     frames (frisvad NaN at -z, duff finite everywhere, physx 0 at +-y);
-#  4. refusals: --precision float with list --axes, --precision without
+#  4. sweep --precision half: half rows only (the default sweep has none),
+#     every input a binary16 value, the reference MPFR on every half
+#     evaluation (reference.csv: fallback rate 1), duff within 8u = 2^-8 on
+#     uniform with no non-finite basis, frisvad non-finite on threshold
+#     (n = -z), physx's defect 1 at +-y; --precision all's float rows equal
+#     --precision float's; two shards merge to the unsharded half run;
+#  5. refusals: --precision float with list --axes, --precision without
 #     --axes, eval --arith with half; a build without _Float16 refuses
 #     --precision half with exit 2 and says why.
 . "$(dirname "$0")/lib.sh"
@@ -46,6 +52,27 @@ grep -q '^frisvad,-z,nan,nan,' "$tmp/a.csv" && ok || bad "list --axes half: fris
 awk -F, '$1 == "duff" && $2 == "-z" && $3 == 1 && $4 == 0 && $5 == 0 && $6 == 0 && $7 == -1 && $8 == 0 { f = 1 } END { exit !f }' "$tmp/a.csv" && ok || bad "list --axes half: duff at -z: $(grep '^duff,-z' "$tmp/a.csv")"
 awk -F, '$1 == "physx" && $2 == "+y" && $3 == 0 && $4 == 0 && $5 == 0 && $6 == 0 && $7 == 0 && $8 == 0 { f = 1 } END { exit !f }' "$tmp/a.csv" && ok || bad "list --axes half: physx at +y: $(grep '^physx,+y' "$tmp/a.csv")"
 ./onbstudy list --axes --precision half > /dev/null && ok || bad "list --axes --precision half (table)"
+
+S="--methods duff,frisvad,physx --samples 256 --exhaustive-count 32 --grid 4x8 --threads 2 --quiet --seed 3"
+./onbstudy sweep --precision half $S --out "$tmp/sh" > /dev/null 2> "$tmp/err" && ok || bad "sweep --precision half: $(cat "$tmp/err")"
+sum="$tmp/sh/summary.csv"
+data() { grep -v '^#' "$1"; }
+[ "$(data "$sum" | tail -n +2 | cut -d, -f2 | sort -u)" = "half" ] && ok || bad "sweep half: precisions $(data "$sum" | tail -n +2 | cut -d, -f2 | sort -u | tr '\n' ' ')"
+[ "$(data "$sum" | tail -n +2 | wc -l)" -eq 21 ] && ok || bad "sweep half: want 3 methods x 7 distributions"
+col() { data "$sum" | awk -F, -v m="$1" -v d="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next } $1 == m && $3 == d { print $h[c] }'; }
+awk -v v="$(col duff uniform max_defect)" -v n="$(col duff uniform nonfinite)" 'BEGIN { exit !(v > 0 && v <= 8 * 2^-11 && n == 0) }' && ok || bad "sweep half: duff on uniform: max_defect $(col duff uniform max_defect), nonfinite $(col duff uniform nonfinite)"
+[ "$(col frisvad threshold nonfinite)" -gt 0 ] && ok || bad "sweep half: frisvad must be non-finite on threshold (n = -z)"
+[ "$(col physx threshold max_defect)" = 1 ] && ok || bad "sweep half: physx's defect on threshold: $(col physx threshold max_defect), want 1"
+data "$tmp/sh/reference.csv" | awk -F, 'NR > 1 && ($2 != "half" || $5 != 1) { bad = 1 } NR > 1 { n++ } END { exit bad || n != 3 }' && ok || bad "sweep half: reference.csv must say MPFR on every half evaluation: $(data "$tmp/sh/reference.csv")"
+# every input of worst.csv is a binary16 value: at most 11 significant bits
+data "$tmp/sh/worst.csv" | awk -F, 'NR > 1 { for (i = 11; i <= 13; i++) if ($i !~ /^-?0x(0p\+0|1(\.[0-9a-f]?[0-9a-f]?[048c]?)?p[-+][0-9]+)$/) { print $i; exit 1 } }' > "$tmp/nothalf" && ok || bad "sweep half: an input is not a binary16 value: $(cat "$tmp/nothalf")"
+./onbstudy sweep --precision all $S --dists uniform,threshold --out "$tmp/sa" > /dev/null 2>&1 && ok || bad "sweep --precision all"
+./onbstudy sweep --precision float $S --dists uniform,threshold --out "$tmp/sf" > /dev/null 2>&1 && ok || bad "sweep --precision float"
+[ "$(data "$tmp/sa/summary.csv" | grep ',float,')" = "$(data "$tmp/sf/summary.csv" | grep ',float,')" ] && ok || bad "sweep --precision all: its float rows differ from --precision float's"
+[ "$(data "$tmp/sa/summary.csv" | grep -c ',half,')" -eq 6 ] && ok || bad "sweep --precision all: want 6 half rows"
+for k in 0 1; do ./onbstudy sweep --precision half $S --shard $k/2 --out "$tmp/shs" > /dev/null 2>&1; done
+./onbstudy merge --out "$tmp/shm" "$tmp/shs/sweep-state-0-of-2.bin" "$tmp/shs/sweep-state-1-of-2.bin" > /dev/null 2>&1 && ok || bad "merge of the half shards"
+[ "$(data "$sum")" = "$(data "$tmp/shm/summary.csv")" ] && ok || bad "sweep half: two shards do not merge to the unsharded run"
 
 ./onbstudy list --axes --precision float > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --axes --precision float must exit 2"
 ./onbstudy list --precision half > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --precision without --axes must exit 2"

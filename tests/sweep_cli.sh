@@ -89,7 +89,7 @@ data "$tmp/th1/threshold.csv" > "$tmp/a"; data "$tmp/thm/threshold.csv" > "$tmp/
 
 # 5. bad input: one line on stderr, exit 2, nothing written
 mkdir -p "$tmp/keep"; echo "earlier" > "$tmp/keep/summary.csv"
-for args in "--samples 0" "--samples abc" "--samples 1e30" "--precision half" "--dists uniform,bogus" "--methods duff,nope" \
+for args in "--samples 0" "--samples abc" "--samples 1e30" "--precision quarter" "--dists uniform,bogus" "--methods duff,nope" \
             "--grid 1x1" "--shard 3/3" "--seed -1" "--threads -2" "--format xml" "--frobnicate" "--exhaustive-range 0.5:0.1" \
             "--ref-bits 10" "--methods duff,duff"; do
 	./onbstudy sweep $args --out "$tmp/keep" >/dev/null 2>"$tmp/err"

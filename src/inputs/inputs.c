@@ -196,9 +196,8 @@ static int build_threshold(dist_spec *d)
 {
 	list l = { NULL, 0, 0, d->prec, d->seed };
 	const int P = d->prec, NA = 8;
-	const double tiny[] = { 0.0, P == PREC_FLOAT ? 0x1p-149 : 0x1p-1074,
-	                        P == PREC_FLOAT ? FLT_MIN : DBL_MIN,
-	                        P == PREC_FLOAT ? FLT_EPSILON : DBL_EPSILON, 1e-4, 0x1.4f8b58p-17 /* 1e-5 */ };
+	const prec_format *F = prec_fmt(P);   /* binary16: 2^-24, 2^-14, 2^-10 */
+	const double tiny[] = { 0.0, F->sub_step, F->normal_min, 2.0 * F->u, 1e-4, 0x1.4f8b58p-17 /* 1e-5 */ };
 	size_t m, nm;
 	const onb_method *ms = onb_methods(&nm);
 	int k, s, a, b, ax;
@@ -239,7 +238,7 @@ static int build_threshold(dist_spec *d)
 	   unit to float rounding: luxcore's cut at sqrt(x^2 + y^2) = 1e-5) */
 	for (ax = 0; ax < 3; ax++)
 		for (s = -1; s <= 1; s += 2)
-			for (a = 0; a < (P == PREC_FLOAT ? 6 : 4); a++)
+			for (a = 0; a < (P != PREC_DOUBLE ? 6 : 4); a++) /* binary16 as float */
 				for (b = 0; b < 4; b++) {
 					double v[3];
 					v[ax] = s;
@@ -312,7 +311,7 @@ void dist_sample(const dist_spec *d, uint64_t i, double n[3], double loc[3], dou
 {
 	const uint64_t S = d->seed;
 	const int P = d->prec;
-	const double eps = P == PREC_FLOAT ? FLT_EPSILON : DBL_EPSILON;
+	const double eps = 2.0 * prec_fmt(P)->u;   /* FLT_EPSILON, DBL_EPSILON, 2^-10 */
 	*aux = 0.0;
 	switch (d->dist) {
 	case DIST_UNIFORM: {

@@ -281,7 +281,7 @@ static void batch_cells(const run_t *r, uint64_t g0, uint64_t g1, uint64_t *lo, 
 	*lo = ((uint64_t)p0 * NDIST + (uint64_t)d0) * nk;
 	*hi = ((uint64_t)p1 * NDIST + (uint64_t)d1 + 1) * nk;
 	*grid = 0;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++)
 			if (d == DIST_GRID && r->pl.nchunks[p][d] && r->pl.first[p][d] < g1 &&
 			    r->pl.first[p][d] + r->pl.nchunks[p][d] > g0)

@@ -32,7 +32,7 @@ volatile sig_atomic_t engine_stop;
 
 struct engine {
 	const sweep_plan *pl;
-	dist_spec ds[2][NDIST];
+	dist_spec ds[SWEEP_NPREC][NDIST];
 	int fail;                      /* ENGINE_NOMEM or ENGINE_DISAGREE, shared */
 	char why[512];
 };
@@ -42,7 +42,8 @@ typedef struct {
 	ref_ctx *rc1, *rc2;            /* the reference at B and B+64 bits */
 	reffast_ctx *fc;               /* the fast reference (NULL: MPFR only) */
 	/* per precision and kernel: evaluations, MPFR fallbacks, ref[] filled for the worst rows */
-	unsigned long long revals[2][SWEEP_MAX_KERNELS], rfall[2][SWEEP_MAX_KERNELS], rworst[2][SWEEP_MAX_KERNELS];
+	unsigned long long revals[SWEEP_NPREC][SWEEP_MAX_KERNELS], rfall[SWEEP_NPREC][SWEEP_MAX_KERNELS],
+	                   rworst[SWEEP_NPREC][SWEEP_MAX_KERNELS];
 	cell_t *loc;                   /* [kernel] of (p, d) */
 	int p, d;                      /* -1: loc is empty */
 	unsigned long long evals, checked;
@@ -57,7 +58,7 @@ engine *engine_new(const sweep_plan *pl)
 		return NULL;
 	}
 	e->pl = pl;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++) {
 			if (!pl->cfg.prec_on[p] || !pl->cfg.dist_on[d])
 				continue;
@@ -77,7 +78,7 @@ void engine_free(engine *e)
 	int p, d;
 	if (!e)
 		return;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++)
 			dist_free(&e->ds[p][d]);
 	free(e);
@@ -179,8 +180,10 @@ static void eval_one(engine *e, worker *w, sweep_state *st, int p, int d, uint64
 			continue; /* a float-only method, in double */
 		w->evals++;
 		w->revals[p][k]++;
-		if (!w->fc) {
+		if (!w->fc || p == PREC_HALF) {
 			ref_eval(w->rc1, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
+			if (w->fc)   /* the fast reference has no binary16: MPFR on every half input */
+				w->rfall[p][k]++;
 		} else {
 			const int f = reffast_eval(w->fc, &st->kernels[k], p, n, lv, d == DIST_NONUNIT, &m);
 			if (f == REFFAST_MPFR) {
@@ -288,7 +291,7 @@ int engine_run(engine *e, sweep_state *st, uint64_t g0, uint64_t g1, study_progr
 			int p, k;
 			st->cfg.evals += w.evals;
 			st->cfg.checked += w.checked;
-			for (p = 0; p < 2; p++)
+			for (p = 0; p < SWEEP_NPREC; p++)
 				for (k = 0; k < st->cfg.nk; k++) {
 					st->cfg.ref_evals[p][k] += w.revals[p][k];
 					st->cfg.ref_fallback[p][k] += w.rfall[p][k];
@@ -371,7 +374,7 @@ static void walk_one(sweep_state *s, ref_ctx *rc, int p, int k)
 							{
 								const long double len = sqrtl((long double)nn[0] * nn[0] + (long double)nn[1] * nn[1] +
 								                              (long double)nn[2] * nn[2]);
-								if (fabsl(len - 1.0L) > 2.0L * (p == PREC_FLOAT ? 0x1p-24L : 0x1p-53L))
+								if (fabsl(len - 1.0L) > 2.0L * (long double)prec_fmt(p)->u)
 									continue;
 							}
 							ref_eval(rc, K, p, nn, loc, 0, &m);
@@ -397,7 +400,7 @@ static void walk_one(sweep_state *s, ref_ctx *rc, int p, int k)
 int engine_walk(sweep_state *s, int threads)
 {
 	int p, fail = 0;
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < SWEEP_NPREC; p++) {
 		int k;
 		if (!s->cfg.prec_on[p] || !s->cfg.dist_on[DIST_THRESHOLD])
 			continue;

@@ -30,7 +30,9 @@ void plan_usage(FILE *f)
 	"Every method, both precisions, every distribution, against an MPFR reference.\n"
 	"Options take their value as '--opt value' or '--opt=value'.\n"
 	"  --methods a,b,...     methods (default all; 'onbstudy list'; frisvad_rotate too)\n"
-	"  --precision P         float, double or both (default both)\n"
+	"  --precision P         float, double, both, half or all (default both: binary16 is\n"
+	"                        opt-in; half runs libonb's binary16 kernels on unit vectors\n"
+	"                        rounded to binary16, against MPFR alone)\n"
 	"  --dists a,b,...       uniform,north,south,threshold,exhaustive,nonunit,grid (default all)\n"
 	"  --samples N           inputs per random distribution (default 32768; nonunit and\n"
 	"                        south get N, north N/2)\n"
@@ -114,7 +116,7 @@ static int plan_option(sweep_plan *pl, int v, const char *a)
 	long l;
 	switch (v) {
 	case O_METHODS: pl->methods = a; return 0;
-	case O_PREC: return cli_precision("--precision", a, cfg->prec_on);
+	case O_PREC: return cli_precision_half("--precision", a, cfg->prec_on);
 	case O_DISTS: return cli_name_list("--dists", a, cfg->dist_on, dist_names(), NDIST);
 	case O_SAMPLES: if (parse_u64("--samples", a, 1, 1ull << 36, &u)) return -1; cfg->samples = u; return 0;
 	case O_EXFROM:
@@ -173,6 +175,10 @@ int plan_parse(sweep_plan *pl, int argc, char **argv)
    consecutive ordinals). */
 static int64_t ord_of(double x, int prec)
 {
+	if (prec == PREC_HALF) {
+		const uint16_t b = prec_half_bits(x);
+		return (b >> 15) ? -(int64_t)(b & 0x7fffu) : (int64_t)b;
+	}
 	if (prec == PREC_FLOAT) {
 		const float f = (float)x;
 		int32_t i;
@@ -312,7 +318,7 @@ int plan_build(sweep_plan *pl)
 		study_default_run_dir(pl->out, sizeof pl->out);
 	pl->chunks = 0;
 	pl->evals = 0;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++) {
 			dist_spec ds;
 			pl->first[p][d] = pl->chunks;
@@ -336,7 +342,7 @@ int plan_build(sweep_plan *pl)
 int plan_locate(const sweep_plan *pl, uint64_t g, int *p, int *d, uint64_t *c)
 {
 	int pp, dd;
-	for (pp = 0; pp < 2; pp++)
+	for (pp = 0; pp < SWEEP_NPREC; pp++)
 		for (dd = 0; dd < NDIST; dd++)
 			if (g >= pl->first[pp][dd] && g < pl->first[pp][dd] + pl->nchunks[pp][dd]) {
 				*p = pp;
@@ -373,7 +379,7 @@ void plan_print(const sweep_plan *pl, FILE *f, double per_thread_rate, unsigned 
 	fprintf(f, "\nplan: seed %llu, MPFR %d bits (every %d-th input re-checked at %d), chunks of %d inputs\n",
 	        (unsigned long long)cfg->seed, cfg->ref_bits, cfg->check_every, cfg->ref_bits + 64, PLAN_CHUNK);
 	fprintf(f, "plan: reference %s\n", cfg->ref_mpfr ? "MPFR only (--ref mpfr)" : "fast, MPFR where it cannot decide (--ref fast)");
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++)
 			if (cfg->prec_on[p] && cfg->dist_on[d])
 				fprintf(f, "plan: %-6s %-10s %12llu inputs %9llu chunks\n", prec_name(p), dist_name(d),

@@ -24,7 +24,7 @@ typedef struct {
 	sweep_cfg cfg;
 	study_kernel kernels[SWEEP_MAX_KERNELS];
 	/* chunk layout: global chunk g of (p, d) is first[p][d] + c */
-	uint64_t first[2][NDIST], nchunks[2][NDIST], chunks;
+	uint64_t first[SWEEP_NPREC][NDIST], nchunks[SWEEP_NPREC][NDIST], chunks;
 	unsigned long long evals;      /* referenced evaluations this shard runs (before the walk) */
 	/* how to run it (changes no byte of the data) */
 	int threads;                   /* resolved: never 0 */

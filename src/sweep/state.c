@@ -15,7 +15,7 @@
 #include "common/options.h"
 #include "common/output.h"
 
-#define STATE_MAGIC "onbsweep-state4"
+#define STATE_MAGIC "onbsweep-state5" /* 5: three precisions (binary16) */
 
 /* The cells' layout, [prec][dist][kernel] (the slices' lo and hi count in it). */
 static size_t cell_index(const sweep_state *s, int prec, int dist, int k)
@@ -359,12 +359,12 @@ void cell_settle(cell_t *c)
 
 int sweep_alloc(sweep_state *s)
 {
-	size_t i, nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	size_t i, nc = SWEEP_NPREC * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * SWEEP_NPREC * (size_t)s->cfg.nk;
 	s->cells = malloc(nc * sizeof *s->cells);
 	s->g_err = malloc(g * sizeof *s->g_err);
 	s->g_bits = malloc(g * sizeof *s->g_bits);
 	s->g_b1 = malloc(3 * g * sizeof *s->g_b1);
-	s->g_done = calloc(2 * sweep_grid_cells(s) + 1, 1);
+	s->g_done = calloc(SWEEP_NPREC * sweep_grid_cells(s) + 1, 1);
 	if (!s->cells || !s->g_err || !s->g_bits || !s->g_b1 || !s->g_done) {
 		study_error("out of memory for the sweep's accumulators (grid %dx%d, %d methods)",
 		            s->cfg.grid_rows, s->cfg.grid_cols, s->cfg.nk);
@@ -450,12 +450,12 @@ int state_file_end(FILE *f, const char *path, int bad, const char *what)
 /* The parts of a sweep state after its cfg, in file order. */
 static int state_parts(const sweep_state *s, state_part *parts)
 {
-	const size_t nc = 2 * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	const size_t nc = SWEEP_NPREC * NDIST * (size_t)s->cfg.nk, g = sweep_grid_cells(s) * SWEEP_NPREC * (size_t)s->cfg.nk;
 	parts[0].p = s->cells; parts[0].bytes = nc * sizeof *s->cells;
 	parts[1].p = s->g_err; parts[1].bytes = g * sizeof *s->g_err;
 	parts[2].p = s->g_bits; parts[2].bytes = g * sizeof *s->g_bits;
 	parts[3].p = s->g_b1; parts[3].bytes = 3 * g * sizeof *s->g_b1;
-	parts[4].p = s->g_done; parts[4].bytes = 2 * sweep_grid_cells(s);
+	parts[4].p = s->g_done; parts[4].bytes = SWEEP_NPREC * sweep_grid_cells(s);
 	return 5;
 }
 
@@ -561,7 +561,7 @@ void sweep_cfg_add_counters(sweep_cfg *d, const sweep_cfg *s)
 	int p, k;
 	d->evals += s->evals;
 	d->checked += s->checked;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < d->nk; k++) {
 			d->ref_evals[p][k] += s->ref_evals[p][k];
 			d->ref_fallback[p][k] += s->ref_fallback[p][k];
@@ -602,7 +602,7 @@ static void grid_merge(sweep_state *d, const double *err, const double *bits, co
 	const size_t G = sweep_grid_cells(d);
 	size_t i;
 	int p, k;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (i = 0; i < G; i++)
 			if (done[(size_t)p * G + i])
 				for (k = 0; k < d->cfg.nk; k++) {
@@ -613,7 +613,7 @@ static void grid_merge(sweep_state *d, const double *err, const double *bits, co
 
 int sweep_merge_into(sweep_state *d, const sweep_state *s)
 {
-	size_t i, nc = 2 * NDIST * (size_t)d->cfg.nk;
+	size_t i, nc = SWEEP_NPREC * NDIST * (size_t)d->cfg.nk;
 	if (!sweep_cfg_same(&d->cfg, &s->cfg)) {
 		study_error("shards come from different sweeps (seed, methods, sizes or shard count differ)");
 		return -1;
@@ -629,8 +629,8 @@ int sweep_merge_into(sweep_state *d, const sweep_state *s)
 
 static size_t grid_bytes(const sweep_state *s)
 {
-	const size_t g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
-	return g * sizeof(double) * 5 + 2 * sweep_grid_cells(s);
+	const size_t g = sweep_grid_cells(s) * SWEEP_NPREC * (size_t)s->cfg.nk;
+	return g * sizeof(double) * 5 + SWEEP_NPREC * sweep_grid_cells(s);
 }
 
 size_t sweep_slice_bytes(const sweep_state *s, size_t lo, size_t hi, int grid)
@@ -640,22 +640,22 @@ size_t sweep_slice_bytes(const sweep_state *s, size_t lo, size_t hi, int grid)
 
 void sweep_slice_pack(const sweep_state *s, size_t lo, size_t hi, int grid, unsigned char *out)
 {
-	const size_t g = sweep_grid_cells(s) * 2 * (size_t)s->cfg.nk;
+	const size_t g = sweep_grid_cells(s) * SWEEP_NPREC * (size_t)s->cfg.nk;
 	memcpy(out, s->cells + lo, (hi - lo) * sizeof(cell_t));
 	if (grid) {
 		unsigned char *q = out + (hi - lo) * sizeof(cell_t);
 		memcpy(q, s->g_err, g * sizeof(double)); q += g * sizeof(double);
 		memcpy(q, s->g_bits, g * sizeof(double)); q += g * sizeof(double);
 		memcpy(q, s->g_b1, 3 * g * sizeof(double)); q += 3 * g * sizeof(double);
-		memcpy(q, s->g_done, 2 * sweep_grid_cells(s));
+		memcpy(q, s->g_done, SWEEP_NPREC * sweep_grid_cells(s));
 	}
 }
 
 int sweep_slice_merge(sweep_state *d, size_t lo, size_t hi, int grid, const unsigned char *in, size_t n)
 {
-	const size_t g = sweep_grid_cells(d) * 2 * (size_t)d->cfg.nk;
+	const size_t g = sweep_grid_cells(d) * SWEEP_NPREC * (size_t)d->cfg.nk;
 	size_t i;
-	if (lo > hi || hi > 2 * NDIST * (size_t)d->cfg.nk || n != sweep_slice_bytes(d, lo, hi, grid))
+	if (lo > hi || hi > SWEEP_NPREC * NDIST * (size_t)d->cfg.nk || n != sweep_slice_bytes(d, lo, hi, grid))
 		return -1;
 	for (i = 0; i < hi - lo; i++) {
 		cell_t c;
@@ -673,7 +673,7 @@ int sweep_slice_merge(sweep_state *d, size_t lo, size_t hi, int grid, const unsi
 void sweep_clear(sweep_state *s)
 {
 	size_t i;
-	for (i = 0; i < 2 * NDIST * (size_t)s->cfg.nk; i++)
+	for (i = 0; i < SWEEP_NPREC * NDIST * (size_t)s->cfg.nk; i++)
 		cell_init(&s->cells[i]);
-	memset(s->g_done, 0, 2 * sweep_grid_cells(s));
+	memset(s->g_done, 0, SWEEP_NPREC * sweep_grid_cells(s));
 }

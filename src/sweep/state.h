@@ -17,6 +17,9 @@
 /* grid cells: the maps keep per-cell arrays for every method (about 40
    bytes per cell, method and precision) */
 #define SWEEP_MAX_GRID_CELLS (1u << 20)
+/* The precisions a sweep holds, the index of its per-precision arrays:
+   float, double and binary16 (PREC_*, common/prec.h). */
+#define SWEEP_NPREC PREC_COUNT
 #define NWORST 5
 /* by_nz bins: n.z in [-1, 1]; log10(1 + n.z) in [-17, 0] for n.z <= 0;
    log10| |n|-1 | in [-9, -1]; log10(1 - n.z) in [-17, 0] for n.z >= 0 */
@@ -90,18 +93,19 @@ typedef struct {
 	uint64_t seed, samples, ex_values;
 	double ex_from;
 	int ex_azimuths, grid_rows, grid_cols, ref_bits, fma, check_every;
-	int prec_on[2], dist_on[NDIST];
+	int prec_on[SWEEP_NPREC], dist_on[NDIST];
 	int nk;
 	char names[SWEEP_MAX_KERNELS][64];
 	int shard_k, shard_n;
-	uint64_t counts[2][NDIST];    /* inputs per distribution (before the walk) */
+	uint64_t counts[SWEEP_NPREC][NDIST];    /* inputs per distribution (before the walk) */
 	uint64_t evals, checked;      /* referenced evaluations; two-precision checks */
 	/* the reference path: 0 the certified fast path (reffast.c)
 	   with MPFR where it cannot decide, 1 MPFR only (--ref mpfr); per
 	   precision and kernel, the evaluations, those that fell back to MPFR,
 	   and those whose ref[] MPFR filled in for the worst rows */
 	int ref_mpfr;
-	uint64_t ref_evals[2][SWEEP_MAX_KERNELS], ref_fallback[2][SWEEP_MAX_KERNELS], ref_worst[2][SWEEP_MAX_KERNELS];
+	uint64_t ref_evals[SWEEP_NPREC][SWEEP_MAX_KERNELS], ref_fallback[SWEEP_NPREC][SWEEP_MAX_KERNELS],
+	         ref_worst[SWEEP_NPREC][SWEEP_MAX_KERNELS];
 } sweep_cfg;
 
 typedef struct {

@@ -31,7 +31,7 @@ typedef void (*cell_fn)(FILE *f, const sweep_state *s, int p, int k, int d, void
 static void each_cell(FILE *f, const sweep_state *s, cell_fn fn, void *arg)
 {
 	int p, k, d;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			for (d = 0; d < NDIST; d++)
 				if (on(s, p, k) && s->cfg.dist_on[d])
@@ -82,7 +82,7 @@ void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, in
 {
 	unsigned long long ev = 0, fb = 0, wr = 0;
 	int p, k;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < s->cfg.nk; k++) {
 			ev += s->cfg.ref_evals[p][k];
 			fb += s->cfg.ref_fallback[p][k];
@@ -102,7 +102,7 @@ void sweep_print_reference(FILE *f, const sweep_state *s, const char *prefix, in
 		        prefix, wr);
 	if (!per_method)
 		return;
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			if (s->cfg.ref_evals[p][k])
 				fprintf(f, "%s  %-28s %-6s %12llu evaluations, fallback %.4f%%\n", prefix, s->kernels[k].name,
@@ -117,7 +117,7 @@ static void header(FILE *f, const sweep_state *s, int threads, double seconds, i
 	fprintf(f, "# mpfr precision: %d bits (never the default); reference re-evaluated at %d bits on %llu inputs, all agreeing to 2^-40\n",
 	        s->cfg.ref_bits, s->cfg.ref_bits + 64, (unsigned long long)s->cfg.checked);
 	fprintf(f, "# inputs:");
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (d = 0; d < NDIST; d++)
 			if (s->cfg.prec_on[p] && s->cfg.dist_on[d])
 				fprintf(f, " %s/%s=%llu", prec_name(p), dist_name(d), (unsigned long long)s->cfg.counts[p][d]);
@@ -263,7 +263,7 @@ static void reference_body(FILE *f, const sweep_state *s, int partial)
 	   log line (sweep_print_reference) gives it, marked as such. */
 	fprintf(f, "# per method and precision: referenced evaluations of the sampled inputs, and those the fast reference could not decide (MPFR computed them)\n");
 	fprintf(f, "method,precision,evaluations,mpfr_fallback,fallback_rate\n");
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < s->cfg.nk; k++)
 			if (s->cfg.ref_evals[p][k])
 				fprintf(f, "%s,%s,%llu,%llu,%.6g\n", s->kernels[k].name, prec_name(p),
@@ -372,7 +372,7 @@ static void grid_body(FILE *f, const sweep_state *s, int partial)
 	fprintf(f, "# equal-area grid: row r has n.z in [-1 + 2r/rows, -1 + 2(r+1)/rows], col c has azimuth in [2 pi c/cols, 2 pi (c+1)/cols]; inputs at cell centres\n");
 	fprintf(f, "# error: the per-input defect (frisvad_rotate: direction error); b1_jump: max |b1 - b1'| to the next cell in azimuth and in n.z\n");
 	fprintf(f, "method,precision,row,col,nz,phi,error,mean_bits,b1_jump\n");
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < SWEEP_NPREC; p++)
 		for (k = 0; k < s->cfg.nk; k++) {
 			if (!on(s, p, k))
 				continue;
@@ -404,7 +404,7 @@ static void print_table(const sweep_state *s)
 		if (s->cfg.dist_on[d])
 			printf(" %11s", "max err");
 	printf("\n");
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < SWEEP_NPREC; p++) {
 		if (!s->cfg.prec_on[p])
 			continue;
 		for (k = 0; k < s->cfg.nk; k++) {

@@ -17,6 +17,8 @@
 #                               max_normality, max_orthogonality, max_both)
 #   {{THH precision key field}}  the same from results/half/threshold/threshold.csv
 #                               (threshold --precision all: float, double, half)
+#   {{HS method distribution column}}  a half row of results/half/sweep/summary.csv
+#                               (sweep --precision half); HSU: it / 2^-11, in u
 #   {{X method precision column}}  a tradeoff.csv value
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
@@ -321,6 +323,20 @@ generate() {
 		}
 		close(f)
 		print "findings: no " key " " col " in " f > "/dev/stderr"; bad = 1; return "?"
+	}
+	# results/half/sweep/summary.csv (sweep --precision half): a value of the
+	# half row of method and distribution (HS), or it in units of u = 2^-11 (HSU)
+	function HS(m, d, col, inu,   f, line, n, a, i, h, nh, v) {
+		f = REF "/../half/sweep/summary.csv"; nh = 0
+		while ((getline line < f) > 0) {
+			if (line ~ /^#/) continue
+			n = split(line, a, ",")
+			if (!nh) { nh = n; for (i = 1; i <= n; i++) h[a[i]] = i; continue }
+			if (a[1] == m && a[2] == "half" && a[3] == d && (col in h)) { close(f); v = a[h[col]]
+				return inu && v !~ /nan|inf/ ? fmt(v * 2048) : fmt(v) }
+		}
+		close(f)
+		print "findings: no " m " half " d " " col " in " f > "/dev/stderr"; bad = 1; return "?"
 	}
 	# the fastest method of a precision and, when it is off the front, one
 	# method that beats it by the rule of onbstudy table (speeds within PTOLV% equal)
@@ -711,6 +727,8 @@ generate() {
 			else if (a[1] == "THTR" && nt == 3) rep = THTR(a[2], a[3])
 			else if (a[1] == "CONT" && nt == 3) rep = CONT(a[2], a[3])
 			else if (a[1] == "V" && nt == 4) rep = V(a[2], a[3], a[4], 0)
+			else if (a[1] == "HS" && nt == 4) rep = HS(a[2], a[3], a[4], 0)
+			else if (a[1] == "HSU" && nt == 4) rep = HS(a[2], a[3], a[4], 1)
 			else if (a[1] == "VC" && nt == 4) rep = V(a[2], a[3], a[4], 1)
 			else if (a[1] == "BZ" && nt == 5) rep = BZ(a[2], a[3], a[4], a[5])
 			else if (a[1] == "PCH" && nt == 2) rep = PCH(a[2])

@@ -66,10 +66,14 @@ awk -v v="$(col duff uniform max_defect)" -v n="$(col duff uniform nonfinite)" '
 data "$tmp/sh/reference.csv" | awk -F, 'NR > 1 && ($2 != "half" || $5 != 1) { bad = 1 } NR > 1 { n++ } END { exit bad || n != 3 }' && ok || bad "sweep half: reference.csv must say MPFR on every half evaluation: $(data "$tmp/sh/reference.csv")"
 # every input of worst.csv is a binary16 value: at most 11 significant bits
 data "$tmp/sh/worst.csv" | awk -F, 'NR > 1 { for (i = 11; i <= 13; i++) if ($i !~ /^-?0x(0p\+0|1(\.[0-9a-f]?[0-9a-f]?[048c]?)?p[-+][0-9]+)$/) { print $i; exit 1 } }' > "$tmp/nothalf" && ok || bad "sweep half: an input is not a binary16 value: $(cat "$tmp/nothalf")"
-./onbstudy sweep --precision all $S --dists uniform,threshold --out "$tmp/sa" > /dev/null 2>&1 && ok || bad "sweep --precision all"
-./onbstudy sweep --precision float $S --dists uniform,threshold --out "$tmp/sf" > /dev/null 2>&1 && ok || bad "sweep --precision float"
+./onbstudy sweep --precision all $S --dists uniform,south,threshold --out "$tmp/sa" > /dev/null 2>&1 && ok || bad "sweep --precision all"
+./onbstudy sweep --precision float $S --dists uniform,south,threshold --out "$tmp/sf" > /dev/null 2>&1 && ok || bad "sweep --precision float"
 [ "$(data "$tmp/sa/summary.csv" | grep ',float,')" = "$(data "$tmp/sf/summary.csv" | grep ',float,')" ] && ok || bad "sweep --precision all: its float rows differ from --precision float's"
-[ "$(data "$tmp/sa/summary.csv" | grep -c ',half,')" -eq 6 ] && ok || bad "sweep --precision all: want 6 half rows"
+[ "$(data "$tmp/sa/summary.csv" | grep -c ',half,')" -eq 9 ] && ok || bad "sweep --precision all: want 9 half rows"
+# table: the half rows beside bench.csv's float and double speeds, accuracy only
+./onbstudy table --bench results/reference/bench.csv --summary "$tmp/sa/summary.csv" --out "$tmp/tab" > "$tmp/tab.txt" 2>&1 && ok || bad "table with half rows: $(cat "$tmp/tab.txt")"
+data "$tmp/tab/tradeoff.csv" | awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next } $2 == "half" { n++; if ($h["pareto"] != "na" || $h["batch_mbases_1t"] != "nan" || !($h["max_defect_uniform"] > 0)) bad = 1 } END { exit bad || n != 3 }' && ok || bad "table: tradeoff.csv's half rows: $(grep ',half,' "$tmp/tab/tradeoff.csv")"
+grep -q '^# binary16 (sweep --precision half' "$tmp/tab.txt" && awk -v u="$(data "$tmp/sa/summary.csv" | awk -F, '$1 == "duff" && $2 == "half" && $3 == "uniform" { print $6 }')" '$1 == "duff" && $2 == "|" && $NF + 0 > 0 { if ($NF - u * 2048 < 0.01 && u * 2048 - $NF < 0.01) f = 1 } END { exit !f }' "$tmp/tab.txt" && ok || bad "table: no binary16 block with duff's max in u: $(tail -5 "$tmp/tab.txt")"
 for k in 0 1; do ./onbstudy sweep --precision half $S --shard $k/2 --out "$tmp/shs" > /dev/null 2>&1; done
 ./onbstudy merge --out "$tmp/shm" "$tmp/shs/sweep-state-0-of-2.bin" "$tmp/shs/sweep-state-1-of-2.bin" > /dev/null 2>&1 && ok || bad "merge of the half shards"
 [ "$(data "$sum")" = "$(data "$tmp/shm/summary.csv")" ] && ok || bad "sweep half: two shards do not merge to the unsharded run"

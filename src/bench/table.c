@@ -95,7 +95,8 @@ static int find_row(const tradeoff_row *rows, int n, const char *method, int pre
 
 static int parse_prec(const char *s)
 {
-	return strcmp(s, "double") == 0 ? 1 : strcmp(s, "float") == 0 ? 0 : -1;
+	return strcmp(s, "double") == 0 ? PREC_DOUBLE : strcmp(s, "float") == 0 ? PREC_FLOAT :
+	       strcmp(s, "half") == 0 ? PREC_HALF : -1;
 }
 
 typedef struct {
@@ -161,7 +162,7 @@ static int load_speeds(const char *bench_csv, row_set *s)
 		mode = c.fld[cmode];
 		prec = parse_prec(c.fld[cp]);
 		if (prec < 0) {
-			study_error("table: %s:%ld: precision '%s' is neither float nor double", bench_csv, c.lineno, c.fld[cp]);
+			study_error("table: %s:%ld: precision '%s' is not float, double or half", bench_csv, c.lineno, c.fld[cp]);
 			goto fail;
 		}
 		if (strcmp(mode, "batch") && strcmp(mode, "call_throughput"))
@@ -288,11 +289,30 @@ static int load_accuracy(const char *summary_csv, tradeoff_row *rows, int n)
 	return rc;
 }
 
+/* A row (accuracy only) for every binary16 method of summary.csv that
+   bench.csv has no speed for: bench measures float and double, sweep
+   --precision half adds half rows.  0, or -1 (reported). */
+static int add_half_rows(const char *summary_csv, row_set *s)
+{
+	csv_file c;
+	int km, kp, nf, rc = 0;
+	if (csv_open(&c, summary_csv) != 0)
+		return -1;
+	km = csv_col(c.hdr, c.nh, "method");
+	kp = csv_col(c.hdr, c.nh, "precision");
+	while (rc == 0 && km >= 0 && kp >= 0 && (nf = csv_next(&c)) > 0)
+		if (nf > km && nf > kp && strcmp(c.fld[kp], "half") == 0 && row_of(s, c.fld[km], PREC_HALF) < 0)
+			rc = -1;
+	fclose(c.f);
+	return rc;
+}
+
 int tradeoff_load(const char *bench_csv, const char *summary_csv, double tol, tradeoff_row **rows_out)
 {
 	row_set s = { NULL, 0, 0 };
 	*rows_out = NULL;
-	if (load_speeds(bench_csv, &s) != 0 || load_accuracy(summary_csv, s.v, s.n) != 0) {
+	if (load_speeds(bench_csv, &s) != 0 || add_half_rows(summary_csv, &s) != 0 ||
+	    load_accuracy(summary_csv, s.v, s.n) != 0) {
 		free(s.v);
 		return -1;
 	}
@@ -468,7 +488,7 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 	fprintf(f->f, "# floor (uniform): max_floor_uniform = the largest defect of the method's exact formula rounded once to the format; "
 	              "x_floor = max_defect_uniform / max_floor_uniform; *_floor_ratio_uniform: the per-input ratio's RMS and max (summary.csv)\n");
 	fprintf(f->f, "%s\n", TRADEOFF_COLUMNS);
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < PREC_COUNT; p++)
 		for (i = 0; i < n; i++) {
 			const tradeoff_row *r = &rows[i];
 			if (r->prec != p)
@@ -493,7 +513,10 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 	return study_out_commit(f);
 }
 
-/* The table on stdout: a float and a double block per method. */
+static void table_print_half(const tradeoff_row *rows, int n);
+
+/* The table on stdout: a float and a double block per method; then the
+   binary16 rows, if any. */
 static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 {
 	int i, j, p;
@@ -506,8 +529,8 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 		printf(" %7s %7s %5s %8s %8s %8s %6s%s", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor",
 		       p ? "\n" : " |");
 	for (i = 0; i < n; i++) {
-		if (rows[i].prec != 0 && find_row(rows, n, rows[i].method, 0) >= 0)
-			continue; /* printed with its float row */
+		if (rows[i].prec == PREC_HALF || (rows[i].prec != 0 && find_row(rows, n, rows[i].method, 0) >= 0))
+			continue; /* printed with its float row; binary16 below */
 		printf("%-24s |", rows[i].method);
 		for (p = 0; p < 2; p++) {
 			j = find_row(rows, n, rows[i].method, p);
@@ -524,6 +547,28 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 			print_cell(rows[j].x_floor, " %*.2f", 6);
 			printf("%s%s", rows[j].pareto ? "*" : " ", p ? "\n" : "|");
 		}
+	}
+	table_print_half(rows, n);
+}
+
+/* The binary16 rows (sweep --precision half), accuracy only: bench.csv
+   has no half speeds. */
+static void table_print_half(const tradeoff_row *rows, int n)
+{
+	int i, any = 0;
+	for (i = 0; i < n; i++) {
+		if (rows[i].prec != PREC_HALF)
+			continue;
+		if (!any++)
+			printf("\n# binary16 (sweep --precision half; no speeds: bench has no half rows), u = 2^-11\n"
+			       "%-24s | %8s %8s %8s %6s %8s\n", "method", "rmse uni", "max sth", "max thr", "xfloor", "max uni/u");
+		printf("%-24s |", rows[i].method);
+		print_cell(rows[i].rmse_uniform, " %*.1e", 8);
+		print_cell(rows[i].max_south, " %*.1e", 8);
+		print_cell(rows[i].max_threshold, " %*.1e", 8);
+		print_cell(rows[i].x_floor, " %*.2f", 6);
+		print_cell(rows[i].max_uniform * 2048.0, " %*.3g", 8);
+		printf("\n");
 	}
 }
 

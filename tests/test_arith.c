@@ -73,19 +73,6 @@ static double worst(cm *c, ref_ctx *rc, const cm_method *m, int prec, const doub
 	return fmax(w, emu_adversarial(c, rc, m, prec, n, p, 1, ch, &r));
 }
 
-/* A copy of p with every ulp or relative allowance times k (for the
-   emulation only: the mutation the bound check must catch). */
-static arith_profile widened(const arith_profile *p, double k)
-{
-	arith_profile w = *p;
-	int f, op;
-	for (f = 0; f < PREC_COUNT; f++)
-		for (op = 0; op < AR_NOPS; op++)
-			if (w.fmt[f].op[op].how == AR_ULP || w.fmt[f].op[op].how == AR_REL)
-				w.fmt[f].op[op].x *= k;
-	return w;
-}
-
 static void bounds_hold(cm *c, ref_ctx *rc)
 {
 	int mi, pi, prec, i, checked = 0;
@@ -117,7 +104,7 @@ static void bounds_hold(cm *c, ref_ctx *rc)
 static void mutation_caught(cm *c, ref_ctx *rc)
 {
 	const arith_profile *p = arith_find("vulkan");
-	arith_profile w = widened(p, WIDEN);
+	arith_profile w = arith_widen(p, WIDEN);
 	int mi, i, above = 0;
 	for (mi = 0; mi < NM; mi++)
 		for (i = 0; i < NIN; i++) {

@@ -159,6 +159,17 @@ double arith_err_rel(const arith_profile *p, int op, int f)
 	}
 }
 
+arith_profile arith_widen(const arith_profile *p, double k)
+{
+	arith_profile w = *p;
+	int f, op;
+	for (f = 0; f < PREC_COUNT; f++)
+		for (op = 0; op < AR_NOPS; op++)
+			if (w.fmt[f].op[op].how == AR_ULP || w.fmt[f].op[op].how == AR_REL)
+				w.fmt[f].op[op].x *= k;
+	return w;
+}
+
 static void allow_text(const arith_profile *p, int f, int op, char *b, size_t n)
 {
 	const ar_allow *a = &p->fmt[f].op[op];

@@ -95,6 +95,11 @@ double arith_unit(int f);
 int arith_bits(int f);
 int arith_emin(int f);
 
+/* A copy of p with every ulp or relative allowance k times wider (k >= 1):
+   a NONCONFORMING profile, for the emulation only, the mutation that the
+   bound checks must catch (tests/test_arith.c, sweep --arith --widen). */
+arith_profile arith_widen(const arith_profile *p, double k);
+
 /* A one-line description of the profile's assumptions (CSV provenance). */
 void arith_describe(const arith_profile *p, char *buf, size_t n);
 /* The table `onbstudy list --arith` prints. */

@@ -60,7 +60,21 @@ void plan_usage(FILE *f)
 	"  --plots               run scripts/plots.sh on the output when gnuplot is present\n"
 	"  --dry-run             print the plan (inputs, evaluations, estimated time) and stop;\n"
 	"                        the estimate times a few chunks of the real work on this machine\n"
-	"  --quiet               no progress line\n");
+	"  --quiet               no progress line\n"
+	"  --arith PROFILE       the emulated conforming implementations of an arithmetic\n"
+	"                        profile (onbstudy list --arith; docs/gpu.md) in place of the\n"
+	"                        kernels: per input the nearest, R random and the adversarial\n"
+	"                        one; the worst defect held to the proven bound at the input\n"
+	"                        and to the method's whole-sphere bound; DIR/arith-sweep.csv;\n"
+	"                        exit 1 when a defect exceeds a bound.  --samples and\n"
+	"                        --exhaustive-count default to 512 here; --fma, --shard, --ref,\n"
+	"                        --ref-bits, --check-every, --plots, --dry-run do not apply\n"
+	"  --emu-random R        with --arith: random implementations per input (default 4)\n"
+	"  --bounds CSV          with --arith: a certify --arith CSV of the same profile for the\n"
+	"                        whole-sphere bounds (default results/gpu/PROFILE/certify.csv)\n"
+	"  --widen K             with --arith, for tests: every ulp or relative allowance of the\n"
+	"                        emulation K times the profile's (a NONCONFORMING implementation:\n"
+	"                        the bounds must not hold for it; K >= 1)\n");
 }
 
 static void plan_defaults(sweep_plan *pl)
@@ -72,6 +86,8 @@ static void plan_defaults(sweep_plan *pl)
 	cfg->ex_azimuths = 4; cfg->grid_rows = 24; cfg->grid_cols = 48; cfg->ref_bits = 127;
 	cfg->check_every = 509; cfg->shard_k = 0; cfg->shard_n = 1;
 	cfg->prec_on[0] = cfg->prec_on[1] = 1;
+	pl->emu_random = 4;
+	pl->widen = 1.0;
 	for (d = 0; d < NDIST; d++)
 		cfg->dist_on[d] = 1;
 }
@@ -91,7 +107,8 @@ static int parse_grid(const char *v, sweep_cfg *cfg)
 }
 
 enum { O_METHODS = 256, O_PREC, O_DISTS, O_SAMPLES, O_EXFROM, O_EXCOUNT, O_EXRANGE, O_AZ, O_GRID, O_SEED,
-       O_THREADS, O_REFBITS, O_CHECK, O_REF, O_FMA, O_SHARD, O_OUT, O_FORMAT, O_PLOTS, O_QUIET, O_DRY };
+       O_THREADS, O_REFBITS, O_CHECK, O_REF, O_FMA, O_SHARD, O_OUT, O_FORMAT, O_PLOTS, O_QUIET, O_DRY,
+       O_ARITH, O_EMURANDOM, O_BOUNDS, O_WIDEN };
 
 static const struct option sweep_options[] = {
 	{ "methods", required_argument, NULL, O_METHODS }, { "precision", required_argument, NULL, O_PREC },
@@ -105,8 +122,47 @@ static const struct option sweep_options[] = {
 	{ "fma", no_argument, NULL, O_FMA }, { "shard", required_argument, NULL, O_SHARD },
 	{ "out", required_argument, NULL, O_OUT }, { "format", required_argument, NULL, O_FORMAT },
 	{ "plots", no_argument, NULL, O_PLOTS }, { "quiet", no_argument, NULL, O_QUIET },
-	{ "dry-run", no_argument, NULL, O_DRY }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+	{ "dry-run", no_argument, NULL, O_DRY }, { "arith", required_argument, NULL, O_ARITH },
+	{ "emu-random", required_argument, NULL, O_EMURANDOM }, { "bounds", required_argument, NULL, O_BOUNDS },
+	{ "widen", required_argument, NULL, O_WIDEN }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 };
+
+static int plan_arith(sweep_plan *pl, const char *a)
+{
+	char names[256];
+	if ((pl->arith = arith_find(a)))
+		return 0;
+	arith_names(names, sizeof names);
+	study_error("--arith: unknown profile '%s' (one of: %s)", a, names);
+	return -1;
+}
+
+/* --arith's own defaults and the options it refuses (and theirs without
+   it); 0 or -1 after a message. */
+static int plan_arith_check(sweep_plan *pl)
+{
+	static const char *const plain[] = { "--ref-bits", "--check-every", "--ref", "--fma", "--shard", "--format", "--plots",
+	                                     "--dry-run" };
+	static const int code[] = { O_REFBITS, O_CHECK, O_REF, O_FMA, O_SHARD, O_FORMAT, O_PLOTS, O_DRY };
+	size_t i;
+	if (!pl->arith) {
+		if (pl->emu_random != 4 || pl->bounds || pl->widen != 1.0) {
+			study_error("sweep: --emu-random, --bounds and --widen go with --arith");
+			return -1;
+		}
+		return 0;
+	}
+	for (i = 0; i < sizeof code / sizeof code[0]; i++)
+		if (pl->plain_only == code[i]) {
+			study_error("sweep --arith: %s does not apply (the emulated implementations are measured in MPFR at 127 bits, in one run)", plain[i]);
+			return -1;
+		}
+	if (!pl->samples_given)
+		pl->cfg.samples = 512;
+	if (!pl->excount_given)
+		pl->cfg.ex_values = 512;
+	return 0;
+}
 
 /* One option; 0 or -1 after a message. */
 static int plan_option(sweep_plan *pl, int v, const char *a)
@@ -114,16 +170,19 @@ static int plan_option(sweep_plan *pl, int v, const char *a)
 	sweep_cfg *cfg = &pl->cfg;
 	unsigned long long u;
 	long l;
+	if (v == O_REFBITS || v == O_CHECK || v == O_REF || v == O_FMA || v == O_SHARD || v == O_PLOTS || v == O_DRY ||
+	    v == O_FORMAT)
+		pl->plain_only = v;
 	switch (v) {
 	case O_METHODS: pl->methods = a; return 0;
 	case O_PREC: return cli_precision_half("--precision", a, cfg->prec_on);
 	case O_DISTS: return cli_name_list("--dists", a, cfg->dist_on, dist_names(), NDIST);
-	case O_SAMPLES: if (parse_u64("--samples", a, 1, 1ull << 36, &u)) return -1; cfg->samples = u; return 0;
+	case O_SAMPLES: if (parse_u64("--samples", a, 1, 1ull << 36, &u)) return -1; cfg->samples = u; pl->samples_given = 1; return 0;
 	case O_EXFROM:
 		if (parse_double("--exhaustive-from", a, &cfg->ex_from)) return -1;
 		if (!(cfg->ex_from >= -1.0 && cfg->ex_from <= 1.0)) { study_error("--exhaustive-from: must lie in [-1, 1]"); return -1; }
 		return 0;
-	case O_EXCOUNT: if (parse_u64("--exhaustive-count", a, 1, 1ull << 32, &u)) return -1; cfg->ex_values = u; return 0;
+	case O_EXCOUNT: if (parse_u64("--exhaustive-count", a, 1, 1ull << 32, &u)) return -1; cfg->ex_values = u; pl->excount_given = 1; return 0;
 	case O_EXRANGE: pl->range = a; return 0;
 	case O_AZ: if (parse_int("--azimuths", a, 1, 4096, &l)) return -1; cfg->ex_azimuths = (int)l; return 0;
 	case O_GRID: return parse_grid(a, cfg);
@@ -144,6 +203,13 @@ static int plan_option(sweep_plan *pl, int v, const char *a)
 	case O_PLOTS: pl->plots = 1; return 0;
 	case O_QUIET: pl->quiet = 1; return 0;
 	case O_DRY: pl->dry_run = 1; return 0;
+	case O_ARITH: return plan_arith(pl, a);
+	case O_EMURANDOM: if (parse_int("--emu-random", a, 0, 100000, &l)) return -1; pl->emu_random = (int)l; return 0;
+	case O_BOUNDS: pl->bounds = a; return 0;
+	case O_WIDEN:
+		if (parse_double("--widen", a, &pl->widen)) return -1;
+		if (!(pl->widen >= 1.0 && pl->widen <= 1e6)) { study_error("--widen: must lie in [1, 1e6]"); return -1; }
+		return 0;
 	}
 	return -1;
 }
@@ -164,6 +230,8 @@ int plan_parse(sweep_plan *pl, int argc, char **argv)
 		}
 	}
 	if (rc == 0 && cli_no_rest(&c) != 0)
+		rc = ONB_EXIT_USAGE;
+	if (rc == 0 && plan_arith_check(pl) != 0)
 		rc = ONB_EXIT_USAGE;
 	cli_end(&c);
 	if (rc == 1)

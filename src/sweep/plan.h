@@ -16,6 +16,7 @@
 
 #include <stdio.h>
 #include "sweep/state.h"
+#include "model/arith.h"
 
 #define PLAN_CHUNK 256
 
@@ -33,8 +34,15 @@ typedef struct {
 	int fmt;                       /* 0 table, 1 csv, 2 json */
 	int out_given;                 /* --out given (else results/latest follows the run) */
 	char out[4096];
+	/* --arith PROFILE (emusweep.h): the emulated conforming implementations
+	   instead of the kernels; NULL for the plain sweep */
+	const arith_profile *arith;
+	int emu_random;                /* random implementations per input      */
+	double widen;                  /* the mutation: allowances times this   */
+	const char *bounds;            /* certify --arith CSV of whole-sphere bounds */
 	/* parse-time only */
 	const char *methods, *range;
+	int samples_given, excount_given, plain_only; /* plain_only: an option --arith refuses */
 } sweep_plan;
 
 /* Options into pl (defaults first).  0; 1 after --help (printed); or

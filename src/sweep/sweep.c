@@ -22,6 +22,7 @@
 #include "common/output.h"
 #include "sweep/threshold.h"
 #include "sweep/writers.h"
+#include "sweep/emusweep.h"
 
 static void on_signal(int sig) { (void)sig; engine_stop = 1; }
 
@@ -135,6 +136,8 @@ int cmd_sweep(int argc, char **argv)
 		return rc == 1 ? 0 : rc;
 	if ((rc = plan_build(&pl)) != 0)
 		return rc;
+	if (pl.arith)
+		return sweep_outdir(pl.out) != 0 ? ONB_EXIT_USAGE : emusweep_run(&pl);
 	if (pl.dry_run)
 		return sweep_dry_run(&pl);
 	if (sweep_outdir(pl.out) != 0)

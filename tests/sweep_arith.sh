@@ -33,7 +33,7 @@ data "$T/w/arith-sweep.csv" | awk -F, 'NR > 1 && $19 > 0 { n++ } END { exit !(n 
 grep -q '^# widen: 2' "$T/w/arith-sweep.csv" && ok || bad "--widen 2: the CSV does not say it is mutated"
 
 # 3. bad input: exit 2 and one message, nothing written
-for args in "--arith metal" "--arith vulkan --fma" "--arith vulkan --shard 0/2" "--widen 2" "--arith vulkan --widen 0.5" \
+for args in "--arith metal" "--arith vulkan --fma" "--arith vulkan --precision half" "--arith vulkan --shard 0/2" "--widen 2" "--arith vulkan --widen 0.5" \
             "--arith vulkan --bounds results/gpu/d3d11/certify.csv" "--arith vulkan --bounds $T/none.csv"; do
 	./onbstudy sweep $args --methods duff --dists uniform --samples 4 --out "$T/bad" > /dev/null 2> "$T/err"; rc=$?
 	[ $rc -eq 2 ] && ok || bad "sweep $args: exit $rc (expected 2): $(cat "$T/err")"

@@ -157,6 +157,10 @@ static int plan_arith_check(sweep_plan *pl)
 			study_error("sweep --arith: %s does not apply (the emulated implementations are measured in MPFR at 127 bits, in one run)", plain[i]);
 			return -1;
 		}
+	if (pl->cfg.prec_on[PREC_HALF]) {
+		study_error("sweep --arith: float and double only (the profiles' binary16 rows are not emulated); --precision half does not apply");
+		return -1;
+	}
 	if (!pl->samples_given)
 		pl->cfg.samples = 512;
 	if (!pl->excount_given)

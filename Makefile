@@ -348,11 +348,12 @@ clean:
 MPICC ?= mpicc
 .PHONY: mpi
 mpi: onbstudy-mpi
-$(B)/mpi/onbstudy_mpi.o: src/mpi/onbstudy_mpi.c $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp
+MPI_OBJ = $(B)/mpi/onbstudy_mpi.o $(B)/mpi/certify_mpi.o
+$(MPI_OBJ): $(B)/mpi/%.o: src/mpi/%.c src/mpi/certify_mpi.h $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp
 	@mkdir -p $(@D)
 	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
-onbstudy-mpi: $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a
-	$(MPICC) $(BASE) $(OMP) -o $@ $(B)/mpi/onbstudy_mpi.o $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
+onbstudy-mpi: $(MPI_OBJ) $(STUDY_LIB) libonb.a
+	$(MPICC) $(BASE) $(OMP) -o $@ $(MPI_OBJ) $(STUDY_LIB) libonb.a $(STUDY_LIBS) -lpthread
 
 # The shader study: `make gpu` builds onbstudy-gpu, which runs libonb's
 # GLSL and HLSL kernels (include/libonb/onb.glsl, onb.hlsl) and the shader

@@ -68,6 +68,11 @@ typedef struct {
 
 static int group_of(const task *t) { return 2 * t->k + t->prec; }
 
+const cert_dist *cert_distribute;
+
+/* Rank 0 of onbstudy-mpi, or onbstudy: the process that writes and speaks. */
+static int writer(void) { return !cert_distribute || cert_distribute->rank == 0; }
+
 static void usage(FILE *f)
 {
 	fprintf(f,
@@ -487,16 +492,21 @@ typedef struct {
 	const int *pick;   /* refine_top: the regions of the round */
 	const struct image_pool_s *pool;   /* images_all: the pooled inputs */
 	run_ctl *ctl;
+	int flag;          /* the pass's CK_*: what its tasks commit */
 } task_set;
 
 /* ONB_CERT_KILL=PHASE:N (the tests of --resume): the process kills itself
-   after the N-th task of phase run, images or refine that it finished. */
+   after the N-th task of phase run, images or refine that it committed
+   (onbstudy-mpi: rank 0 commits every rank's results; with
+   ONB_CERT_KILL_RANK=R rank R kills itself after the N-th it finished). */
 static void kill_hook(run_ctl *c)
 {
-	const char *e = getenv("ONB_CERT_KILL");
+	const char *e = getenv("ONB_CERT_KILL"), *kr = getenv("ONB_CERT_KILL_RANK");
 	static const char *const names[] = { "run", "images", "refine" };
 	int p;
 	c->kill_phase = 0;
+	if ((cert_distribute ? cert_distribute->rank : 0) != (kr ? atoi(kr) : 0))
+		return;
 	for (p = 0; e && p < 3; p++)
 		if (strncmp(e, names[p], strlen(names[p])) == 0 && e[strlen(names[p])] == ':') {
 			c->kill_phase = 1 << p;
@@ -553,18 +563,46 @@ static void refine_one(cert_ctx *x, int j, void *arg)
 	commit(s, i, &r, CK_REFINED);
 }
 
+/* onbstudy-mpi: another rank's result of task i, on rank 0. */
+static void commit_remote(void *arg, int i, const cert_result *r)
+{
+	const task_set *s = arg;
+	commit(s, i, r, s->flag);
+}
+
+/* The pass's n tasks (task j is region task pick[j], or j), here or over
+   the ranks of onbstudy-mpi (cert_distribute). */
+static int run_pass(int n, const int *pick, cert_task_fn fn, task_set *s, study_progress *pr)
+{
+	cert_pass p;
+	if (!cert_distribute)
+		return run_tasks(n, fn, s, pr);
+	memset(&p, 0, sizeof p);
+	p.n = n;
+	p.pick = pick;
+	p.flag = s->flag;
+	p.fn = fn;
+	p.arg = s;
+	p.commit = commit_remote;
+	p.res = s->res;
+	p.flags = s->ctl->ck.flag;
+	p.nres = s->ctl->ck.nt;
+	p.failed = &s->ctl->failed;
+	return cert_distribute->run(&p);
+}
+
 /* Every region of every kernel and precision, in parallel. */
 static int run_all(const study_kernel *ks, const cm_method **ms, const cert_region *reg, const task *t, int nt,
                    cert_cli *c, cert_result *res, run_ctl *ctl)
 {
-	const task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl };
+	task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl, CK_RUN };
 	study_progress pr;
 	int fail;
 	memset(&pr, 0, sizeof pr);
-	pr.bar = !c->quiet && isatty(2);
+	pr.bar = !c->quiet && isatty(2) && writer();
 	pr.t0 = study_now();
 	pr.total = (unsigned long long)nt;
-	fail = run_tasks(nt, run_one, (void *)&s, &pr);
+	fail = run_pass(nt, NULL, run_one, &s, &pr);
 	c->run_s = study_now() - pr.t0;
 	if (pr.bar)
 		fprintf(stderr, "\n");
@@ -639,11 +677,11 @@ static int images_all(const study_kernel *ks, int nk, const cm_method **ms, cons
 		p.in = malloc((size_t)(p.off[ng] > 0 ? p.off[ng] : 1) * sizeof *p.in);
 	}
 	if (p.in) {
-		task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl };
+		task_set s = { ks, ms, reg, t, c, res, NULL, NULL, ctl, CK_IMAGES };
 		s.pool = &p;
 		memcpy(fill, p.off, (size_t)ng * sizeof *fill);
 		pool_pass(ks, nk, t, nt, res, &c->o, &p, fill, 1);
-		fail = run_tasks(nt, images_one, (void *)&s, NULL);
+		fail = run_pass(nt, NULL, images_one, &s, NULL);
 		c->pool = p.off[ng];
 	}
 	c->images_s = study_now() - t0;
@@ -760,8 +798,8 @@ static int refine_top(const study_kernel *ks, const cm_method **ms, const cert_r
 		return -1;
 	}
 	while (!fail && (np = refine_pick(t, nt, res, done, g, ng, pick)) > 0) {
-		const task_set s = { ks, ms, reg, t, c, res, pick, NULL, ctl };
-		fail = run_tasks(np, refine_one, (void *)&s, NULL);
+		task_set s = { ks, ms, reg, t, c, res, pick, NULL, ctl, CK_REFINED };
+		fail = run_pass(np, pick, refine_one, &s, NULL);
 		for (i = 0; i < np; i++)
 			done[pick[i]] = 1;
 		refine_gain(t, res, pick, np, g, ng);
@@ -1271,6 +1309,10 @@ static int prepare_state(cert_cli *c, const study_kernel *ks, int nk, const cm_m
 	int r;
 	if (make_groups(ks, nk, ms, reg, nreg, t, nt, c, ctl, gi))
 		return 2;
+	if (!writer()) {   /* onbstudy-mpi's other ranks: rank 0 decides the rest (share_state) */
+		kill_hook(ctl);
+		return 0;
+	}
 	if (c->check_keys)
 		return 1 + check_keys(c, ctl);
 	if (study_mkdir_p(dir))
@@ -1286,6 +1328,25 @@ static int prepare_state(cert_cli *c, const study_kernel *ks, int nk, const cm_m
 			return r > 0 ? 1 : -1;
 		ctl->dir = c->resume;
 	}
+	return 0;
+}
+
+/* onbstudy-mpi: rank 0's outcome of prepare_state (r) and the state it
+   loaded (--resume, --reuse) to every rank; prepare_state's value. */
+static int share_state(cert_cli *c, run_ctl *ctl, cert_result *res, unsigned char *frozen, int nf, int r)
+{
+	const cert_dist *d = cert_distribute;
+	const int mine = r;
+	d->share(&r, sizeof r);
+	if (d->agree(mine == 2) && r == 0)   /* a rank could not make its groups */
+		r = 2;
+	if (r != 0)
+		return r;
+	d->share(res, (size_t)ctl->ck.nt * sizeof *res);
+	d->share(ctl->ck.flag, (size_t)ctl->ck.nt);
+	d->share(frozen, (size_t)nf);
+	d->share(&c->nreused, sizeof c->nreused);
+	c->frozen = frozen;
 	return 0;
 }
 
@@ -1393,18 +1454,23 @@ int cmd_certify(int argc, char **argv)
 			}
 		}
 	}
-	if ((r = prepare_state(&c, ks, nk, ms, reg, nreg, t, nt, res, &ctl, gi, frozen, dir)) != 0) {
+	r = prepare_state(&c, ks, nk, ms, reg, nreg, t, nt, res, &ctl, gi, frozen, dir);
+	if (cert_distribute)
+		r = share_state(&c, &ctl, res, frozen, 2 * nk, r);
+	if (r != 0) {
 		rc = r > 0 ? r - 1 : ONB_EXIT_USAGE;
 		goto done;
 	}
 	if (run_all(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
 	    images_all(ks, nk, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
 	    refine_top(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
-	    write_outputs(dir, ks, nk, reg, t, nt, res, &c, &ctl))
+	    (writer() && write_outputs(dir, ks, nk, reg, t, nt, res, &c, &ctl)))
 		goto done;
-	print_summary(ks, nk, t, nt, res);
-	print_profile(ks, nk, t, nt, res, &c);
-	fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
+	if (writer()) {
+		print_summary(ks, nk, t, nt, res);
+		print_profile(ks, nk, t, nt, res, &c);
+		fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
+	}
 	rc = 0;
 done:
 	free(t);

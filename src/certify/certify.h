@@ -14,6 +14,45 @@
 #ifndef ONB_CERTIFY_CERTIFY_H
 #define ONB_CERTIFY_CERTIFY_H
 
+#include "bracket.h"
+#include "probe.h"
+
 int cmd_certify(int argc, char **argv);
+
+/* The distribution of certify's passes over processes: `onbstudy-mpi
+   certify` (src/mpi/certify_mpi.c) sets cert_distribute before it calls
+   cmd_certify on every rank; NULL (onbstudy) runs every task here.
+
+   Every rank runs cmd_certify in step: the same tasks, the same passes
+   (the first pass, the images pass, the refinement's rounds).  In a pass,
+   dist->run hands each task j that is not done (flags[i] & flag, i =
+   pick[j] or j) to some rank's thread, which calls fn(x, j, arg) there
+   (its result lands in res[i]); rank 0 gets every result and commits it
+   (commit: the results, the checkpoint, as onbstudy does), and at the
+   end of the pass every rank gets rank 0's res, flags and *failed, so
+   that the next pass starts from the same state everywhere.  Rank 0
+   alone writes files and speaks. */
+typedef struct {
+	int n;                       /* the pass's tasks j = 0..n-1           */
+	const int *pick;             /* task j's region task: pick[j] (NULL: j) */
+	int flag;                    /* CK_RUN, CK_IMAGES, CK_REFINED          */
+	void (*fn)(cert_ctx *x, int j, void *arg);
+	void *arg;
+	void (*commit)(void *arg, int i, const cert_result *r);   /* rank 0 */
+	cert_result *res;            /* every region task's result [nres]     */
+	unsigned char *flags;        /* every region task's CK_* [nres]       */
+	int nres;
+	int *failed;                 /* rank 0: a checkpoint failed, stop     */
+} cert_pass;
+
+typedef struct {
+	int rank;                    /* 0: writes the files and speaks        */
+	int (*run)(const cert_pass *p);          /* 0, or -1 (every rank)   */
+	void (*share)(void *p, size_t n);        /* rank 0's bytes to all   */
+	int (*agree)(int rc);                    /* the largest rc of all   */
+	const char *note;            /* provenance: "mpi: N ranks x T threads" */
+} cert_dist;
+
+extern const cert_dist *cert_distribute;
 
 #endif

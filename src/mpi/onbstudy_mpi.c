@@ -1,5 +1,6 @@
 /*
- * onbstudy_mpi.c - `mpirun -n N onbstudy-mpi sweep [the options of sweep]`:
+ * onbstudy_mpi.c - `mpirun -n N onbstudy-mpi sweep [the options of sweep]`
+ * (and `certify`: certify_mpi.c):
  * the sweep of src/sweep/sweep.c over MPI ranks, with OpenMP threads in
  * each rank, checkpoints and --resume.  Built by `make mpi` (mpicc); the
  * default build does not need MPI.
@@ -39,6 +40,7 @@
 #include "common/options.h"
 #include "common/output.h"
 #include "sweep/sweep.h"
+#include "certify_mpi.h"
 
 #define CKPT_NAME "sweep-checkpoint.bin"
 #define CKPT_MAGIC "onbckpt1"
@@ -156,6 +158,11 @@ static int check_identity(int argc, char **argv)
 static void mpi_usage(void)
 {
 	printf("usage: mpirun -n N onbstudy-mpi sweep [options of 'onbstudy sweep'] [MPI options]\n"
+	       "       mpirun -n N onbstudy-mpi certify [options of 'onbstudy certify']\n"
+	       "certify: the regions over MPI ranks from a work queue on rank 0, OpenMP threads in each\n"
+	       "(OMP_NUM_THREADS per rank); certify.csv's rows are those of 'onbstudy certify', and\n"
+	       "--resume DIR takes either driver's checkpoint.  'onbstudy certify --help' lists its options.\n"
+	       "sweep:\n"
 	       "The sweep over MPI ranks, OpenMP threads in each (--threads T per rank); the files are\n"
 	       "byte-identical to 'onbstudy sweep' with the same options.  MPI options:\n"
 	       "  --resume DIR           continue the run whose checkpoint is DIR/" CKPT_NAME "\n"
@@ -690,17 +697,23 @@ int main(int argc, char **argv)
 	static run_t r;
 	int provided, rc;
 	study_set_cmdline(argc, argv);
-	MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+	/* serialized: certify's threads on ranks > 0 each ask rank 0 for work */
+	MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
 	MPI_Comm_rank(MPI_COMM_WORLD, &rank);
 	MPI_Comm_size(MPI_COMM_WORLD, &nranks);
 	rc = check_identity(argc, argv);
+	if (rc == 0 && argc >= 2 && strcmp(argv[1], "certify") == 0) {
+		rc = certify_mpi(argc - 2, argv + 2, rank, nranks, provided);
+		MPI_Finalize();
+		return rc;
+	}
 	if (rc == 0 && (argc < 2 || strcmp(argv[1], "sweep") != 0)) {
 		if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
 			if (rank == 0) mpi_usage();
 			rc = -1;
 		} else {
 			if (rank == 0)
-				study_error("onbstudy-mpi runs 'sweep' only (usage: mpirun -n N onbstudy-mpi sweep [options])");
+				study_error("onbstudy-mpi runs 'sweep' and 'certify' (usage: mpirun -n N onbstudy-mpi sweep|certify [options])");
 			rc = ONB_EXIT_USAGE;
 		}
 	}

@@ -1,0 +1,79 @@
+#!/bin/sh
+# certify_mpi.sh - `mpirun -n N onbstudy-mpi certify` at a reduced size
+# (--quick, two methods, float):
+#  - on 1 rank x 2 threads, 2 ranks x 1 thread and 4 ranks x 1 thread
+#    (oversubscribed on 2 cores) certify.csv's rows and stdout are those
+#    of `onbstudy certify`, and its provenance names the ranks;
+#  - rank 1 killed (ONB_CERT_KILL_RANK=1 ONB_CERT_KILL=PHASE:N: it kills
+#    itself after its N-th task of that phase) in the first pass and in
+#    the images pass ends the job, non-zero, with the checkpoint and no
+#    certify.csv; the same command line with --resume DIR redoes what was
+#    in flight and writes the same rows; rank 0 killed in the images
+#    pass resumes with the single-process driver (one checkpoint format);
+#  - after the end the same command line says the work is done;
+#  - a bad option is refused once, exit 2, no hang.
+# Skipped (with a clear line) when Open MPI is not installed.
+. "$(dirname "$0")/lib.sh"
+if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
+	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh --mpi installs it)"
+fi
+make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+# ASan: Open MPI's never-freed allocations are not ours (as in tests/mpi.sh)
+if [ -n "${ONB_SANFLAGS:-}" ]; then export ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
+# the timeout is a hang guard, not a speed limit
+MPIRUN="timeout 600 mpirun --oversubscribe"
+T=$tmp
+Q="--quick --quiet --precision float --methods frisvad,rtow"
+data() { grep -v '^#' "$1"; }
+same() { # DIR WHAT: DIR's rows against the single-process run's
+	if data "$1/certify.csv" > "$1.data" 2> /dev/null && cmp -s "$T/ref.data" "$1.data"; then ok
+	else bad "$2: certify.csv's rows differ from onbstudy certify's"; fi
+}
+./onbstudy certify $Q --out "$T/ref" > "$T/ref.out" 2> "$T/ref.err" || bad "onbstudy certify failed: $(cat "$T/ref.err")"
+data "$T/ref/certify.csv" > "$T/ref.data"
+
+# 1. 1, 2 and 4 ranks: the same rows and stdout
+for nt in 1:2 2:1 4:1; do
+	n=${nt%:*}; t=${nt#*:}; d="$T/n$n"
+	OMP_NUM_THREADS=$t $MPIRUN -n $n ./onbstudy-mpi certify $Q --out "$d" > "$d.out" 2> "$d.err"
+	rc=$?
+	[ $rc -eq 0 ] && ok || bad "-n $n x $t threads: exit $rc: $(head -3 "$d.err")"
+	same "$d" "-n $n x $t threads"
+	cmp -s "$T/ref.out" "$d.out" && ok || bad "-n $n x $t threads: stdout differs"
+	grep -q "^# mpi: $n ranks x $t threads" "$d/certify.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
+	grep -q "regions computed per rank" "$d.err" && ok || bad "-n $n: no count of regions per rank"
+done
+
+# 2. a rank dies (rank 1 in the first pass and the images pass, rank 0 in
+#    the images pass), then the same command line resumes
+kill_resume() { # RANK PHASE:N RESUMER WHAT
+	d="$T/k$1-$2"
+	ONB_CERT_KILL_RANK=$1 ONB_CERT_KILL=$2 OMP_NUM_THREADS=1 \
+		$MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" --checkpoint-every 0 > /dev/null 2> "$d.err1"
+	rc=$?
+	[ $rc -ne 0 ] && [ $rc -ne 124 ] && [ -f "$d/certify-checkpoint.bin" ] && [ ! -f "$d/certify.csv" ] && ok ||
+		bad "$4: exit $rc, in $d: $(ls "$d" 2> /dev/null | tr '\n' ' ')"
+	OMP_NUM_THREADS=1 $3 $Q --resume "$d" --checkpoint-every 0 > "$d.out" 2> "$d.err"
+	rc=$?
+	[ $rc -eq 0 ] && grep -q 'continuing from its checkpoint' "$d.err" && ok || bad "$4, resumed: exit $rc: $(head -3 "$d.err")"
+	same "$d" "$4, resumed"
+	[ ! -e "$d/certify-checkpoint.bin" ] && ok || bad "$4: the checkpoint is left after the end"
+}
+kill_resume 1 run:2 "$MPIRUN -n 2 ./onbstudy-mpi certify" "rank 1 killed in the first pass"
+kill_resume 1 images:2 "$MPIRUN -n 2 ./onbstudy-mpi certify" "rank 1 killed in the images pass"
+kill_resume 0 images:4 "./onbstudy certify" "rank 0 killed in the images pass, resumed by onbstudy"
+
+# 3. after the end: done
+d="$T/k1-run:2"
+$MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" > /dev/null 2> "$T/done.err"
+rc=$?
+[ $rc -eq 0 ] && grep -q 'the work is done' "$T/done.err" && ok || bad "after the end: exit $rc: $(cat "$T/done.err")"
+
+# 4. a bad option: one message, exit 2
+$MPIRUN -n 2 ./onbstudy-mpi certify --budget 0 > /dev/null 2> "$T/bad.err"
+rc=$?
+n=$(grep -c '^onbstudy: .*--budget' "$T/bad.err")
+[ $rc -eq 2 ] && [ "$n" -eq 1 ] && ok || bad "--budget 0 on 2 ranks: exit $rc, $n messages: $(head -3 "$T/bad.err")"
+finish certify_mpi

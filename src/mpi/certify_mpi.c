@@ -32,12 +32,14 @@
 #include <time.h>
 #include <unistd.h>
 #include <fcntl.h>
+#include <sys/resource.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 #include "certify/certify.h"
 #include "common/output.h"
 #include "common/options.h"
+#include "common/progress.h"
 #include "certify_mpi.h"
 
 enum { TAG_DONE = 21, TAG_TASK = 22 };
@@ -241,10 +243,32 @@ static int run_pass(const cert_pass *p)
 	return agree(fail) ? -1 : 0;
 }
 
+static double cpu_seconds(void)
+{
+	struct rusage u;
+	if (getrusage(RUSAGE_SELF, &u) != 0)
+		return 0.0;
+	return (double)u.ru_utime.tv_sec + 1e-6 * (double)u.ru_utime.tv_usec +
+	       (double)u.ru_stime.tv_sec + 1e-6 * (double)u.ru_stime.tv_usec;
+}
+
+/* Rank 0, at the end: the wall and CPU seconds of the run and the regions
+   each rank computed (the measured scaling: scripts/certify-mpi-scaling.sh). */
+static void report(double wall, double cpu, int t)
+{
+	int r;
+	fprintf(stderr, "onbstudy-mpi: certify on %d ranks x %d threads: %.2f s wall, %.2f CPU seconds in all ranks; "
+	        "regions computed per rank (every pass):", nranks, t, wall, cpu);
+	for (r = 0; r < nranks; r++)
+		fprintf(stderr, " %ld", ran[r]);
+	fprintf(stderr, "\n");
+}
+
 int certify_mpi(int argc, char **argv, int rank_, int nranks_, int provided)
 {
 	static cert_dist d;
 	int t = 1, rc, saved = -1;
+	double t0, cpu, wall;
 	rank = rank_;
 	nranks = nranks_;
 	threads_ok = provided >= MPI_THREAD_SERIALIZED;
@@ -274,14 +298,14 @@ int certify_mpi(int argc, char **argv, int rank_, int nranks_, int provided)
 		study_error("out of memory");
 		return 1;
 	}
+	t0 = study_now();
+	cpu = cpu_seconds();
 	rc = cmd_certify(argc, argv);
-	if (rank == 0 && rc == 0) {
-		int r;
-		fprintf(stderr, "onbstudy-mpi: regions computed per rank (every pass):");
-		for (r = 0; r < nranks; r++)
-			fprintf(stderr, " %ld", ran[r]);
-		fprintf(stderr, "\n");
-	}
+	wall = study_now() - t0;
+	cpu = cpu_seconds() - cpu;
+	MPI_Allreduce(MPI_IN_PLACE, &cpu, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+	if (rank == 0 && rc == 0)
+		report(wall, cpu, t);
 	free(ran);
 	if (saved >= 0) {
 		fflush(stdout);

@@ -19,6 +19,7 @@ RANKS=${RANKS:-1 2 4}
 [ -x ./onbstudy-mpi ] || { echo "certify-mpi-scaling.sh: no ./onbstudy-mpi (make mpi)" >&2; exit 2; }
 ROOT=""
 [ "$(id -u)" = 0 ] && ROOT=--allow-run-as-root
+REV=$(git describe --always --dirty 2> /dev/null || echo unknown)   # before the runs: the code they ran
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$OUT"
@@ -44,9 +45,8 @@ while [ $r -le "$REPEATS" ]; do
 	r=$((r + 1))
 done
 {
-	./onbstudy-mpi --help > /dev/null 2>&1 || true
 	echo "# onbstudy-mpi certify scaling (scripts/certify-mpi-scaling.sh)"
-	echo "# revision: $(git describe --always --dirty 2> /dev/null || echo unknown)"
+	echo "# revision: $REV"
 	echo "# date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
 	echo "# machine: $(nproc) cores, $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1); $(mpirun --version 2>&1 | head -1)"
 	echo "# command: mpirun --oversubscribe -n N -x OMP_NUM_THREADS=1 ./onbstudy-mpi certify $OPTS"

@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "arith.h"
+#include "model_int.h"
 #include "common/prec.h"
 
 #define RN    { AR_RN, 0.0 }
@@ -112,6 +113,19 @@ const char *arith_op_name(int op)
 {
 	static const char *const names[AR_NOPS] = { "add", "sub", "mul", "div", "rcp", "sqrt", "rsqrt", "fma", "cvt" };
 	return op >= 0 && op < AR_NOPS ? names[op] : "?";
+}
+
+int arith_kind(int op)
+{
+	switch (op) {
+	case MVF_ADD: return AR_ADD;
+	case MVF_SUB: return AR_SUB;
+	case MVF_MUL: return AR_MUL;
+	case MVF_DIV: return AR_DIV;
+	case MVF_SQRT: return AR_SQRT;
+	case MVF_FMA: return AR_FMA;
+	default: return AR_CVT;
+	}
 }
 
 int arith_bits(int f) { return prec_fmt(f)->bits; }

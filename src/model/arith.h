@@ -79,6 +79,10 @@ void arith_names(char *buf, size_t n);
 /* A profile that changes nothing: NULL or ieee. */
 int arith_is_ieee(const arith_profile *p);
 const char *arith_op_name(int op);
+/* The AR_* kind of a model operation (model_int.h's MVF_ADD ... MVF_CVT):
+   the one mapping that the widening (mvf.c) and the emulation (emu.c)
+   share. */
+int arith_kind(int op);
 
 /* The allowance of operation op in format f (PREC_FLOAT or PREC_DOUBLE),
    after AR_SPLIT is resolved by the caller.  The bound on |r - v| for

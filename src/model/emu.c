@@ -235,19 +235,6 @@ static cv emu_round(cm *c, int k, int f, cv ia, cv ib)
 	return r;
 }
 
-static int kind_of(int op)
-{
-	switch (op) {
-	case MVF_ADD: return AR_ADD;
-	case MVF_SUB: return AR_SUB;
-	case MVF_MUL: return AR_MUL;
-	case MVF_DIV: return AR_DIV;
-	case MVF_SQRT: return AR_SQRT;
-	case MVF_FMA: return AR_FMA;
-	default: return AR_CVT;
-	}
-}
-
 /* An fma the profile keeps fused: its one rounding (operands as read). */
 static cv emu_fma(cm *c, int f, cv ia, cv ib, cv id)
 {
@@ -270,7 +257,7 @@ static cv emu_fma(cm *c, int f, cv ia, cv ib, cv id)
 
 cv cm__emu_op(cm *c, int op, int f, cv a, cv b, cv d)
 {
-	const int k = kind_of(op);
+	const int k = arith_kind(op);
 	const ar_allow *al = &c->ar->fmt[f].op[k];
 	if (al->how == AR_SPLIT) {
 		if (op == MVF_FMA)

@@ -2372,19 +2372,6 @@ cv mvf_read(mvf *m, cv ia)
 	return m->ar && !m->failed ? prof_read(m, ia, 0) : ia;
 }
 
-static int prof_kind(int op)
-{
-	switch (op) {
-	case MVF_ADD: return AR_ADD;
-	case MVF_SUB: return AR_SUB;
-	case MVF_MUL: return AR_MUL;
-	case MVF_DIV: return AR_DIV;
-	case MVF_SQRT: return AR_SQRT;
-	case MVF_FMA: return AR_FMA;
-	default: return AR_CVT;
-	}
-}
-
 /* Every allowed result is the exact one (see above). */
 static int prof_exact(mvf *m, int op, int f, const mval *a, const mval *b, const mval *r)
 {
@@ -2488,7 +2475,7 @@ static cv prof_rcp(mvf *m, int f, cv ib)
 
 static cv prof_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 {
-	const int k = prof_kind(op);
+	const int k = arith_kind(op);
 	const ar_allow *al = &m->ar->fmt[f].op[k];
 	if (m->failed)
 		return fresh(m, f);

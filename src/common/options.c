@@ -297,7 +297,8 @@ int cli_precision(const char *opt, const char *arg, int on[2])
 	if (i < 0)
 		return -1;
 	if (i >= 3) {
-		study_error("%s %s: this command does not measure binary16 yet (onbstudy threshold --precision half does)", opt, arg);
+		study_error("%s %s: this command does not measure binary16 yet "
+		            "(sweep, eval, threshold and list --axes take --precision half)", opt, arg);
 		return -1;
 	}
 	on[0] = i != 1;

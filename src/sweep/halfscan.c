@@ -18,10 +18,9 @@
  * | |b2|-1 |, |b1.n|, |b2.n|, |b1.b2|) in MPFR (ref_defects, exact to
  * 2^-50), in units of u = 2^-11; the largest D over the finite bases and
  * its input (hex); the count of inputs with a NaN or an infinity in the
- * basis, and the first of them.  This is the sweep's defect alone: the
- * forward error against the exact formula and the floor need the
- * branch rules of the families in half, which the study does not have
- * yet (`sweep --precision half` is refused).
+ * basis, and the first of them.  This is the sweep's defect alone;
+ * `sweep --precision half` measures the forward error and the floor too,
+ * on the families' binary16 branch rules (docs/reference.md, "Binary16").
  */
 #include <stdio.h>
 #include <stdlib.h>

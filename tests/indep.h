@@ -361,6 +361,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 /* the physics engines' ids first: indep_wild.h's alias table names ode */
 #include "indep_wild_b.h"
 #include "indep_wild_e.h"
+#include "indep_wild_d.h"
 #include "indep_wild.h"
 
 /* One entry per registry method: name, and both precisions by an id. */
@@ -369,7 +370,8 @@ enum { IM_NAIVE, IM_HM, IM_FRISVAD, IM_FRISVAD_MAX, IM_DUFF, IM_DUFF_BL, IM_STAR
        IM_PBRT3, IM_RTOW, IM_BLOG, IM_DUFF_WIDE, IM_DUFF_COMP };
 static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
-	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2))
+	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2) ||
+	    indep_wild_d_f(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naivef(n, b1, b2, k); break;
@@ -389,7 +391,8 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 }
 static void indep_d(int id, int k, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
-	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2))
+	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2) ||
+	    indep_wild_d_d(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naived(n, b1, b2, k); break;
@@ -438,6 +441,7 @@ static const indep_row T[] = {
 	{ "tangent_cross_z", onb_tangent_cross_z, onb_tangent_cross_zf, IM_BLOG, 0 },
 	{ "q2rtx", onb_q2rtx, onb_q2rtxf, IW_Q2RTX, 0 },
 	{ "filament", onb_filament, onb_filamentf, IW_FILAMENT, 0 },
+	{ "filament_hm", onb_filament_hm, onb_filament_hmf, IW_FILAMENT_HM, 0 },
 	{ "mitsuba3", onb_mitsuba3, onb_mitsuba3f, IW_MITSUBA3, 0 },
 	{ "cycles_cross111", onb_cycles_cross111, onb_cycles_cross111f, IW_CYCLES111, 0 },
 	{ "cycles_cross111_avx2", onb_cycles_cross111_avx2, onb_cycles_cross111_avx2f, IW_CYCLES111_AVX2, 0 },

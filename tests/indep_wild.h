@@ -403,6 +403,7 @@ static const indep_alias IA[] = {
 	{ "pasvulkan", "duff", IW_PASVULKAN, 1, 0 },
 	{ "ode", "bullet", IW_ODE, 1, 1 },  /* tests/indep_wild_b.h */
 	INDEP_WILD_E_ALIASES                /* tests/indep_wild_e.h */
+	INDEP_WILD_D_ALIASES                /* tests/indep_wild_d.h */
 };
 #define NIA (sizeof IA / sizeof IA[0])
 

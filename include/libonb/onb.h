@@ -27,6 +27,7 @@
  *     engines' shipped code (onb_method.prov: repository, commit, lines):
  *     onb_q2rtx            onb_q2rtxf             Quake II RTX construct_ONB_frisvad
  *     onb_filament         onb_filamentf          Filament frisvadKernel (y-up)
+ *     onb_filament_hm      onb_filament_hmf       Filament hughesMollerMethod
  *     onb_mitsuba3         onb_mitsuba3f          Mitsuba 3 coordinate_system
  *     onb_cycles_cross111  onb_cycles_cross111f   Blender Cycles make_orthonormals
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
@@ -945,6 +946,48 @@ static inline void ONB__K(filamentf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b2->x = 1.0f - n.x * n.x * va; b2->y = -n.x; b2->z = vb;
 }
 
+/* filament_hm (Filament libs/geometry/src/TangentSpaceMesh.cpp,
+   hughesMollerMethod, the HUGHES_MOLLER algorithm of the same file):
+   t = (-n.y, n.x, 0) when |n.x| > |n.z| + FLT_EPSILON, else (0, -n.z,
+   n.y); t = t * (1/sqrt(dot(t, t))) (filament::math normalize); b = n x t;
+   the frame {t, b, n}: b1 = t, b2 = b.  Handedness +1.  The exact formula
+   is eigen's with another branch rule (|x| = |z| + 2^-23).  The double
+   variant keeps FLT_EPSILON (2^-23).  No singular unit direction.
+   Tested bound (tests/test_lib.c): D <= 12u. */
+#define ONB_FILAMENT_HM_EPS 0x1p-23f /* std::numeric_limits<float>::epsilon() */
+static inline void ONB__K(filament_hm)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 t;
+	double r;
+	if (fabs(n.x) > fabs(n.z) + ONB__CAST(double, ONB_FILAMENT_HM_EPS)) {
+		t.x = -n.y; t.y = n.x; t.z = 0.0;
+	} else {
+		t.x = 0.0; t.y = -n.z; t.z = n.y;
+	}
+	r = 1.0 / sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+	t.x *= r; t.y *= r; t.z *= r;
+	*b1 = t;
+	b2->x = n.y * t.z - n.z * t.y;
+	b2->y = n.z * t.x - n.x * t.z;
+	b2->z = n.x * t.y - n.y * t.x;
+}
+static inline void ONB__K(filament_hmf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f t;
+	float r;
+	if (fabsf(n.x) > fabsf(n.z) + ONB_FILAMENT_HM_EPS) {
+		t.x = -n.y; t.y = n.x; t.z = 0.0f;
+	} else {
+		t.x = 0.0f; t.y = -n.z; t.z = n.y;
+	}
+	r = 1.0f / sqrtf(t.x * t.x + t.y * t.y + t.z * t.z);
+	t.x *= r; t.y *= r; t.z *= r;
+	*b1 = t;
+	b2->x = n.y * t.z - n.z * t.y;
+	b2->y = n.z * t.x - n.x * t.z;
+	b2->z = n.x * t.y - n.y * t.x;
+}
+
 /* filament_fixed (this project's fix of filament, not shipped code):
    Filament's formula for n.y >= 0 (-0 included), and below it Duff et
    al.'s lower-hemisphere formula on the same relabelled (n.z, n.x, n.y),
@@ -1843,7 +1886,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
-	X(q2rtx) X(filament) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(q2rtx) X(filament) X(filament_hm) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
 

@@ -282,6 +282,16 @@ void onb_filamenth(V n, V *b1, V *b2)
 	*b1 = hvec(vb, hneg(n.z), hsub(H1, hmul(hmul(n.z, n.z), va)));
 	*b2 = hvec(hsub(H1, hmul(hmul(n.x, n.x), va)), hneg(n.x), vb);
 }
+/* filament_hm: FLT_EPSILON (2^-23) is a binary16 subnormal, exact */
+void onb_filament_hmh(V n, V *b1, V *b2)
+{
+	V t;
+	if (habs(n.x) > hadd(habs(n.z), (H)ONB_FILAMENT_HM_EPS)) t = hvec(hneg(n.y), n.x, H0);
+	else                                                      t = hvec(H0, hneg(n.z), n.y);
+	t = hscale(t, hdiv(H1, hsqrt(hdot(t, t))));
+	*b1 = t;
+	*b2 = hcross(n, t);
+}
 void onb_filament_fixedh(V n, V *b1, V *b2)
 {
 	H a, b;

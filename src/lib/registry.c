@@ -61,6 +61,9 @@ static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a1659
 static const onb_provenance P_FILAMENT = { "github.com/google/filament", "e91b6eb2016b9c47f196936a6489434ff15084aa",
 	"libs/geometry/src/TangentSpaceMesh.cpp:169-183", "Apache-2.0", "C++", "float",
 	"IEEE (x86-64: no contraction; arm64 clang's within-expression fma not modelled)" };
+static const onb_provenance P_FILAMENT_HM = { "github.com/google/filament", "e91b6eb2016b9c47f196936a6489434ff15084aa",
+	"libs/geometry/src/TangentSpaceMesh.cpp:219-227", "Apache-2.0", "C++", "float",
+	"IEEE (x86-64: no contraction; arm64 clang's within-expression fma not modelled); abs(float) read as std::abs" };
 static const onb_provenance P_MITSUBA3 = { "github.com/mitsuba-renderer/mitsuba3", "b45b0a930275114de0f8c34e8cf52775e176ca9a",
 	"include/mitsuba/core/vector.h:117-138", "BSD-3-Clause", "C++ (Dr.Jit dfccdd7967547efce49fb4a929c39e4474ea73e2)",
 	"Float: float (scalar_rgb), double (scalar_*_double)",
@@ -126,6 +129,8 @@ static const onb_method onb__table[] = {
 	{ "filament", "filament", "Filament TangentSpaceMesh frisvadKernel: Frisvad Listing 2 rotated to y-up, t = -1 + FLT_EPSILON",
 	  "none exactly; error ~ eps/(1+n.y) just above t (O(1) in float)", "n.y < -1 + FLT_EPSILON",
 	  +1, 0, (double)(-0x1.fffffcp-1f), 0, ONB__PTRS(filament), &P_FILAMENT },
+	{ "filament_hm", "filament_hm", "Filament TangentSpaceMesh hughesMollerMethod: t = (-y, x, 0) if |x| > |z| + FLT_EPSILON else (0, -z, y), normalized; b = n x t",
+	  "none", "|n.x| = |n.z| + FLT_EPSILON", +1, 0, NAN, 0, ONB__PTRS(filament_hm), &P_FILAMENT_HM },
 	{ "mitsuba3", "duff_branchless", "Mitsuba 3 coordinate_system: Duff Listing 3 through Dr.Jit, b2.y = fmadd(y, y*a, s) unfused",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, ONB__EVAL_MITSUBA3, ONB__PTRS(mitsuba3), &P_MITSUBA3 },
 	{ "cycles_cross111", "cycles_cross111", "Blender Cycles make_orthonormals: b1 = normalize((1,1,1) x n), b2 = n x b1",
@@ -212,6 +217,11 @@ static const onb_alias onb__aliases[] = {
 	  "NaN z excepted: z >= 0 is false for NaN, so Falcor takes the lower branch and b1.z = +x where duff gives -x",
 	  { "github.com/NVIDIAGameWorks/Falcor", "eb540f6748774680ce0039aaf3ac9279266ec521", "Source/Falcor/Utils/Math/MathHelpers.slang:559-567",
 	    "BSD-3-Clause", "Slang and C++", "float", "IEEE (source level; the host copy MathHelpers.h:62-70 is the same)" } },
+	/* sign = z >= 0.0f ? 1.0f : -1.0f, Listing 3's body term for term: Falcor's function, so Listing 2's branch except for NaN z */
+	{ "rtxdi", "duff", "float", "RTXDI branchlessONB (shaders/HelperFunctions.hlsli)",
+	  "NaN z excepted: z >= 0 is false for NaN, so RTXDI takes the lower branch and b1.z = +x where duff gives -x",
+	  { "github.com/NVIDIAGameWorks/RTXDI", "4a21ce6593e830987f2c1d5db179b3df18cf0225", "shaders/HelperFunctions.hlsli:143-150",
+	    "LicenseRef-NVIDIA-RTX-SDKs", "HLSL", "float", "IEEE (source level; DXC/SPIR-V may contract into mad: not modelled)" } },
 	/* GLSL sign(0) = 0, so sign(sign(z) + 0.5) = +1 for +-0: Listing 2's branch */
 	{ "pasvulkan", "duff", "float", "PasVulkan getTangentSpaceBasisFromNormal, s = sign(sign(n.z) + 0.5)", "",
 	  { "github.com/BeRo1985/pasvulkan", "bc6681f3198632210c4382464c40a9ab163d1bc7", "src/assets/shaders/scene3d/tangentspacebasis.glsl:4-11",

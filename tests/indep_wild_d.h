@@ -1,0 +1,74 @@
+/*
+ * indep_wild_d.h - independent transliterations of the shader sources'
+ * orthonormal bases (issue 44, the shader group: the registry's rows and
+ * aliases rtxdi, ...), written from each source at the commit its registry
+ * row names, never from include/libonb/onb.h.  Included by tests/indep.h
+ * (its Vec3f/Vec3d, vf/vd), which calls indep_wild_d_f/indep_wild_d_d
+ * first.  Shader sources are read under IEEE arithmetic (HLSL/GLSL float
+ * as C float, no contraction); each function names how it reads the
+ * language's built-ins.  Ids 300 and up.
+ */
+#ifndef INDEP_WILD_D_H
+#define INDEP_WILD_D_H
+
+/* RTXDI shaders/HelperFunctions.hlsli branchlessONB (HLSL float): the
+   ternary sign (z >= 0.0f ? 1.0f : -1.0f, so -0 takes +1 and NaN -1),
+   products left to right as HLSL groups them. */
+static void ind_rtxdif(Vec3f n, Vec3f *b1, Vec3f *b2)
+{
+	float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+	float a = -1.0f / (sign + n.z);
+	float b = n.x * n.y * a;
+	*b1 = vf(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+	*b2 = vf(b, sign + n.y * n.y * a, -n.y);
+}
+
+/* Filament TangentSpaceMesh.cpp hughesMollerMethod (C++ float), with
+   filament::math's helpers: dot = r{} then r += lv[i]*rv[i] in index order,
+   length = std::sqrt(dot(v, v)), normalize(v) = v * (T(1) / length(v)),
+   cross(u, v) = (u.y v.z - u.z v.y, u.z v.x - u.x v.z, u.x v.y - u.y v.x);
+   abs(float) as std::abs.  The frame {t, b, n}: b1 = t, b2 = b. */
+#define FIL_HM(T, S, SQRT, ABS, V, MK) \
+static T filhm_dot_##S(V a, V b) { T r = 0; r += a.x * b.x; r += a.y * b.y; r += a.z * b.z; return r; } \
+static V filhm_cross_##S(V u, V v) { return MK(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x); } \
+static void ind_filament_hm##S(V n, V *b1, V *b2) \
+{ \
+	const T epsilon = (T)0x1p-23f;  /* std::numeric_limits<float>::epsilon() */ \
+	V b, t; \
+	T inv; \
+	if (ABS(n.x) > ABS(n.z) + epsilon) \
+		t = MK(-n.y, n.x, (T)0.0f); \
+	else \
+		t = MK((T)0.0f, -n.z, n.y); \
+	inv = (T)1 / SQRT(filhm_dot_##S(t, t)); \
+	t = MK(t.x * inv, t.y * inv, t.z * inv); \
+	b = filhm_cross_##S(n, t); \
+	*b1 = t; *b2 = b; \
+}
+FIL_HM(float, f, sqrtf, fabsf, Vec3f, vf)
+FIL_HM(double, d, sqrt, fabs, Vec3d, vd)
+
+enum { IW_RTXDI = 300, IW_FILAMENT_HM };
+/* this file's rows of indep_wild.h's alias table IA[] */
+#define INDEP_WILD_D_ALIASES \
+	{ "rtxdi", "duff", IW_RTXDI, 1, 0 },
+
+/* 1 when id is one of this file's (outputs written), else 0; a double
+   variant that the source does not have gives 0 too. */
+static int indep_wild_d_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
+{
+	switch (id) {
+	case IW_RTXDI: ind_rtxdif(n, b1, b2); return 1;
+	case IW_FILAMENT_HM: ind_filament_hmf(n, b1, b2); return 1;
+	default:       return 0;
+	}
+}
+static int indep_wild_d_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
+{
+	switch (id) {
+	case IW_FILAMENT_HM: ind_filament_hmd(n, b1, b2); return 1;
+	default:       return 0;
+	}
+}
+
+#endif /* INDEP_WILD_D_H */

@@ -48,7 +48,29 @@ static void ind_filament_hm##S(V n, V *b1, V *b2) \
 FIL_HM(float, f, sqrtf, fabsf, Vec3f, vf)
 FIL_HM(double, d, sqrt, fabs, Vec3d, vd)
 
-enum { IW_RTXDI = 300, IW_FILAMENT_HM };
+/* AMD Capsaicin src/core/src/math/sampling.hlsl GetOrthoVectors (HLSL
+   float): squared(v) = v * v (math.hlsl), the swizzles p2 = sel ? n : n.zyx
+   and b1 = sel ? b1 : b1.zyx as vectors, 1.0f / sqrt(...) as a division by
+   a correctly rounded sqrt, HLSL cross(a, b) = a.yzx * b.zxy - a.zxy * b.yzx.
+   fixed: this project's one-line fix, sel = abs(n.z) > abs(n.x). */
+#define CAPS(T, S, SQRT, ABS, V, MK) \
+static T caps_squared_##S(T v) { return v * v; } \
+static V caps_zyx_##S(V v) { return MK(v.z, v.y, v.x); } \
+static V caps_cross_##S(V a, V b) { return MK(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); } \
+static void ind_capsaicin##S(V n, V *b1, V *b2, int fixed) \
+{ \
+	int sel = fixed ? ABS(n.z) > ABS(n.x) : ABS(n.z) > 0; \
+	V p2 = sel ? n : caps_zyx_##S(n); \
+	T k = (T)1.0f / SQRT(caps_squared_##S(p2.z) + caps_squared_##S(n.y)); \
+	V b = MK((T)0.0f, -p2.z * k, n.y * k); \
+	b = sel ? b : caps_zyx_##S(b); \
+	*b1 = b; \
+	*b2 = caps_cross_##S(n, b); \
+}
+CAPS(float, f, sqrtf, fabsf, Vec3f, vf)
+CAPS(double, d, sqrt, fabs, Vec3d, vd)
+
+enum { IW_RTXDI = 300, IW_FILAMENT_HM, IW_CAPSAICIN, IW_CAPSAICIN_FIXED };
 /* this file's rows of indep_wild.h's alias table IA[] */
 #define INDEP_WILD_D_ALIASES \
 	{ "rtxdi", "duff", IW_RTXDI, 1, 0 },
@@ -60,6 +82,8 @@ static int indep_wild_d_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	switch (id) {
 	case IW_RTXDI: ind_rtxdif(n, b1, b2); return 1;
 	case IW_FILAMENT_HM: ind_filament_hmf(n, b1, b2); return 1;
+	case IW_CAPSAICIN: ind_capsaicinf(n, b1, b2, 0); return 1;
+	case IW_CAPSAICIN_FIXED: ind_capsaicinf(n, b1, b2, 1); return 1;
 	default:       return 0;
 	}
 }
@@ -67,6 +91,8 @@ static int indep_wild_d_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
 	switch (id) {
 	case IW_FILAMENT_HM: ind_filament_hmd(n, b1, b2); return 1;
+	case IW_CAPSAICIN: ind_capsaicind(n, b1, b2, 0); return 1;
+	case IW_CAPSAICIN_FIXED: ind_capsaicind(n, b1, b2, 1); return 1;
 	default:       return 0;
 	}
 }

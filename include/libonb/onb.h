@@ -28,6 +28,8 @@
  *     onb_q2rtx            onb_q2rtxf             Quake II RTX construct_ONB_frisvad
  *     onb_filament         onb_filamentf          Filament frisvadKernel (y-up)
  *     onb_filament_hm      onb_filament_hmf       Filament hughesMollerMethod
+ *     onb_capsaicin        onb_capsaicinf         AMD Capsaicin GetOrthoVectors
+ *     onb_capsaicin_fixed  onb_capsaicin_fixedf   this project: Capsaicin fixed
  *     onb_mitsuba3         onb_mitsuba3f          Mitsuba 3 coordinate_system
  *     onb_cycles_cross111  onb_cycles_cross111f   Blender Cycles make_orthonormals
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
@@ -988,6 +990,58 @@ static inline void ONB__K(filament_hmf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 	b2->z = n.x * t.y - n.y * t.x;
 }
 
+/* capsaicin (AMD Capsaicin src/core/src/math/sampling.hlsl,
+   GetOrthoVectors, HLSL float): when |n.z| > 0, k = 1/sqrt(z*z + y*y),
+   b1 = (0, (-z)*k, y*k); when n.z is +-0, k = 1/sqrt(x*x + y*y) and b1 =
+   (y*k, (-x)*k, 0) (the source's swizzles p2 = n.zyx, b1.zyx); b2 = n x b1.
+   Handedness +1.  Exactly b1 = unit(e_x x n) or unit(n x e_z), never
+   singular on the sphere; in rounding, z*z + y*y underflows near +-x with
+   n.z != 0: NaN at n = (1, 0, 1e-25) in float (k = inf, 0*inf), and the
+   squares lose precision in the subnormals above that.  The published
+   behaviour, kept; capsaicin_fixed is the fix.  The double variant is the
+   same code in double (underflow near 1e-162). */
+static inline void onb__capsaicin(onb_vec3 n, int sel, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 b;
+	double k;
+	if (sel) {
+		k = 1.0 / sqrt(n.z * n.z + n.y * n.y);
+		b.x = 0.0; b.y = -n.z * k; b.z = n.y * k;
+	} else {
+		k = 1.0 / sqrt(n.x * n.x + n.y * n.y);
+		b.x = n.y * k; b.y = -n.x * k; b.z = 0.0;
+	}
+	*b1 = b;
+	b2->x = n.y * b.z - n.z * b.y;
+	b2->y = n.z * b.x - n.x * b.z;
+	b2->z = n.x * b.y - n.y * b.x;
+}
+static inline void onb__capsaicinf(onb_vec3f n, int sel, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f b;
+	float k;
+	if (sel) {
+		k = 1.0f / sqrtf(n.z * n.z + n.y * n.y);
+		b.x = 0.0f; b.y = -n.z * k; b.z = n.y * k;
+	} else {
+		k = 1.0f / sqrtf(n.x * n.x + n.y * n.y);
+		b.x = n.y * k; b.y = -n.x * k; b.z = 0.0f;
+	}
+	*b1 = b;
+	b2->x = n.y * b.z - n.z * b.y;
+	b2->y = n.z * b.x - n.x * b.z;
+	b2->z = n.x * b.y - n.y * b.x;
+}
+static inline void ONB__K(capsaicin) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__capsaicin (n, fabs(n.z) > 0.0, b1, b2); }
+static inline void ONB__K(capsaicinf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__capsaicinf(n, fabsf(n.z) > 0.0f, b1, b2); }
+/* capsaicin_fixed (this project's fix of capsaicin, not shipped code): the
+   one-line change sel = abs(n.z) > abs(n.x) in place of abs(n.z) > 0, so
+   the vector normalized has squared length >= 1/2 - O(u) for unit n (as
+   Hughes-Moller's); the same formulas and the same frames at the six axes
+   (the tie |z| = |x| = 0 at +-y takes the n.z = 0 branch, as before). */
+static inline void ONB__K(capsaicin_fixed) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__capsaicin (n, fabs(n.z) > fabs(n.x), b1, b2); }
+static inline void ONB__K(capsaicin_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__capsaicinf(n, fabsf(n.z) > fabsf(n.x), b1, b2); }
+
 /* filament_fixed (this project's fix of filament, not shipped code):
    Filament's formula for n.y >= 0 (-0 included), and below it Duff et
    al.'s lower-hemisphere formula on the same relabelled (n.z, n.x, n.y),
@@ -1886,7 +1940,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
-	X(q2rtx) X(filament) X(filament_hm) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
 

@@ -104,10 +104,10 @@ static void model_hm(cm *c, int P, const onb_method *m, const cv n[3], cv out[6]
 	cm_formula_exact_n(c, 0, 1u << CQ_N2);   /* b1 unit and orthogonal to n, b2 = n x b1 */
 	if (cm_branch_abs(c, 0, CM_GT, n[0], ADD(az, K(0x1p-23)))) {
 		r = DIV(K(1.0), cm_sqrt(c, P, MADD(n[0], n[0], MUL(n[1], n[1]))));   /* t.y^2 fused, t = (-y, x, 0) */
-		out[0] = MUL(cm_neg(c, n[1]), r); out[1] = MUL(n[0], r); out[2] = K(0.0);
+		out[0] = MUL(cm_neg(c, n[1]), r); out[1] = MUL(n[0], r); out[2] = MUL(K(0.0), r);   /* 0 * inf = NaN */
 	} else {
 		r = DIV(K(1.0), cm_sqrt(c, P, MADD(n[1], n[1], MUL(n[2], n[2]))));   /* t.z^2 fused, t = (0, -z, y) */
-		out[0] = K(0.0); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
+		out[0] = MUL(K(0.0), r); out[1] = MUL(cm_neg(c, n[2]), r); out[2] = MUL(n[1], r);
 	}
 	cm_formula_zero_after(c, (1u << CQ_D2N) | (1u << CQ_D12));   /* b2 = n x b1 */
 	mk_cross_out(c, P, n, out, 1, 1, "ssf");  /* contracted as GCC fuses them */

@@ -292,6 +292,22 @@ void onb_filament_hmh(V n, V *b1, V *b2)
 	*b1 = t;
 	*b2 = hcross(n, t);
 }
+/* ---- capsaicin, capsaicin_fixed ---- */
+static void capsaicinh(V n, int sel, V *b1, V *b2)
+{
+	V b;
+	if (sel) {
+		const H k = hdiv(H1, hsqrt(hadd(hmul(n.z, n.z), hmul(n.y, n.y))));
+		b = hvec(H0, hmul(hneg(n.z), k), hmul(n.y, k));
+	} else {
+		const H k = hdiv(H1, hsqrt(hadd(hmul(n.x, n.x), hmul(n.y, n.y))));
+		b = hvec(hmul(n.y, k), hmul(hneg(n.x), k), H0);
+	}
+	*b1 = b;
+	*b2 = hcross(n, b);
+}
+void onb_capsaicinh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > H0, b1, b2); }
+void onb_capsaicin_fixedh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > habs(n.x), b1, b2); }
 void onb_filament_fixedh(V n, V *b1, V *b2)
 {
 	H a, b;

@@ -64,9 +64,21 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
 static int variant(const onb_method *m) { return m->norm == ONB__WILD_FIXED; }
 
+/* capsaicin: exactly none, but z*z + y*y underflows to 0 at +-x with n.z != 0 (NaN) */
+static const char *singular(const onb_method *m)
+{
+	return m->norm == ONB__WILD_FIXED ? "none" : "none exactly; in rounding, z*z + y*y below the smallest subnormal near n = +-x";
+}
+
+static int meets_singular(const onb_method *m, double nz_lo, double nz_hi, double phi_lo, double phi_hi)
+{
+	return m->norm != ONB__WILD_FIXED && nz_lo <= 0.0 && nz_hi >= 0.0 &&
+	       (phi_lo <= 0.0 || phi_hi >= 360.0 || (phi_lo <= 180.0 && phi_hi >= 180.0));
+}
+
 FAMILY_DECLARE(capsaicin);
 const study_family family_capsaicin = {
 	"capsaicin", FAMILY_PASSES(capsaicin), names, mpfr, FAMILY_PAIRS(capsaicin), variant,
-	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_no_exact_zero, model, 1, zero_any_n, singular, meets_singular,
 };
 #endif

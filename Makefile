@@ -260,7 +260,7 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/libonb/onb.h $(wildcard te
 # results are left out: they run no C code that other tests do not run
 # (sweep, threshold, bench and table have their own), so a sanitizer has
 # nothing more to find there, and they take minutes.
-SANITIZE_SKIP = tests/doc_links.sh tests/findings.sh tests/plots_cli.sh tests/wild.sh tests/charts_committed.sh
+SANITIZE_SKIP = tests/doc_links.sh tests/findings.sh tests/plots_cli.sh tests/wild.sh tests/charts_committed.sh tests/charts_small.sh
 TEST_SH = $(filter-out tests/lib.sh $(if $(SANITIZE),$(SANITIZE_SKIP)),$(wildcard tests/*.sh))
 # everything the tests need, built (in parallel with make -jN test-build:
 # CI does that first); `make test` itself then runs the tests one by one

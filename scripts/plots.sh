@@ -139,7 +139,7 @@ polecap() {
 	tm=$(echo "${tm:-0}" | awk '{ u = 2 ^ -24; k = int($1 / u + 0.5); print (k > 0 ? (k - 0.5) * u : 0) }')
 	pcv="cbmin=$3; cbmax=0; ymin=$1; ymax=$2; tfris=${tf:-0}; tmax=${tm:-0}"
 	gp polecap.gp "$pcv; files='$pcf'; names='$pcm'; out='$PCDIR/polecap_float'; ttl='float: the southern cap, $prov (unit inputs rounded to float; polecap.csv)'"
-	two=$(for m in frisvad duff; do [ -s "$W/pc_$m.dat" ] && printf '%s ' "$m"; done)
+	two=$(for m in frisvad duff; do [ -s "$W/pc_$m.dat" ] && printf '%s ' "$m"; done; true)
 	[ -n "$two" ] && gp polecap.gp "$pcv; single=1; files='$(for m in $two; do printf '%s ' "$W/pc_$m.dat"; done)'; names='$two'; out='$FIGS/polecap_frisvad_duff'; ttl='float near -z: frisvad fails in a band above its threshold, duff nowhere'"
 }
 
@@ -186,30 +186,47 @@ for P in float double; do
 		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_$P'; col=2; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs, $n per method (the defect$FRD)'"
 		set -- $(range "$files1" 3 0)
 		gp lines.gp "$b1 $common; files='$files1'; titles='$W/t1r.txt'; ceil=$C1; nf=$(nonfinite "$files1" "$C1"); out='$RUN/error_vs_nz_rms_$P'; col=3; logx=0; xmin=-1; xmax=1; ymin=$3; ymax=$4; xl='n.z of the input'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs, $n per method (the defect$FRD)'"
-	else skip "error_vs_nz_$P, error_vs_nz_rms_$P" "no uniform inputs in this run (sweep --dists with uniform)"
+	else
+		e="xl='n.z of the input'; note='this run has no uniform inputs (sweep --dists with uniform)'"
+		gp empty.gp "$e; out='$RUN/error_vs_nz_$P'; yl_key='YL_ERROR'; ttl='$P: largest error against n.z, uniform inputs'"
+		gp empty.gp "$e; out='$RUN/error_vs_nz_rms_$P'; yl_key='YL_ERROR_RMS'; ttl='$P: RMS error against n.z, uniform inputs'"
 	fi
-	n=$(samples "$first" "$P" south)
+	# the distributions this run has near the pole, named in the title
+	# ("south (N), exhaustive and uniform inputs" when it has all three)
+	spd=$(for d in south exhaustive uniform; do n=$(samples "$first" "$P" "$d"); [ -n "$n" ] && printf '%s %s\n' "$d" "$n"; done; true)
+	spd=$(echo "$spd" | awk 'NF { d[++k] = $1 (($1 == "south") ? " (" $2 ")" : "") } END { for (i = 1; i <= k; i++) s = s (i == 1 ? "" : (i == k ? " and " : ", ")) d[i]; print s }')
+	# (the "-z" slot named only when some input is n.z = -1 exactly)
+	sxl="1 + n.z of the input (distance from the south pole$(cat $files2 | awk -v z="$ZX" '$1 + 0 < z * 1.5 { f = 1 } END { if (f) printf "; -z: n.z = -1 exactly" }'))"
+	if [ -z "$(cat $files2)" ]; then
+		# no input near the pole in this run: the chart says so
+		gp empty.gp "out='$RUN/south_pole_$P'; xl='$sxl'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1'; note='no input of this run lies near n.z = -1 (it has no south, exhaustive or uniform inputs: sweep --dists)'"
+	else
 	titles "$files2" 2 "$C2" > "$W/t2.txt"
 	set -- $(range "$files2" 2 1)
-	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (distance from the south pole; -z: n.z = -1 exactly)'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: south (${n:-0}), exhaustive and uniform inputs $FRP'"
+	gp lines.gp "$b2 $common; files='$files2'; titles='$W/t2.txt'; ceil=$C2; nf=$(nonfinite "$files2" "$C2"); out='$RUN/south_pole_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='$sxl'; yl_key='YL_ERROR'; ttl='$P: near n.z = -1: $spd inputs $FRP'"
+	fi
 	# the README's figure (float): frisvad, frisvad_max and duff alone (those
 	# of them in the run), one panel, titled from the data (pole-title.awk)
-	sel=$(for m in frisvad frisvad_max duff; do echo "$pmethods" | grep -qx "$m" && printf '%s ' "$m"; done)
-	if [ "$P" = float ] && [ -n "$sel" ]; then
+	sel=$(for m in frisvad frisvad_max duff; do echo "$pmethods" | grep -qx "$m" && printf '%s ' "$m"; done; true)
+	sf=""; for m in $sel; do sf="$sf $W/sp_${P}_$m.dat"; done
+	if [ "$P" = float ] && [ -n "$sel" ] && [ -z "$(cat $sf)" ]; then
+		mkdir -p "$FIGS"
+		gp empty.gp "single=1; out='$FIGS/south_pole_frisvad_duff_$P'; xl='1 + n.z of the input'; yl_key='YL_DEFECT'; ttl='$P near n.z = -1: $(echo $sel | sed 's/ /, /g')'; note='no input of this run lies near n.z = -1 (sweep --dists with south, exhaustive or uniform)'"
+	elif [ "$P" = float ] && [ -n "$sel" ]; then
 		mkdir -p "$FIGS"
 		sf=""; sc=""; sd=""; sp=""; sw=""
 		for m in $sel; do sf="$sf $W/sp_${P}_$m.dat"; sc="$sc $(sty "$m" 3)"; sd="$sd $(sty "$m" 4)"; sp="$sp $(sty "$m" 5)"; sw="$sw $(sty "$m" 6)"; done
 		awk -v files="$sf" -v names="$sel" -v panels="$(echo $sel | sed 's/[^ ]*/1/g')" -v col=2 -v ce="$C2" -f "$HERE/series-titles.awk" > "$W/t2s.txt"
 		bs=$(bands fbs_$P "south exhaustive uniform" log10_1pnz log "$sel" "$(echo $sel | sed 's/[^ ]*/1/g')" "$sc")
 		set -- $(range "$sf" 2 1)
-		gp lines.gp "$bs here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input (-z: n.z = -1 exactly)'; yl_key='YL_DEFECT'; ttl='$(awk -F, -v p="$P" -v ds="south exhaustive uniform" -v methods="$sel" -f "$HERE/pole-title.awk" "$RUN/summary.csv")'"
+		gp lines.gp "$bs here='$HERE'; single=1; files='$sf'; titles='$W/t2s.txt'; colors='$sc'; dashes='$sd'; points='$sp'; widths='$sw'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; ptitles='-'; floor=$FLOOR; ceil=$C2; nf=$(nonfinite "$sf" "$C2"); out='$FIGS/south_pole_frisvad_duff_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; xl='1 + n.z of the input$(cat $sf | awk -v z="$ZX" '$1 + 0 < z * 1.5 { f = 1 } END { if (f) printf " (-z: n.z = -1 exactly)" }')'; yl_key='YL_DEFECT'; ttl='$(awk -F, -v p="$P" -v ds="south exhaustive uniform" -v methods="$sel" -f "$HERE/pole-title.awk" "$RUN/summary.csv")'"
 	fi
 	if [ -s "$(echo "$files6" | awk '{print $1}')" ]; then
 		n=$(samples "$first" "$P" nonunit)
 		titles "$files6" 2 "$C6" > "$W/t6.txt"
 		set -- $(range "$files6" 2 1)
 		gp lines.gp "$b6 $common; files='$files6'; titles='$W/t6.txt'; ceil=$C6; nf=$(nonfinite "$files6" "$C6"); out='$RUN/nonunit_$P'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; xl='| |n| - 1 | of the input (unitless)'; yl='largest error per bin, against n/|n| (unitless)'; ttl='$P: non-unit input, $n inputs per method $FRP'"
-	else skip "nonunit_$P" "no nonunit inputs in this run (sweep --dists with nonunit)"
+	else gp empty.gp "out='$RUN/nonunit_$P'; xl='| |n| - 1 | of the input (unitless)'; yl='largest error per bin, against n/|n| (unitless)'; ttl='$P: non-unit input'; note='this run has no nonunit inputs (sweep --dists with nonunit)'"
 	fi
 
 	# 3. maps and continuity, from grid.csv

@@ -6,7 +6,9 @@
 #   - finish with exit 0 and draw every line chart, an empty one as a
 #     chart whose note says why (not a missing file, not a silent stop:
 #     a run without duff once ended plots.sh after its first three charts);
-#   - name in its texts no method and no distribution the run lacks (the
+#   - name in its texts no method, distribution, failure or blank panel
+#     the run lacks (the map's note once spoke of failures near -z and
+#     blank panels in every run; the
 #     pole chart once read "south (0), exhaustive and uniform inputs" for
 #     a run of uniform inputs alone, and its axis named a "-z" slot it
 #     did not draw);
@@ -42,6 +44,7 @@ grep -q 'near n.z = -1: uniform inputs' "$T/a/south_pole_float.svg" && ok || bad
 grep -q 'exhaustive\|south (' "$T/a/south_pole_float.svg" && bad "pole chart names south or exhaustive inputs the run lacks" || ok
 grep -q 'no nonunit inputs' "$T/a/nonunit_float.svg" && ok || bad "the empty nonunit chart has no note"
 [ ! -e "$T/a/fig/south_pole_frisvad_duff_float.svg" ] && ok || bad "a run without frisvad and duff drew the frisvad/duff figure"
+grep -q 'failures within\|blank: no rows' "$T/a/maps_float.svg" && bad "the map of a run without failures or blank panels names them" || ok
 check "$T/a"
 
 # 2. frisvad alone, grid inputs only: nothing near the pole, no duff

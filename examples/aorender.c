@@ -751,9 +751,11 @@ static void diff_legend(unsigned char *strip, const char *what, double maxd)
 #define AY 0.45
 /* a brushed ball hangs under the ceiling, off the dome, so that normals
    far from -z (where the nonorm variants and the seams of duff, at n.z =
-   0, and hughes_moeller live) face the camera too */
-static const v3 BALL = { 0.45, 0.2, 1.05 };
-#define BALL_R 0.22
+   0, and hughes_moeller live) face the camera too; the camera looks 40
+   degrees off +z, so that the ball's normals with n.z = 0 face it (not
+   only its limb, as from straight below) */
+static const v3 BALL = { 0.2, 0.15, 0.95 };
+#define BALL_R 0.34
 static int hit_brushed(v3 o, v3 d, double *t, v3 *p, v3 *n)
 {
 	int any = hit(o, d, 1e30, t, p, n);
@@ -798,21 +800,38 @@ static void frame_exact(const onb_method *m, int fl, v3 n, v3 *b1, v3 *b2)
 	c.x = nh.y * b1->z - nh.z * b1->y; c.y = nh.z * b1->x - nh.x * b1->z; c.z = nh.x * b1->y - nh.y * b1->x;
 	*b2 = dot(c, *b2) < 0 ? mul(c, -1.0) : c;
 }
+/* Ward's lobe of light L for the view ray d at normal n, frame b1, b2 */
+static double lobe(v3 L, v3 d, v3 n, v3 b1, v3 b2)
+{
+	v3 h = norm(add(L, mul(d, -1.0)));
+	double hx = dot(h, b1) / AX, hy = dot(h, b2) / AY, hn = dot(h, n);
+	return exp(-(hx * hx + hy * hy) / (hn * hn));
+}
+/* the third light: its mirror direction at the ball's normal SEAM_N
+   (n.z = 0, where duff's b1 jumps: duff takes copysign(1, n.z), so b1's
+   z component changes sign, a turn of 2 |n.x| about n), so that the
+   highlight straddles the seam and the jump breaks it */
+static const v3 SEAM_N = { -0.85, -0.5, 0.0 };
+static v3 seam_light(v3 eye)
+{
+	v3 n0 = norm(SEAM_N), p0 = add(BALL, mul(n0, BALL_R)), v = norm(add(eye, mul(p0, -1.0)));
+	return norm(add(mul(n0, 2.0 * dot(n0, v)), mul(v, -1.0)));
+}
 static void render_brushed(const onb_method *m, int fl, int exact, double *img)
 {
 	/* two lights: one whose highlight lies on the dome and the ceiling
 	   (normals at -z), one whose highlight lies on the ball's flank, where
 	   |n.x| is large and the nonorm variants' b1 is short */
-	const v3 eye = { 0.0, 0.0, 0.2 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 }, lraw = { 0.25, 0.1, -1.0 }, l2raw = { -0.9, 0.0, -0.45 };
-	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up, L = norm(lraw), L2 = norm(l2raw);
+	const v3 eye = { -0.77, 0.0, 0.48 }, at = { 0.0, 0.0, 1.4 }, upv = { 0, 1, 0 }, lraw = { 0.25, 0.1, -1.0 }, l2raw = { -0.9, 0.0, -0.45 };
+	v3 fw = norm(add(at, mul(eye, -1.0))), rt, up, L = norm(lraw), L2 = norm(l2raw), L3 = seam_light(eye);
 	int x, y;
 	rt.x = fw.y * upv.z - fw.z * upv.y; rt.y = fw.z * upv.x - fw.x * upv.z; rt.z = fw.x * upv.y - fw.y * upv.x;
 	rt = norm(rt);
 	up.x = rt.y * fw.z - rt.z * fw.y; up.y = rt.z * fw.x - rt.x * fw.z; up.z = rt.x * fw.y - rt.y * fw.x;
 	for (y = 0; y < H; y++)
 		for (x = 0; x < W; x++) {
-			double sx = (2.0 * (x + 0.5) / W - 1.0) * 0.75 * W / H, sy = (1.0 - 2.0 * (y + 0.5) / H) * 0.75, t, hx, hy, hn;
-			v3 d = norm(add(fw, add(mul(rt, sx), mul(up, sy)))), p, n, b1, b2, h;
+			double sx = (2.0 * (x + 0.5) / W - 1.0) * 0.75 * W / H, sy = (1.0 - 2.0 * (y + 0.5) / H) * 0.75, t;
+			v3 d = norm(add(fw, add(mul(rt, sx), mul(up, sy)))), p, n, b1, b2;
 			if (!hit_brushed(eye, d, &t, &p, &n)) {
 				img[y * W + x] = 0;
 				continue;
@@ -820,13 +839,11 @@ static void render_brushed(const onb_method *m, int fl, int exact, double *img)
 			if (exact) frame_exact(m, fl, n, &b1, &b2);
 			else frame_vecs(m, fl, n, &b1, &b2);
 			/* a dim diffuse term shows the shapes; the lobes show the frame */
-			img[y * W + x] = 0.15 * fmax(0.0, dot(L, n));
-			h = norm(add(L, mul(d, -1.0)));
-			hx = dot(h, b1) / AX; hy = dot(h, b2) / AY; hn = dot(h, n);
-			img[y * W + x] += 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
-			h = norm(add(L2, mul(d, -1.0)));
-			hx = dot(h, b1) / AX; hy = dot(h, b2) / AY; hn = dot(h, n);
-			img[y * W + x] += 0.85 * exp(-(hx * hx + hy * hy) / (hn * hn));
+			img[y * W + x] = 0.15 * fmax(0.0, dot(L, n)) + 0.85 * (lobe(L, d, n, b1, b2) + lobe(L2, d, n, b1, b2));
+			/* the seam's light on the ball only (its mirror direction
+			   would light the dome elsewhere) */
+			if (dot(add(p, mul(BALL, -1.0)), add(p, mul(BALL, -1.0))) < 1.01 * BALL_R * BALL_R)
+				img[y * W + x] += 0.85 * lobe(L3, d, n, b1, b2);
 		}
 }
 /* --brushed FILE: "x y image reference" per pixel (y up), for

@@ -14,10 +14,19 @@ set xrange [-0.5:159.5]
 set yrange [-0.5:119.5]
 set size ratio -1
 unset xtics; unset ytics; unset key; unset border
-W = 1100; H = 540
-sub = "{/*0.75 left: the highlight, Ward's lobe, grooves along b1 (ball: normals far from -z; centre: the dome, within 4e-6 of -z; corners: -z exactly)}\n" . \
+W = 1100; H = 560
+# what to look for, by method (name comes escaped: "duff\_branchless")
+is(m) = (name eq m)
+look = (is("duff") || is("duff\\_branchless")) ? "duff's seam: at n.z = 0 its b1 turns by 62 deg, so the ball's lower-right highlight breaks into a V there" : \
+       is("hughes\\_moeller") ? "its seam, where |n.x| = |n.z|: the ball's middle highlight kinks there; elsewhere the same as duff's" : \
+       (is("frisvad") || is("frisvad\\_max")) ? "no seam on the ball: its lower-right highlight is one smooth arc (duff's breaks); frisvad: the ring on the dome near -z" : \
+       (is("naive\\_nonorm") || is("hughes\\_moeller\\_nonorm")) ? "b1 or b2 not unit: the ball's highlights stretched and moved (right: where)" : \
+       is("tangent\\_cross\\_z") ? "cyan: NaN on the flat ceiling, n = -z exactly; no seam on the ball: one smooth lower-right arc" : \
+       "a seam of the frame (b1 jumping between neighbouring normals) is a line across a highlight"
+sub = "{/*0.75 left: the highlight, Ward's lobe, grooves along b1; the camera looks 40 deg off +z}\n" . \
+      "{/*0.75 ball: normals far from -z, n.z = 0 on its lower right; right of centre: the dome, within 4e-6 of -z; left edge: the flat ceiling, -z exactly}\n" . \
       "{/*0.75 right: |image - the same method's frame made exact in double|: black for a correct frame; a defect shows as structure}\n" . \
-      "{/*0.75 a seam of the frame (b1 jumping between neighbouring normals) is a line across the highlight, in the left image}"
+      "{/*0.75 look for: ".look."}"
 ttl = sprintf("%s, %s: brushed metal, max |difference| %.3g, %d non-finite pixels", name, prec, maxd, nan)
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)

@@ -151,4 +151,21 @@ printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty floa
 expect2 "PLY without faces" --mesh "$tmp/points.ply" --method duff
 grep -q "no geometry" "$tmp/err" && ok || bad "PLY without faces: $(cat "$tmp/err")"
 
+# --brushed (the brushed-metal render of make render-brushed) separates the
+# methods as the metrics do: duff and duff_branchless match their own frame
+# made exact to rounding; the nonorm variants and float frisvad differ by
+# more than 0.05 somewhere; tangent_cross_z has NaN pixels (the ceiling at
+# n = -z exactly), duff none
+brushed() { $R --method "$1" --precision float --brushed "$tmp/b.dat" 2> "$tmp/err"; }
+for m in duff duff_branchless; do
+	l=$(brushed $m) && echo "$l" | awk '{ for (i = 1; i < NF; i++) if ($i == "frame|") mx = $(i + 1) } END { exit !(mx + 0 < 1e-5) }' &&
+		echo "$l" | grep -q 'NaN pixels 0$' && ok || bad "brushed $m: not its exact frame: $l $(cat "$tmp/err")"
+done
+for m in naive_nonorm hughes_moeller_nonorm frisvad; do
+	l=$(brushed $m) && echo "$l" | awk '{ for (i = 1; i < NF; i++) if ($i == "frame|") mx = $(i + 1) } END { exit !(mx + 0 > 0.05) }' &&
+		ok || bad "brushed $m: its defect does not show: $l $(cat "$tmp/err")"
+done
+l=$(brushed tangent_cross_z) && echo "$l" | grep -q 'NaN pixels [1-9]' && ok || bad "brushed tangent_cross_z: no NaN pixel: $l"
+[ "$(awk 'NF == 4' "$tmp/b.dat" | wc -l)" -eq 19200 ] && ok || bad "brushed: not 160x120 pixels in its data file"
+
 finish

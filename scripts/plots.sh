@@ -254,10 +254,11 @@ for P in float double; do
 			nrows=$(( (k + ncols - 1) / ncols ))
 			gres=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed -n 's/.*grid: \([0-9]*x[0-9]*\).*/\1/p')
 			# the note names failures near -z only when the run has some (a
-			# method whose largest defect on south inputs is 10x its
-			# uniform one and above 1e-4), and blank panels only when drawn
+			# method whose largest defect on south inputs is above 1e-4 and
+			# 10x its largest on the grid, what the map shows), and blank
+			# panels only when drawn
 			mnote="one input per cell of a ${gres:-?} grid: the inputs of its lowest row sit at 1 + n.z = $(echo "${gres%x*}" | awk '{ printf "%.2g", 1 / $1 }')"
-			fails=$(awk -F, -v p="$P" '!/^#/ && $2 == p && $3 == "south" { s[$1] = $6 + 0 } !/^#/ && $2 == p && $3 == "uniform" { u[$1] = $6 + 0 }
+			fails=$(awk -F, -v p="$P" '!/^#/ && $2 == p && $3 == "south" { s[$1] = $6 + 0 } !/^#/ && $2 == p && $3 == "grid" { u[$1] = $6 + 0 }
 				END { for (m in s) if (s[m] > 1e-4 && s[m] > 10 * u[m]) n++; print n + 0 }' "$RUN/summary.csv")
 			[ "$fails" -gt 0 ] && mnote="$mnote, so it cannot show the failures within 1e-4 of -z (the $([ -f "$PCDIR/polecap.csv" ] && echo pole-cap map || echo pole chart) shows them)"
 			[ "$have" -lt "$k" ] && mnote="$mnote; blank: no rows in $P"

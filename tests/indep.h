@@ -449,6 +449,7 @@ static const indep_row T[] = {
 	{ "cycles_cross111_avx2", onb_cycles_cross111_avx2, onb_cycles_cross111_avx2f, IW_CYCLES111_AVX2, 0 },
 	{ "embree", onb_embree, onb_embreef, IW_EMBREE, 0 },
 	{ "luxcore", onb_luxcore, onb_luxcoref, IW_LUXCORE, 0 },
+	INDEP_WILD_E_ROWS
 	{ "jolt", onb_jolt, onb_joltf, IW_JOLT, 0 },
 	{ "jolt_fma", onb_jolt_fma, onb_jolt_fmaf, IW_JOLT_FMA, 0 },
 	{ "bullet", onb_bullet, onb_bulletf, IW_BULLET, 0 },

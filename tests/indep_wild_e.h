@@ -11,7 +11,17 @@
  *   Tungsten TangentFrame(const Vec3f &n) (src/core/math/TangentFrame.hpp,
  *     since dd58767 "[Duff et al. 17]"): Vec3f, copysignf, products left
  *     to right; tangent is b1, bitangent b2.
- * Both sources are float only (no double variant: the rows claim float).
+ *   Nori coordinateSystem (src/common.cpp) with Eigen's Vector3f cross
+ *     (cross_impl: lhs(1)*rhs(2) - lhs(2)*rhs(1), ...); Frame(n) = (s, t, n).
+ *   Mitsuba 0.6 coordinateSystem (src/libcore/util.cpp) with its
+ *     TVector3 cross (vector.h), Float = float or double (DOUBLE_PRECISION).
+ *   Jolt Vec3::GetNormalizedPerpendicular's non-SSE path with std::max
+ *     and JPH::Sqrt, Vec3 / float as a 4-lane division, and the NEON Cross
+ *     (vmulq/vsubq on shuffled lanes), nothing fused (the arm64 build).
+ *   Cycles make_orthonormals as its arm64 kernel runs it (sse2neon):
+ *     _mm_dp_ps(a, a, 0x7F) as vaddvq_f32 of the products with lane 3
+ *     zeroed, vsqrtq_f32, vdivq_f32, and msub = vfmaq_f32(vnegq_f32(c), a, b).
+ * OSL's and Tungsten's sources are float only (their alias rows claim float).
  */
 #ifndef INDEP_WILD_E_H
 #define INDEP_WILD_E_H
@@ -45,26 +55,111 @@ static void ind_tungstenf(Vec3f normal, Vec3f *tangent, Vec3f *bitangent)
 	*bitangent = vf(b, sign + normal.y * normal.y * a, -normal.y);
 }
 
+/* Nori: if (std::abs(a.x()) > std::abs(a.y())) { float invLen = 1.0f / std::sqrt(a.x() * a.x() + a.z() * a.z());
+   c = Vector3f(a.z() * invLen, 0.0f, -a.x() * invLen); } else { ... (0.0f, a.z() * invLen, -a.y() * invLen) }
+   b = c.cross(a); */
+#define NORI_CS(T, S, V, MK, ABS, SQRT) \
+static void ind_nori_cs##S(V a, V *b, V *c) \
+{ \
+	V cc; \
+	if (ABS(a.x) > ABS(a.y)) { \
+		T invLen = (T)1.0f / SQRT(a.x * a.x + a.z * a.z); \
+		cc = MK(a.z * invLen, (T)0.0f, -a.x * invLen); \
+	} else { \
+		T invLen = (T)1.0f / SQRT(a.y * a.y + a.z * a.z); \
+		cc = MK((T)0.0f, a.z * invLen, -a.y * invLen); \
+	} \
+	*c = cc; \
+	/* Eigen cross_impl / Mitsuba cross(v1 = c, v2 = a) */ \
+	*b = MK((cc.y * a.z) - (cc.z * a.y), (cc.z * a.x) - (cc.x * a.z), (cc.x * a.y) - (cc.y * a.x)); \
+}
+NORI_CS(float, f, Vec3f, vf, fabsf, sqrtf)
+NORI_CS(double, d, Vec3d, vd, fabs, sqrt)
+
+/* Jolt non-SSE: float x = mF32[0], y = mF32[1], z = mF32[2]; float xx = x * x, yy = y * y, zz = z * z;
+   Vec3 perp_x(z, 0.0f, -x); Vec3 perp_y(0.0f, z, -y);
+   return (xx > yy ? perp_x : perp_y) / JPH::Sqrt(max(xx, yy) + zz); then NEON Cross. */
+#define JOLT_A64(T, S, V, MK, SQRT) \
+static T ja_max##S(T a, T b) { return (a < b) ? b : a; }   /* std::max */ \
+static void ind_jolt_arm64##S(V n, V *b1, V *b2) \
+{ \
+	T x = n.x, y = n.y, z = n.z; \
+	T xx = x * x, yy = y * y, zz = z * z; \
+	T px[4] = { z, (T)0.0f, -x, -x }, py[4] = { (T)0.0f, z, -y, -y }, q[4], l, t1[4], t2[4], t3[4], a[4]; \
+	const T *sel = xx > yy ? px : py; \
+	int i; \
+	l = SQRT(ja_max##S(xx, yy) + zz); \
+	for (i = 0; i < 4; i++) q[i] = sel[i] / l;            /* vdivq_f32(mValue, vdupq_n_f32(l)) */ \
+	a[0] = x; a[1] = y; a[2] = z; a[3] = z; \
+	/* Cross(this = n, inV2 = q): t1 = shuffle(q, 1,2,0,0) * n; t2 = shuffle(n, 1,2,0,0) * q; t3 = t1 - t2; shuffle(t3, 1,2,0,0) */ \
+	t1[0] = q[1]; t1[1] = q[2]; t1[2] = q[0]; t1[3] = q[0]; \
+	t2[0] = a[1]; t2[1] = a[2]; t2[2] = a[0]; t2[3] = a[0]; \
+	for (i = 0; i < 4; i++) { t1[i] = t1[i] * a[i]; t2[i] = t2[i] * q[i]; t3[i] = t1[i] - t2[i]; } \
+	*b1 = MK(q[0], q[1], q[2]); \
+	*b2 = MK(t3[1], t3[2], t3[0]); \
+}
+JOLT_A64(float, f, Vec3f, vf, sqrtf)
+JOLT_A64(double, d, Vec3d, vd, sqrt)
+
+/* Cycles arm64: a = (N.z - N.y, N.x - N.z, N.y - N.x) if N.x != N.y || N.x != N.z,
+   else (N.z - N.y, N.x + N.z, -N.y - N.x); lanes m = a*a, m[3] = 0; d = (m0 + m1) + (m2 + m3) (FADDP, FADDP);
+   a = a / sqrt(d) lane-wise; cross(N, a): x = N, y = shuffle<1,2,0,3>(a), z = shuffle<1,2,0,3>(N) * a;
+   r = vfmaq_f32(-z, x, y); b = shuffle<1,2,0,3>(r). */
+static void ind_cycles_neonf(Vec3f N, Vec3f *pa, Vec3f *pb)
+{
+	float a[4], m[4], x[4], y[4], z[4], r[4], d, nrm;
+	int i;
+	if (N.x != N.y || N.x != N.z) { a[0] = N.z - N.y; a[1] = N.x - N.z; a[2] = N.y - N.x; }
+	else                          { a[0] = N.z - N.y; a[1] = N.x + N.z; a[2] = -N.y - N.x; }
+	a[3] = 0.0f;
+	for (i = 0; i < 4; i++) m[i] = a[i] * a[i];
+	m[3] = 0.0f;
+	d = (m[0] + m[1]) + (m[2] + m[3]);
+	nrm = sqrtf(d);
+	for (i = 0; i < 4; i++) a[i] = a[i] / nrm;
+	x[0] = N.x; x[1] = N.y; x[2] = N.z; x[3] = 0.0f;
+	y[0] = a[1]; y[1] = a[2]; y[2] = a[0]; y[3] = a[3];
+	z[0] = x[1] * a[0]; z[1] = x[2] * a[1]; z[2] = x[0] * a[2]; z[3] = x[3] * a[3];
+	for (i = 0; i < 4; i++) r[i] = fmaf(x[i], y[i], -z[i]);
+	*pa = vf(a[0], a[1], a[2]);
+	*pb = vf(r[1], r[2], r[0]);
+}
+
 /* ids of this file (indep_wild.h's are 100+, indep_wild_b.h's 200+) */
-enum { IW_OSL_TESTRENDER = 500, IW_TUNGSTEN };
+enum { IW_OSL_TESTRENDER = 500, IW_TUNGSTEN, IW_NORI, IW_MITSUBA06, IW_JOLT_ARM64, IW_CYCLES_NEON };
 
 static int indep_wild_e_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
 	switch (id) {
 	case IW_OSL_TESTRENDER: ind_osl_from_normalf(n, b1, b2); return 1;
 	case IW_TUNGSTEN:       ind_tungstenf(n, b1, b2); return 1;
+	case IW_NORI:           /* Nori and Mitsuba 0.6: one text */
+	case IW_MITSUBA06:      ind_nori_csf(n, b1, b2); return 1;
+	case IW_JOLT_ARM64:     ind_jolt_arm64f(n, b1, b2); return 1;
+	case IW_CYCLES_NEON:    ind_cycles_neonf(n, b1, b2); return 1;
 	default:                return 0;
 	}
 }
 static int indep_wild_e_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
-	(void)id; (void)n; (void)b1; (void)b2;
-	return 0;   /* float-only sources */
+	switch (id) {   /* OSL and Tungsten: float-only sources */
+	case IW_NORI:           /* Nori is float only: the same arithmetic in double */
+	case IW_MITSUBA06:      ind_nori_csd(n, b1, b2); return 1;
+	case IW_JOLT_ARM64:     ind_jolt_arm64d(n, b1, b2); return 1;
+	default:                return 0;
+	}
 }
 
 /* rows of indep_wild.h's IA[]: name, target, id, float, double */
 #define INDEP_WILD_E_ALIASES \
 	{ "osl_testrender", "duff_branchless", IW_OSL_TESTRENDER, 1, 0 }, \
-	{ "tungsten", "duff_branchless", IW_TUNGSTEN, 1, 0 },
+	{ "tungsten", "duff_branchless", IW_TUNGSTEN, 1, 0 }, \
+	{ "mitsuba06", "nori", IW_MITSUBA06, 1, 1 }, \
+	{ "cycles_neon", "cycles_cross111_avx2", IW_CYCLES_NEON, 1, 0 },
+
+/* rows of indep.h's method table T (after luxcore's) */
+#define INDEP_WILD_E_ROWS \
+	{ "nori", onb_nori, onb_norif, IW_NORI, 0 }, \
+	{ "jolt_arm64", onb_jolt_arm64, onb_jolt_arm64f, IW_JOLT_ARM64, 0 },
 
 #endif /* INDEP_WILD_E_H */

@@ -35,6 +35,8 @@
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
  *     onb_embree           onb_embreef            Embree frame(N) (rsqrtss + Newton)
  *     onb_luxcore          onb_luxcoref           LuxCoreRender CoordinateSystem
+ *     onb_nori             onb_norif              Nori coordinateSystem (= Mitsuba 0.6)
+ *     onb_jolt_arm64       onb_jolt_arm64f        Jolt, its non-x86 build (scalar -x)
  *     onb_jolt             onb_joltf              Jolt GetNormalizedPerpendicular
  *     onb_jolt_fma         onb_jolt_fmaf            its default x86 build (fma)
  *     onb_bullet           onb_bulletf            Bullet btPlaneSpace1 (= ODE)
@@ -365,6 +367,8 @@ enum { ONB__EVAL_WIDE = 16, ONB__EVAL_COMP, ONB__EVAL_MITSUBA3, ONB__EVAL_FMSUB 
    build that fuses the cross product; physx_fixed and open3d_fixed, this
    project's one-line fixes of the engines' code. */
 enum { ONB__WILD_FMA = 32, ONB__WILD_FIXED };
+/* jolt_arm64: Jolt's non-SSE perpendicular (unary minus, std::max) */
+enum { ONB__WILD_SCALAR = 48 };
 
 static inline double onb__rsq(double x, int norm)
 {
@@ -1242,6 +1246,86 @@ static inline void ONB__K(luxcoref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 }
 
 /* ------------------------------------------------------------------ */
+/* nori (Nori src/common.cpp coordinateSystem; Mitsuba 0.6 is the same  */
+/* arithmetic: the alias mitsuba06) and jolt_arm64 (Jolt's non-SSE     */
+/* build of GetNormalizedPerpendicular)                                */
+/* ------------------------------------------------------------------ */
+/* nori: coordinateSystem(a, b, c), Frame(n) = (s, t, n) = (b, c, n):
+   if |a.x| > |a.y|: invLen = 1/sqrt(a.x*a.x + a.z*a.z),
+   c = (a.z*invLen, 0, -a.x*invLen); else invLen = 1/sqrt(a.y*a.y + a.z*a.z),
+   c = (0, a.z*invLen, -a.y*invLen); b = c.cross(a) (Eigen's cross, c
+   first).  b1 = b, b2 = c.  Handedness +1 ((c x a) x c = a).  The
+   zero component of c is the literal 0 (+0), -a.x*invLen is (-a.x)*invLen.
+   Threshold |x| = |y|.  No singular unit direction (squared length
+   >= 1/2 - O(eps)). */
+static inline void ONB__K(nori)(onb_vec3 a, onb_vec3 *b, onb_vec3 *c)
+{
+	onb_vec3 t;
+	if (fabs(a.x) > fabs(a.y)) {
+		const double inv = 1.0 / sqrt(a.x * a.x + a.z * a.z);
+		t.x = a.z * inv; t.y = 0.0; t.z = -a.x * inv;
+	} else {
+		const double inv = 1.0 / sqrt(a.y * a.y + a.z * a.z);
+		t.x = 0.0; t.y = a.z * inv; t.z = -a.y * inv;
+	}
+	*c = t;
+	b->x = t.y * a.z - t.z * a.y;
+	b->y = t.z * a.x - t.x * a.z;
+	b->z = t.x * a.y - t.y * a.x;
+}
+static inline void ONB__K(norif)(onb_vec3f a, onb_vec3f *b, onb_vec3f *c)
+{
+	onb_vec3f t;
+	if (fabsf(a.x) > fabsf(a.y)) {
+		const float inv = 1.0f / sqrtf(a.x * a.x + a.z * a.z);
+		t.x = a.z * inv; t.y = 0.0f; t.z = -a.x * inv;
+	} else {
+		const float inv = 1.0f / sqrtf(a.y * a.y + a.z * a.z);
+		t.x = 0.0f; t.y = a.z * inv; t.z = -a.y * inv;
+	}
+	*c = t;
+	b->x = t.y * a.z - t.z * a.y;
+	b->y = t.z * a.x - t.x * a.z;
+	b->z = t.x * a.y - t.y * a.x;
+}
+
+/* jolt_arm64: Jolt Vec3::GetNormalizedPerpendicular's non-SSE path (the
+   arm64/NEON build; JPH_CROSS_PLATFORM_DETERMINISTIC off) and the NEON
+   Cross: as jolt, but the perpendicular negates with unary minus
+   ((z, 0, -x) or (0, z, -y), so x = +0 gives -0 where jolt's 0 - x gives
+   +0), divided by sqrt(max(xx, yy) + zz) (the same value as jolt's
+   branch's square, but NaN where x*x is NaN: std::max(xx, yy) =
+   xx < yy ? yy : xx).  Build/CMakeLists.txt gives non-x86 builds
+   -ffp-contract=on: GCC 12 treats it as off, and clang contracts only
+   within an expression, which these statements and intrinsics are not:
+   nothing fuses (checked: aarch64-linux-gnu-gcc 12 -O2 -ffp-contract=on
+   under qemu-aarch64 gives these bits).  Handedness +1. */
+static inline void ONB__K(jolt_arm64)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double xx = n.x * n.x, yy = n.y * n.y, zz = n.z * n.z;
+	onb_vec3 p;
+	const double len = sqrt((xx < yy ? yy : xx) + zz);   /* std::max */
+	if (xx > yy) { p.x = n.z / len; p.y = 0.0 / len; p.z = -n.x / len; }
+	else         { p.x = 0.0 / len; p.y = n.z / len; p.z = -n.y / len; }
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(jolt_arm64f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float xx = n.x * n.x, yy = n.y * n.y, zz = n.z * n.z;
+	onb_vec3f p;
+	const float len = sqrtf((xx < yy ? yy : xx) + zz);   /* std::max */
+	if (xx > yy) { p.x = n.z / len; p.y = 0.0f / len; p.z = -n.x / len; }
+	else         { p.x = 0.0f / len; p.y = n.z / len; p.z = -n.y / len; }
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
 /* This project's own methods, not published ones: Duff's branchless */
 /* formula pushed to the accuracy floor, float only                  */
 /* ------------------------------------------------------------------ */
@@ -1941,6 +2025,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(nori) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
 

@@ -3,7 +3,8 @@
  * tangents: b1 = (z, 0, -x)/|.| when x^2 > y^2 (the squares rounded in
  * the format), else (0, z, -y)/|.|; b2 = n x b1.  jolt_fma (variant
  * ONB__WILD_FMA) is the same formula with the cross product fused as
- * Jolt's default x86 build compiles it.
+ * Jolt's default x86 build compiles it.  jolt_arm64 (variant
+ * ONB__WILD_SCALAR) negates with unary minus (Jolt's non-SSE path).
  */
 #include <math.h>
 #include "families/family.h"
@@ -54,14 +55,15 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const cv xx = MUL(n[0], n[0]), yy = MUL(n[1], n[1]), zz = MUL(n[2], n[2]);
+	const int sc = m->norm == ONB__WILD_SCALAR;   /* jolt_arm64: -x, sqrt(max(xx, yy) + zz) */
 	cv len;
 	int i;
 	if (cm_branch(c, 0, CM_GT, xx, yy)) {
-		len = cm_sqrt(c, P, ADD(xx, zz));
-		out[0] = DIV(n[2], len); out[1] = DIV(K(0.0), len); out[2] = DIV(SUB(K(0.0), n[0]), len);
+		len = cm_sqrt(c, P, sc ? MADD(n[2], n[2], xx) : ADD(xx, zz));
+		out[0] = DIV(n[2], len); out[1] = DIV(K(0.0), len); out[2] = DIV(sc ? cm_neg(c, n[0]) : SUB(K(0.0), n[0]), len);
 	} else {
-		len = cm_sqrt(c, P, ADD(yy, zz));
-		out[0] = DIV(K(0.0), len); out[1] = DIV(n[2], len); out[2] = DIV(SUB(K(0.0), n[1]), len);
+		len = cm_sqrt(c, P, sc ? MADD(n[2], n[2], yy) : ADD(yy, zz));
+		out[0] = DIV(K(0.0), len); out[1] = DIV(n[2], len); out[2] = DIV(sc ? cm_neg(c, n[1]) : SUB(K(0.0), n[1]), len);
 	}
 	if (m->norm != ONB__WILD_FMA) {
 		mk_cross_out(c, P, n, out, 1, 1, P == PREC_FLOAT ? "fff" : "ssf");  /* as GCC fuses them (vectorized in double) */

@@ -2,6 +2,9 @@
  * pbrt_v3.c - pbrt-v3's CoordinateSystem (src/core/geometry.h): b1 is n
  * with a component zeroed, normalized; b2 = n x b1, the cross product
  * widened to double in float (pbrt-v3's Cross).
+ * nori (Nori's and Mitsuba 0.6's coordinateSystem): the same branch rule;
+ * c = (z, 0, -x) or (0, z, -y) normalized, b1 = c x n, b2 = c, in the
+ * format.
  */
 #include <math.h>
 #include "families/family.h"
@@ -17,6 +20,10 @@ int FAMILY_BRANCH(pbrt_v3)(const onb_method *m, int prec, const double n[3])
 		return fabsf((float)n[0]) > fabsf((float)n[1]);
 	return fabs(n[0]) > fabs(n[1]);
 }
+int FAMILY_BRANCH(nori)(const onb_method *m, int prec, const double n[3])
+{
+	return FAMILY_BRANCH(pbrt_v3)(m, prec, n);
+}
 #endif
 
 #if FAMILY_PAIR_PASS
@@ -24,6 +31,16 @@ void FAMILY_PAIR(pbrt_v3)(const onb_method *m, int br, const double loc[3], cons
 {
 	(void)m; (void)loc;
 	xperp_cross(br ? 1 : 0, -1, n, r1, r2, bad);
+}
+/* b2 = (z, 0, -x) or (0, z, -y) normalized, b1 = b2 x n = -(n x b2) */
+void FAMILY_PAIR(nori)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
+{
+	xv t[3];
+	int i;
+	(void)m; (void)loc;
+	xperp_cross(br ? 1 : 0, br ? +1 : -1, n, r2, t, bad);
+	for (i = 0; i < 3; i++)
+		r1[i] = xneg(t[i]);
 }
 #endif
 
@@ -97,5 +114,44 @@ FAMILY_DECLARE(pbrt_v3);
 const study_family family_pbrt_v3 = {
 	"pbrt_v3", FAMILY_PASSES(pbrt_v3), names, mpfr, FAMILY_PAIRS(pbrt_v3), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+};
+/* ---- nori ---- */
+static const char *names_nori(const onb_method *m, int b, char *buf, size_t n)
+{
+	(void)m; (void)buf; (void)n;
+	return b ? "|n.x| > |n.y|: b2 = (n.z, 0, -n.x) / len" : "|n.x| <= |n.y|: b2 = (0, n.z, -n.y) / len";
+}
+
+static void mpfr_nori(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
+{
+	int i;
+	(void)m; (void)loc;
+	kit_perp_cross(c, br ? 1 : 0, br ? +1 : -1, n, r2, r1);   /* b2 = c, r1 = n x c */
+	for (i = 0; i < 3; i++)
+		mpfr_neg(r1[i], r1[i], R);                          /* b1 = c x n, exact */
+}
+
+/* inv = 1/sqrt(x*x + z*z); c = (z*inv, 0, (-x)*inv) (or (0, z*inv,
+   (-y)*inv)), the 0 a literal; b1 = cross(c, n) as Eigen writes it. */
+static void model_nori(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	cv inv;
+	(void)m;
+	if (cm_branch_abs(c, 0, CM_GT, n[0], n[1])) {
+		inv = DIV(K(1.0), cm_sqrt(c, P, sum_sq(c, P, n[0], n[2])));
+		out[3] = MUL(n[2], inv); out[4] = K(0.0); out[5] = MUL(cm_neg(c, n[0]), inv);
+	} else {
+		inv = DIV(K(1.0), cm_sqrt(c, P, sum_sq(c, P, n[1], n[2])));
+		out[3] = K(0.0); out[4] = MUL(n[2], inv); out[5] = MUL(cm_neg(c, n[1]), inv);
+	}
+	mk_cross_out(c, P, n, out, 0, 0, "nnn");
+}
+
+static unsigned zero_any_n_nori(const onb_method *m) { (void)m; return ZN_UNIT_B2; }
+
+FAMILY_DECLARE(nori);
+const study_family family_nori = {
+	"nori", FAMILY_PASSES(nori), names_nori, mpfr_nori, FAMILY_PAIRS(nori), family_no_variant,
+	family_no_exact_zero, model_nori, 1, zero_any_n_nori, family_no_singular, family_meets_none,
 };
 #endif

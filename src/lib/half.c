@@ -403,6 +403,33 @@ void onb_jolt_fmah(V n, V *b1, V *b2)
 	           hfma(p.y, n.x, hneg(hmul(n.y, p.x))));
 }
 
+/* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */
+void onb_jolt_arm64h(V n, V *b1, V *b2)
+{
+	const H xx = hmul(n.x, n.x), yy = hmul(n.y, n.y), zz = hmul(n.z, n.z);
+	const H len = hsqrt(hadd(xx < yy ? yy : xx, zz));
+	V p;
+	if (xx > yy) p = hvec(hdiv(n.z, len), hdiv(H0, len), hdiv(hneg(n.x), len));
+	else         p = hvec(hdiv(H0, len), hdiv(n.z, len), hdiv(hneg(n.y), len));
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+
+/* ---- nori: c = perpendicular * (1/len), b1 = c x n, b2 = c ---- */
+void onb_norih(V a, V *b, V *c)
+{
+	V t;
+	if (habs(a.x) > habs(a.y)) {
+		const H inv = hdiv(H1, hsqrt(hadd(hmul(a.x, a.x), hmul(a.z, a.z))));
+		t = hvec(hmul(a.z, inv), H0, hmul(hneg(a.x), inv));
+	} else {
+		const H inv = hdiv(H1, hsqrt(hadd(hmul(a.y, a.y), hmul(a.z, a.z))));
+		t = hvec(H0, hmul(a.z, inv), hmul(hneg(a.y), inv));
+	}
+	*c = t;
+	*b = hcross(t, a);
+}
+
 /* ---- bullet ---- */
 void onb_bulleth(V n, V *b1, V *b2)
 {

@@ -33,7 +33,7 @@
 /* The physics engines' and math libraries' provenance (read at these commits). */
 static const onb_provenance P_JOLT = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
 	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (SSE)", "float",
-	"source-level IEEE (-ffp-contract=off: CROSS_PLATFORM_DETERMINISTIC or non-x86); b2 = n.Cross(b1), Vec3.inl:855-891" };
+	"source-level IEEE, the SSE path (x86 with -ffp-contract=off: CROSS_PLATFORM_DETERMINISTIC or USE_FMADD off; non-x86 builds get -ffp-contract=on and the scalar path: jolt_arm64); b2 = n.Cross(b1), Vec3.inl:855-891" };
 static const onb_provenance P_JOLT_FMA = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
 	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (SSE)", "float",
 	"the default x86 build: USE_FMADD, -mfma -ffp-contract=fast (Build/CMakeLists.txt:263-272): Cross's t1 - t2 fused" };
@@ -80,6 +80,12 @@ static const onb_provenance P_CYCLES_AVX2 = { "github.com/blender/cycles", "97db
 static const onb_provenance P_EMBREE = { "github.com/embree/embree", "0c236df6f31a8e9c8a48803dada333e9ea0029a6",
 	"common/math/linearspace3.h:117-124", "Apache-2.0", "C++ (SSE intrinsics)", "float (Vec3fa)",
 	"the SSE4.2 kernel: dpps dots, rsqrtss estimate (this CPU's bits) and emath.h:129-151's Newton step, no FMA" };
+static const onb_provenance P_NORI = { "github.com/wjakob/nori", "092f581b8664cb7f6b7e73fb5b1e3de24365ea91",
+	"src/common.cpp:248-257", "none stated (GPL-3.0 until 50ba652, 2021)", "C++ (Eigen)", "float (Vector3f)",
+	"source-level IEEE (CMakeLists.txt sets no -ffast-math or -ffp-contract; x86-64 baseline: no FMA); Frame(n) = coordinateSystem(n, s, t), include/nori/frame.h:36-38" };
+static const onb_provenance P_JOLT_ARM64 = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
+	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (NEON)", "float",
+	"the non-SSE path (Vec3.inl:1147-1157, JPH_CROSS_PLATFORM_DETERMINISTIC off) and NEON Cross (865-871); Build/CMakeLists.txt:263-272 gives non-x86 -ffp-contract=on, which fuses nothing here (aarch64-linux-gnu-gcc 12 -O2 under qemu-aarch64: these bits)" };
 static const onb_provenance P_LUXCORE = { "github.com/LuxCoreRender/LuxCore", "d624e0445924c766c32fd9a08df56d3264cbd33f",
 	"include/luxrays/core/geometry/vector.h:169-177", "Apache-2.0", "C++", "float",
 	"IEEE, the CPU path (the OpenCL twin's -cl-fast-relaxed-math not modelled)" };
@@ -150,6 +156,10 @@ static const onb_method onb__table[] = {
 	{ "luxcore", "luxcore", "LuxCoreRender CoordinateSystem: b2 = (-y, x, 0)/len, b1 = n x b2; (1,0,0) when len < 1e-5",
 	  "none; within 1e-5 of +-z b2 = (1,0,0) is off-orthogonal by |n.x| (by design)", "sqrt(n.x^2 + n.y^2) < 1e-5",
 	  -1, 0, NAN, 0, ONB__PTRS(luxcore), &P_LUXCORE },
+	{ "nori", "nori", "Nori coordinateSystem (Mitsuba 0.6's is the same): c = (z, 0, -x) or (0, z, -y) times 1/len, b1 = c x n, b2 = c",
+	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(nori), &P_NORI },
+	{ "jolt_arm64", "jolt", "Jolt Physics, as jolt, in its non-x86 build: the scalar perpendicular negates with -x (x = +0 gives -0), NEON cross, nothing fused",
+	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, ONB__WILD_SCALAR, ONB__PTRS(jolt_arm64), &P_JOLT_ARM64 },
 	/* Engines' shipped code ("in the wild"): physics engines, geometry and
 	   math libraries, read at the commits their provenance names; the
 	   double variants of float-only sources are the same code in double. */
@@ -244,6 +254,17 @@ static const onb_alias onb__aliases[] = {
 	{ "tungsten", "duff_branchless", "float", "Tungsten TangentFrame(const Vec3f &n) (Duff et al. 2017)", "",
 	  { "github.com/tunabrain/tungsten", "88ea02044dbaf20472a8173b6752460b50c096d8", "src/core/math/TangentFrame.hpp:22-31",
 	    "Zlib", "C++", "float (Vec3f)", "source-level IEEE; CMakeLists.txt adds Vc's architecture flags (-mfma on FMA hosts) and no -ffp-contract, so a GCC build there may fuse sign*x*x*a + 1: not modelled" } },
+	/* Mitsuba 0.6's coordinateSystem is Nori's text (Nori descends from it), its cross product TVector3's */
+	{ "mitsuba06", "nori", "float and double", "Mitsuba 0.6 coordinateSystem (Frame(n) = (s, t, n))", "",
+	  { "github.com/mitsuba-renderer/mitsuba", "10af06f365886c1b6dd8818e0a3841078a62f283", "src/libcore/util.cpp:592-601",
+	    "GPL-3.0-only", "C++", "Float: float (SINGLE_PRECISION, the shipped configs), double with DOUBLE_PRECISION",
+	    "source-level IEEE; the shipped SCons configs (build/config-linux-gcc.py) add -funsafe-math-optimizations (signed zeros and reassociation not guaranteed): not modelled" } },
+	/* Cycles' arm64 kernel (sse2neon): dp_ps as FADDP pairs = the SSE4.2 sum order, vsqrtq/vdivq correctly rounded,
+	   msub = vfmaq_f32(vnegq_f32(c), a, b) = the AVX2 kernel's _mm_fmsub_ps */
+	{ "cycles_neon", "cycles_cross111_avx2", "float", "Blender Cycles make_orthonormals, the arm64 (NEON, sse2neon) kernel", "",
+	  { "github.com/blender/cycles", "97dbe6f57cdf4ede2d2b75ebdda507c8712edb7a", "src/util/math_float3.h:724-750",
+	    "Apache-2.0", "C++ (SSE code through sse2neon)", "float",
+	    "arm64: optimization.h:30-44 (__KERNEL_NEON__ with __KERNEL_SSE42__), msub math_float4.h:253-266 (vfmaq_f32); -ffp-contract=on fuses nothing more; -fno-signed-zeros not modelled" } },
 };
 
 const onb_alias *onb_aliases(size_t *count)

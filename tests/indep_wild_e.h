@@ -18,6 +18,8 @@
  *   Jolt Vec3::GetNormalizedPerpendicular's non-SSE path with std::max
  *     and JPH::Sqrt, Vec3 / float as a 4-lane division, and the NEON Cross
  *     (vmulq/vsubq on shuffled lanes), nothing fused (the arm64 build).
+ *   OSL testrender ortho (src/testrender/raytracer.h) with Imath's
+ *     Vec3::normalize, length, lengthTiny and cross (ImathVec.h).
  *   Cycles make_orthonormals as its arm64 kernel runs it (sse2neon):
  *     _mm_dp_ps(a, a, 0x7F) as vaddvq_f32 of the products with lane 3
  *     zeroed, vsqrtq_f32, vdivq_f32, and msub = vfmaq_f32(vnegq_f32(c), a, b).
@@ -25,6 +27,8 @@
  */
 #ifndef INDEP_WILD_E_H
 #define INDEP_WILD_E_H
+
+#include <float.h>
 
 /* OSL: sign = copysignf(1.0f, n.z); a = -1 / (sign + n.z); b = n.x * n.y * a;
    u = Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
@@ -125,8 +129,39 @@ static void ind_cycles_neonf(Vec3f N, Vec3f *pa, Vec3f *pb)
 	*pb = vf(r[1], r[2], r[0]);
 }
 
+/* OSL ortho: x = (fabsf(n.x) > .01f ? Vec3(n.z, 0, -n.x) : Vec3(0, -n.z, n.y)).normalize(); y = n.cross(x).
+   Imath: length() { T length2 = dot(*this); if (length2 < T(2) * numeric_limits<T>::min()) return lengthTiny();
+   return std::sqrt(length2); }  normalize() { T l = length(); if (l != T(0)) { x /= l; y /= l; z /= l; } } */
+#define IMATH_ORTHO(T, S, V, MK, SQRT, FABS, TMIN) \
+static T im_lengthTiny##S(V v) \
+{ \
+	T absX = (v.x >= (T)0) ? v.x : -v.x, absY = (v.y >= (T)0) ? v.y : -v.y, absZ = (v.z >= (T)0) ? v.z : -v.z; \
+	T max = absX; \
+	if (max < absY) max = absY; \
+	if (max < absZ) max = absZ; \
+	if (max == (T)0) return (T)0; \
+	absX /= max; absY /= max; absZ /= max; \
+	return max * SQRT(absX * absX + absY * absY + absZ * absZ); \
+} \
+static T im_length##S(V v) \
+{ \
+	T length2 = v.x * v.x + v.y * v.y + v.z * v.z; \
+	if (length2 < (T)2 * TMIN) return im_lengthTiny##S(v); \
+	return SQRT(length2); \
+} \
+static void ind_osl_ortho##S(V n, V *x, V *y) \
+{ \
+	V v = FABS(n.x) > .01f ? MK(n.z, (T)0, -n.x) : MK((T)0, -n.z, n.y); \
+	T l = im_length##S(v); \
+	if (l != (T)0) { v.x /= l; v.y /= l; v.z /= l; } \
+	*x = v; \
+	*y = MK(n.y * v.z - n.z * v.y, n.z * v.x - n.x * v.z, n.x * v.y - n.y * v.x); \
+}
+IMATH_ORTHO(float, f, Vec3f, vf, sqrtf, fabsf, FLT_MIN)
+IMATH_ORTHO(double, d, Vec3d, vd, sqrt, fabs, DBL_MIN)
+
 /* ids of this file (indep_wild.h's are 100+, indep_wild_b.h's 200+) */
-enum { IW_OSL_TESTRENDER = 500, IW_TUNGSTEN, IW_NORI, IW_MITSUBA06, IW_JOLT_ARM64, IW_CYCLES_NEON };
+enum { IW_OSL_TESTRENDER = 500, IW_TUNGSTEN, IW_NORI, IW_MITSUBA06, IW_JOLT_ARM64, IW_CYCLES_NEON, IW_OSL_ORTHO };
 
 static int indep_wild_e_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
@@ -137,6 +172,7 @@ static int indep_wild_e_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IW_MITSUBA06:      ind_nori_csf(n, b1, b2); return 1;
 	case IW_JOLT_ARM64:     ind_jolt_arm64f(n, b1, b2); return 1;
 	case IW_CYCLES_NEON:    ind_cycles_neonf(n, b1, b2); return 1;
+	case IW_OSL_ORTHO:      ind_osl_orthof(n, b1, b2); return 1;
 	default:                return 0;
 	}
 }
@@ -146,6 +182,7 @@ static int indep_wild_e_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 	case IW_NORI:           /* Nori is float only: the same arithmetic in double */
 	case IW_MITSUBA06:      ind_nori_csd(n, b1, b2); return 1;
 	case IW_JOLT_ARM64:     ind_jolt_arm64d(n, b1, b2); return 1;
+	case IW_OSL_ORTHO:      ind_osl_orthod(n, b1, b2); return 1;   /* float source: the same in double */
 	default:                return 0;
 	}
 }
@@ -160,6 +197,7 @@ static int indep_wild_e_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 /* rows of indep.h's method table T (after luxcore's) */
 #define INDEP_WILD_E_ROWS \
 	{ "nori", onb_nori, onb_norif, IW_NORI, 0 }, \
+	{ "osl_ortho", onb_osl_ortho, onb_osl_orthof, IW_OSL_ORTHO, 0 }, \
 	{ "jolt_arm64", onb_jolt_arm64, onb_jolt_arm64f, IW_JOLT_ARM64, 0 },
 
 #endif /* INDEP_WILD_E_H */

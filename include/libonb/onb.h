@@ -36,6 +36,7 @@
  *     onb_embree           onb_embreef            Embree frame(N) (rsqrtss + Newton)
  *     onb_luxcore          onb_luxcoref           LuxCoreRender CoordinateSystem
  *     onb_nori             onb_norif              Nori coordinateSystem (= Mitsuba 0.6)
+ *     onb_osl_ortho        onb_osl_orthof         OpenShadingLanguage testrender ortho
  *     onb_jolt_arm64       onb_jolt_arm64f        Jolt, its non-x86 build (scalar -x)
  *     onb_jolt             onb_joltf              Jolt GetNormalizedPerpendicular
  *     onb_jolt_fma         onb_jolt_fmaf            its default x86 build (fma)
@@ -1289,6 +1290,60 @@ static inline void ONB__K(norif)(onb_vec3f a, onb_vec3f *b, onb_vec3f *c)
 	b->z = t.x * a.y - t.y * a.x;
 }
 
+/* osl_ortho (OpenShadingLanguage testrender raytracer.h, ortho(n, x, y)):
+   x = (|n.x| > .01f ? (n.z, 0, -n.x) : (0, -n.z, n.y)).normalize();
+   y = n.cross(x).  Imath's Vec3::normalize divides each component by
+   length() unless it is 0; length() is sqrt(x*x + y*y + z*z), or, when
+   that sum is below 2 * the format's smallest normal, lengthTiny(): the
+   largest |component| m, then m * sqrt of the sum of the squares of the
+   components divided by m.  b1 = x, b2 = y.  Handedness +1.  The float
+   literal .01f is kept in the double variant.  No singular unit
+   direction (|p|^2 >= 1e-4). */
+#define ONB__OSL_ORTHO(S, T, SQRT, FABS, TMIN) \
+static inline T onb__osl_len##S(T x, T y, T z) \
+{ \
+	const T l2 = x * x + y * y + z * z; \
+	T ax, ay, az, m; \
+	if (!(l2 < (T)2 * TMIN)) \
+		return SQRT(l2); \
+	ax = (x >= (T)0) ? x : -x; ay = (y >= (T)0) ? y : -y; az = (z >= (T)0) ? z : -z; \
+	m = ax; \
+	if (m < ay) m = ay; \
+	if (m < az) m = az; \
+	if (m == (T)0) \
+		return (T)0; \
+	ax /= m; ay /= m; az /= m; \
+	return m * SQRT(ax * ax + ay * ay + az * az); \
+}
+ONB__OSL_ORTHO(d, double, sqrt, fabs, 0x1p-1022)   /* DBL_MIN */
+ONB__OSL_ORTHO(f, float, sqrtf, fabsf, 0x1p-126f)  /* FLT_MIN */
+static inline void ONB__K(osl_ortho)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	double l;
+	if (fabs(n.x) > (double).01f) { p.x = n.z; p.y = 0.0; p.z = -n.x; }
+	else                          { p.x = 0.0; p.y = -n.z; p.z = n.y; }
+	l = onb__osl_lend(p.x, p.y, p.z);
+	if (l != 0.0) { p.x /= l; p.y /= l; p.z /= l; }
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(osl_orthof)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	float l;
+	if (fabsf(n.x) > .01f) { p.x = n.z; p.y = 0.0f; p.z = -n.x; }
+	else                   { p.x = 0.0f; p.y = -n.z; p.z = n.y; }
+	l = onb__osl_lenf(p.x, p.y, p.z);
+	if (l != 0.0f) { p.x /= l; p.y /= l; p.z /= l; }
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
 /* jolt_arm64: Jolt Vec3::GetNormalizedPerpendicular's non-SSE path (the
    arm64/NEON build; JPH_CROSS_PLATFORM_DETERMINISTIC off) and the NEON
    Cross: as jolt, but the perpendicular negates with unary minus
@@ -2025,7 +2080,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
-	X(nori) X(jolt_arm64) \
+	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
 

@@ -403,6 +403,34 @@ void onb_jolt_fmah(V n, V *b1, V *b2)
 	           hfma(p.y, n.x, hneg(hmul(n.y, p.x))));
 }
 
+/* ---- osl_ortho: Imath normalize (lengthTiny below 2 * the smallest normal) ---- */
+static H osl_lenh(H x, H y, H z)
+{
+	const H l2 = hadd(hadd(hmul(x, x), hmul(y, y)), hmul(z, z));
+	H ax, ay, az, m;
+	if (!((float)l2 < 2.0f * 0x1p-14f))
+		return hsqrt(l2);
+	ax = ((float)x >= 0.0f) ? x : hneg(x); ay = ((float)y >= 0.0f) ? y : hneg(y); az = ((float)z >= 0.0f) ? z : hneg(z);
+	m = ax;
+	if ((float)m < (float)ay) m = ay;
+	if ((float)m < (float)az) m = az;
+	if ((float)m == 0.0f)
+		return H0;
+	ax = hdiv(ax, m); ay = hdiv(ay, m); az = hdiv(az, m);
+	return hmul(m, hsqrt(hadd(hadd(hmul(ax, ax), hmul(ay, ay)), hmul(az, az))));
+}
+void onb_osl_orthoh(V n, V *b1, V *b2)
+{
+	V p;
+	H l;
+	if ((float)habs(n.x) > (float)hcst((double).01f)) p = hvec(n.z, H0, hneg(n.x));
+	else                                              p = hvec(H0, hneg(n.z), n.y);
+	l = osl_lenh(p.x, p.y, p.z);
+	if ((float)l != 0.0f) p = hvec(hdiv(p.x, l), hdiv(p.y, l), hdiv(p.z, l));
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+
 /* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */
 void onb_jolt_arm64h(V n, V *b1, V *b2)
 {

@@ -81,8 +81,11 @@ static const onb_provenance P_EMBREE = { "github.com/embree/embree", "0c236df6f3
 	"common/math/linearspace3.h:117-124", "Apache-2.0", "C++ (SSE intrinsics)", "float (Vec3fa)",
 	"the SSE4.2 kernel: dpps dots, rsqrtss estimate (this CPU's bits) and emath.h:129-151's Newton step, no FMA" };
 static const onb_provenance P_NORI = { "github.com/wjakob/nori", "092f581b8664cb7f6b7e73fb5b1e3de24365ea91",
-	"src/common.cpp:248-257", "none stated (GPL-3.0 until 50ba652, 2021)", "C++ (Eigen)", "float (Vector3f)",
+	"src/common.cpp:248-257", "none stated since 50ba652 (2021; GPL-3.0 before)", "C++ (Eigen)", "float (Vector3f)",
 	"source-level IEEE (CMakeLists.txt sets no -ffast-math or -ffp-contract; x86-64 baseline: no FMA); Frame(n) = coordinateSystem(n, s, t), include/nori/frame.h:36-38" };
+static const onb_provenance P_OSL_ORTHO = { "github.com/AcademySoftwareFoundation/OpenShadingLanguage", "ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa",
+	"src/testrender/raytracer.h:39-46", "BSD-3-Clause", "C++ (Imath)", "float (Vec3 = Imath::Vec3<Float>, Float = float)",
+	"source-level IEEE (compiler.cmake adds -ffp-contract=off with -mfma); Imath Vec3::normalize/length/lengthTiny and cross at Imath d0a0b115 src/Imath/ImathVec.h:1746-1749, 1892-1960; the OptiX build not modelled" };
 static const onb_provenance P_JOLT_ARM64 = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
 	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (NEON)", "float",
 	"the non-SSE path (Vec3.inl:1147-1157, JPH_CROSS_PLATFORM_DETERMINISTIC off) and NEON Cross (865-871); Build/CMakeLists.txt:263-272 gives non-x86 -ffp-contract=on, which fuses nothing here (aarch64-linux-gnu-gcc 12 -O2 under qemu-aarch64: these bits)" };
@@ -158,6 +161,8 @@ static const onb_method onb__table[] = {
 	  -1, 0, NAN, 0, ONB__PTRS(luxcore), &P_LUXCORE },
 	{ "nori", "nori", "Nori coordinateSystem (Mitsuba 0.6's is the same): c = (z, 0, -x) or (0, z, -y) times 1/len, b1 = c x n, b2 = c",
 	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(nori), &P_NORI },
+	{ "osl_ortho", "osl_ortho", "OpenShadingLanguage testrender ortho: b1 = (z, 0, -x) if abs(x) > .01f else (0, -z, y), Imath-normalized; b2 = n x b1",
+	  "none", "|n.x| > .01f", +1, 0, NAN, 0, ONB__PTRS(osl_ortho), &P_OSL_ORTHO },
 	{ "jolt_arm64", "jolt", "Jolt Physics, as jolt, in its non-x86 build: the scalar perpendicular negates with -x (x = +0 gives -0), NEON cross, nothing fused",
 	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, ONB__WILD_SCALAR, ONB__PTRS(jolt_arm64), &P_JOLT_ARM64 },
 	/* Engines' shipped code ("in the wild"): physics engines, geometry and

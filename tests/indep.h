@@ -461,6 +461,7 @@ static const indep_row T[] = {
 	{ "physx_fixed", onb_physx_fixed, onb_physx_fixedf, IW_PHYSX_FIXED, 0 },
 	{ "open3d_fixed", onb_open3d_fixed, onb_open3d_fixedf, IW_OPEN3D_FIXED, 0 },
 	{ "filament_fixed", onb_filament_fixed, onb_filament_fixedf, IW_FILAMENT_FIXED, 0 },
+	{ "luxcore_fixed", onb_luxcore_fixed, onb_luxcore_fixedf, IW_LUXCORE_FIXED, 0 },
 	/* float only (ONB_FLOAT_ONLY): no double function */
 	{ "duff_wide", NULL, onb_duff_widef, IM_DUFF_WIDE, 0 },
 	{ "duff_comp", NULL, onb_duff_compf, IM_DUFF_COMP, 0 },

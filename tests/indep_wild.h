@@ -350,10 +350,37 @@ static void ind_luxcored(Vec3d v1, Vec3d *v2, Vec3d *v3)
 	*v2 = vd((v1.y * v3->z) - (v1.z * v3->y), (v1.z * v3->x) - (v1.x * v3->z), (v1.x * v3->y) - (v1.y * v3->x));
 }
 
+/* luxcore_fixed (this project's fix, not shipped): results/wild/patches/
+   luxcore_fixed.diff applied to CoordinateSystem, LuxCore's Vector ops
+   spelled out: Normalize(v) = v / v.Length(), operator/(f) multiplies by
+   inv = 1.f / f, Length() = sqrtf(x * x + y * y + z * z). */
+static void ind_luxcore_fixedf(Vec3f v1, Vec3f *v2, Vec3f *v3)
+{
+	float len = sqrtf(v1.x * v1.x + v1.y * v1.y);
+	if (len < 1e-5) {
+		const Vec3f w = vf(1.f - v1.x * v1.x, -v1.x * v1.y, -v1.x * v1.z);
+		const float inv = 1.f / sqrtf(w.x * w.x + w.y * w.y + w.z * w.z);
+		*v3 = vf(w.x * inv, w.y * inv, w.z * inv);
+	} else
+		*v3 = vf(-v1.y / len, v1.x / len, 0);
+	*v2 = vf((v1.y * v3->z) - (v1.z * v3->y), (v1.z * v3->x) - (v1.x * v3->z), (v1.x * v3->y) - (v1.y * v3->x));
+}
+static void ind_luxcore_fixedd(Vec3d v1, Vec3d *v2, Vec3d *v3)
+{
+	double len = sqrt(v1.x * v1.x + v1.y * v1.y);
+	if (len < 1e-5) {
+		const Vec3d w = vd(1.0 - v1.x * v1.x, -v1.x * v1.y, -v1.x * v1.z);
+		const double inv = 1.0 / sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+		*v3 = vd(w.x * inv, w.y * inv, w.z * inv);
+	} else
+		*v3 = vd(-v1.y / len, v1.x / len, 0);
+	*v2 = vd((v1.y * v3->z) - (v1.z * v3->y), (v1.z * v3->x) - (v1.x * v3->z), (v1.x * v3->y) - (v1.y * v3->x));
+}
+
 /* Ids of this file's transliterations, after indep.h's own. */
 enum { IW_PBRT4 = 100, IW_NVPRO, IW_CYCLES_DUFF, IW_FALCOR, IW_PASVULKAN,
        IW_Q2RTX, IW_FILAMENT, IW_MITSUBA3, IW_CYCLES111, IW_EMBREE, IW_LUXCORE, IW_CYCLES111_AVX2,
-       IW_FILAMENT_FIXED };
+       IW_FILAMENT_FIXED, IW_LUXCORE_FIXED };
 
 /* 1 when id is one of this file's (outputs written), else 0; a double
    variant that the source does not have gives 0 too. */
@@ -373,6 +400,7 @@ static int indep_wild_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IW_EMBREE:      ind_embreef(n, b1, b2); return 1;
 	case IW_LUXCORE:     ind_luxcoref(n, b1, b2); return 1;
 	case IW_FILAMENT_FIXED: ind_filament_fixedf(n, b1, b2); return 1;
+	case IW_LUXCORE_FIXED: ind_luxcore_fixedf(n, b1, b2); return 1;
 	default:             return 0;
 	}
 }
@@ -388,6 +416,7 @@ static int indep_wild_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 	case IW_EMBREE:    ind_embreed(n, b1, b2); return 1;
 	case IW_LUXCORE:   ind_luxcored(n, b1, b2); return 1;
 	case IW_FILAMENT_FIXED: ind_filament_fixedd(n, b1, b2); return 1;
+	case IW_LUXCORE_FIXED: ind_luxcore_fixedd(n, b1, b2); return 1;
 	default:           return 0;
 	}
 }

@@ -49,6 +49,7 @@
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
  *     onb_filament_fixed   onb_filament_fixedf    this project: Filament fixed
  *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
+ *     onb_luxcore_fixed    onb_luxcore_fixedf     this project: LuxCoreRender fixed
  *     (float only)         onb_duff_widef         this project: Duff in double
  *     (float only)         onb_duff_compf         this project: Duff, fma-compensated
  *   Half (binary16) .. onb_NAMEh for every method above (onb_frisvadh, ...),
@@ -1246,6 +1247,40 @@ static inline void ONB__K(luxcoref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	onb__naive_postf(n, v, 1.0f, b2, b1);
 }
 
+/* luxcore_fixed (this project's fix of luxcore, not shipped code):
+   LuxCore's lines with one change in the fallback (len < 1e-5): v3 =
+   Normalize((1 - x*x, -x*y, -x*z)), (1, 0, 0) made perpendicular to n
+   (e1 - x n), in place of (1, 0, 0).  LuxCore's Normalize is v / Length():
+   l = sqrt((vx*vx + vy*vy) + vz*vz), inv = 1/l, v*inv.  Then v2 =
+   Cross(n, v3) as before; b1 = v2, b2 = v3.  At +-z v3 is (1, 0, 0) (up to
+   the sign of a zero), so the frame at the six axes is luxcore's.  In
+   exact arithmetic n x (e1 - x n) = (0, z, -y) for any n.  Handedness -1.
+   No singular unit direction (v3.x = 1 - x*x >= 1 - 1e-10 there). */
+static inline void ONB__K(luxcore_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double len = sqrt(n.x * n.x + n.y * n.y);
+	onb_vec3 v;
+	if (len < 1e-5) {
+		double inv;
+		v.x = 1.0 - n.x * n.x; v.y = -n.x * n.y; v.z = -n.x * n.z;
+		inv = 1.0 / sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+		v.x *= inv; v.y *= inv; v.z *= inv;
+	} else { v.x = -n.y / len; v.y = n.x / len; v.z = 0.0; }
+	onb__naive_post(n, v, 1.0, b2, b1);
+}
+static inline void ONB__K(luxcore_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float len = sqrtf(n.x * n.x + n.y * n.y);
+	onb_vec3f v;
+	if (ONB__CAST(double, len) < 1e-5) {
+		float inv;
+		v.x = 1.0f - n.x * n.x; v.y = -n.x * n.y; v.z = -n.x * n.z;
+		inv = 1.0f / sqrtf(v.x * v.x + v.y * v.y + v.z * v.z);
+		v.x *= inv; v.y *= inv; v.z *= inv;
+	} else { v.x = -n.y / len; v.y = n.x / len; v.z = 0.0f; }
+	onb__naive_postf(n, v, 1.0f, b2, b1);
+}
+
 /* ------------------------------------------------------------------ */
 /* nori (Nori src/common.cpp coordinateSystem; Mitsuba 0.6 is the same  */
 /* arithmetic: the alias mitsuba06) and jolt_arm64 (Jolt's non-SSE     */
@@ -2082,7 +2117,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(physx_fixed) X(open3d_fixed) X(filament_fixed)
+	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \
 	void onb_##m##_outline (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2); \

@@ -25,7 +25,7 @@ static int filled;
    others have none (docs/certify.md says why). */
 const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", "stark", "stark_fixed", "rtow",
 	"naive", "naive_invsqrt", "naive_rsqrt", "naive_rsqrt_nr", "naive_nonorm", "hughes_moeller_invsqrt", "hughes_moeller_rsqrt",
-	"hughes_moeller_rsqrt_nr", "hughes_moeller_nonorm", "q2rtx", "filament", "jolt_fma", "duff_wide", "duff_comp", "bullet", "eigen", "rp3d", "jolt", "luxcore", "physx", "physx_fixed", "mujoco", "embree", "cycles_cross111", "cycles_cross111_avx2", "tangent_cross_z", "open3d", "open3d_fixed", "mitsuba3", "filament_fixed", NULL };
+	"hughes_moeller_rsqrt_nr", "hughes_moeller_nonorm", "q2rtx", "filament", "jolt_fma", "duff_wide", "duff_comp", "bullet", "eigen", "rp3d", "jolt", "luxcore", "physx", "physx_fixed", "mujoco", "embree", "cycles_cross111", "cycles_cross111_avx2", "tangent_cross_z", "open3d", "open3d_fixed", "mitsuba3", "filament_fixed", "luxcore_fixed", NULL };
 
 static int fma_modelled(const char *name)
 {

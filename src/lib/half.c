@@ -375,6 +375,17 @@ void onb_luxcoreh(V n, V *b1, V *b2)
 	else                    v = hvec(hdiv(hneg(n.y), len), hdiv(n.x, len), H0);
 	hpost(n, v, H1, b2, b1);
 }
+void onb_luxcore_fixedh(V n, V *b1, V *b2)
+{
+	const H len = hsqrt(hadd(hmul(n.x, n.x), hmul(n.y, n.y)));
+	V v;
+	if ((double)len < 1e-5) {
+		v = hvec(hsub(H1, hmul(n.x, n.x)), hmul(hneg(n.x), n.y), hmul(hneg(n.x), n.z));
+		v = hscale(v, hdiv(H1, hsqrt(hdot(v, v))));
+	} else
+		v = hvec(hdiv(hneg(n.y), len), hdiv(n.x, len), H0);
+	hpost(n, v, H1, b2, b1);
+}
 
 /* ---- jolt, jolt_fma ---- */
 static V jolt_perph(V n)

@@ -192,6 +192,8 @@ static const onb_method onb__table[] = {
 	  "none", "|d - n|^2 > 1e-3 and |d + n|^2 > 1e-3, d = (0,1,1)/sqrt 2", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(open3d_fixed), NULL },
 	{ "filament_fixed", "filament", "onbstudy, not shipped: Filament frisvadKernel with Duff et al.'s branch on the sign of n.y (lower formula turned to keep the -y frame)",
 	  "none", "n.y < 0 (-0 takes the upper branch)", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(filament_fixed), NULL },
+	{ "luxcore_fixed", "luxcore", "onbstudy, not shipped: LuxCoreRender CoordinateSystem with v3 = Normalize((1 - x*x, -x*y, -x*z)) in the len < 1e-5 branch",
+	  "none", "sqrt(n.x^2 + n.y^2) < 1e-5", -1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(luxcore_fixed), NULL },
 	/* This project's own methods, float only: Duff's formula at
 	   the accuracy floor.  Their MPFR reference is duff_branchless's. */
 	{ "duff_wide", "duff_branchless", "onbstudy (issue 16), not published: Duff et al. 2017 Listing 3 on float input, evaluated in double, rounded once",

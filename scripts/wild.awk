@@ -299,19 +299,108 @@ function cell_found(e,   s, p, i, pp) {
 	return s
 }
 
-function table(   i, e, t, s, l) {
-	s = "| engine | code (repository, commit, lines, license) | source precision | family | worst defect found, float / double | proven bound, float / double | replay the worst input (source precision) | M bases/s, float / double (batch, 1 thread) | hand; frame | drop-in fix |\n"
-	s = s "|---|---|---|---|---|---|---|---|---|---|\n"
+# The order of the rows: the worst defect found in float first (a
+# non-finite output counts as infinite), then in double, each as printed; a row without a
+# figure in a precision sorts below every row with one; ties keep the
+# registry's order.
+function key(e, p,   t) {
+	t = target[e]
+	if (!covers(e, p) || !((t, p) in found)) return -1
+	if (nonfin[t, p] > 0 || isbad(found[t, p])) return 1e308 * 10
+	# as the table prints it (fmtd: 3 digits), so that equal cells tie
+	if (found[t, p] / U(p) < 1000) return sprintf("%.3g", found[t, p] / U(p)) * U(p)
+	return sprintf("%.3g", found[t, p]) + 0
+}
+function worse(a, b,   ka, kb) {
+	ka = key(a, "float"); kb = key(b, "float")
+	if (ka != kb) return ka > kb
+	return key(a, "double") > key(b, "double")
+}
+# out[1..n]: the rows of a kind (methods: an engine's own arithmetic;
+# aliases; findings), worst first.
+function sortrows(kind, out,   i, j, n, e, tmp) {
+	n = 0
 	for (i = 1; i <= neng; i++) {
-		e = eng[i]; t = target[e]; l = lead(e)
-		if (!covers(e, l)) l = l == "float" ? "double" : "float"
-		s = s "| `" e "`" (isalias[e] ? " = `" t "`, bit for bit (" precs[e] ")" : "") " | " src[e] ": " repo[e] " `" commit[e] "` " path[e] " (" lic[e] ") | " sprec[e] " | " fam[e] \
-		    " | " cell_found(e) " | " W(e, "float", "bound") " / " W(e, "double", "bound") \
-		    " | " (evalcmd(e, l) == "" ? "not in the committed run" : "`" evalcmd(e, l) "`") \
-		    " | " W(e, "float", "speed") " / " W(e, "double", "speed") " | " sprintf("%+d", hand[e]) "; " frame_at_z(t) \
-		    " | " fix[e] (fixm[e] != "" && fixm[e] != t ? ", proven " fixbound(e, "float") " / " fixbound(e, "double") : "") " |\n"
+		e = eng[i]
+		if ((kind == "methods" && isalias[e]) || (kind == "aliases" && !isalias[e]) || (kind == "findings" && !fails(e))) continue
+		out[++n] = e
+		for (j = n; j > 1 && worse(out[j], out[j - 1]); j--) { tmp = out[j]; out[j] = out[j - 1]; out[j - 1] = tmp }
 	}
+	return n
+}
+function tablehead() {
+	return "| engine | code (repository, commit, lines, license) | source precision | family | worst defect found, float / double | proven bound, float / double | replay the worst input (source precision) | M bases/s, float / double (batch, 1 thread) | hand; frame | drop-in fix |\n" \
+	       "|---|---|---|---|---|---|---|---|---|---|\n"
+}
+function row(e,   t, l) {
+	t = target[e]; l = lead(e)
+	if (!covers(e, l)) l = l == "float" ? "double" : "float"
+	return "| `" e "`" (isalias[e] ? " = `" t "`, bit for bit (" precs[e] ")" : "") " | " src[e] ": " repo[e] " `" commit[e] "` " path[e] " (" lic[e] ") | " sprec[e] " | " fam[e] \
+	    " | " cell_found(e) " | " W(e, "float", "bound") " / " W(e, "double", "bound") \
+	    " | " (evalcmd(e, l) == "" ? "not in the committed run" : "`" evalcmd(e, l) "`") \
+	    " | " W(e, "float", "speed") " / " W(e, "double", "speed") " | " sprintf("%+d", hand[e]) "; " frame_at_z(t) \
+	    " | " fix[e] (fixm[e] != "" && fixm[e] != t ? ", proven " fixbound(e, "float") " / " fixbound(e, "double") : "") " |\n"
+}
+# The engines' own methods, worst first.
+function table(   i, n, o, s) {
+	n = sortrows("methods", o); s = tablehead()
+	for (i = 1; i <= n; i++) s = s row(o[i])
 	return s
+}
+# The aliases grouped by the method they are, the groups in the order of
+# that method's worst defect, each group in the registry's order.
+function aliasgroups(g,   i, j, n, o, ng, done) {
+	n = sortrows("aliases", o); ng = 0
+	for (i = 1; i <= n; i++) if (!(target[o[i]] in done)) { done[target[o[i]]] = 1; g[++ng] = target[o[i]] }
+	return ng
+}
+function aliastable(   i, j, ng, g, s) {
+	ng = aliasgroups(g); s = tablehead()
+	for (i = 1; i <= ng; i++)
+		for (j = 1; j <= neng; j++) if (isalias[eng[j]] && target[eng[j]] == g[i]) s = s row(eng[j])
+	return s
+}
+# The groups in words: "`duff` (3): `cycles_duff`, `falcor`, `pasvulkan`; ..."
+function aliaslist(   i, j, ng, g, s, n, l) {
+	ng = aliasgroups(g); s = ""
+	for (i = 1; i <= ng; i++) {
+		n = 0; l = ""
+		for (j = 1; j <= neng; j++) if (isalias[eng[j]] && target[eng[j]] == g[i]) { n++; l = l (n > 1 ? ", " : "") "`" eng[j] "`" }
+		s = s (i > 1 ? "; " : "") "`" g[i] "` (" n "): " l
+	}
+	return s == "" ? "none" : s
+}
+# The code bases with more than one row (a second function, or a build
+# that changes the bits): "blender/cycles (`cycles_cross111`, ...)".
+function multirow(   i, e, r, nr, ord, cnt, lst, s, k, nm) {
+	for (i = 1; i <= neng; i++) {
+		e = eng[i]; r = repo[e]
+		if (!(r in cnt)) ord[++nr] = r
+		cnt[r]++; lst[r] = lst[r] (cnt[r] > 1 ? ", " : "") "`" e "`"
+	}
+	s = ""; k = 0
+	for (i = 1; i <= nr; i++) {
+		r = ord[i]
+		if (cnt[r] < 2) continue
+		nm = r; sub(/^github\.com\//, "", nm)
+		s = s (k++ ? "; " : "") nm " (" lst[r] ")"
+	}
+	return s == "" ? "none" : s
+}
+# The engines' methods certify calls singular in float or double.
+function singular(   i, e, s) {
+	s = ""
+	for (i = 1; i <= neng; i++) {
+		e = eng[i]
+		if (isalias[e] || (cstatus[e, "float"] != "singular" && cstatus[e, "double"] != "singular")) continue
+		s = s (s == "" ? "" : ", ") "`" e "`"
+	}
+	return s == "" ? "none" : s
+}
+function repos(   i, n, seen) {
+	n = 0
+	for (i = 1; i <= neng; i++) if (!(repo[eng[i]] in seen)) { seen[repo[eng[i]]] = 1; n++ }
+	return n
 }
 
 # Where the worst defect (a sweep's input) exceeds the proven bound: that
@@ -324,11 +413,10 @@ function outside(t) {
 	       " (this input, from a sweep, is normalized in float, and not among them)"
 }
 
-function findings(   i, e, s, t) {
-	s = ""
-	for (i = 1; i <= neng; i++) {
-		e = eng[i]
-		if (!fails(e)) continue
+function findings(   i, e, s, t, n, o) {
+	s = ""; n = sortrows("findings", o)
+	for (i = 1; i <= n; i++) {
+		e = o[i]
 		if (!(e in para)) { print "wild: " e " fails in float but wild.md.in has no <!-- para " e " --> block" > "/dev/stderr"; bad = 1; continue }
 		t = target[e]
 		s = s "### `" e "`: " src[e] "\n\n"
@@ -336,30 +424,31 @@ function findings(   i, e, s, t) {
 		s = s "- Worst input (float): `" (evalcmd(e, "float") == "" ? "not in the committed run" : evalcmd(e, "float")) "`.\n"
 		s = s "- Defect there: " W(e, "float", "found") (nonfin[t, "float"] > 0 ? "; non-finite output on " nonfin[t, "float"] " of the sampled unit inputs" : "") \
 		    (cstatus[t, "float"] == "singular" ? "; `onbstudy certify`: singular (" singtext(t) ")" : "; proven bound " W(e, "float", "bound") outside(t)) ".\n"
-		s = s "- Fix: " fix[e] (fixm[e] == "" ? "" : "; `" fixm[e] "` is proven " fixbound(e, "float") " in float and " fixbound(e, "double") " in double") ".\n\n"
+		s = s "- Fix: " fix[e] (fixm[e] == "" ? "" : "; `" fixm[e] "` is proven " fixbound(e, "float") " in float and " fixbound(e, "double") " in double") \
+		    (patch(fixm[e]) ? "; as a change to the engine's file: [results/wild/patches/" fixm[e] ".diff](../results/wild/patches/" fixm[e] ".diff)" : "") ".\n\n"
 		s = s expand(para[e]) "\n\n"
 	}
 	return s == "" ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
 }
-# The findings as a short table for the README, the largest float defect first.
-function findlist(   i, j, e, n, o, v, s, tmp) {
-	n = 0
-	for (i = 1; i <= neng; i++) {
-		e = eng[i]
-		if (!fails(e)) continue
-		o[++n] = e; v[n] = num(found[target[e], "float"]); if (nonfin[target[e], "float"] > 0) v[n] = 1e308 * 10
-	}
-	for (i = 2; i <= n; i++)
-		for (j = i; j > 1 && v[j] > v[j - 1]; j--) {
-			tmp = v[j]; v[j] = v[j - 1]; v[j - 1] = tmp; tmp = o[j]; o[j] = o[j - 1]; o[j - 1] = tmp
-		}
+# The findings as a short table for the README, the worst first: the
+# first lim of them (all when lim is empty).
+function findlist(lim,   i, e, n, o, s) {
+	n = sortrows("findings", o)
+	if (lim == "" || lim + 0 > n) lim = n
 	s = "| engine | defect in float | replay | drop-in fix |\n|---|---|---|---|\n"
-	for (i = 1; i <= n; i++) {
+	for (i = 1; i <= lim; i++) {
 		e = o[i]
 		s = s "| `" e "` (" src[e] ") | " W(e, "float", "found") " | `" evalcmd(e, "float") "` | " \
 		    (fixm[e] == "" ? "the change to its own lines in [docs/wild.md](docs/wild.md)" : "`" fixm[e] "`, proven " fixbound(e, "float")) " |\n"
 	}
 	return n == 0 ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
+}
+# Whether results/wild/patches (PD) has the fix f as a diff.
+function patch(f,   l, r) {
+	if (f == "" || PD == "") return 0
+	r = (getline l < (PD "/" f ".diff")) > 0
+	close(PD "/" f ".diff")
+	return r
 }
 function singtext(t) { return "the kernel returns NaN, inf or a zero vector on some unit input" }
 
@@ -378,7 +467,8 @@ function worst(k,   i, e, b, v) {
 }
 
 function count(k,   i, n) {
-	if (k == "engines") return neng
+	if (k == "engines" || k == "rows") return neng
+	if (k == "repos") return repos()
 	if (k == "methods") return nmethods + 0
 	if (k == "aliases") return naliases + 0
 	if (k == "findings") { n = 0; for (i = 1; i <= neng; i++) n += fails(eng[i]); return n }
@@ -392,7 +482,11 @@ function expand(line,   rs, rl, tok, a, nt, rep) {
 		nt = split(tok, a, " ")
 		if (a[1] == "TABLE" && a[2] == "wild") rep = table()
 		else if (a[1] == "FINDINGS") rep = findings()
-		else if (a[1] == "FINDLIST") rep = findlist()
+		else if (a[1] == "TABLE" && a[2] == "aliases") rep = aliastable()
+		else if (a[1] == "ALIASES") rep = aliaslist()
+		else if (a[1] == "MULTIROW") rep = multirow()
+		else if (a[1] == "SINGULAR") rep = singular()
+		else if (a[1] == "FINDLIST") rep = findlist(nt > 1 ? a[2] : "")
 		else if (a[1] == "COUNT" && nt == 2) rep = count(a[2])
 		else if (a[1] == "W" && nt == 4) rep = W(a[2], a[3], a[4])
 		else if (a[1] == "WORST" && nt == 2) rep = worst(a[2])

@@ -21,15 +21,23 @@
 #     wins): the whole-sphere row of each method and
 #     precision (proven bound, largest defect found and its input, status);
 #   scripts/wild.md.in: the text, with placeholders
-#     {{TABLE wild}}      one row per engine (aliases point at their target)
+#     {{TABLE wild}}      the engines' own methods, one row each
 #     {{FINDINGS}}        every engine non-finite or above 1e-3 in float: the
 #                         input, the defect, the fix and its proven bound, and
 #                         the paragraph between <!-- para NAME --> and
 #                         <!-- end --> in wild.md.in (generation fails when
 #                         one is missing)
-#     {{FINDLIST}}        the same engines as a short table (the README's),
-#                         the largest float defect first
-#     {{COUNT key}}       engines, methods, aliases, findings
+#     {{TABLE aliases}}   the aliases, grouped by their target (the groups
+#                         in the order of the target's worst defect)
+#     {{ALIASES}}         those groups in words
+#     {{MULTIROW}}        the code bases with more than one row
+#     {{SINGULAR}}        the engines' methods certify calls singular
+#     {{FINDLIST [N]}}    the same engines as a short table (the README's),
+#                         the worst first (the first N)
+#     {{COUNT key}}       rows (= engines), repos, methods, aliases, findings
+#   The engines' rows ({{TABLE wild}}), the findings and the README's list
+#   are sorted by the worst defect found in float (non-finite first), then
+#   in double; a fix with results/wild/patches/FIX.diff links it.
 #     {{W name precision key}}  one engine's figure: found, bound, input,
 #                         eval, speed, fix, fixbound, hand, frame, commit,
 #                         path, repository, source
@@ -76,7 +84,7 @@ generate() {
 	done
 	rc=0
 	awk -v M="$T2/methods.csv" -v A="$T2/aliases.csv" -v X="$T2/axes.csv" -v S="$T2/summary.csv" \
-	    -v WO="$T2/worst.csv" -v TR="$T2/tradeoff.csv" -v C="$CERT" -v TPL="$TPL" -f "$HERE/wild.awk" "$BODY" || rc=1
+	    -v WO="$T2/worst.csv" -v TR="$T2/tradeoff.csv" -v C="$CERT" -v TPL="$TPL" -v PD="$ROOT/results/wild/patches" -f "$HERE/wild.awk" "$BODY" || rc=1
 	rm -rf "$T2"
 	return $rc
 }

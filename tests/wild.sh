@@ -1,7 +1,9 @@
 #!/bin/sh
 # wild.sh - docs/wild.md and the README's engines line against the
-# committed runs and the registry (scripts/wild.sh --check), and the table
-# itself: at least 12 engine rows, each with a 40-hex commit, a path with
+# committed runs and the registry (scripts/wild.sh --check), their layout
+# (findings first, the engines' table sorted by the worst defect, aliases
+# grouped, the README's six worst), the patches in results/wild/patches,
+# and the table itself: at least 12 engine rows, each with a 40-hex commit, a path with
 # its line range and a replay command that `onbstudy eval` runs and that
 # gives the defect the row reports; the generator refuses an engine that
 # fails in float without a maintainer paragraph.  Run from the top
@@ -59,6 +61,53 @@ while IFS= read -r row; do
 	else bad "$name: '$cmd' gives defect $got, the row says $want (bound $bnd)"; fi
 done < "$T/rows"
 
+# the layout of docs/wild.md: the findings (### headings) before the
+# engines' table; that table and the findings sorted by the worst defect
+# found in float (non-finite first), then in double; the aliases grouped
+# by their target; the README's list at most six, the docs' first ones.
+# order FILE: the rows of FILE's engines' table (not the aliases) out of
+# order, "" when sorted; each row's float and double figures as numbers.
+order() {
+	awk -F' [|] ' '
+	function v(s, p) {
+		sub(/ \(.*/, "", s)
+		if (s == "non-finite" || s ~ /nan|inf/) return 1e308 * 10
+		if (s == "-" || s == "") return -1
+		if (s ~ /u$/) { sub(/u$/, "", s); return s * (p == "float" ? 2 ^ -24 : 2 ^ -53) }
+		return s + 0
+	}
+	/^## The engines.* own arithmetic/ { on = 1; next }
+	/^## / { on = 0 }
+	on && /^[|] `/ && !/^[|] `[a-z0-9_]*` = / {
+		split($5, f, " / "); a = v(f[1], "float"); b = v(f[2], "double")
+		name = $1; sub(/^[|] `/, "", name); sub(/`.*/, "", name)
+		if (n && (a > pa || (a == pa && b > pb))) print name " above " prev
+		n++; pa = a; pb = b; prev = name
+	}' "$1"
+}
+got=$(order docs/wild.md)
+if [ -z "$got" ]; then ok; else bad "docs/wild.md's engines' table is not sorted by the worst defect: $got"; fi
+# the check can fail: the table with its first two rows exchanged
+awk '/^## The engines.* own arithmetic/ { on = 1 } on && /^[|] `/ && !held { held = $0; next } { print } held != "" && on && /^[|] `/ && !done { print held; done = 1 }' docs/wild.md > "$T/swap.md"
+if [ -n "$(order "$T/swap.md")" ]; then ok; else bad "the sort check passed a table with its first two rows exchanged"; fi
+# the findings come first, in the table's order
+fl=$(grep -n '^### `' docs/wild.md | tail -1 | cut -d: -f1); tl=$(grep -n "^## The engines.* own arithmetic" docs/wild.md | cut -d: -f1)
+if [ -n "$tl" ] && [ "${fl:-0}" -lt "$tl" ]; then ok; else bad "docs/wild.md: the findings do not come before the engines' table"; fi
+grep '^### `' docs/wild.md | sed 's/^### `\([a-z0-9_]*\)`.*/\1/' > "$T/fnames"
+awk '/^## The engines.* own arithmetic/ { on = 1; next } /^## / { on = 0 } on && /^[|] `/ { n = $0; sub(/^[|] `/, "", n); sub(/`.*/, "", n); print n }' docs/wild.md > "$T/mnames"
+# (the methods' findings in the table's order; an alias's sorts with its target's figures)
+grep -Fxf "$T/mnames" "$T/fnames" > "$T/fm" || true
+grep -Fxf "$T/fnames" "$T/mnames" > "$T/tm" || true
+if [ -s "$T/fm" ] && cmp -s "$T/fm" "$T/tm"; then ok; else bad "docs/wild.md: the findings are not in the engines' table's order"; fi
+# the aliases: each target's rows together
+got=$(grep '^| `[a-z0-9_]*` = `' docs/wild.md | sed 's/^| `[a-z0-9_]*` = `\([a-z0-9_]*\)`.*/\1/' | uniq | sort | uniq -d)
+if [ -z "$got" ]; then ok; else bad "docs/wild.md: the aliases of $got are not grouped"; fi
+# the README: at most six findings, the docs' first ones in the same order
+sed -n '/^<!-- wild:begin/,/^<!-- wild:end/p' README.md | grep '^| `' | sed 's/^| `\([a-z0-9_]*\)`.*/\1/' > "$T/rnames"
+nr=$(wc -l < "$T/rnames")
+if [ "$nr" -ge 1 ] && [ "$nr" -le 6 ] && head -n "$nr" "$T/fnames" | cmp -s - "$T/rnames"; then ok
+else bad "README's engines table is not the first $nr of docs/wild.md's findings (at most six)"; fi
+
 # results/wild/patches: each NAME.diff is the fix NAME of a registry
 # method F (NAME's family, an engine's method), against F's file at F's
 # commit, names F's license, is a unified diff of that file, and is listed
@@ -80,7 +129,7 @@ for d in results/wild/patches/*.diff; do
 	else bad "patches/$p.diff: not a diff of $fam's $f at $c naming its license $l"; fi
 	grep -q "($p.diff)" results/wild/patches/README.md && ok || bad "patches/$p.diff is not in results/wild/patches/README.md"
 done
-[ "$np" -ge 3 ] && ok || bad "results/wild/patches has $np diffs, fewer than 3"
+[ "$np" -ge 4 ] && ok || bad "results/wild/patches has $np diffs, fewer than 4"
 
 # a missing maintainer paragraph stops the generator
 awk '/^<!-- para / { skip = 1; next } skip && /^<!-- end -->$/ { skip = 0; next } !skip' scripts/wild.md.in > "$T/nopara.md.in"

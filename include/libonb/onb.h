@@ -46,6 +46,9 @@
  *     onb_physx            onb_physxf             PhysX PxComputeBasisVectors
  *     onb_rp3d             onb_rp3df              ReactPhysics3D
  *     onb_open3d           onb_open3df            Open3D ConstructOrthogonalBasis
+ *     onb_raylib           onb_raylibf            raylib Vector3Perpendicular + cross
+ *     onb_godot            onb_godotf             Godot get_any_perpendicular + cross
+ *     onb_godot_fixed      onb_godot_fixedf       this project: Godot fixed
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
  *     onb_filament_fixed   onb_filament_fixedf    this project: Filament fixed
  *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
@@ -2037,6 +2040,131 @@ static inline void ONB__K(open3df)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	*b2 = q;
 }
 
+/* ------------------------------------------------------------------ */
+/* raylib (raymath.h Vector3Perpendicular, completed)                   */
+/* ------------------------------------------------------------------ */
+/* raylib picks the cardinal axis e of the smallest |component|: e = x,
+   then y if |y| < min, then z if |z| < min (min = |x|, or |y| after the
+   switch; ties keep the earlier axis), and returns p = cross(v, e) with
+   the zero and one products written out (v.y*e.z - v.z*e.y, ...).  It does
+   not normalize: completed (docs/wild-specs/README.md) with raylib's
+   Vector3Normalize (length = sqrtf(x*x + y*y + z*z); if length != 0,
+   multiply by ilength = 1/length) and b2 = Vector3CrossProduct(n, b1).
+   stark_fixed's arithmetic with another tie rule (and the zero guard).
+   raylib is float only; the double kernel is the same operations in
+   double.  Handedness +1.  Thresholds: |y| = |x|, |z| = min(|x|, |y|).
+   No singular unit direction (|p|^2 >= 2/3 - O(eps)). */
+static inline void ONB__K(raylib)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	double min = fabs(n.x), ex = 1.0, ey = 0.0, ez = 0.0, len;
+	onb_vec3 p;
+	if (fabs(n.y) < min) { min = fabs(n.y); ex = 0.0; ey = 1.0; }
+	if (fabs(n.z) < min) { ex = 0.0; ey = 0.0; ez = 1.0; }
+	p.x = n.y * ez - n.z * ey;
+	p.y = n.z * ex - n.x * ez;
+	p.z = n.x * ey - n.y * ex;
+	len = sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+	if (len != 0.0) {
+		const double il = 1.0 / len;
+		p.x *= il; p.y *= il; p.z *= il;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(raylibf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	float min = fabsf(n.x), ex = 1.0f, ey = 0.0f, ez = 0.0f, len;
+	onb_vec3f p;
+	if (fabsf(n.y) < min) { min = fabsf(n.y); ex = 0.0f; ey = 1.0f; }
+	if (fabsf(n.z) < min) { ex = 0.0f; ey = 0.0f; ez = 1.0f; }
+	p.x = n.y * ez - n.z * ey;
+	p.y = n.z * ex - n.x * ez;
+	p.z = n.x * ey - n.y * ex;
+	len = sqrtf(p.x * p.x + p.y * p.y + p.z * p.z);
+	if (len != 0.0f) {
+		const float il = 1.0f / len;
+		p.x *= il; p.y *= il; p.z *= il;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* godot (Godot Vector3::get_any_perpendicular, completed)              */
+/* ------------------------------------------------------------------ */
+/* (0,0,0) when every |component| < CMP_EPSILON (1e-5; (float)1e-5 in a
+   float build); else p = cross(n, e) with e = RIGHT (1,0,0) when |x| <= |y|
+   and |x| <= |z|, else UP (0,1,0); normalized(): lengthsq = (x*x + y*y) +
+   z*z, (0,0,0) when it is 0, else each component divided by
+   sqrt(lengthsq).  b2 = n.cross(b1), Godot's cross (the completion of
+   docs/wild-specs/README.md).  real_t: float (default) or double
+   (precision=double).  Handedness +1.  Thresholds: |x| = |y|, |x| = |z|.
+   Where |x| is not the smallest and |y| is the largest, p = (-z, 0, x) is
+   short: its squares underflow (float: x, z below ~1e-19) and b1 = b2 = 0;
+   fixed = 1 (godot_fixed, not shipped) takes BACK (0,0,1) when |z| is the
+   smallest of the three (|z| < |y|), so |p|^2 >= 2/3: the same frame at
+   the six axes. */
+static inline void onb__godot(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
+{
+	double ex = 0.0, ey = 0.0, ez = 0.0, lsq;
+	onb_vec3 p;
+	if (fabs(n.x) < 0.00001 && fabs(n.y) < 0.00001 && fabs(n.z) < 0.00001) {
+		p.x = 0.0; p.y = 0.0; p.z = 0.0;
+	} else {
+		if (fabs(n.x) <= fabs(n.y) && fabs(n.x) <= fabs(n.z)) ex = 1.0;
+		else if (!fixed || fabs(n.y) <= fabs(n.z)) ey = 1.0;
+		else ez = 1.0;
+		p.x = n.y * ez - n.z * ey;
+		p.y = n.z * ex - n.x * ez;
+		p.z = n.x * ey - n.y * ex;
+		lsq = p.x * p.x + p.y * p.y + p.z * p.z;
+		if (lsq == 0.0) {
+			p.x = 0.0; p.y = 0.0; p.z = 0.0;
+		} else {
+			const double len = sqrt(lsq);
+			p.x /= len; p.y /= len; p.z /= len;
+		}
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void onb__godotf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fixed)
+{
+	float ex = 0.0f, ey = 0.0f, ez = 0.0f, lsq;
+	onb_vec3f p;
+	if (fabsf(n.x) < (float)0.00001 && fabsf(n.y) < (float)0.00001 && fabsf(n.z) < (float)0.00001) {
+		p.x = 0.0f; p.y = 0.0f; p.z = 0.0f;
+	} else {
+		if (fabsf(n.x) <= fabsf(n.y) && fabsf(n.x) <= fabsf(n.z)) ex = 1.0f;
+		else if (!fixed || fabsf(n.y) <= fabsf(n.z)) ey = 1.0f;
+		else ez = 1.0f;
+		p.x = n.y * ez - n.z * ey;
+		p.y = n.z * ex - n.x * ez;
+		p.z = n.x * ey - n.y * ex;
+		lsq = p.x * p.x + p.y * p.y + p.z * p.z;
+		if (lsq == 0.0f) {
+			p.x = 0.0f; p.y = 0.0f; p.z = 0.0f;
+		} else {
+			const float len = sqrtf(lsq);
+			p.x /= len; p.y /= len; p.z /= len;
+		}
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(godot)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__godot(n, b1, b2, 0); }
+static inline void ONB__K(godotf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__godotf(n, b1, b2, 0); }
+static inline void ONB__K(godot_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__godot(n, b1, b2, 1); }
+static inline void ONB__K(godot_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__godotf(n, b1, b2, 1); }
+
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
    lines with the guard comparing n with the unit diagonal
    d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
@@ -2117,6 +2245,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
+	X(raylib) X(godot) X(godot_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \

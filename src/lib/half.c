@@ -609,6 +609,49 @@ void onb_open3d_fixedh(V n, V *b1, V *b2)
 		o3d_finish(n, hvec(n.y, hsub(n.z, n.x), hneg(n.y)), b1, b2);
 }
 
+/* ---- raylib: the smallest |component|'s axis (ties to the earlier),
+   Vector3Normalize (1/length, skipped when length is 0), cross(n, b1) ---- */
+void onb_raylibh(V n, V *b1, V *b2)
+{
+	H min = habs(n.x), len;
+	V e = hvec(H1, H0, H0), p;
+	if (habs(n.y) < min) { min = habs(n.y); e = hvec(H0, H1, H0); }
+	if (habs(n.z) < min) e = hvec(H0, H0, H1);
+	p = hcross(n, e);
+	len = hsqrt(hdot(p, p));
+	if (len != H0)
+		p = hscale(p, hdiv(H1, len));
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+
+/* ---- godot, godot_fixed: RIGHT or UP (fixed: or BACK), p / |p| by
+   division, (0,0,0) when p.p is 0 or every |n_i| < 1e-5 ---- */
+static void godoth(V n, V *b1, V *b2, int fixed)
+{
+	const H eps = hcst(0.00001);
+	V p = hvec(H0, H0, H0);
+	if (!(habs(n.x) < eps && habs(n.y) < eps && habs(n.z) < eps)) {
+		V e = hvec(H0, H0, H0);
+		H lsq;
+		if (habs(n.x) <= habs(n.y) && habs(n.x) <= habs(n.z)) e.x = H1;
+		else if (!fixed || habs(n.y) <= habs(n.z)) e.y = H1;
+		else e.z = H1;
+		p = hcross(n, e);
+		lsq = hdot(p, p);
+		if (lsq == H0) {
+			p = hvec(H0, H0, H0);
+		} else {
+			const H len = hsqrt(lsq);
+			p = hvec(hdiv(p.x, len), hdiv(p.y, len), hdiv(p.z, len));
+		}
+	}
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+void onb_godoth(V n, V *b1, V *b2)       { godoth(n, b1, b2, 0); }
+void onb_godot_fixedh(V n, V *b1, V *b2) { godoth(n, b1, b2, 1); }
+
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
 void onb_duff_wideh(V n, V *b1, V *b2)

@@ -55,6 +55,12 @@ static const onb_provenance P_RP3D = { "github.com/DanielChappuis/reactphysics3d
 static const onb_provenance P_OPEN3D = { "github.com/isl-org/Open3D", "22a6a307b9b7d88604895f79c0ceeecef2fc6538",
 	"cpp/open3d/geometry/PointCloudPlanarPatchDetection.cpp:697-717", "MIT", "C++ (Eigen)", "double",
 	"source-level IEEE (no -ffast-math, no FMA target by default on x86-64)" };
+static const onb_provenance P_RAYLIB = { "github.com/raysan5/raylib", "abe23bf82dcab18a618067843aed4eec2b24ba97",
+	"src/raymath.h:696-722", "Zlib", "C", "float (raylib has no double build; the double row is the same operations in double)",
+	"source-level IEEE; completed with Vector3Normalize (raymath.h:804-819) and Vector3CrossProduct(n, b1) (:688-693)" };
+static const onb_provenance P_GODOT = { "github.com/godotengine/godot", "2a520db456c6da98f0f1a499cba25c73a0699125",
+	"core/math/vector3.h:GODOT_LINES", "MIT", "C++", "real_t: float, double with precision=double",
+	"source-level IEEE; normalized() and b2 = n.cross(b1) with Godot's own Vector3::normalize and cross (vector3.h)" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -176,7 +182,7 @@ static const onb_method onb__table[] = {
 	  "none", "|n.z| > SIMDSQRT12 (1/sqrt 2 in the format)", +1, 0, NAN, 0, ONB__PTRS(bullet), &P_BULLET },
 	{ "mujoco", "mujoco", "MuJoCo mju_makeFrame, a contact's frame (y-axis undefined)",
 	  "none (n = 0 gives the x-axis as n)", "|n.y| < 1/2 after normalizing n", +1, ONB_NORMALIZES_N, NAN, 0, ONB__PTRS(mujoco), &P_MUJOCO },
-	{ "eigen", "eigen", "Eigen MatrixBase::unitOrthogonal (size 3), b2 = n.cross(b1)",
+	{ "eigen", "eigen", "Eigen MatrixBase::unitOrthogonal (size 3; normalizes); completed: b2 = n.cross(b1)",
 	  "none", "|n.x|, |n.y| <= p |n.z| (p = 1e-5 float, 1e-12 double)", +1, 0, NAN, 0, ONB__PTRS(eigen), &P_EIGEN },
 	{ "physx", "physx", "NVIDIA PhysX PxComputeBasisVectors",
 	  "none (b1 = (1,0,0) is off by |n.x| <= 0.0141 where |n.y| > 0.9999f)", "|n.y| <= 0.9999f", +1, 0, NAN, 0, ONB__PTRS(physx), &P_PHYSX },
@@ -184,6 +190,13 @@ static const onb_method onb__table[] = {
 	  "none", "the smallest |n_i| (ties to the later axis)", +1, 0, NAN, 0, ONB__PTRS(rp3d), &P_RP3D },
 	{ "open3d", "open3d", "Open3D PlaneDetector::ConstructOrthogonalBasis (Eigen)",
 	  "n parallel to (0,1,1): b1 = b2 = 0", "|(0,1,1) - n|^2 > 1e-3 (always on the unit sphere)", +1, 0, NAN, 0, ONB__PTRS(open3d), &P_OPEN3D },
+	{ "raylib", "raylib", "raylib Vector3Perpendicular; completed: b1 = Vector3Normalize(p), b2 = Vector3CrossProduct(n, b1)",
+	  "none", "the smallest |n_i| (ties to the earlier axis)", +1, 0, NAN, 0, ONB__PTRS(raylib), &P_RAYLIB },
+	{ "godot", "godot", "Godot Vector3::get_any_perpendicular (normalizes); completed: b2 = n.cross(b1)",
+	  "none exactly; float: b1 = b2 = 0 where |n.x| > |n.z| and n.x^2 + n.z^2 underflows (|n.y| ~ 1)",
+	  "|n.x| <= |n.y| and |n.x| <= |n.z| (RIGHT), else UP", +1, 0, NAN, 0, ONB__PTRS(godot), &P_GODOT },
+	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
+	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },
 	/* This project's fixes of three of them, not shipped code: one change each
 	   to the engine's lines, keeping its frame at +-x, +-y, +-z. */
 	{ "physx_fixed", "physx", "onbstudy, not shipped: PhysX PxComputeBasisVectors with right = up.cross(dir) in the |y| > 0.9999f branch",

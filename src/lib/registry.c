@@ -59,8 +59,8 @@ static const onb_provenance P_RAYLIB = { "github.com/raysan5/raylib", "abe23bf82
 	"src/raymath.h:696-722", "Zlib", "C", "float (raylib has no double build; the double row is the same operations in double)",
 	"source-level IEEE; completed with Vector3Normalize (raymath.h:804-819) and Vector3CrossProduct(n, b1) (:688-693)" };
 static const onb_provenance P_GODOT = { "github.com/godotengine/godot", "2a520db456c6da98f0f1a499cba25c73a0699125",
-	"core/math/vector3.h:GODOT_LINES", "MIT", "C++", "real_t: float, double with precision=double",
-	"source-level IEEE; normalized() and b2 = n.cross(b1) with Godot's own Vector3::normalize and cross (vector3.h)" };
+	"core/math/vector3.h:380-388", "MIT", "C++", "real_t: float, double with precision=double",
+	"source-level IEEE; normalized() (Vector3::normalize, lengthsq == 0 -> zeros, else divide by sqrt) and b2 = n.cross(b1) (vector3.h:244-251)" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };

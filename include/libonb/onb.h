@@ -48,7 +48,11 @@
  *     onb_open3d           onb_open3df            Open3D ConstructOrthogonalBasis
  *     onb_raylib           onb_raylibf            raylib Vector3Perpendicular + cross
  *     onb_godot            onb_godotf             Godot get_any_perpendicular + cross
+ *     onb_directxmath      onb_directxmathf       DirectXMath XMVector3Orthogonal + cross
+ *     onb_ogre             onb_ogref              Ogre Vector3::perpendicular + cross
+ *     onb_bx               onb_bxf                bgfx bx::calcTangentFrame
  *     onb_godot_fixed      onb_godot_fixedf       this project: Godot fixed
+ *     onb_bx_fixed         onb_bx_fixedf          this project: bx fixed
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
  *     onb_filament_fixed   onb_filament_fixedf    this project: Filament fixed
  *     onb_open3d_fixed     onb_open3d_fixedf      this project: Open3D fixed
@@ -2165,6 +2169,191 @@ static inline void ONB__K(godotf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { o
 static inline void ONB__K(godot_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__godot(n, b1, b2, 1); }
 static inline void ONB__K(godot_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__godotf(n, b1, b2, 1); }
 
+/* ------------------------------------------------------------------ */
+/* directxmath (DirectXMath XMVector3Orthogonal, completed)             */
+/* ------------------------------------------------------------------ */
+/* XMVector3Orthogonal (x86 SSE path; its lanes written out): with
+   same = ((z < 0) == (y < 0)), p = (y + z, 0 - x, 0 - x) when same, else
+   (y - z, 0 - x, x): |p.x| = |y| + |z| either way, so |p|^2 = (|y| + |z|)^2
+   + 2 x^2 >= 1 + x^2 on the unit sphere (no cancellation anywhere).  It
+   does not normalize: completed (docs/wild-specs/README.md) with
+   XMVector3Normalize's SSE path (lengthsq = (x*x + y*y) + z*z, each
+   component divided by sqrt(lengthsq); +0 when that is 0, the quiet NaN
+   when lengthsq is +inf) and b2 = XMVector3Cross(n, b1) (SSE, no FMA: the
+   default x64 build).  DirectXMath is float only; the double kernel is the
+   same operations in double.  Handedness +1.  Threshold: signbit-free
+   z < 0 against y < 0.  No singular unit direction. */
+static inline void ONB__K(directxmath)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const int same = (n.z < 0.0) == (n.y < 0.0);
+	onb_vec3 p;
+	double lsq, len;
+	p.x = same ? n.y + n.z : n.y - n.z;
+	p.y = 0.0 - n.x;
+	p.z = same ? 0.0 - n.x : n.x;
+	lsq = (p.x * p.x + p.y * p.y) + p.z * p.z;
+	len = sqrt(lsq);
+	if (lsq == (double)INFINITY) {
+		p.x = p.y = p.z = (double)NAN;
+	} else if (len == 0.0) {
+		p.x = p.y = p.z = 0.0;
+	} else {
+		p.x = p.x / len; p.y = p.y / len; p.z = p.z / len;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(directxmathf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const int same = (n.z < 0.0f) == (n.y < 0.0f);
+	onb_vec3f p;
+	float lsq, len;
+	p.x = same ? n.y + n.z : n.y - n.z;
+	p.y = 0.0f - n.x;
+	p.z = same ? 0.0f - n.x : n.x;
+	lsq = (p.x * p.x + p.y * p.y) + p.z * p.z;
+	len = sqrtf(lsq);
+	if (lsq == INFINITY) {
+		p.x = p.y = p.z = NAN;
+	} else if (len == 0.0f) {
+		p.x = p.y = p.z = 0.0f;
+	} else {
+		p.x = p.x / len; p.y = p.y / len; p.z = p.z / len;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* ogre (Ogre Vector3::perpendicular, completed)                        */
+/* ------------------------------------------------------------------ */
+/* Hocevar's vector: p = (-y, x, 0) when |x| > |z|, else (0, -z, y);
+   normalisedCopy(): length = sqrt(dotProduct(p)) with dotProduct summed
+   from 0 in component order, if length > 0 each component multiplied by
+   1/length.  Ogre normalizes, so b1 = p as returned; b2 =
+   n.crossProduct(b1) (docs/wild-specs/README.md).  Real: float, double
+   with OGRE_DOUBLE_PRECISION.  hughes_moeller's vectors, but as b1 and
+   with b2 = n x b1 (HM takes them as b2).  Handedness +1.  Threshold:
+   |x| = |z|.  No singular unit direction (|p|^2 >= 1/2 - O(eps)). */
+static inline void ONB__K(ogre)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	double sq, len;
+	if (fabs(n.x) > fabs(n.z)) { p.x = -n.y; p.y = n.x; p.z = 0.0; }
+	else { p.x = 0.0; p.y = -n.z; p.z = n.y; }
+	sq = 0.0;
+	sq += p.x * p.x; sq += p.y * p.y; sq += p.z * p.z;
+	len = sqrt(sq);
+	if (len > 0.0) {
+		const double inv = 1.0 / len;
+		p.x *= inv; p.y *= inv; p.z *= inv;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+static inline void ONB__K(ogref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	float sq, len;
+	if (fabsf(n.x) > fabsf(n.z)) { p.x = -n.y; p.y = n.x; p.z = 0.0f; }
+	else { p.x = 0.0f; p.y = -n.z; p.z = n.y; }
+	sq = 0.0f;
+	sq += p.x * p.x; sq += p.y * p.y; sq += p.z * p.z;
+	len = sqrtf(sq);
+	if (len > 0.0f) {
+		const float inv = 1.0f / len;
+		p.x *= inv; p.y *= inv; p.z *= inv;
+	}
+	*b1 = p;
+	b2->x = n.y * p.z - n.z * p.y;
+	b2->y = n.z * p.x - n.x * p.z;
+	b2->z = n.x * p.y - n.y * p.x;
+}
+
+/* ------------------------------------------------------------------ */
+/* bx (bgfx's bx::calcTangentFrame), bx_fixed                           */
+/* ------------------------------------------------------------------ */
+/* pbrt-v3's vectors on another branch: if |x| > |z| (bx::abs: a < 0 ? -a :
+   a), T = (-z, 0, x) * rcpSafe(sqrt(x*x + z*z)), else T = (0, z, -y) *
+   rcpSafe(sqrt(y*y + z*z)); B = cross(n, T).  bx::sqrt (sqrtSimd on x86)
+   returns 0 below kFloatSmallest = FLT_MIN (and a NaN pattern below 0);
+   rcpSafe(a) = 1 / copysign(max(FLT_MIN, |a|), a), so a flushed square
+   gives T = (-z, 0, x) * 2^126.  Where |x| > |z| but |y| ~ 1 the squares
+   are tiny: in float |T| grows to ~8.5e17 at n = (1e-20, 1, 0).  bx is
+   float only; the double kernel is the same operations (and the same
+   FLT_MIN constant) in double.  fixed = 1 (bx_fixed, not shipped): the
+   branch |x| > |y| (pbrt-v3's), so the square is >= 1/2: the same frame
+   at the six axes.  Handedness +1. */
+/* bx::kFloatSmallest = 1.175494351e-38f = FLT_MIN = 0x1p-126f */
+static inline double onb__bx_sqrt(double a)
+{
+	if (a < 0.0)
+		return (double)NAN;
+	if (a < (double)0x1p-126f)
+		return 0.0;
+	return sqrt(a);
+}
+static inline double onb__bx_rcp_safe(double a)
+{
+	const double m = (double)0x1p-126f > (a < 0.0 ? -a : a) ? (double)0x1p-126f : (a < 0.0 ? -a : a);
+	return 1.0 / copysign(m, a);
+}
+static inline float onb__bx_sqrtf(float a)
+{
+	if (a < 0.0f)
+		return NAN;
+	if (a < 0x1p-126f)
+		return 0.0f;
+	return sqrtf(a);
+}
+static inline float onb__bx_rcp_safef(float a)
+{
+	const float m = 0x1p-126f > (a < 0.0f ? -a : a) ? 0x1p-126f : (a < 0.0f ? -a : a);
+	return 1.0f / copysignf(m, a);
+}
+static inline void onb__bx(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
+{
+	const double ax = n.x < 0.0 ? -n.x : n.x, ay = n.y < 0.0 ? -n.y : n.y, az = n.z < 0.0 ? -n.z : n.z;
+	onb_vec3 t;
+	if (fixed ? ax > ay : ax > az) {
+		const double inv = onb__bx_rcp_safe(onb__bx_sqrt(n.x * n.x + n.z * n.z));
+		t.x = -n.z * inv; t.y = 0.0; t.z = n.x * inv;
+	} else {
+		const double inv = onb__bx_rcp_safe(onb__bx_sqrt(n.y * n.y + n.z * n.z));
+		t.x = 0.0; t.y = n.z * inv; t.z = -n.y * inv;
+	}
+	*b1 = t;
+	b2->x = n.y * t.z - n.z * t.y;
+	b2->y = n.z * t.x - n.x * t.z;
+	b2->z = n.x * t.y - n.y * t.x;
+}
+static inline void onb__bxf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fixed)
+{
+	const float ax = n.x < 0.0f ? -n.x : n.x, ay = n.y < 0.0f ? -n.y : n.y, az = n.z < 0.0f ? -n.z : n.z;
+	onb_vec3f t;
+	if (fixed ? ax > ay : ax > az) {
+		const float inv = onb__bx_rcp_safef(onb__bx_sqrtf(n.x * n.x + n.z * n.z));
+		t.x = -n.z * inv; t.y = 0.0f; t.z = n.x * inv;
+	} else {
+		const float inv = onb__bx_rcp_safef(onb__bx_sqrtf(n.y * n.y + n.z * n.z));
+		t.x = 0.0f; t.y = n.z * inv; t.z = -n.y * inv;
+	}
+	*b1 = t;
+	b2->x = n.y * t.z - n.z * t.y;
+	b2->y = n.z * t.x - n.x * t.z;
+	b2->z = n.x * t.y - n.y * t.x;
+}
+static inline void ONB__K(bx)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__bx(n, b1, b2, 0); }
+static inline void ONB__K(bxf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__bxf(n, b1, b2, 0); }
+static inline void ONB__K(bx_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__bx(n, b1, b2, 1); }
+static inline void ONB__K(bx_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__bxf(n, b1, b2, 1); }
+
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
    lines with the guard comparing n with the unit diagonal
    d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
@@ -2245,7 +2434,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(raylib) X(godot) X(godot_fixed) \
+	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \

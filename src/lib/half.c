@@ -652,6 +652,54 @@ static void godoth(V n, V *b1, V *b2, int fixed)
 void onb_godoth(V n, V *b1, V *b2)       { godoth(n, b1, b2, 0); }
 void onb_godot_fixedh(V n, V *b1, V *b2) { godoth(n, b1, b2, 1); }
 
+/* ---- directxmath: (y + z, 0 - x, 0 - x) or (y - z, 0 - x, x), divided by
+   its length (+0 for a zero length, NaN for an infinite square), cross ---- */
+void onb_directxmathh(V n, V *b1, V *b2)
+{
+	const int same = (n.z < H0) == (n.y < H0);
+	V p = hvec(same ? hadd(n.y, n.z) : hsub(n.y, n.z), hsub(H0, n.x), same ? hsub(H0, n.x) : n.x);
+	const H lsq = hdot(p, p), len = hsqrt(lsq);
+	if (lsq == (H)INFINITY)
+		p = hvec((H)NAN, (H)NAN, (H)NAN);
+	else if (len == H0)
+		p = hvec(H0, H0, H0);
+	else
+		p = hvec(hdiv(p.x, len), hdiv(p.y, len), hdiv(p.z, len));
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+
+/* ---- ogre: Hocevar's vector, normalisedCopy (1/length from a sum
+   started at 0, skipped when length is 0), cross(n, b1) ---- */
+void onb_ogreh(V n, V *b1, V *b2)
+{
+	V p = habs(n.x) > habs(n.z) ? hvec(hneg(n.y), n.x, H0) : hvec(H0, hneg(n.z), n.y);
+	H sq = H0, len;
+	sq = hadd(sq, hmul(p.x, p.x)); sq = hadd(sq, hmul(p.y, p.y)); sq = hadd(sq, hmul(p.z, p.z));
+	len = hsqrt(sq);
+	if (len > H0)
+		p = hscale(p, hdiv(H1, len));
+	*b1 = p;
+	*b2 = hcross(n, p);
+}
+
+/* ---- bx, bx_fixed: bx::sqrt (0 below kFloatSmallest) and rcpSafe with
+   kFloatSmallest rounded to binary16 (0) ---- */
+static void bxh(V n, V *b1, V *b2, int fixed)
+{
+	const H small = hcst(0x1p-126);
+	const H ax = n.x < H0 ? hneg(n.x) : n.x, ay = n.y < H0 ? hneg(n.y) : n.y, az = n.z < H0 ? hneg(n.z) : n.z;
+	const int first = fixed ? ax > ay : ax > az;
+	const H a = first ? n.x : n.y, s2 = hadd(hmul(a, a), hmul(n.z, n.z));
+	const H s = s2 < small ? H0 : hsqrt(s2), as = s < H0 ? hneg(s) : s;
+	const H inv = hdiv(H1, (H)copysignf((float)(small > as ? small : as), (float)s));
+	V t = first ? hvec(hmul(hneg(n.z), inv), H0, hmul(n.x, inv)) : hvec(H0, hmul(n.z, inv), hmul(hneg(n.y), inv));
+	*b1 = t;
+	*b2 = hcross(n, t);
+}
+void onb_bxh(V n, V *b1, V *b2)       { bxh(n, b1, b2, 0); }
+void onb_bx_fixedh(V n, V *b1, V *b2) { bxh(n, b1, b2, 1); }
+
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
 void onb_duff_wideh(V n, V *b1, V *b2)

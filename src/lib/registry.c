@@ -61,6 +61,15 @@ static const onb_provenance P_RAYLIB = { "github.com/raysan5/raylib", "abe23bf82
 static const onb_provenance P_GODOT = { "github.com/godotengine/godot", "2a520db456c6da98f0f1a499cba25c73a0699125",
 	"core/math/vector3.h:380-388", "MIT", "C++", "real_t: float, double with precision=double",
 	"source-level IEEE; normalized() (Vector3::normalize, lengthsq == 0 -> zeros, else divide by sqrt) and b2 = n.cross(b1) (vector3.h:244-251)" };
+static const onb_provenance P_DIRECTXMATH = { "github.com/microsoft/DirectXMath", "d33ba2f150aeb6d3cf62d10f454652ee83672200",
+	"Inc/DirectXMathVector.inl:10195-10215", "MIT", "C++ (SSE intrinsics)", "float (XMVECTOR; the double row is the same operations in double)",
+	"the default x64 build (_XM_SSE_INTRINSICS_, no FMA); completed with XMVector3Normalize (:9880-9994, SSE path: divides) and XMVector3Cross(n, b1) (:9529-9575)" };
+static const onb_provenance P_OGRE = { "github.com/OGRECave/ogre", "3e955a168617aa13edd418c8a2e4a9a72b6a0247",
+	"OgreMain/include/OgreVector.h:748-755", "MIT", "C++", "Real: float, double with OGRE_DOUBLE_PRECISION",
+	"source-level IEEE; normalisedCopy (:494-519: 1/length, multiplied, skipped when length is 0; dotProduct :423-429) and b2 = n.crossProduct(b1) (:757-763)" };
+static const onb_provenance P_BX = { "github.com/bkaradzic/bx", "43bfe2940275ef7fa5bc362814883d5252715122",
+	"include/bx/inline/math.inl:1327-1349", "BSD-2-Clause", "C++", "float (bx has no double build; the double row is the same operations and constants in double)",
+	"x86 with BX_SIMD_SUPPORTED: sqrt = sqrtSimd (:857-875, 0 below kFloatSmallest), rcpSafe (:264-267), cross (:1221-1229); source-level IEEE" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -195,8 +204,17 @@ static const onb_method onb__table[] = {
 	{ "godot", "godot", "Godot Vector3::get_any_perpendicular (normalizes); completed: b2 = n.cross(b1)",
 	  "none exactly; float: b1 = b2 = 0 where |n.x| > |n.z| and n.x^2 + n.z^2 underflows (|n.y| ~ 1)",
 	  "|n.x| <= |n.y| and |n.x| <= |n.z| (RIGHT), else UP", +1, 0, NAN, 0, ONB__PTRS(godot), &P_GODOT },
+	{ "directxmath", "directxmath", "DirectXMath XMVector3Orthogonal; completed: b1 = XMVector3Normalize(p), b2 = XMVector3Cross(n, b1)",
+	  "none", "(n.z < 0) == (n.y < 0): p = (y + z, -x, -x), else (y - z, -x, x)", +1, 0, NAN, 0, ONB__PTRS(directxmath), &P_DIRECTXMATH },
+	{ "ogre", "ogre", "Ogre Vector3::perpendicular (Hocevar's vector, normalizes); completed: b2 = n.crossProduct(b1)",
+	  "none", "|n.x| > |n.z|: (-y, x, 0), else (0, -z, y)", +1, 0, NAN, 0, ONB__PTRS(ogre), &P_OGRE },
+	{ "bx", "bx", "bgfx bx::calcTangentFrame: T = pbrt-v3's vector on |n.x| > |n.z|, rcpSafe(sqrt), B = cross(n, T)",
+	  "none exactly; where |n.x| > |n.z| and n.x^2 + n.z^2 < FLT_MIN (|n.y| ~ 1) sqrt flushes to 0 and |T| ~ |n.x| 2^126",
+	  "|n.x| > |n.z|", +1, 0, NAN, 0, ONB__PTRS(bx), &P_BX },
 	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
 	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },
+	{ "bx_fixed", "bx", "onbstudy, not shipped: bx::calcTangentFrame with pbrt-v3's branch |n.x| > |n.y|",
+	  "none", "|n.x| > |n.y|", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(bx_fixed), NULL },
 	/* This project's fixes of three of them, not shipped code: one change each
 	   to the engine's lines, keeping its frame at +-x, +-y, +-z. */
 	{ "physx_fixed", "physx", "onbstudy, not shipped: PhysX PxComputeBasisVectors with right = up.cross(dir) in the |y| > 0.9999f branch",

@@ -61,7 +61,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const int zneg = cm_branch(c, 0, CM_LT, n[2], K(0.0));
 	const int yneg = cm_branch(c, 1, CM_LT, n[1], K(0.0));
-	cv len;
+	cv len, lsq;
 	int i;
 	(void)m;
 	out[1] = SUB(K(0.0), n[0]);
@@ -70,9 +70,22 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	} else {
 		out[0] = SUB(n[1], n[2]); out[2] = n[0];
 	}
-	len = cm_sqrt(c, P, mk_dot3_xf(c, P, out, out));
-	for (i = 0; i < 3; i++)
-		out[i] = DIV(out[i], len);
+	lsq = mk_dot3_xf(c, P, out, out);
+	len = cm_sqrt(c, P, lsq);
+	/* XMVector3Normalize's guards (only off the unit sphere): an infinite
+	   length squared gives NaN, a zero length gives 0 */
+	if (!cm_branch(c, 2, CM_LT, lsq, K(INFINITY))) {
+		cm_formula_nonzero(c, CQ_ALL);
+		for (i = 0; i < 3; i++)
+			out[i] = K(NAN);
+	} else if (!cm_branch(c, 3, CM_GT, len, K(0.0))) {
+		cm_formula_nonzero(c, CQ_ALL);
+		for (i = 0; i < 3; i++)
+			out[i] = K(0.0);
+	} else {
+		for (i = 0; i < 3; i++)
+			out[i] = DIV(out[i], len);
+	}
 	mk_cross_out(c, P, n, out, 1, 1, "ssf");
 }
 
@@ -82,6 +95,6 @@ static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
 FAMILY_DECLARE(directxmath);
 const study_family family_directxmath = {
 	"directxmath", FAMILY_PASSES(directxmath), names, mpfr, FAMILY_PAIRS(directxmath), family_no_variant,
-	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_no_exact_zero, model, 4, zero_any_n, family_no_singular, family_meets_none,
 };
 #endif

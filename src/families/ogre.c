@@ -57,9 +57,16 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	sq = K(0.0);
 	for (i = 0; i < 3; i++)
 		sq = ADDM(sq, out[i], out[i]);
-	inv = DIV(K(1.0), cm_sqrt(c, P, sq));
-	for (i = 0; i < 3; i++)
-		out[i] = MUL(out[i], inv);
+	inv = cm_sqrt(c, P, sq);
+	/* normalisedCopy's guard: skipped when the length is 0 (only off the
+	   unit sphere, where a tiny n's squares underflow) */
+	if (cm_branch(c, 1, CM_GT, inv, K(0.0))) {
+		inv = DIV(K(1.0), inv);
+		for (i = 0; i < 3; i++)
+			out[i] = MUL(out[i], inv);
+	} else {
+		cm_formula_nonzero(c, CQ_ALL);
+	}
 	mk_cross_out(c, P, n, out, 1, 1, "ssf");
 }
 
@@ -68,6 +75,6 @@ static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
 FAMILY_DECLARE(ogre);
 const study_family family_ogre = {
 	"ogre", FAMILY_PASSES(ogre), names, mpfr, FAMILY_PAIRS(ogre), family_no_variant,
-	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
 };
 #endif

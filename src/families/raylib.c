@@ -54,8 +54,9 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
 	kit_cross(c, r2, n, r1);
 }
 
-/* Two branch points: |y| < |x|, then |z| < the smaller.  The guard
-   length != 0 is not a branch here: |p|^2 >= 2/3 |n|^2 (1 - O(u)). */
+/* Three branch points: |y| < |x|, then |z| < the smaller, then the
+   guard length > 0 (never false on the unit sphere: |p|^2 >= 2/3 |n|^2
+   (1 - O(u)); off it, in binary16, a tiny n's |p|^2 underflows). */
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const int y = cm_branch_abs(c, 0, CM_LT, n[1], n[0]);
@@ -75,7 +76,17 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		out[5] = MSUB(n[0], out[1], MUL(n[1], out[0]));
 		return;
 	}
-	mk_post_n_cross_u(c, P, n, p, DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, p, p))), out);
+	{
+		/* Vector3Normalize's guard: skipped when the length is 0 (only
+		   off the unit sphere: a tiny n whose |p|^2 underflows) */
+		const cv len = cm_sqrt(c, P, mk_dot3(c, P, p, p));
+		if (cm_branch(c, 2, CM_GT, len, K(0.0))) {
+			mk_post_n_cross_u(c, P, n, p, DIV(K(1.0), len), out);
+		} else {
+			cm_formula_nonzero(c, CQ_ALL);
+			mk_post_n_cross_u(c, P, n, p, K(1.0), out); /* b1 = p, unnormalized */
+		}
+	}
 }
 
 static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
@@ -83,6 +94,6 @@ static unsigned zero_any_n(const onb_method *m) { (void)m; return ZN_UNIT_B1; }
 FAMILY_DECLARE(raylib);
 const study_family family_raylib = {
 	"raylib", FAMILY_PASSES(raylib), names, mpfr, FAMILY_PAIRS(raylib), family_no_variant,
-	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
 };
 #endif

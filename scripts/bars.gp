@@ -9,7 +9,8 @@ set style fill solid 0.85 border -1
 set boxwidth 0.8
 set yrange [0:2.45]
 set ytics 0, 0.5, 2
-stats file using 2 nooutput
+last_len = 0
+stats file using (last_len = strlen(strcol(1)), $2) nooutput
 nb = STATS_records
 # (at least 12 slots, the bars centred: a run of few methods keeps bars
 # of the usual width, not one slab across the graph)
@@ -21,8 +22,9 @@ set xlabel "method" font F_AXIS
 set title ttl font F_TITLE noenhanced
 set key top right opaque noenhanced  # in the band above 2, which no bar reaches
 # room below for the rotated names, and at the right for the last one
+# (at -45 degrees a name of k characters reaches about 0.71 k to the right)
 set bmargin 12
-set rmargin 6
+set rmargin (last_len * 0.75 + 2 > 6) ? int(last_len * 0.75 + 2) : 6
 do for [term_i = 1:NTERM] {
     eval term(term_i, W_MULTI * 3 / 4, H_SINGLE)
     set output out.ext(term_i)

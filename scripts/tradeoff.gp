@@ -23,6 +23,7 @@ data = dir."/tradeoff_".prec.".dat"
 front = dir."/stairs_".prec.".dat"
 front_rms = dir."/stairs_rms_".prec.".dat"
 stats data using 1 nooutput
+npts = STATS_records
 xmin = STATS_min / 1.5
 xmax = STATS_max * 1.6
 # y: from the data, and up to the non-finite band only when a point is in it
@@ -33,7 +34,9 @@ stats data using 6 nooutput
 ymin1 = STATS_min / 5
 ymax1 = (STATS_max >= ceil) ? ceil * 4 : STATS_max * 4
 W = single ? W_SINGLE : W_MULTI
-H = single ? H_SINGLE + 110 : 790
+# taller with many methods: the labels need free rows (50 methods filled
+# 790 px, and a label with no free spot would overprint another)
+H = single ? H_SINGLE + 110 : (npts > 30 ? 790 + (npts - 30) * 14 : 790)
 # the graph's size in pixels (for the label placer's character sizes)
 gw = (single ? W : W / 2) - 150
 gh = H - 170

@@ -15,12 +15,12 @@ others=$(nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | grep -v '^on
 if [ -z "$others" ]; then ok; else bad "non-onb_ global symbols in libonb.a: $others"; fi
 # External references: libm (fma: cycles_cross111_avx2), libc's memcpy/memset/strcmp, and libgcc's CPU
 # detection for the ifunc resolvers; libgcc's binary16 conversions and
-# comparison (__extendhfsf2, __truncsfhf2, __extendhfdf2, __truncdfhf2,
-# __eqhf2: the half entry points of src/lib/half.c without F16C; compiler-rt
+# comparisons (__extendhfsf2, __truncsfhf2, __extendhfdf2, __truncdfhf2,
+# __eqhf2, __nehf2 and the other comparisons: the half entry points of src/lib/half.c without F16C; compiler-rt
 # has the same names), which every gcc or clang link adds by itself.
 # Nothing else (no MPFR, no OpenMP).
 nm -g --defined-only libonb.a | awk 'NF == 3 {print $3}' | sort -u > "$tmp/defined"
-undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(__asan_.*|__ubsan_.*|__sanitizer_.*|sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|fma|fmaf|memcpy|memset|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|__extendhfsf2|__truncsfhf2|__extendhfdf2|__truncdfhf2|__eqhf2|_GLOBAL_OFFSET_TABLE_)$' || true)
+undef=$(nm -u libonb.a | awk '{print $2}' | sort -u | comm -23 - "$tmp/defined" | grep -v -E '^(__asan_.*|__ubsan_.*|__sanitizer_.*|sqrt|sqrtf|copysign|copysignf|fmax|fmaxf|fma|fmaf|memcpy|memset|strcmp|__cpu_model|__cpu_indicator_init|__cpu_features2|__extendhfsf2|__truncsfhf2|__extendhfdf2|__truncdfhf2|__eqhf2|__nehf2|__lthf2|__lehf2|__gthf2|__gehf2|__unordhf2|_GLOBAL_OFFSET_TABLE_)$' || true)
 if [ -z "$undef" ]; then ok; else bad "libonb.a needs more than libm and libc: $undef"; fi
 
 # 2. a renderer-like program elsewhere

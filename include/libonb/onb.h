@@ -255,6 +255,9 @@
 #else
 #define ONB__CAST(t, x) ((t)(x))
 #endif
+/* x == 0 (false for NaN, as ==) without -Wfloat-equal's warning: clients
+   build onb.h with it (tests/lib_client.sh) */
+#define ONB__IS0(x) ((x) <= 0 && (x) >= 0)
 
 /* The hardware rsqrt (the _rsqrt variants): on x86-64 GCC and clang reach
    rsqrtss through their builtin, without <xmmintrin.h>; other compilers
@@ -1346,14 +1349,14 @@ static inline T onb__osl_len##S(T x, T y, T z) \
 { \
 	const T l2 = x * x + y * y + z * z; \
 	T ax, ay, az, m; \
-	if (!(l2 < (T)2 * TMIN)) \
+	if (!(l2 < ONB__CAST(T, 2) * TMIN)) \
 		return SQRT(l2); \
-	ax = (x >= (T)0) ? x : -x; ay = (y >= (T)0) ? y : -y; az = (z >= (T)0) ? z : -z; \
+	ax = (x >= ONB__CAST(T, 0)) ? x : -x; ay = (y >= ONB__CAST(T, 0)) ? y : -y; az = (z >= ONB__CAST(T, 0)) ? z : -z; \
 	m = ax; \
 	if (m < ay) m = ay; \
 	if (m < az) m = az; \
-	if (m == (T)0) \
-		return (T)0; \
+	if (ONB__IS0(m)) \
+		return ONB__CAST(T, 0); \
 	ax /= m; ay /= m; az /= m; \
 	return m * SQRT(ax * ax + ay * ay + az * az); \
 }
@@ -1363,10 +1366,10 @@ static inline void ONB__K(osl_ortho)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 {
 	onb_vec3 p;
 	double l;
-	if (fabs(n.x) > (double).01f) { p.x = n.z; p.y = 0.0; p.z = -n.x; }
+	if (fabs(n.x) > ONB__CAST(double, .01f)) { p.x = n.z; p.y = 0.0; p.z = -n.x; }
 	else                          { p.x = 0.0; p.y = -n.z; p.z = n.y; }
 	l = onb__osl_lend(p.x, p.y, p.z);
-	if (l != 0.0) { p.x /= l; p.y /= l; p.z /= l; }
+	if (!ONB__IS0(l)) { p.x /= l; p.y /= l; p.z /= l; }
 	*b1 = p;
 	b2->x = n.y * p.z - n.z * p.y;
 	b2->y = n.z * p.x - n.x * p.z;
@@ -1379,7 +1382,7 @@ static inline void ONB__K(osl_orthof)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	if (fabsf(n.x) > .01f) { p.x = n.z; p.y = 0.0f; p.z = -n.x; }
 	else                   { p.x = 0.0f; p.y = -n.z; p.z = n.y; }
 	l = onb__osl_lenf(p.x, p.y, p.z);
-	if (l != 0.0f) { p.x /= l; p.y /= l; p.z /= l; }
+	if (!ONB__IS0(l)) { p.x /= l; p.y /= l; p.z /= l; }
 	*b1 = p;
 	b2->x = n.y * p.z - n.z * p.y;
 	b2->y = n.z * p.x - n.x * p.z;
@@ -2068,7 +2071,7 @@ static inline void ONB__K(raylib)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	p.y = n.z * ex - n.x * ez;
 	p.z = n.x * ey - n.y * ex;
 	len = sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
-	if (len != 0.0) {
+	if (!ONB__IS0(len)) {
 		const double il = 1.0 / len;
 		p.x *= il; p.y *= il; p.z *= il;
 	}
@@ -2087,7 +2090,7 @@ static inline void ONB__K(raylibf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	p.y = n.z * ex - n.x * ez;
 	p.z = n.x * ey - n.y * ex;
 	len = sqrtf(p.x * p.x + p.y * p.y + p.z * p.z);
-	if (len != 0.0f) {
+	if (!ONB__IS0(len)) {
 		const float il = 1.0f / len;
 		p.x *= il; p.y *= il; p.z *= il;
 	}
@@ -2126,7 +2129,7 @@ static inline void onb__godot(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
 		p.y = n.z * ex - n.x * ez;
 		p.z = n.x * ey - n.y * ex;
 		lsq = p.x * p.x + p.y * p.y + p.z * p.z;
-		if (lsq == 0.0) {
+		if (ONB__IS0(lsq)) {
 			p.x = 0.0; p.y = 0.0; p.z = 0.0;
 		} else {
 			const double len = sqrt(lsq);
@@ -2142,7 +2145,7 @@ static inline void onb__godotf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fi
 {
 	float ex = 0.0f, ey = 0.0f, ez = 0.0f, lsq;
 	onb_vec3f p;
-	if (fabsf(n.x) < (float)0.00001 && fabsf(n.y) < (float)0.00001 && fabsf(n.z) < (float)0.00001) {
+	if (fabsf(n.x) < ONB__CAST(float, 0.00001) && fabsf(n.y) < ONB__CAST(float, 0.00001) && fabsf(n.z) < ONB__CAST(float, 0.00001)) {
 		p.x = 0.0f; p.y = 0.0f; p.z = 0.0f;
 	} else {
 		if (fabsf(n.x) <= fabsf(n.y) && fabsf(n.x) <= fabsf(n.z)) ex = 1.0f;
@@ -2152,7 +2155,7 @@ static inline void onb__godotf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fi
 		p.y = n.z * ex - n.x * ez;
 		p.z = n.x * ey - n.y * ex;
 		lsq = p.x * p.x + p.y * p.y + p.z * p.z;
-		if (lsq == 0.0f) {
+		if (ONB__IS0(lsq)) {
 			p.x = 0.0f; p.y = 0.0f; p.z = 0.0f;
 		} else {
 			const float len = sqrtf(lsq);
@@ -2193,9 +2196,9 @@ static inline void ONB__K(directxmath)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	p.z = same ? 0.0 - n.x : n.x;
 	lsq = (p.x * p.x + p.y * p.y) + p.z * p.z;
 	len = sqrt(lsq);
-	if (lsq == (double)INFINITY) {
-		p.x = p.y = p.z = (double)NAN;
-	} else if (len == 0.0) {
+	if (lsq >= ONB__CAST(double, INFINITY)) {
+		p.x = p.y = p.z = ONB__CAST(double, NAN);
+	} else if (ONB__IS0(len)) {
 		p.x = p.y = p.z = 0.0;
 	} else {
 		p.x = p.x / len; p.y = p.y / len; p.z = p.z / len;
@@ -2215,9 +2218,9 @@ static inline void ONB__K(directxmathf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b
 	p.z = same ? 0.0f - n.x : n.x;
 	lsq = (p.x * p.x + p.y * p.y) + p.z * p.z;
 	len = sqrtf(lsq);
-	if (lsq == INFINITY) {
+	if (lsq >= INFINITY) {
 		p.x = p.y = p.z = NAN;
-	} else if (len == 0.0f) {
+	} else if (ONB__IS0(len)) {
 		p.x = p.y = p.z = 0.0f;
 	} else {
 		p.x = p.x / len; p.y = p.y / len; p.z = p.z / len;
@@ -2294,14 +2297,14 @@ static inline void ONB__K(ogref)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 static inline double onb__bx_sqrt(double a)
 {
 	if (a < 0.0)
-		return (double)NAN;
-	if (a < (double)0x1p-126f)
+		return ONB__CAST(double, NAN);
+	if (a < ONB__CAST(double, 0x1p-126f))
 		return 0.0;
 	return sqrt(a);
 }
 static inline double onb__bx_rcp_safe(double a)
 {
-	const double m = (double)0x1p-126f > (a < 0.0 ? -a : a) ? (double)0x1p-126f : (a < 0.0 ? -a : a);
+	const double m = ONB__CAST(double, 0x1p-126f) > (a < 0.0 ? -a : a) ? ONB__CAST(double, 0x1p-126f) : (a < 0.0 ? -a : a);
 	return 1.0 / copysign(m, a);
 }
 static inline float onb__bx_sqrtf(float a)

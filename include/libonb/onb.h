@@ -2117,11 +2117,11 @@ static inline void ONB__K(raylibf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    the six axes. */
 static inline void onb__godot(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
 {
-	double ex = 0.0, ey = 0.0, ez = 0.0, lsq;
 	onb_vec3 p;
 	if (fabs(n.x) < 0.00001 && fabs(n.y) < 0.00001 && fabs(n.z) < 0.00001) {
 		p.x = 0.0; p.y = 0.0; p.z = 0.0;
 	} else {
+		double ex = 0.0, ey = 0.0, ez = 0.0, lsq;
 		if (fabs(n.x) <= fabs(n.y) && fabs(n.x) <= fabs(n.z)) ex = 1.0;
 		else if (!fixed || fabs(n.y) <= fabs(n.z)) ey = 1.0;
 		else ez = 1.0;
@@ -2143,11 +2143,11 @@ static inline void onb__godot(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
 }
 static inline void onb__godotf(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fixed)
 {
-	float ex = 0.0f, ey = 0.0f, ez = 0.0f, lsq;
 	onb_vec3f p;
 	if (fabsf(n.x) < ONB__CAST(float, 0.00001) && fabsf(n.y) < ONB__CAST(float, 0.00001) && fabsf(n.z) < ONB__CAST(float, 0.00001)) {
 		p.x = 0.0f; p.y = 0.0f; p.z = 0.0f;
 	} else {
+		float ex = 0.0f, ey = 0.0f, ez = 0.0f, lsq;
 		if (fabsf(n.x) <= fabsf(n.y) && fabsf(n.x) <= fabsf(n.z)) ex = 1.0f;
 		else if (!fixed || fabsf(n.y) <= fabsf(n.z)) ey = 1.0f;
 		else ez = 1.0f;

@@ -1378,6 +1378,33 @@ static int write_outputs(const char *dir, const study_kernel *ks, int nk, const 
 	return 0;
 }
 
+/* The rounding model of each selected kernel into ms[] (NULL: left out,
+   said for a --fma copy without one); 0, or a usage error for a method
+   named on --methods that cannot be certified. */
+static int select_models(const cert_cli *c, const study_kernel *ks, int nk, const cm_method **ms)
+{
+	int k;
+	for (k = 0; k < nk; k++) {
+		if (ks[k].fma) {   /* no contracted model: said, and left out */
+			if (!(ms[k] = ks[k].m ? cm_find_fma(ks[k].m->name) : NULL) && !c->quiet && strcmp(c->methods, "all") != 0)
+				fprintf(stderr, "certify: %s: no contracted rounding model, not certified\n", ks[k].name);
+			continue;
+		}
+		if (!(ms[k] = cm_find(ks[k].name)) && strcmp(c->methods, "all") != 0) {
+			study_error("--methods: %s has no rounding model", ks[k].name);
+			return ONB_EXIT_USAGE;
+		}
+		if (ms[k] && ms[k]->direction && c->o.tolerance >= 0) {   /* its model assumes n.z >= -1 */
+			if (strcmp(c->methods, "all") != 0) {
+				study_error("--tolerance: %s is certified in the default domain only (n.z < -1 takes another path)", ks[k].name);
+				return ONB_EXIT_USAGE;
+			}
+			ms[k] = NULL;
+		}
+	}
+	return 0;
+}
+
 int cmd_certify(int argc, char **argv)
 {
 	cert_cli c;
@@ -1400,24 +1427,8 @@ int cmd_certify(int argc, char **argv)
 	}
 	if ((nk = kernels_select(c.methods, c.fma, ks, MAXK)) < 0)
 		return ONB_EXIT_USAGE;
-	for (k = 0; k < nk; k++) {
-		if (ks[k].fma) {   /* no contracted model: said, and left out */
-			if (!(ms[k] = ks[k].m ? cm_find_fma(ks[k].m->name) : NULL) && !c.quiet && strcmp(c.methods, "all") != 0)
-				fprintf(stderr, "certify: %s: no contracted rounding model, not certified\n", ks[k].name);
-			continue;
-		}
-		if (!(ms[k] = cm_find(ks[k].name)) && strcmp(c.methods, "all") != 0) {
-			study_error("--methods: %s has no rounding model", ks[k].name);
-			return ONB_EXIT_USAGE;
-		}
-		if (ms[k] && ms[k]->direction && c.o.tolerance >= 0) {   /* its model assumes n.z >= -1 */
-			if (strcmp(c.methods, "all") != 0) {
-				study_error("--tolerance: %s is certified in the default domain only (n.z < -1 takes another path)", ks[k].name);
-				return ONB_EXIT_USAGE;
-			}
-			ms[k] = NULL;
-		}
-	}
+	if (select_models(&c, ks, nk, ms))
+		return ONB_EXIT_USAGE;
 	if (c.starts && load_starts(&c))
 		return ONB_EXIT_USAGE;
 	for (p = 0; p < 2; p++)

@@ -105,6 +105,21 @@ static void list_aliases(int csv)
 	}
 }
 
+/* list --arith: the profiles' table, then each profile's sources. */
+static void list_arith(void)
+{
+	int i;
+	arith_print_table();
+	printf("\n");
+	for (i = 0; i < arith_count(); i++) {
+		const arith_profile *p = arith_at(i);
+		printf("%s: %s\n  spec: %s\n  float: %s\n  double: %s\n  half: %s\n  built-ins: %s\n", p->name, p->title,
+		       p->spec, p->fmt[PREC_FLOAT].note, p->fmt[PREC_DOUBLE].note,
+		       p->fmt[PREC_HALF].note ? p->fmt[PREC_HALF].note : "not transcribed here: every operation unbounded",
+		       p->compose);
+	}
+}
+
 int cmd_list(int argc, char **argv)
 {
 	static const struct option lo[] = {
@@ -166,16 +181,7 @@ int cmd_list(int argc, char **argv)
 		return ONB_EXIT_USAGE;
 	}
 	if (arith) {
-		int i2;
-		arith_print_table();
-		printf("\n");
-		for (i2 = 0; i2 < arith_count(); i2++) {
-			const arith_profile *p = arith_at(i2);
-			printf("%s: %s\n  spec: %s\n  float: %s\n  double: %s\n  half: %s\n  built-ins: %s\n", p->name, p->title,
-			       p->spec, p->fmt[PREC_FLOAT].note, p->fmt[PREC_DOUBLE].note,
-			       p->fmt[PREC_HALF].note ? p->fmt[PREC_HALF].note : "not transcribed here: every operation unbounded",
-			       p->compose);
-		}
+		list_arith();
 		return 0;
 	}
 	if (axes) {

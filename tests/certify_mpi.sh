@@ -7,9 +7,14 @@
 #  - rank 1 killed (ONB_CERT_KILL_RANK=1 ONB_CERT_KILL=PHASE:N: it kills
 #    itself after its N-th task of that phase) in the first pass and in
 #    the images pass ends the job, non-zero, with the checkpoint and no
-#    certify.csv; the same command line with --resume DIR redoes what was
-#    in flight and writes the same rows; rank 0 killed in the images
-#    pass resumes with the single-process driver (one checkpoint format);
+#    certify.csv (nor any partial file); rank 0 says that rank 1 died,
+#    names the regions in flight (lost) and how to continue; the same
+#    command line with --resume DIR redoes what was in flight and writes
+#    the same rows and stdout; rank 0 killed in the images pass resumes
+#    with the single-process driver (one checkpoint format);
+#  - with no checkpoint due (--checkpoint-every 600, and a run with --out
+#    and no --resume) rank 0 writes one when the job is ended: the resumed
+#    run starts from exactly the regions it said it kept;
 #  - after the end the same command line says the work is done;
 #  - a bad option is refused once, exit 2, no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
@@ -48,22 +53,62 @@ done
 
 # 2. a rank dies (rank 1 in the first pass and the images pass, rank 0 in
 #    the images pass), then the same command line resumes
+told() { # FILE WHAT PATTERN...: every pattern in FILE
+	tf=$1; tw=$2; shift 2
+	for tp in "$@"; do
+		grep -q "$tp" "$tf" || { bad "$tw: no line '$tp' in: $(grep -v '^-' "$tf" | head -8)"; return; }
+	done
+	ok
+}
 kill_resume() { # RANK PHASE:N RESUMER WHAT
 	d="$T/k$1-$2"
 	ONB_CERT_KILL_RANK=$1 ONB_CERT_KILL=$2 OMP_NUM_THREADS=1 \
 		$MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" --checkpoint-every 0 > /dev/null 2> "$d.err1"
 	rc=$?
-	[ $rc -ne 0 ] && [ $rc -ne 124 ] && [ -f "$d/certify-checkpoint.bin" ] && [ ! -f "$d/certify.csv" ] && ok ||
-		bad "$4: exit $rc, in $d: $(ls "$d" 2> /dev/null | tr '\n' ' ')"
+	[ $rc -ne 0 ] && [ $rc -ne 124 ] && [ -f "$d/certify-checkpoint.bin" ] && [ "$(ls -A "$d")" = certify-checkpoint.bin ] && ok ||
+		bad "$4: exit $rc, in $d: $(ls -A "$d" 2> /dev/null | tr '\n' ' ')"
+	if [ $1 -ne 0 ]; then   # rank 0 lives to say what died, what is lost, how to continue
+		ph="first pass"; [ "${2%%:*}" = images ] && ph="images pass"
+		told "$d.err1" "$4" "^onbstudy-mpi: rank $1 (pid [0-9]*, this node) has died" \
+			"^onbstudy-mpi: lost, in flight on rank $1 in the $ph: [a-z_]* float region [0-9]* (n.z in \[" \
+			"^onbstudy-mpi: kept in $d/certify-checkpoint.bin: every result committed so far" \
+			"^onbstudy-mpi: to continue: the same command line (--resume $d redoes only"
+	fi
 	OMP_NUM_THREADS=1 $3 $Q --resume "$d" --checkpoint-every 0 > "$d.out" 2> "$d.err"
 	rc=$?
 	[ $rc -eq 0 ] && grep -q 'continuing from its checkpoint' "$d.err" && ok || bad "$4, resumed: exit $rc: $(head -3 "$d.err")"
 	same "$d" "$4, resumed"
+	cmp -s "$T/ref.out" "$d.out" && ok || bad "$4, resumed: stdout differs"
 	[ ! -e "$d/certify-checkpoint.bin" ] && ok || bad "$4: the checkpoint is left after the end"
 }
 kill_resume 1 run:2 "$MPIRUN -n 2 ./onbstudy-mpi certify" "rank 1 killed in the first pass"
 kill_resume 1 images:2 "$MPIRUN -n 2 ./onbstudy-mpi certify" "rank 1 killed in the images pass"
 kill_resume 0 images:4 "./onbstudy certify" "rank 0 killed in the images pass, resumed by onbstudy"
+
+# ... with no checkpoint due (the last at the first pass's end): rank 0
+#     writes it when the job is ended, with the count the resume reads
+d="$T/late"
+ONB_CERT_KILL_RANK=1 ONB_CERT_KILL=images:3 OMP_NUM_THREADS=1 \
+	$MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" --checkpoint-every 600 > /dev/null 2> "$d.err1"
+kept=$(sed -n 's/.*committed so far (first pass: \([0-9]*\) of \([0-9]*\) regions, images pass: \([0-9]*\),.*/\1 \2 \3/p' "$d.err1")
+set -- $kept
+[ $# -eq 3 ] && [ "$1" = "$2" ] && [ "$3" -gt 0 ] && [ "$3" -lt "$2" ] && ok ||
+	bad "killed in the images pass, no checkpoint due: kept '$kept': $(grep -v '^-' "$d.err1" | head -8)"
+OMP_NUM_THREADS=1 $MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" > "$d.out" 2> "$d.err"
+grep -q "continuing from its checkpoint ($1 of $2 regions run)" "$d.err" && ok || bad "the late checkpoint, resumed: $(head -3 "$d.err")"
+same "$d" "the late checkpoint, resumed"
+# ... a run with --out and no --resume: the checkpoint in its directory,
+#     and the message's --resume DIR continues it
+d="$T/out"
+ONB_CERT_KILL_RANK=1 ONB_CERT_KILL=run:3 OMP_NUM_THREADS=1 \
+	$MPIRUN -n 2 ./onbstudy-mpi certify $Q --out "$d" > /dev/null 2> "$d.err1"
+told "$d.err1" "--out, rank 1 killed" "^onbstudy-mpi: lost, in flight on rank 1 in the first pass: " \
+	"^onbstudy-mpi: to continue: the same command line with --resume $d in place of --out"
+[ "$(ls -A "$d")" = certify-checkpoint.bin ] && ok || bad "--out, rank 1 killed: in $d: $(ls -A "$d" | tr '\n' ' ')"
+OMP_NUM_THREADS=1 $MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" > "$d.out" 2> "$d.err"
+grep -q 'continuing from its checkpoint' "$d.err" && ok || bad "--out, resumed: $(head -3 "$d.err")"
+same "$d" "--out, rank 1 killed, resumed"
+cmp -s "$T/ref.out" "$d.out" && ok || bad "--out, rank 1 killed, resumed: stdout differs"
 
 # 3. after the end: done
 d="$T/k1-run:2"

@@ -58,6 +58,7 @@ typedef struct {
 	const char *dir;        /* --resume: where the checkpoint goes; NULL none */
 	double every, last;
 	int failed;             /* a checkpoint could not be written: stop */
+	int stopped;            /* cert_stop_save: nothing more is committed */
 	int kill_phase;         /* ONB_CERT_KILL=PHASE:N (tests): SIGKILL after */
 	long kill_at, commits;  /* the N-th commit of that phase */
 } run_ctl;
@@ -520,7 +521,7 @@ static void commit(const task_set *s, int i, const cert_result *r, int flag)
 {
 	run_ctl *c = s->ctl;
 #pragma omp critical(cert_commit)
-	{
+	if (!c->stopped) {
 		s->res[i] = *r;
 		if (flag == CK_REFINED)
 			c->ck.ref[i] = *r;
@@ -1405,6 +1406,62 @@ static int select_models(const cert_cli *c, const study_kernel *ks, int nk, cons
 	return 0;
 }
 
+/* onbstudy-mpi's rank 0: the run under way, for cert_stop_save and
+   cert_task_name (set and cleared under critical(cert_commit)). */
+static struct {
+	run_ctl *ctl;
+	const study_kernel *ks;
+	const cert_region *reg;
+	const task *t;
+	const char *dir;        /* where the checkpoint goes */
+} live;
+
+static void set_live(run_ctl *ctl, const study_kernel *ks, const cert_region *reg, const task *t, const char *dir)
+{
+#pragma omp critical(cert_commit)
+	{
+		live.ctl = ctl;
+		live.ks = ks;
+		live.reg = reg;
+		live.t = t;
+		live.dir = dir;
+	}
+}
+
+int cert_stop_save(cert_saved *v)
+{
+	int rc = 1, i;
+	memset(v, 0, sizeof *v);
+#pragma omp critical(cert_commit)
+	if (live.ctl) {
+		run_ctl *c = live.ctl;
+		c->stopped = 1;
+		v->nt = c->ck.nt;
+		v->resume = c->dir != NULL;
+		snprintf(v->dir, sizeof v->dir, "%s", live.dir);
+		for (i = 0; i < c->ck.nt; i++) {
+			v->run += (c->ck.flag[i] & CK_RUN) != 0;
+			v->images += (c->ck.flag[i] & CK_IMAGES) != 0;
+			v->refined += (c->ck.flag[i] & CK_REFINED) != 0;
+		}
+		rc = ck_write(live.dir, &c->ck) != 0 ? -1 : 0;
+	}
+	return rc;
+}
+
+void cert_task_name(int i, char *buf, size_t cap)
+{
+	if (cap)
+		buf[0] = 0;
+#pragma omp critical(cert_commit)
+	if (live.ctl && i >= 0 && i < live.ctl->ck.nt) {
+		const task *t = &live.t[i];
+		const cert_region *r = &live.reg[t->prec * MAXREG + t->reg];
+		snprintf(buf, cap, "%s %s region %d (n.z in [%.9g, %.9g], azimuth [%g, %g) degrees)", live.ks[t->k].name,
+		         prec_name(t->prec), t->reg + 1, r->nz_lo, r->nz_hi, r->phi_lo, r->phi_hi);
+	}
+}
+
 int cmd_certify(int argc, char **argv)
 {
 	cert_cli c;
@@ -1472,6 +1529,8 @@ int cmd_certify(int argc, char **argv)
 		rc = r > 0 ? r - 1 : ONB_EXIT_USAGE;
 		goto done;
 	}
+	if (cert_distribute && writer())
+		set_live(&ctl, ks, reg, t, dir);
 	if (run_all(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
 	    images_all(ks, nk, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
 	    refine_top(ks, ms, reg, t, nt, &c, res, &ctl) || ck_now(&ctl) ||
@@ -1484,6 +1543,7 @@ int cmd_certify(int argc, char **argv)
 	}
 	rc = 0;
 done:
+	set_live(NULL, NULL, NULL, NULL, NULL);
 	free(t);
 	free(res);
 	free_ctl(&ctl);

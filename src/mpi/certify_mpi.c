@@ -19,9 +19,16 @@
  * certify.csv's rows are those of `onbstudy certify` for any number of
  * ranks and threads (tests/certify_mpi.sh).
  *
- * A rank that dies ends the job (Open MPI's mpirun names it); the regions
- * it had in flight were never committed, so the same command line with
- * --resume DIR redoes them.  Ranks other than 0 print nothing.
+ * A rank that dies ends the job: mpirun names it and sends SIGTERM to the
+ * others, SIGKILL a second later (odls_base_sigkill_timeout).  Rank 0
+ * then (stop_report, on a thread of its own, whatever the main thread
+ * waits for) stops committing, names the rank that is gone (on its own
+ * node) and every region in flight, lost, writes the checkpoint of
+ * every result committed so far (to --resume DIR, or else to the run's
+ * directory: certify.h's cert_stop_save), says how to continue, and exits
+ * 1; certify.csv is written at the end only, whole or not at all.  The
+ * other ranks let mpirun's SIGTERM pass (its SIGKILL follows), so that
+ * the rank that died is the one gone.  Ranks other than 0 print nothing.
  */
 #include <mpi.h>
 #include <pthread.h>
@@ -31,12 +38,16 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include <errno.h>
 #include <fcntl.h>
+#include <semaphore.h>
+#include <signal.h>
 #include <sys/resource.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 #include "certify/certify.h"
+#include "certify/checkpoint.h"
 #include "common/output.h"
 #include "common/options.h"
 #include "common/progress.h"
@@ -60,6 +71,7 @@ static long *ran;   /* rank 0: the tasks each rank computed, over every pass */
 typedef struct {
 	const cert_pass *p;
 	int *skip, *todo;
+	int *holder;        /* per task j: the rank computing it, or -1 */
 	int nskip, ntodo, nexts, nextt;
 	pthread_mutex_t mu;
 	int local_done, fail;
@@ -67,18 +79,32 @@ typedef struct {
 
 static int task_of(const cert_pass *p, int j) { return p->pick ? p->pick[j] : j; }
 
-/* The next task: a done one first for rank 0's threads (local), then the
-   next to do; -1 when none is left or the run stops. */
-static int take(queue *q, int local)
+/* Rank 0: the pass under way (stop_report reads its holders). */
+static pthread_mutex_t live_mu = PTHREAD_MUTEX_INITIALIZER;
+static queue *live_q;
+
+/* The next task for rank who: a done one first for rank 0's threads,
+   then the next to do; -1 when none is left or the run stops. */
+static int take(queue *q, int who)
 {
 	int j = -1;
 	pthread_mutex_lock(&q->mu);
-	if (local && q->nexts < q->nskip)
+	if (who == 0 && q->nexts < q->nskip)
 		j = q->skip[q->nexts++];
-	else if (q->nextt < q->ntodo && !*q->p->failed)
+	else if (q->nextt < q->ntodo && !*q->p->failed) {
 		j = q->todo[q->nextt++];
+		q->holder[j] = who;
+	}
 	pthread_mutex_unlock(&q->mu);
 	return j;
+}
+
+/* Task j is no longer in flight (committed, or done already). */
+static void release(queue *q, int j)
+{
+	pthread_mutex_lock(&q->mu);
+	q->holder[j] = -1;
+	pthread_mutex_unlock(&q->mu);
 }
 
 static void *local_threads(void *arg)
@@ -93,9 +119,10 @@ static void *local_threads(void *arg)
 #pragma omp atomic write
 			fail = 1;
 		}
-		while (x && (j = take(q, 1)) >= 0) {
+		while (x && (j = take(q, 0)) >= 0) {
 			const int work = !(q->p->flags[task_of(q->p, j)] & q->p->flag);
 			q->p->fn(x, j, q->p->arg);
+			release(q, j);
 			if (work)
 #pragma omp atomic
 				ran[0]++;
@@ -124,10 +151,11 @@ static void serve(queue *q, int *team, int *ended)
 			MPI_Recv(&m, (int)sizeof m, MPI_BYTE, s.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
 			if (m.j >= 0 && m.j < q->p->n) {
 				q->p->commit(q->p->arg, task_of(q->p, m.j), &m.r);
+				release(q, m.j);
 				ran[s.MPI_SOURCE]++;
 			}
 			team[s.MPI_SOURCE] = m.team;
-			j = take(q, 0);
+			j = take(q, s.MPI_SOURCE);
 			MPI_Send(&j, 1, MPI_INT32_T, s.MPI_SOURCE, TAG_TASK, MPI_COMM_WORLD);
 			ended[s.MPI_SOURCE] += j < 0;
 			continue;
@@ -152,25 +180,33 @@ static int run_rank0(const cert_pass *p)
 	q.p = p;
 	q.skip = malloc(((size_t)p->n + 1) * sizeof *q.skip);
 	q.todo = malloc(((size_t)p->n + 1) * sizeof *q.todo);
-	if (!team || !ended || !q.skip || !q.todo) {
+	q.holder = malloc(((size_t)p->n + 1) * sizeof *q.holder);
+	if (!team || !ended || !q.skip || !q.todo || !q.holder) {
 		study_error("out of memory");
 		MPI_Abort(MPI_COMM_WORLD, 1);
 	}
 	for (j = 0; j < p->n; j++) {
+		q.holder[j] = -1;
 		if (p->flags[task_of(p, j)] & p->flag)
 			q.skip[q.nskip++] = j;
 		else
 			q.todo[q.ntodo++] = j;
 	}
 	pthread_mutex_init(&q.mu, NULL);
+	pthread_mutex_lock(&live_mu);
+	live_q = &q;
+	pthread_mutex_unlock(&live_mu);
 	if (pthread_create(&th, NULL, local_threads, &q) != 0) {
 		study_error("cannot start rank 0's threads");
 		MPI_Abort(MPI_COMM_WORLD, 1);
 	}
 	serve(&q, team, ended);
 	pthread_join(th, NULL);
+	pthread_mutex_lock(&live_mu);
+	live_q = NULL;
+	pthread_mutex_unlock(&live_mu);
 	pthread_mutex_destroy(&q.mu);
-	free(team); free(ended); free(q.skip); free(q.todo);
+	free(team); free(ended); free(q.skip); free(q.todo); free(q.holder);
 	return q.fail;
 }
 
@@ -264,6 +300,169 @@ static void report(double wall, double cpu, int t)
 	fprintf(stderr, "\n");
 }
 
+/* The job being ended (SIGTERM, SIGINT): rank 0's report. */
+static volatile sig_atomic_t stop_sig, stop_from;
+static sem_t stop_sem;
+static int watching, reporting, watch_over;   /* under live_mu */
+typedef struct {
+	int32_t pid;
+	char host[64];
+} where_t;
+static where_t *where;   /* rank 0: every rank's pid and host */
+
+static void on_stop(int sig, siginfo_t *si, void *ctx)
+{
+	(void)ctx;
+	if (rank != 0) {
+		if (si && si->si_pid == getppid())
+			return;   /* mpirun ends the job (its SIGKILL follows): the rank that died stays the one gone */
+		signal(sig, SIG_DFL);
+		raise(sig);
+		return;
+	}
+	stop_sig = sig;
+	stop_from = si ? (sig_atomic_t)si->si_pid : 0;
+	sem_post(&stop_sem);
+}
+
+/* Process pid (on this node) has ended: no such process, or a zombie. */
+static int gone(long pid)
+{
+	char path[64], buf[512], *p;
+	FILE *f;
+	size_t n;
+	if (kill((pid_t)pid, 0) != 0)
+		return errno == ESRCH;
+	snprintf(path, sizeof path, "/proc/%ld/stat", pid);
+	if (!(f = fopen(path, "r")))
+		return 0;
+	n = fread(buf, 1, sizeof buf - 1, f);
+	fclose(f);
+	buf[n] = 0;
+	p = strrchr(buf, ')');
+	return p && p[1] == ' ' && (p[2] == 'Z' || p[2] == 'X');
+}
+
+static const char *pass_name(int flag)
+{
+	return flag == CK_RUN ? "the first pass" : flag == CK_IMAGES ? "the images pass" : "the refinement";
+}
+
+/* The regions in flight in the pass under way, lost (after
+   cert_stop_save: no more commits); how many. */
+static int report_lost(void)
+{
+	char name[320];
+	int j, n = 0;
+	pthread_mutex_lock(&live_mu);
+	if (live_q) {
+		queue *q = live_q;
+		pthread_mutex_lock(&q->mu);
+		for (j = 0; j < q->p->n; j++)
+			if (q->holder[j] >= 0 && !(q->p->flags[task_of(q->p, j)] & q->p->flag)) {
+				cert_task_name(task_of(q->p, j), name, sizeof name);
+				fprintf(stderr, "onbstudy-mpi: lost, in flight on rank %d in %s: %s\n", q->holder[j],
+				        pass_name(q->p->flag), name);
+				n++;
+			}
+		pthread_mutex_unlock(&q->mu);
+	}
+	pthread_mutex_unlock(&live_mu);
+	return n;
+}
+
+/* Rank 0, the job being ended: who is gone, what is lost, what is kept,
+   how to continue; then exit 1. */
+static void stop_report(void)
+{
+	char host[64] = "";
+	cert_saved v;
+	int r, rc;
+	fprintf(stderr, "onbstudy-mpi: signal %d from pid %ld: the job is being ended (a rank died, or mpirun was "
+	        "stopped)\n", (int)stop_sig, (long)stop_from);
+	gethostname(host, sizeof host - 1);
+	for (r = 1; where && r < nranks; r++)
+		if (strcmp(where[r].host, host) == 0 && gone(where[r].pid))
+			fprintf(stderr, "onbstudy-mpi: rank %d (pid %ld, this node) has died\n", r, (long)where[r].pid);
+	rc = cert_stop_save(&v);
+	if (report_lost() == 0)
+		fprintf(stderr, "onbstudy-mpi: no region was in flight\n");
+	if (rc == 1) {
+		fprintf(stderr, "onbstudy-mpi: no pass of regions was under way; certify.csv not written\n");
+		return;
+	}
+	if (rc == 0)
+		fprintf(stderr, "onbstudy-mpi: kept in %s/%s: every result committed so far (first pass: %d of %d "
+		        "regions, images pass: %d, refined: %d); certify.csv not written\n", v.dir, CK_NAME, v.run, v.nt,
+		        v.images, v.refined);
+	else
+		fprintf(stderr, "onbstudy-mpi: the checkpoint could not be written; the last complete one in %s, if "
+		        "any, is intact; certify.csv not written\n", v.dir);
+	if (v.resume)
+		fprintf(stderr, "onbstudy-mpi: to continue: the same command line (--resume %s redoes only what its "
+		        "checkpoint lacks)\n", v.dir);
+	else
+		fprintf(stderr, "onbstudy-mpi: to continue: the same command line with --resume %s in place of --out "
+		        "(it redoes only what the checkpoint lacks)\n", v.dir);
+}
+
+static void *watch(void *arg)
+{
+	int go;
+	(void)arg;
+	while (sem_wait(&stop_sem) != 0 && errno == EINTR)
+		;
+	pthread_mutex_lock(&live_mu);
+	go = !watch_over;
+	reporting = go;
+	pthread_mutex_unlock(&live_mu);
+	if (!go)
+		return NULL;
+	stop_report();
+	fflush(stderr);
+	_exit(1);
+}
+
+/* Every rank's pid and host to rank 0; the handlers; rank 0's watcher. */
+static void watch_start(void)
+{
+	struct sigaction sa;
+	where_t me;
+	pthread_t th;
+	memset(&me, 0, sizeof me);
+	me.pid = (int32_t)getpid();
+	gethostname(me.host, sizeof me.host - 1);
+	where = rank == 0 ? calloc((size_t)nranks, sizeof *where) : NULL;
+	MPI_Gather(&me, (int)sizeof me, MPI_BYTE, where, (int)sizeof me, MPI_BYTE, 0, MPI_COMM_WORLD);
+	if (rank == 0 && (sem_init(&stop_sem, 0, 0) != 0 || pthread_create(&th, NULL, watch, NULL) != 0 ||
+	                  pthread_detach(th) != 0))
+		return;   /* no report: the job ends as before, by the signal */
+	memset(&sa, 0, sizeof sa);
+	sa.sa_sigaction = on_stop;
+	sa.sa_flags = SA_SIGINFO | SA_RESTART;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGTERM, &sa, NULL);
+	sigaction(SIGINT, &sa, NULL);
+	watching = rank == 0;
+}
+
+/* The end of a run: the watcher told to go, unless it is reporting (then
+   it ends the process). */
+static void watch_end(void)
+{
+	int wait_report;
+	if (!watching)
+		return;
+	pthread_mutex_lock(&live_mu);
+	wait_report = reporting;
+	watch_over = 1;
+	pthread_mutex_unlock(&live_mu);
+	if (wait_report)
+		for (;;)
+			pause();
+	sem_post(&stop_sem);
+}
+
 int certify_mpi(int argc, char **argv, int rank_, int nranks_, int provided)
 {
 	static cert_dist d;
@@ -298,15 +497,18 @@ int certify_mpi(int argc, char **argv, int rank_, int nranks_, int provided)
 		study_error("out of memory");
 		return 1;
 	}
+	watch_start();
 	t0 = study_now();
 	cpu = cpu_seconds();
 	rc = cmd_certify(argc, argv);
+	watch_end();
 	wall = study_now() - t0;
 	cpu = cpu_seconds() - cpu;
 	MPI_Allreduce(MPI_IN_PLACE, &cpu, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 	if (rank == 0 && rc == 0)
 		report(wall, cpu, t);
 	free(ran);
+	free(where);
 	if (saved >= 0) {
 		fflush(stdout);
 		fflush(stderr);

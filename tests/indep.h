@@ -445,6 +445,7 @@ static const indep_row T[] = {
 	{ "filament_hm", onb_filament_hm, onb_filament_hmf, IW_FILAMENT_HM, 0 },
 	{ "capsaicin", onb_capsaicin, onb_capsaicinf, IW_CAPSAICIN, 0 },
 	{ "capsaicin_fixed", onb_capsaicin_fixed, onb_capsaicin_fixedf, IW_CAPSAICIN_FIXED, 0 },
+	{ "unity", onb_unity, onb_unityf, IW_UNITY, 0 },
 	{ "mitsuba3", onb_mitsuba3, onb_mitsuba3f, IW_MITSUBA3, 0 },
 	{ "cycles_cross111", onb_cycles_cross111, onb_cycles_cross111f, IW_CYCLES111, 0 },
 	{ "cycles_cross111_avx2", onb_cycles_cross111_avx2, onb_cycles_cross111_avx2f, IW_CYCLES111_AVX2, 0 },

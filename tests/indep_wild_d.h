@@ -70,7 +70,29 @@ static void ind_capsaicin##S(V n, V *b1, V *b2, int fixed) \
 CAPS(float, f, sqrtf, fabsf, Vec3f, vf)
 CAPS(double, d, sqrt, fabs, Vec3d, vd)
 
-enum { IW_RTXDI = 300, IW_FILAMENT_HM, IW_CAPSAICIN, IW_CAPSAICIN_FIXED };
+/* Unity Graphics CommonLighting.hlsl GetLocalFrame (HLSL, real = float),
+   FastSign(s) = CopySign(1.0, s, true) = (s >= 0) ? abs(1.0) : -abs(1.0)
+   (Common.hlsl); the real3x3 rows localX, localY, localZ: b1 = localX,
+   b2 = localY. */
+#define UNITY_LF(T, S, V, MK) \
+static T unity_copysign_##S(T x, T s) { return (s >= 0) ? (x < 0 ? -x : x) : -(x < 0 ? -x : x); } \
+static void ind_unity##S(V localZ, V *localX, V *localY) \
+{ \
+	T x = localZ.x; \
+	T y = localZ.y; \
+	T z = localZ.z; \
+	T sz = unity_copysign_##S((T)1.0, z); \
+	T a = 1 / (sz + z); \
+	T ya = y * a; \
+	T b = x * ya; \
+	T c = x * sz; \
+	*localX = MK(c * x * a - 1, sz * b, c); \
+	*localY = MK(b, y * ya - sz, y); \
+}
+UNITY_LF(float, f, Vec3f, vf)
+UNITY_LF(double, d, Vec3d, vd)
+
+enum { IW_RTXDI = 300, IW_FILAMENT_HM, IW_CAPSAICIN, IW_CAPSAICIN_FIXED, IW_UNITY };
 /* this file's rows of indep_wild.h's alias table IA[] */
 #define INDEP_WILD_D_ALIASES \
 	{ "rtxdi", "duff", IW_RTXDI, 1, 0 },
@@ -84,6 +106,7 @@ static int indep_wild_d_f(int id, Vec3f n, Vec3f *b1, Vec3f *b2)
 	case IW_FILAMENT_HM: ind_filament_hmf(n, b1, b2); return 1;
 	case IW_CAPSAICIN: ind_capsaicinf(n, b1, b2, 0); return 1;
 	case IW_CAPSAICIN_FIXED: ind_capsaicinf(n, b1, b2, 1); return 1;
+	case IW_UNITY: ind_unityf(n, b1, b2); return 1;
 	default:       return 0;
 	}
 }
@@ -93,6 +116,7 @@ static int indep_wild_d_d(int id, Vec3d n, Vec3d *b1, Vec3d *b2)
 	case IW_FILAMENT_HM: ind_filament_hmd(n, b1, b2); return 1;
 	case IW_CAPSAICIN: ind_capsaicind(n, b1, b2, 0); return 1;
 	case IW_CAPSAICIN_FIXED: ind_capsaicind(n, b1, b2, 1); return 1;
+	case IW_UNITY: ind_unityd(n, b1, b2); return 1;
 	default:       return 0;
 	}
 }

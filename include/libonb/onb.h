@@ -30,6 +30,7 @@
  *     onb_filament_hm      onb_filament_hmf       Filament hughesMollerMethod
  *     onb_capsaicin        onb_capsaicinf         AMD Capsaicin GetOrthoVectors
  *     onb_capsaicin_fixed  onb_capsaicin_fixedf   this project: Capsaicin fixed
+ *     onb_unity            onb_unityf             Unity SRP core GetLocalFrame
  *     onb_mitsuba3         onb_mitsuba3f          Mitsuba 3 coordinate_system
  *     onb_cycles_cross111  onb_cycles_cross111f   Blender Cycles make_orthonormals
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
@@ -1057,6 +1058,31 @@ static inline void ONB__K(capsaicinf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
    (the tie |z| = |x| = 0 at +-y takes the n.z = 0 branch, as before). */
 static inline void ONB__K(capsaicin_fixed) (onb_vec3  n, onb_vec3  *b1, onb_vec3  *b2) { onb__capsaicin (n, fabs(n.z) > fabs(n.x), b1, b2); }
 static inline void ONB__K(capsaicin_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__capsaicinf(n, fabsf(n.z) > fabsf(n.x), b1, b2); }
+
+/* unity (Unity Graphics, com.unity.render-pipelines.core ShaderLibrary/
+   CommonLighting.hlsl, GetLocalFrame(localZ), HLSL real = float): Reynolds'
+   form of Duff's basis (ortho_basis_pixar_r2), turned by 180 degrees:
+   sz = FastSign(z) = (z >= 0 ? 1 : -1: -0 takes +1, NaN -1), a = 1/(sz + z),
+   ya = y*a, b = x*ya, c = x*sz; b1 = localX = ((c*x)*a - 1, sz*b, c),
+   b2 = localY = (b, y*ya - sz, y).  Exactly (-b1, -b2) of duff's formula, with
+   the products grouped x*(y*a) and y*(y*a).  Handedness +1.  At +z, b1 =
+   -x and b2 = -y.  The double variant is the same code in double. */
+static inline void ONB__K(unity)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double sz = n.z >= 0.0 ? 1.0 : -1.0;
+	const double a = 1.0 / (sz + n.z);
+	const double ya = n.y * a, b = n.x * ya, c = n.x * sz;
+	b1->x = c * n.x * a - 1.0; b1->y = sz * b; b1->z = c;
+	b2->x = b; b2->y = n.y * ya - sz; b2->z = n.y;
+}
+static inline void ONB__K(unityf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float sz = n.z >= 0.0f ? 1.0f : -1.0f;
+	const float a = 1.0f / (sz + n.z);
+	const float ya = n.y * a, b = n.x * ya, c = n.x * sz;
+	b1->x = c * n.x * a - 1.0f; b1->y = sz * b; b1->z = c;
+	b2->x = b; b2->y = n.y * ya - sz; b2->z = n.y;
+}
 
 /* filament_fixed (this project's fix of filament, not shipped code):
    Filament's formula for n.y >= 0 (-0 included), and below it Duff et
@@ -2434,7 +2460,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
-	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(godot_fixed) X(bx_fixed) \

@@ -308,6 +308,15 @@ static void capsaicinh(V n, int sel, V *b1, V *b2)
 }
 void onb_capsaicinh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > H0, b1, b2); }
 void onb_capsaicin_fixedh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > habs(n.x), b1, b2); }
+/* ---- unity (GetLocalFrame): FastSign(z) = z >= 0 ? 1 : -1 ---- */
+void onb_unityh(V n, V *b1, V *b2)
+{
+	const H sz = n.z >= H0 ? H1 : hneg(H1);
+	const H a = hdiv(H1, hadd(sz, n.z));
+	const H ya = hmul(n.y, a), b = hmul(n.x, ya), c = hmul(n.x, sz);
+	*b1 = hvec(hsub(hmul(hmul(c, n.x), a), H1), hmul(sz, b), c);
+	*b2 = hvec(b, hsub(hmul(n.y, ya), sz), n.y);
+}
 void onb_filament_fixedh(V n, V *b1, V *b2)
 {
 	H a, b;

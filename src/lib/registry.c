@@ -82,6 +82,10 @@ static const onb_provenance P_FILAMENT_HM = { "github.com/google/filament", "e91
 static const onb_provenance P_CAPSAICIN = { "github.com/GPUOpen-LibrariesAndSDKs/Capsaicin", "5a3bf2a2b9b736bf660a6f4da17a6959ab4fc836",
 	"src/core/src/math/sampling.hlsl:118-126", "MIT", "HLSL", "float",
 	"IEEE (source level: 1.0f / sqrt read as a division by a correctly rounded sqrt; DXC may emit rsqrt or mad: not modelled)" };
+static const onb_provenance P_UNITY = { "github.com/Unity-Technologies/Graphics", "0c658a0ca9e3b0230a21342a0448d1bbedd880ca",
+	"Packages/com.unity.render-pipelines.core/ShaderLibrary/CommonLighting.hlsl:451-468", "LicenseRef-Unity-Companion-License", "HLSL",
+	"real: float (half where the platform defines real as half: not modelled)",
+	"IEEE (source level; FastSign from Common.hlsl: CopySign(1, z, true) = z >= 0 ? 1 : -1; a shader compiler may form mad: not modelled)" };
 static const onb_provenance P_MITSUBA3 = { "github.com/mitsuba-renderer/mitsuba3", "b45b0a930275114de0f8c34e8cf52775e176ca9a",
 	"include/mitsuba/core/vector.h:117-138", "BSD-3-Clause", "C++ (Dr.Jit dfccdd7967547efce49fb4a929c39e4474ea73e2)",
 	"Float: float (scalar_rgb), double (scalar_*_double)",
@@ -163,6 +167,8 @@ static const onb_method onb__table[] = {
 	  +1, 0, NAN, 0, ONB__PTRS(capsaicin), &P_CAPSAICIN },
 	{ "capsaicin_fixed", "capsaicin", "onbstudy, not shipped: Capsaicin GetOrthoVectors with sel = abs(z) > abs(x) (the length squared >= 1/2)",
 	  "none", "|n.z| = |n.x|", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(capsaicin_fixed), NULL },
+	{ "unity", "unity", "Unity SRP core GetLocalFrame: Reynolds' form of Duff's basis turned by 180 degrees, sz = FastSign(z), x*(y*a) grouping",
+	  "none", "n.z < 0 (FastSign: -0 takes +1)", +1, 0, NAN, 0, ONB__PTRS(unity), &P_UNITY },
 	{ "mitsuba3", "duff_branchless", "Mitsuba 3 coordinate_system: Duff Listing 3 through Dr.Jit, b2.y = fmadd(y, y*a, s) unfused",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, ONB__EVAL_MITSUBA3, ONB__PTRS(mitsuba3), &P_MITSUBA3 },
 	{ "cycles_cross111", "cycles_cross111", "Blender Cycles make_orthonormals: b1 = normalize((1,1,1) x n), b2 = n x b1",

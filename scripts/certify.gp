@@ -50,9 +50,10 @@ do for [e = e0:e1] { if (e % estep == 0) { set ytics add ((e == 0 ? "1" : (e == 
 set mytics 10
 ystrip = 10.0**(e1 + (ratio ? 0.6 : 1.5))
 yhi = anysing ? ystrip * (ratio ? 2 : 4) : 10.0**e1 * 3
+ynosing = 10.0**e1 * 3
 set yrange [ylo:yhi]
-if (anysing) set ytics add ("no bound" ystrip)
-if (anysing) set object 13 rect from graph 0, first ystrip / (ratio ? 1.6 : 2) to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
+# (the "no bound" strip, its tick and its room only in the panels that
+# have a singular band: set per panel below, SING)
 if (ratio) { set arrow 14 from graph 0, first 1.25 to graph 1, first 1.25 nohead dt 3 lw 1 lc rgb "#555555" back }
 do for [k = 1:3] {
     xs = (k == 1) ? xs1 : (k == 2) ? xs2 : xs3
@@ -79,6 +80,14 @@ if (single) { np = 1 }
 ncols = (np > 1) ? 2 : 1
 nrows = (np + ncols - 1) / ncols
 in_panel(i, p) = single ? 1 : (int(word(panels, i)) == p)
+# SING: one 0/1 per panel, 1 when a method of the panel has a singular band
+SING = ""
+do for [p = 1:np] {
+    sg = 0
+    do for [i = 1:n] { if (in_panel(i, p) && int(system(sprintf("awk '$5 > 0 { f = 1 } END { print f + 0 }' '%s'", word(files, i))))) { sg = 1 } }
+    SING = SING." ".sg
+}
+psing(p) = int(word(SING, p))
 # the key above each panel: its methods, three to a row
 most = 0
 do for [p = 1:np] { e = 0; do for [i = 1:n] { if (in_panel(i, p)) { e = e + 1 } }; if (e > most) { most = e } }
@@ -104,6 +113,16 @@ do for [term_i = 1:NTERM] {
     set multiplot layout nrows, ncols title ttl font F_TITLE
     do for [p = 1:np] {
         set ylabel ylab(p) font F_AXIS
+        set ytics ()
+        do for [e = e0:e1] { if (e % estep == 0) { set ytics add ((e == 0 ? "1" : (e == 1 ? "10" : (ratio && 10.0**e >= RCAP ? ">= 100" : sprintf("10^{%d}", e)))) 10.0**e) } }
+        if (psing(p)) {
+            set yrange [ylo:yhi]
+            set ytics add ("no bound" ystrip)
+            set object 13 rect from graph 0, first ystrip / (ratio ? 1.6 : 2) to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
+        } else {
+            set yrange [ylo:ynosing]
+            unset object 13
+        }
         if (ratio) {
         plot for [i = 1:n] st(4).word(files, i) using 1:(in_panel(i, p) && !dup(i) && $3 == 0 ? ($2 > RCAP ? RCAP : $2) : 1/0) with lines lw 2 lc rgb word(colors, i) dt int(word(dashes, i)) title (in_panel(i, p) ? kfield(i, 3) : ""), \
              for [i = 1:n] word(files, i) using ($1 + 0.5):(in_panel(i, p) && $5 > 0 ? ystrip : 1/0) with points pt int(word(points, i)) ps 1.1 lc rgb word(colors, i) notitle

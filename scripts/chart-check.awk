@@ -8,7 +8,8 @@
 #    third) and an x label (a level text under its tick labels);
 # 3. every series with a key title has at least one drawn point, line
 #    segment or filled area off its key sample, unless its title says "no
-#    finite point";
+#    finite point" or "A = B" (drawn as B's: certify's coinciding
+#    brackets, said once);
 # 4. no text lies over data: no text box (shrunk by 1.5 px) is crossed by
 #    a line segment of a plotted series or holds one of its markers (key
 #    samples excepted: a key title may sit beside its own sample, never
@@ -20,6 +21,11 @@
 #    needs N that no other floor title of the plot names (a floor band
 #    titled without names, or with a method the panel does not draw, is
 #    a floor from another method).
+# 6. (with nfband=1: the line charts of lines.gp) a plot has the
+#    non-finite band (its fill, style.gp's C_NONFINITE) exactly when a
+#    series of that plot counts non-finite outputs in its key title: no
+#    band reserved where nothing is non-finite, none missing where
+#    something is.
 # A text's box is estimated from gnuplot's font size (width 0.56 em per
 # character, height 1 em, on the baseline), so "overlap" means boxes
 # that share more than 1.5 px each way.  Texts turned by other than 0 or
@@ -32,15 +38,17 @@ function ent(s) { gsub(/&lt;/, "<", s); gsub(/&gt;/, ">", s); gsub(/&amp;/, "\\&
 /^<svg/ { insvg = 1 }
 insvg && /width="[0-9.]+"/ && !cw { match($0, /width="[0-9.]+"/); cw = substr($0, RSTART + 7, RLENGTH - 8) + 0 }
 insvg && /height="[0-9.]+"/ && !ch { match($0, /height="[0-9.]+"/); ch = substr($0, RSTART + 8, RLENGTH - 9) + 0 }
-/<g id="gnuplot_plot_[0-9]+" ><title>/ {
+/<g id="gnuplot_plot_[0-9]+[a-z]*" ><title>/ {
 	ns++; st[ns] = $0; sub(/.*<title>/, "", st[ns]); sub(/<\/title>.*/, "", st[ns]); st[ns] = ent(st[ns])
 	if (st[ns] ~ /^gnuplot_plot_/) st[ns] = ""
 	# plot ids restart at 1 in each plot of a multiplot: one panel each
 	match($0, /gnuplot_plot_[0-9]+/); pid = substr($0, RSTART + 13, RLENGTH - 13) + 0
-	if (pid <= lastpid || ns == 1) npl++
+	if (pid <= lastpid || ns == 1) { npl++; pband[npl] = nfpend; nfpend = 0 }
 	lastpid = pid; spl[ns] = npl
 	cur = ns; keyy[ns] = -1e9; npts[ns] = 0
 }
+# a non-finite band (drawn behind, before its plot's series)
+/<polygon fill = 'rgb\(251, 227, 212\)'/ { nfpend = 1 }
 # the end of a plot's group (a text's group ends in the rule below)
 cur && !intext && /^\t<\/g>$/ { cur = 0; next }
 /<g transform="translate\(/ {
@@ -125,10 +133,11 @@ END {
 	# its own after the data: a title's drawing is summed over its groups
 	for (s = 1; s <= ns; s++) if (st[s] != "") tot[st[s]] += npts[s]
 	for (t in tot)
-		if (tot[t] == 0 && t !~ /no finite point/)
+		if (tot[t] == 0 && t !~ /no finite point/ && t !~ /^[^ ]+ = [^ ]+$/)
 			fail(sprintf("series \"%s\" draws nothing and does not say so", t))
 	overdata()
 	floors()
+	if (nfband) nfbands()
 	exit bad > 0
 }
 # cross(i, s): 1 when segment s passes through text box i (shrunk 1.5 px):
@@ -178,4 +187,13 @@ function floors(   s, t, a, k, nm, pl, named, other, cntm, x) {
 	}
 	for (pl in otherc) { x = otherc[pl]; sub(/.* /, "", x)
 		if (x + named[pl] != nmeth[pl]) fail(sprintf("floor band \"%s\": %d methods of its plot are not named by another floor band", otherc[pl], nmeth[pl] - named[pl])) }
+}
+# nfbands(): the non-finite band in a plot exactly when a series of it
+# counts non-finite outputs
+function nfbands(   s, pl) {
+	for (s = 1; s <= ns; s++) if (st[s] ~ /non-finite/) pnf[spl[s]] = 1
+	for (pl = 1; pl <= npl; pl++) {
+		if (pband[pl] && !pnf[pl]) fail(sprintf("plot %d reserves a non-finite band, but none of its series is non-finite", pl))
+		if (!pband[pl] && pnf[pl]) fail(sprintf("plot %d has a non-finite series but no non-finite band", pl))
+	}
 }

@@ -37,16 +37,16 @@ set xrange [xmin:xmax]
 has_zx = exists("zero_x")
 zx = has_zx ? zero_x : 0
 off(x) = has_zx && x < zx * 1.5
-# (x tics by hand, one a decade from the first clear of the slot's tick)
+# (x tics by hand, one a decade, the first at least a decade right of the
+# slot, so that its label and the slot's never crowd: "-z 10^{-16}" in double)
 if (has_zx) {
     set xtics ()
-    do for [d = ceil(log10(zx * 4)):floor(log10(xmax))] { set xtics add (sprintf("10^{%d}", d) 10.0**d) }
+    do for [d = ceil(log10(zx * 10)):floor(log10(xmax))] { set xtics add (sprintf("10^{%d}", d) 10.0**d) }
     set mxtics 10
     set xtics add ((exists("zero_label") ? zero_label : "-z") zero_x)
     eval xbreak(zx * sqrt(10.0), xmin, xmax)
 }
 has_nf = exists("nf") ? nf : (ymax >= ceil)
-if (has_nf) { ymax = ceil * 5; set ytics add ("non-finite" ceil) }
 set yrange [ymin:ymax]
 # the eps levels of float and double, on the right axis, where in range
 set logscale y2
@@ -54,15 +54,10 @@ set y2range [ymin:ymax]
 set y2tics nomirror font F_TICK
 set format y2 ""
 set ytics nomirror
-if (EPS_FLOAT > ymin && EPS_FLOAT < ceil / 5) {
-    set y2tics add ("float eps" EPS_FLOAT)
-    set arrow 11 from graph 0, first EPS_FLOAT to graph 1, first EPS_FLOAT nohead dt 3 lw 1 lc rgb "#555555" back
-}
-if (EPS_DOUBLE > ymin && EPS_DOUBLE < ceil / 5) {
-    set y2tics add ("double eps" EPS_DOUBLE)
-    set arrow 12 from graph 0, first EPS_DOUBLE to graph 1, first EPS_DOUBLE nohead dt 3 lw 1 lc rgb "#555555" back
-}
-if (has_nf) set object 13 rect from graph 0, first ceil / 3 to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
+# (the dotted lines per panel, within its range: below)
+eps_in(e, top) = e > ymin && e < ceil / 5 && e < top
+if (EPS_FLOAT > ymin && EPS_FLOAT < ceil / 5) { set y2tics add ("float eps" EPS_FLOAT) }
+if (EPS_DOUBLE > ymin && EPS_DOUBLE < ceil / 5) { set y2tics add ("double eps" EPS_DOUBLE) }
 set key outside top center horizontal Left reverse maxcols 3 samplen 2.5 spacing 1.1 width 1 noenhanced
 set xlabel xl font F_AXIS
 set ylabel yl font F_AXIS
@@ -72,6 +67,16 @@ np = single ? 1 : words(ptitles)
 ncols = (np > 1) ? 2 : 1
 nrows = (np + ncols - 1) / ncols
 in_panel(i, p) = single ? 1 : (int(word(panels, i)) == p)
+# the non-finite band only in the panels that draw a non-finite output
+# (NFP: one 0/1 per panel, a bin with a non-finite count or a value at
+# ceil), the others topped where the finite data end (YFIN: 4x the largest
+# finite value of any panel, so that they share one axis); the panels with
+# the band reach ceil * 5
+NFP = system(sprintf("awk -v ce=%g -v c=%d -v np=%d -v single=%d -v files='%s' -v panels='%s' -f '%s/nf-panels.awk'", ceil, col, np, single, files, panels, here))
+YFIN = real(word(NFP, 1))
+panel_nf(p) = has_nf && int(word(NFP, p + 1))
+ymax_nf = ceil * 5
+ymax_fin = (YFIN > ymin && YFIN < ymax) ? YFIN : ymax
 nb = exists("bands") ? int(system(sprintf("awk 'END { print NR }' '%s'", bands))) : 0
 bfield(b, k) = system(sprintf("awk -v b=%d -v k=%d 'NR == b { if (k < 5) print $k; else { sub(/^[^ ]+ [^ ]+ [^ ]+ [^ ]+ /, \"\"); print } }' '%s'", b, k, bands))
 BF = ""; BP = ""; BC = ""; BS = ""
@@ -119,6 +124,24 @@ do for [term_i = 1:NTERM] {
     do for [p = 1:np] {
         # no panel title: the key above each panel names its series
         unset title
+        # this panel's top: the non-finite band, its tick and room for it
+        # only where a series of the panel is non-finite
+        if (panel_nf(p)) {
+            set yrange [ymin:ymax_nf]; set y2range [ymin:ymax_nf]
+            set ytics autofreq nomirror; set ytics add ("non-finite" ceil)
+            set object 13 rect from graph 0, first ceil / 3 to graph 1, graph 1 fc rgb C_NONFINITE fs solid 1.0 noborder behind
+        } else {
+            set yrange [ymin:ymax_fin]; set y2range [ymin:ymax_fin]
+            set ytics autofreq nomirror
+            unset object 13
+        }
+        ptop = panel_nf(p) ? ymax_nf : ymax_fin
+        if (eps_in(EPS_FLOAT, ptop)) {
+            set arrow 11 from graph 0, first EPS_FLOAT to graph 1, first EPS_FLOAT nohead dt 3 lw 1 lc rgb "#555555" back
+        } else { unset arrow 11 }
+        if (eps_in(EPS_DOUBLE, ptop)) {
+            set arrow 12 from graph 0, first EPS_DOUBLE to graph 1, first EPS_DOUBLE nohead dt 3 lw 1 lc rgb "#555555" back
+        } else { unset arrow 12 }
         # (gnuplot evaluates an empty iteration's colour once: no bands, no clause)
         if (nb > 0) {
         plot for [b = 1:nb] word(BF, b) using 1:(in_band(b, p) && !off($1) && !hatched(b) ? $2 : 1/0):3 with filledcurves fc rgb word(BC, b) \

@@ -4,10 +4,12 @@
 # One sequential colour bar (viridis, style.gp) for all panels, at the
 # right: the defect in units of u (uname: "u = 2^{-24}" or 2^{-53}), so
 # that the accurate methods' own structure (their seams) shows; a defect of
-# 64u or more saturates.  A file "-" leaves its panel blank (a method with
-# no rows in this precision), so panels sit where they sit in the other.
+# 64u or more saturates.  A file "-" draws its panel empty, titled, with
+# the note blank (a method with no rows in this precision: "no double
+# rows"), so panels sit where they sit in the other.
 # Called by plots.sh with: out, ttl, files, names, cbmin, cbmax, uname,
-# ncols, nrows, here, note (what the grid's resolution can and cannot show)
+# ncols, nrows, here, note (what the grid's resolution can and cannot show),
+# blank (the note of an empty panel)
 load here."/style.gp"
 set datafile separator whitespace
 set xrange [0:360]
@@ -33,8 +35,17 @@ do for [term_i = 1:NTERM] {
     set multiplot layout nrows,ncols title ttl."\n{/*0.8 ".note."}" font F_TITLE margins 0.06, 0.86, 70.0/H, 1 - 100.0/H spacing 0.04, 80.0/H
     set label 901 "x: azimuth (degrees); y: n.z of the input" at screen 0.06, screen 20.0/H left font F_AXIS
     do for [i = 1:n] {
-        if (word(files, i) eq "-") { set multiplot next; continue }
         set title word(names, i) font F_PANEL offset 0,-0.5 noenhanced
+        if (word(files, i) eq "-") {
+            # a method with no rows here: its panel keeps its place, its
+            # name and says so (white, not the grey of a non-finite cell)
+            unset colorbox; unset object 20
+            set label 902 (exists("blank") ? blank : "no rows") at graph 0.5, graph 0.5 center font F_AXIS
+            plot -5 notitle
+            unset label 902; unset label 901
+            set object 20 rect from graph 0, graph 0 to graph 1, graph 1 behind fc rgb "#e8e8e8" fs solid 1.0 noborder
+            continue
+        }
         if (i == last) {
             set colorbox user origin screen 0.9, screen 0.12 size screen 0.018, screen 1 - 250.0/H
             set cblabel (nrows > 1 ? "orthonormality defect in units of ".uname." (one scale for all; light grey: non-finite)" : "defect in units of ".uname."; light grey: non-finite") font F_AXIS offset 1.5,0

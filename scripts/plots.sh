@@ -140,7 +140,7 @@ polecap() {
 	pcv="cbmin=$3; cbmax=0; ymin=$1; ymax=$2; tfris=${tf:-0}; tmax=${tm:-0}"
 	gp polecap.gp "$pcv; files='$pcf'; names='$pcm'; out='$PCDIR/polecap_float'; ttl='float: the southern cap, $prov (unit inputs rounded to float; polecap.csv)'"
 	two=$(for m in frisvad duff; do [ -s "$W/pc_$m.dat" ] && printf '%s ' "$m"; done; true)
-	[ -n "$two" ] && gp polecap.gp "$pcv; single=1; files='$(for m in $two; do printf '%s ' "$W/pc_$m.dat"; done)'; names='$two'; out='$FIGS/polecap_frisvad_duff'; ttl='float near -z: frisvad fails in a band above its threshold, duff nowhere'"
+	[ -n "$two" ] && gp polecap.gp "$pcv; single=1; files='$(for m in $two; do printf '%s ' "$W/pc_$m.dat"; done)'; names='$two'; out='$FIGS/polecap_frisvad_duff'; ttl='$(awk -F, -v methods="$two" -f "$HERE/polecap-title.awk" "$pc")'"
 }
 
 for P in float double; do
@@ -261,18 +261,21 @@ for P in float double; do
 			fails=$(awk -F, -v p="$P" '!/^#/ && $2 == p && $3 == "south" { s[$1] = $6 + 0 } !/^#/ && $2 == p && $3 == "grid" { u[$1] = $6 + 0 }
 				END { for (m in s) if (s[m] > 1e-4 && s[m] > 10 * u[m]) n++; print n + 0 }' "$RUN/summary.csv")
 			[ "$fails" -gt 0 ] && mnote="$mnote, so it cannot show the failures within 1e-4 of -z (the $([ -f "$PCDIR/polecap.csv" ] && echo pole-cap map || echo pole chart) shows them)"
-			[ "$have" -lt "$k" ] && mnote="$mnote; blank: no rows in $P"
-			gp map.gp "files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
+			gp map.gp "blank='no rows in $P'; files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }
 			function hex(s,   i, v, c) { v = 0; s = tolower(substr(s, 2)); for (i = 1; i <= 6; i++) { c = index("0123456789abcdef", substr(s, i, 1)) - 1; v = v * 16 + c } return v }
 			!/^#/ && $2 == p && $3 == "grid" && $18 != "nan" { b = $1; sub(/\+fma$/, "", b); print $1, $18, hex(col[b] ? col[b] : "#000000") }' \
-			"$RUN/summary.csv" > "$W/bars_$P.dat"
+			"$RUN/summary.csv" > "$W/bars_$P.unsorted"
+		# in the order of the panels of the other charts (styles.sh), not
+		# of summary.csv, so that a family's bars stand together
+		awk 'NR == FNR { o[$1] = FNR; next } { b = $1; sub(/\+fma$/, "", b); print (b in o ? o[b] : 9999), FNR, $0 }' \
+			"$W/styles" "$W/bars_$P.unsorted" | sort -n -k1,1 -k2,2 | cut -d' ' -f3- > "$W/bars_$P.dat"
 		if [ -s "$W/bars_$P.dat" ]; then
 			rows=$(grep -m1 '^# exhaustive' "$RUN/summary.csv" | sed 's/.*grid: \([0-9]*\)x\([0-9]*\).*/\1 \2/')
 			cell=$(echo "$rows" | awk '{ r = $1; c = $2; dz = 2 / r; dphi = 6.283185307 / c; print (dz > dphi ? dz : dphi) }')
-			gp bars.gp "file='$W/bars_$P.dat'; cell=${cell:-0.1}; yl='largest |b1 - b1''| between neighbouring cells'; out='$RUN/continuity_$P'; ttl='$P: continuity of the frame field on the ${rows% *}x${rows#* } equal-area grid'"
+			gp bars.gp "file='$W/bars_$P.dat'; cell=${cell:-0.1}; yl='largest |b1 - b1''| between neighbouring cells (unitless)'; out='$RUN/continuity_$P'; ttl='$P: continuity of the frame field on the ${rows% *}x${rows#* } equal-area grid'"
 		fi
 	else skip "maps_$P, continuity_$P" "no grid.csv (sweep --dists with grid)"
 	fi

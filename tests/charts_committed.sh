@@ -10,7 +10,15 @@
 #   - the README pole figure's title (scripts/pole-title.awk) claims
 #     "fails" and "on its own floor" only where summary.csv shows them;
 #   - a run with a single method and no frisvad still draws every chart,
-#     each passing the check.
+#     each passing the check;
+#   - a line chart's panel has the non-finite band exactly when one of its
+#     series is non-finite (chart-check.awk -v nfband=1: the north pole
+#     chart once reserved the band in all five panels for one series),
+#     and the check fails on a chart with the band in the wrong panel;
+#   - a map panel of a method with no rows in that precision keeps its
+#     name and says so ("no rows in double"), not a silent gap;
+#   - the README pole-cap figure's title (scripts/polecap-title.awk) says
+#     "fails" only where polecap.csv has a defect of 0.1 or more.
 # Not checked here: the PNGs themselves (the same gnuplot scripts draw
 # them; they are looked at by eye before each commit).
 . "$(dirname "$0")/lib.sh"
@@ -27,7 +35,8 @@ check() {
 		[ -f "$f" ] || continue
 		n=$((n + 1))
 		case $(basename "$f") in maps_*) nl=1;; *) nl=0;; esac
-		out=$(awk -v nolabels=$nl -f scripts/chart-check.awk "$f" 2>&1) && ok || bad "chart check: $out"
+		case $(basename "$f") in error_vs_nz*|south_pole*|north_pole*|nonunit*) nb=1;; *) nb=0;; esac
+		out=$(awk -v nolabels=$nl -v nfband=$nb -f scripts/chart-check.awk "$f" 2>&1) && ok || bad "chart check: $out"
 		# the texts of the chart, tags dropped, as words
 		sed -n 's/<[^>]*>/ /g; s/\\_/_/g; p' "$f" | tr -c 'a-z0-9_\n' ' ' | tr ' ' '\n' | sort -u > "$T/words"
 		absent=$(grep -Fxf "$T/registry" "$T/words" | grep -Fxvf "$T/have" | tr '\n' ' ')
@@ -53,6 +62,31 @@ mkdir -p "$T/poles/south" "$T/poles/north"
 cp results/poles/south/*.csv "$T/poles/south/"; cp results/poles/north/*.csv "$T/poles/north/"
 sh scripts/poles.sh "$T/poles" > "$T/log" 2>&1 || bad "poles.sh failed: $(cat "$T/log")"
 check "$T/poles" results/poles/south/summary.csv
+# the non-finite band: the north pole chart has it in tangent_cross_z's
+# panel alone; moved (that series' count dropped, or another series given
+# one) the check must fail, and so must a floor band naming a method its
+# panel lacks (the multi-panel series checks run: gnuplot's ids there end
+# in a letter)
+n=$(grep -c "fill = 'rgb(251, 227, 212)'" "$T/poles/north_pole_float.svg")
+[ "$n" -eq 1 ] && ok || bad "north_pole_float: $n non-finite bands, expected 1 (tangent_cross_z's panel)"
+sed 's/(31 non-finite)<\/title>/<\/title>/' "$T/poles/north_pole_float.svg" > "$T/m1.svg"
+sed 's/<title>duff<\/title>/<title>duff (2 non-finite)<\/title>/' "$T/poles/north_pole_float.svg" > "$T/m2.svg"
+sed '0,/floor of the other 4/s//floor of naive, zzz/' "$T/poles/north_pole_float.svg" > "$T/m3.svg"
+for m in m1 m2 m3; do
+	cmp -s "$T/$m.svg" "$T/poles/north_pole_float.svg" && bad "$m: the broken chart is not broken (the SVG changed form?)"
+	awk -v nfband=1 -f scripts/chart-check.awk "$T/$m.svg" > /dev/null 2>&1 && bad "chart check passed a broken chart ($m)" || ok
+done
+# a map panel with no rows: named, and saying so (float-only methods in double)
+fo=$(awk -F, '!/^#/ && $1 != "method" { p[$1] = p[$1] " " $2 } END { for (m in p) if (p[m] !~ /double/) n++; print n + 0 }' results/reference/summary.csv)
+n=$(grep -c '>no rows in double<' "$T/ref/maps_double.svg")
+[ "$n" -eq "$fo" ] && ok || bad "maps_double: $n panels say 'no rows in double', $fo methods have no double rows"
+# the pole-cap figure's title: "fails" only at a defect of 0.1 or more
+t=$(awk -F, -v methods="frisvad duff" -f scripts/polecap-title.awk results/polecap/polecap.csv)
+case "$t" in *"frisvad fails (defect >= 0.1) at 1 + n.z from "*", duff stays below "*) ok;; *) bad "pole-cap title: $t";; esac
+awk -F, 'BEGIN { OFS = "," } $1 == "one_plus_nz" { for (i = 1; i <= NF; i++) if ($i == "frisvad") c = i } !/^#/ && c && $1 != "one_plus_nz" && $c + 0 > 0.05 { $c = 0.05 } { print }' results/polecap/polecap.csv > "$T/pc2.csv"
+t=$(awk -F, -v methods="frisvad duff" -f scripts/polecap-title.awk "$T/pc2.csv")
+case "$t" in *"frisvad fails"*) bad "a pole-cap defect of 0.05 titled a failure: $t";; *"frisvad stays below 5e-02"*) ok;; *) bad "unexpected pole-cap title: $t";; esac
+grep -q 'frisvad fails (defect' "$T/fig/polecap_frisvad_duff.svg" && ok || bad "the pole-cap figure's title is not polecap-title.awk's"
 # the certify run and its README figure
 mkdir -p "$T/cert" "$T/cfig"
 cp results/certify/certify.csv "$T/cert/"

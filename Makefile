@@ -424,17 +424,24 @@ render-brushed: $(B)/aorender $(B)/plot-deps.stamp
 	done | tee $(RENDERS)/brushed/summary.txt
 render: $(B)/aorender $(B)/plot-deps.stamp render-brushed
 	@mkdir -p $(RENDERS)
-	$(B)/aorender --method duff_branchless --precision double --out $(RENDERS)/reference-double.png
-	@# every method's difference image; its grey image only for RENDER_GREY
-	@# (the others look the same as the reference, and cost 20 kB each)
-	@for m in $$($(B)/aorender --list); do \
-	  case " $(RENDER_GREY) " in *" $$m "*) g=$(RENDERS)/$$m-float.png;; *) g=$(B)/render-grey.png;; esac; \
-	  $(B)/aorender --method $$m --precision float --out $$g --diff $(RENDERS)/$$m-float-diff.png || exit 1; \
+	@# every render a chart (scripts/ao.gp: title, scales, what to look
+	@# for, a legible font): the reference's image; every method's
+	@# difference to it, beside its image only for RENDER_GREY (the
+	@# others' images look the same as the reference's)
+	$(B)/aorender --method duff_branchless --precision double --out $(B)/render-ref.png
+	gnuplot -e "here='scripts'; nosvg=1; grey='$(B)/render-ref.png'; out='$(RENDERS)/reference-double'; name='duff\\_branchless'; prec='double'; maxd=0; over=0; nan=0" scripts/ao.gp
+	@# (the methods of the reference run that aorender has: the study's
+	@# frisvad_rotate is not in libonb)
+	@$(B)/aorender --list > $(B)/render-list.txt
+	@for m in $$(awk -F, '!/^#/ && $$1 != "method" { sub(/\+fma$$/, "", $$1); if (!s[$$1]++) print $$1 }' results/reference/summary.csv | grep -Fx -f $(B)/render-list.txt); do \
+	  l=$$($(B)/aorender --method $$m --precision float --out $(B)/render-grey.png --diff $(B)/render-diff.png) || exit 1; echo "$$l"; \
+	  case " $(RENDER_GREY) " in *" $$m "*) g="grey='$(B)/render-grey.png';";; *) g="";; esac; \
+	  mx=$$(echo "$$l" | sed 's/.* max \([^ ]*\) .*/\1/'); ov=$$(echo "$$l" | sed 's/.*pixels > [^:]*: *\([0-9]*\) .*/\1/'); nn=$$(echo "$$l" | sed 's/.*NaN pixels //'); \
+	  e=$$(echo $$m | sed 's/_/\\_/g'); \
+	  gnuplot -e "here='scripts'; nosvg=1; $$g diff='$(B)/render-diff.png'; out='$(RENDERS)/$$m-float-diff'; name='$$e'; prec='float'; maxd=$$mx; over=$$ov; nan=$$nn" scripts/ao.gp || exit 1; \
 	done | tee $(RENDERS)/summary.txt
-	@# stored-block PNGs (aorender writes no deflate) to compressed palette
-	@# PNGs; lossless here: every image has at most 256 colours
 	@if command -v pngquant >/dev/null 2>&1; then for f in $(RENDERS)/*.png; do \
-	  pngquant --force --speed 1 --output $$f 256 $$f || exit 1; done; \
+	  pngquant --force --skip-if-larger --speed 1 --output $$f 64 $$f || true; done; \
 	else echo "render: pngquant missing (scripts/install-deps.sh --plots): the PNGs stay uncompressed"; fi
 
 # Man pages: man/onbstudy.1 is generated from the commands' own

@@ -18,7 +18,9 @@
 #   - a map panel of a method with no rows in that precision keeps its
 #     name and says so ("no rows in double"), not a silent gap;
 #   - the README pole-cap figure's title (scripts/polecap-title.awk) says
-#     "fails" only where polecap.csv has a defect of 0.1 or more.
+#     "fails" only where polecap.csv has a defect of 0.1 or more;
+#   - the render charts' texts (scripts/ao.gp, brushed.gp) fit their
+#     canvas, drawn on fixture images.
 # Not checked here: the PNGs themselves (the same gnuplot scripts draw
 # them; they are looked at by eye before each commit).
 . "$(dirname "$0")/lib.sh"
@@ -87,6 +89,27 @@ awk -F, 'BEGIN { OFS = "," } $1 == "one_plus_nz" { for (i = 1; i <= NF; i++) if 
 t=$(awk -F, -v methods="frisvad duff" -f scripts/polecap-title.awk "$T/pc2.csv")
 case "$t" in *"frisvad fails"*) bad "a pole-cap defect of 0.05 titled a failure: $t";; *"frisvad stays below 5e-02"*) ok;; *) bad "unexpected pole-cap title: $t";; esac
 grep -q 'frisvad fails (defect' "$T/fig/polecap_frisvad_duff.svg" && ok || bad "the pole-cap figure's title is not polecap-title.awk's"
+# the render charts (scripts/ao.gp, brushed.gp: make render draws them from
+# aorender's images, too slow for make test) on fixture images of
+# aorender's sizes, with the longest captions: no text leaves the canvas
+# or overlaps another; a name too long for the title must fail
+gnuplot -e "set terminal pngcairo size 480,360; set output '$T/g.png'; unset key; plot sin(x)" 2>/dev/null
+gnuplot -e "set terminal pngcairo size 480,418; set output '$T/d.png'; unset key; plot cos(x)" 2>/dev/null
+awk 'BEGIN { for (y = 0; y < 120; y++) { for (x = 0; x < 160; x++) print x, y, x / 160, (x == 3 ? "nan" : y / 120); print "" } }' > "$T/b.dat"
+rc() { # rc SCRIPT OUT VARS: draw a render chart as SVG, then chart-check its texts
+	gnuplot -e "here='scripts'; nosvg=0; out='$T/$2'; $3" "scripts/$1" > "$T/log" 2>&1 || { echo "gnuplot failed: $(cat "$T/log")"; return 1; }
+	awk -v images=1 -f scripts/chart-check.awk "$T/$2.svg"
+}
+for v in "grey='$T/g.png'; name='duff\\_branchless'; prec='double'; maxd=0; over=0; nan=0" \
+	"grey='$T/g.png'; diff='$T/d.png'; name='tangent\\_cross\\_z'; prec='float'; maxd=0.02; over=0; nan=3860" \
+	"diff='$T/d.png'; name='hughes\\_moeller\\_rsqrt\\_nr'; prec='float'; maxd=0.02; over=0; nan=0" \
+	"diff='$T/d.png'; name='frisvad'; prec='float'; maxd=0.156; over=1056; nan=0"; do
+	out=$(rc ao.gp ao "$v" 2>&1) && ok || bad "ao.gp ($v): $out"
+done
+for m in duff hughes_moeller frisvad_max; do
+	out=$(rc brushed.gp br "file='$T/b.dat'; name='$(echo $m | sed 's/_/\\_/g')'; prec='float'; maxd=0.362; nan=4176" 2>&1) && ok || bad "brushed.gp ($m): $out"
+done
+rc ao.gp ao "diff='$T/d.png'; name='$(printf '%0150d' 0)'; prec='float'; maxd=0; over=0; nan=0" > /dev/null 2>&1 && bad "a render title of 150 characters passed the chart check" || ok
 # the certify run and its README figure
 mkdir -p "$T/cert" "$T/cfig"
 cp results/certify/certify.csv "$T/cert/"

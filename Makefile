@@ -368,7 +368,10 @@ onbstudy-mpi: $(MPI_OBJ) $(STUDY_LIB) libonb.a
 GLSLANG ?= glslangValidator
 GPU_SRC  = $(wildcard src/gpu/*.c)
 GPU_OBJ  = $(GPU_SRC:src/%.c=$(B)/%.o)
-GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv ops_preserve.spv wild.spv)
+GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv ops_preserve.spv) $(WILD_SPV)
+# The shader engines' own lines: one file each under src/gpu/wild/, each
+# compiled with the harness wild.comp (which includes it as engine.glsl).
+WILD_SPV = $(patsubst src/gpu/wild/%.glsl,$(B)/gpu/wild/%.spv,$(wildcard src/gpu/wild/*.glsl))
 GPU_KDEPS = include/libonb/onb.glsl include/libonb/onb.hlsl src/gpu/methods.inc $(B)/test-deps.stamp
 GLSLC    = $(GLSLANG) -V -Iinclude -Isrc --quiet
 .PHONY: gpu
@@ -396,6 +399,10 @@ $(B)/gpu/onb_hlsl_precise.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
 $(B)/gpu/ops_preserve.spv: src/gpu/ops.comp $(B)/test-deps.stamp
 	@mkdir -p $(@D)
 	$(GLSLC) -DONB_PRESERVE $< -o $@
+$(B)/gpu/wild/%.spv: src/gpu/wild/%.glsl src/gpu/wild.comp $(B)/test-deps.stamp
+	@mkdir -p $(B)/gpu/wild/$*
+	cp $< $(B)/gpu/wild/$*/engine.glsl
+	$(GLSLC) -I$(B)/gpu/wild/$* src/gpu/wild.comp -o $@
 $(B)/gpu/%.spv: src/gpu/%.comp $(B)/test-deps.stamp
 	@mkdir -p $(@D)
 	$(GLSLC) $< -o $@

@@ -31,7 +31,8 @@ headline() {
 	h=$(rows ieee | awk -F'|' '$1 == "hughes_moeller" && $2 == "float" { print $4 }')
 	hv=$(rows vulkan | awk -F'|' '$1 == "hughes_moeller" && $2 == "float" { print $4 }')
 	dd=$(rows vulkan | awk -F'|' '$1 == "duff" && $2 == "double" { print $4 }')
-	echo "- **On every conforming Vulkan device** (docs/gpu.md: each operation anywhere within the spec's allowance, flushing, contraction): Duff's float basis is proven within ${v} u (IEEE: ${d} u), Hughes-Möller's within ${hv} u (IEEE: ${h} u), and a double kernel only to float accuracy (Duff: ${dd} u of double); Direct3D 11 leaves every double and every float kernel that computes in double unbounded (\`onbstudy certify --quick --arith PROFILE\`, results/gpu/)."
+	d3=$(rows d3d11 | awk -F'|' '$1 == "duff" && $2 == "double" { print $4 }')
+	echo "- **On every conforming Vulkan device** (docs/gpu.md: each operation anywhere within the spec's allowance, flushing, contraction): Duff's float basis is proven within ${v} u (IEEE: ${d} u), Hughes-Möller's within ${hv} u (IEEE: ${h} u), and a double kernel only to float accuracy (Duff: ${dd} u of double); Direct3D 11, whose Shader Model 5 has no double square root, leaves every kernel with a double sqrt unbounded (Duff's double basis: ${d3} u of double) (\`onbstudy certify --quick --arith PROFILE\`, results/gpu/)."
 }
 # the registry's shader engines (language GLSL, HLSL or Slang; methods and
 # aliases of `onbstudy list --format csv`, `--aliases --format csv`):
@@ -51,7 +52,7 @@ CSV='function split_csv(l, f,   n, q, c, i, cur) { n = 0; q = 0; cur = ""
 fbound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print ($4 ~ /^[0-9]/ ? $4 " u" : $4); f = 1 } END { if (!f) print "not run" }'; }
 ffound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print $5 " u" }'; }
 # lavapipe's largest defect D on unit inputs for the engine's own lines (results/lavapipe/report.md)
-lvp() { awk -F'|' -v e="\`$1\`" '$2 ~ "^ " e " $" && $4 ~ /`/ && NF >= 12 { gsub(/ /, "", $11); printf "D = %.3g u (%s)\n", $9 / 2^-24, $11; f = 1; exit } END { if (!f) print "not in wild.comp" }' results/lavapipe/report.md; }
+lvp() { awk -F'|' -v e="\`$1\`" -v e0="$1" '$2 ~ "^ " e " $" && $4 ~ /`/ && NF >= 12 && $11 ~ /inside|outside/ { gsub(/ /, "", $11); printf "D = %.3g u (%s)\n", $9 / 2^-24, $11; f = 1; exit } END { if (!f) print "not run (no src/gpu/wild/" e0 ".glsl)" }' results/lavapipe/report.md; }
 engines() {
 	echo "Every shader engine of docs/wild.md (the registry's rows in GLSL, HLSL or Slang) under the"
 	echo "profile of its language (GLSL: vulkan; HLSL: d3d11; Slang, which targets both: each), float,"

@@ -35,7 +35,7 @@ dumps() { # VAR: does the driver print a list of its values for VAR=help?
 	echo
 	echo "| SPIR-V | OpFAdd | OpFSub | OpFMul | OpFDiv | Sqrt | InverseSqrt | Fma | NoContraction |"
 	echo "|---|---|---|---|---|---|---|---|---|"
-	for s in onb_glsl onb_glsl_precise onb_hlsl onb_hlsl_precise wild ops; do
+	for s in onb_glsl onb_glsl_precise onb_hlsl onb_hlsl_precise $(cd build/gpu && ls wild/*.spv | sed 's/\.spv$//') ops; do
 		spirv-dis "build/gpu/$s.spv" > "$tmp/dis"
 		printf '| %s |' "$s.spv"
 		for p in '= OpFAdd ' '= OpFSub ' '= OpFMul ' '= OpFDiv ' ' Sqrt ' ' InverseSqrt ' ' Fma ' 'NoContraction'; do

@@ -12,7 +12,9 @@
 #   - the checks can fail: the deliberately broken kernel (GLSL's sign()
 #     in Duff's formula) is caught by both, and a bound tightened below
 #     the found defect is reported outside;
-#   - the shader engines' own lines (wild) lie within their C rows' bounds;
+#   - the shader engines' own lines (wild: every GLSL, HLSL and Slang row
+#     of the registry, src/gpu/wild/NAME.glsl) lie within their C rows'
+#     bounds, and a missing file or a bound below the defect fails;
 #   - bad usage exits 2, an absent device 3, with a message.
 . "$(dirname "$0")/lib.sh"
 # Under ASan, the driver's own allocations that it never frees (LLVM's
@@ -48,9 +50,24 @@ $G compare --per 500 --methods duff_branchless --bounds "$tmp/tight.csv" > "$tmp
 [ $rc -eq 1 ] && grep -q '1e-07 (duff_branchless) | \*\*outside\*\*' "$tmp/tight" && ok ||
 	{ cat "$tmp/tight"; bad "a bound of 1e-7 for duff_branchless was not reported outside (exit $rc)"; }
 
+# wild: every shader row of the registry (GLSL, HLSL, Slang) runs from its
+# src/gpu/wild/NAME.glsl and is inside its C row's bound
+rows=$(./onbstudy list --format csv | awk -F, 'NR > 1' | grep -c -e ',"\{0,1\}GLSL' -e ',"\{0,1\}HLSL' -e ',"\{0,1\}Slang' || true)
+rows=$((rows + $(./onbstudy list --aliases --format csv | awk -F, 'NR > 1' | grep -c -e ',"\{0,1\}GLSL' -e ',"\{0,1\}HLSL' -e ',"\{0,1\}Slang' || true)))
 $G wild --per 2000 > "$tmp/wild" 2>&1; rc=$?
-[ $rc -eq 0 ] && [ "$(grep -c '| inside |' "$tmp/wild")" -eq 4 ] && ok ||
-	{ cat "$tmp/wild"; bad "wild: exit $rc (want 0, four engines inside)"; }
+n=$(grep -c '| inside |' "$tmp/wild")
+[ $rc -eq 0 ] && [ "$n" -eq "$rows" ] && [ "$n" -ge 6 ] && grep -q '^| `capsaicin` ' "$tmp/wild" && grep -q '^| `rtxdi` ' "$tmp/wild" && ok ||
+	{ cat "$tmp/wild"; bad "wild: exit $rc, $n engines inside (want 0 and all $rows shader rows of the registry)"; }
+# ... and the wild checks can fail: a shader row without its file, and a bound below the defect
+mkdir -p "$tmp/spv/wild" && cp build/gpu/ops.spv "$tmp/spv/" && cp build/gpu/wild/*.spv "$tmp/spv/wild/" && rm "$tmp/spv/wild/rtxdi.spv"
+$G wild --per 100 --spv "$tmp/spv" > "$tmp/wild1" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '^| `rtxdi` .*not run: no src/gpu/wild/ENGINE.glsl' "$tmp/wild1" && ok ||
+	{ cat "$tmp/wild1"; bad "wild without rtxdi.spv: exit $rc (want 1, rtxdi not run)"; }
+{ grep -v '^duff,float,-1,1,0,360,' results/certify/certify.csv; echo 'duff,float,-1,1,0,360,1e-7,0,0,0,0,proven,0,,,'
+  grep -h '^capsaicin,float,-1,1,0,360,' results/wild/add/*/certify.csv | head -1; } > "$tmp/wtight.csv"
+$G wild --per 100 --bounds "$tmp/wtight.csv" > "$tmp/wild2" 2>&1; rc=$?
+[ $rc -eq 1 ] && [ "$(grep -c '| 1e-07 | \*\*outside\*\*' "$tmp/wild2")" -eq 3 ] && ok ||
+	{ cat "$tmp/wild2"; bad "wild with duff's bound 1e-7: exit $rc (want 1, pasvulkan, falcor and rtxdi outside)"; }
 
 $G frobnicate > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "an unknown command does not exit 2"
 $G compare --methods duff,nosuch > /dev/null 2> "$tmp/err"; rc=$?

@@ -241,8 +241,9 @@ int cmd_eval(int argc, char **argv)
 	nk = kernels_select(methods, fma, ks, 256);
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
-	if (o.arith && prec_on[PREC_HALF]) {
-		study_error("eval: --arith has no binary16 profile (--precision float|double|both)");
+	if (o.arith && prec_on[PREC_HALF] && !arith_has_format(o.arith, PREC_HALF)) {
+		study_error("eval: --arith %s gives binary16 no precision (docs/gpu.md; vulkan, vulkan-precise, ieee and contract-any have a half row)",
+		            o.arith->name);
 		return ONB_EXIT_USAGE;
 	}
 	if (o.arith)

@@ -56,8 +56,8 @@ static void print_env(const char *name, int prec, const arith_profile *p, const 
 		if (bound < INFINITY)
 			printf("%s,%s,%s,bound,0,%a\n", name, prec_name(prec), p->name, bound);
 		else
-			printf("%s,%s,%s,bound,0,inf%s%s\n", name, prec_name(prec), p->name, unb >= 0 ? ":" : "",
-			       unb >= 0 ? (unb == AR_NOPS ? "direction-rule" : arith_op_name(unb)) : "");
+			printf("%s,%s,%s,bound,0,inf%s%s\n", name, prec_name(prec), p->name, unb >= 0 || unb == -2 ? ":" : "",
+			       unb == -2 ? "no-half-model" : unb >= 0 ? (unb == AR_NOPS ? "direction-rule" : arith_op_name(unb)) : "");
 		return;
 	}
 	printf("\n%s (%s) under %s\n", name, prec_name(prec), p->name);
@@ -74,7 +74,8 @@ static void print_env(const char *name, int prec, const arith_profile *p, const 
 		       e->hi[6 + NDEF] > bound ? "  WARNING: an emulated defect exceeds it" : "");
 	else
 		printf("  proven bound near the input: none (%s)\n",
-		       unb >= 0 ? (unb == AR_NOPS ? "direction rule: round to nearest only" : arith_op_name(unb))
+		       unb == -2 ? "no binary16 proof model: the emulated range is measured, not bounded"
+		       : unb >= 0 ? (unb == AR_NOPS ? "direction rule: round to nearest only" : arith_op_name(unb))
 		                : "singular or not enclosed");
 }
 
@@ -103,11 +104,15 @@ static void eval_method(cm *c, ref_ctx *rc, const cm_method *m, const char *name
 	}
 	e.adversarial = emu_adversarial(c, rc, m, prec, n, p, 3, ch, &r);
 	env_add(&e, &r);
-	bound = emu_point_bound(m, p, prec, n, &unb);
+	if (prec == PREC_HALF) {   /* no binary16 proof model (src/model/model.h): measured only */
+		bound = INFINITY;
+		unb = -2;
+	} else
+		bound = emu_point_bound(m, p, prec, n, &unb);
 	print_env(name, prec, p, &e, samples, bound, unb, csv);
 }
 
-int eval_arith(const arith_profile *p, const study_kernel *ks, int nk, const int prec_on[2], const double in[3],
+int eval_arith(const arith_profile *p, const study_kernel *ks, int nk, const int prec_on[PREC_COUNT], const double in[3],
                int samples, unsigned long long seed, int csv)
 {
 	cm *c = cm_new(CM_EXEC);
@@ -122,7 +127,7 @@ int eval_arith(const arith_profile *p, const study_kernel *ks, int nk, const int
 	}
 	if (csv)
 		printf("method,precision,profile,quantity,lo,hi\n");
-	for (prec = 0; prec < 2; prec++) {
+	for (prec = 0; prec < PREC_COUNT; prec++) {
 		double n[3];
 		if (!prec_on[prec])
 			continue;
@@ -130,7 +135,8 @@ int eval_arith(const arith_profile *p, const study_kernel *ks, int nk, const int
 			n[i] = fmt_round(in[i], prec);
 		if (!csv)
 			printf("== %s under %s (%s): n = (%a, %a, %a)%s\n", prec_name(prec), p->name, p->title, n[0], n[1], n[2],
-			       cert_in_domain(n, prec, -1.0) ? "" : "  (not a rounding of a unit vector: the bound does not cover it)");
+			       prec == PREC_HALF ? "" : cert_in_domain(n, prec, -1.0) ? ""
+			       : "  (not a rounding of a unit vector: the bound does not cover it)");
 		for (k = 0; k < nk; k++) {
 			const cm_method *m = ks[k].fma ? NULL : cm_find(ks[k].name);
 			if (!m || !kernel_runs(&ks[k], prec) || m->direction) {

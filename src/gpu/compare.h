@@ -65,7 +65,9 @@ int gpu_compare_all(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *i
                     const char *bounds, const char *methods);
 /* -1 with a message when --methods names a method not in methods.inc. */
 int gpu_methods_check(const char *list);
-/* The engines' own lines (wild.comp) against their C rows; as above. */
-int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds);
+/* The engines' own lines (src/gpu/wild/, the registry's GLSL, HLSL and
+   Slang rows) against their C rows; as above.  fallback: a C row absent
+   from bounds takes its bound from the wild runs' CSVs (results/wild/add). */
+int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds, int fallback);
 
 #endif

@@ -1,28 +1,81 @@
 /*
  * gpu_wild.c - onbstudy-gpu wild: the shader engines of docs/wild.md in
- * their own GLSL lines (wild.comp) on the driver, against their C rows
- * (the method or alias target of docs/wild.md) bit for bit, with the
- * envelope check of gpu_compare.c against that row's bound.
+ * their own lines on the driver, against their C rows bit for bit, with
+ * the envelope check of gpu_compare.c against that row's bound.  The
+ * engines are the registry's rows (methods and aliases) whose language is
+ * GLSL, HLSL or Slang; each runs from build/gpu/wild/NAME.spv, which the
+ * Makefile makes from src/gpu/wild/NAME.glsl and the harness wild.comp.
+ * A shader row without its file, or without a bound, fails the run.
  */
+#include <glob.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "gpu/gpu.h"
 #include "gpu/compare.h"
+#include "libonb/onb.h"
 
 typedef struct {
-	int id;                  /* wild.comp's ENGINE           */
-	const char *engine, *row; /* docs/wild.md's row, its C method */
-	const char *lines;       /* where the lines are          */
+	const char *engine, *row;    /* docs/wild.md's row, its C method */
+	const onb_provenance *prov;  /* where its lines are              */
 } wild_row;
 
-static const wild_row rows[] = {
-	{ 1, "q2rtx", "q2rtx", "NVIDIA/Q2RTX f2526e9a src/refresh/vkpt/shader/utils.glsl:241-257 (GLSL)" },
-	{ 2, "nvpro", "frisvad_max", "nvpro-samples/nvpro_core ba24b73e nvvkhl/shaders/func.h:102-114 (GLSL)" },
-	{ 3, "pasvulkan", "duff", "BeRo1985/pasvulkan bc6681f3 src/assets/shaders/scene3d/tangentspacebasis.glsl:4-11 (GLSL)" },
-	{ 4, "falcor", "duff", "NVIDIAGameWorks/Falcor eb540f67 Source/Falcor/Utils/Math/MathHelpers.slang:559-567 (Slang, read as GLSL)" },
-};
-#define NROWS (sizeof rows / sizeof rows[0])
+/* the certify CSVs of the registry's new rows (scripts/wild-run.sh's runs):
+   where a shader row's bound is looked up when the default --bounds
+   (results/certify/certify.csv, the full run) does not hold its C row */
+#define WILD_ADD_CSV "results/wild/add/*/certify.csv"
+
+static int shader_language(const onb_provenance *p)
+{
+	return p && p->language && (strstr(p->language, "GLSL") || strstr(p->language, "HLSL") || strstr(p->language, "Slang"));
+}
+
+static int by_engine(const void *a, const void *b)
+{
+	return strcmp(((const wild_row *)a)->engine, ((const wild_row *)b)->engine);
+}
+
+/* The registry's shader rows, by name; their number (at most max). */
+static size_t wild_rows(wild_row *r, size_t max)
+{
+	size_t nm, na, i, n = 0;
+	const onb_method *m = onb_methods(&nm);
+	const onb_alias *a = onb_aliases(&na);
+	for (i = 0; i < nm && n < max; i++)
+		if (shader_language(m[i].prov)) {
+			r[n].engine = r[n].row = m[i].name;
+			r[n++].prov = m[i].prov;
+		}
+	for (i = 0; i < na && n < max; i++)
+		if (shader_language(&a[i].prov)) {
+			r[n].engine = a[i].name;
+			r[n].row = a[i].target;
+			r[n++].prov = &a[i].prov;
+		}
+	qsort(r, n, sizeof *r, by_engine);
+	return n;
+}
+
+/* The whole-sphere float bound of C row `row` in `bounds`, or with
+   `fallback` in the first of WILD_ADD_CSV that holds it; *from names the
+   CSV.  -1: none holds it (or the CSV cannot be read: a message). */
+static double row_bound(const char *bounds, int fallback, const char *row, char *from, size_t len)
+{
+	glob_t g;
+	size_t i;
+	double b;
+	snprintf(from, len, "%s", bounds);
+	if ((b = gpu_bound(bounds, row)) >= 0.0 || !fallback || access(bounds, R_OK) != 0)
+		return b;
+	if (glob(WILD_ADD_CSV, 0, NULL, &g) != 0)
+		return -1.0;
+	for (i = 0; i < g.gl_pathc && b < 0.0; i++)
+		if ((b = gpu_bound(g.gl_pathv[i], row)) >= 0.0)
+			snprintf(from, len, "%s", g.gl_pathv[i]);
+	globfree(&g);
+	return b;
+}
 
 static void first_diff(FILE *f, const gpu_inputs *in, const float *ref, const float *got, size_t i)
 {
@@ -35,14 +88,41 @@ static void first_diff(FILE *f, const gpu_inputs *in, const float *ref, const fl
 		fprintf(f, " %a", (double)ref[6 * i + k]);
 }
 
-static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const wild_row *r,
-               const char *bounds, float *ref, float *got, int *bad)
+/* Its lines, as the engines table shows them: repository commit path (language). */
+static void lines(FILE *f, const onb_provenance *p)
+{
+	const char *repo = strncmp(p->repository, "github.com/", 11) == 0 ? p->repository + 11 : p->repository;
+	fprintf(f, "%s %.8s %s (%s)", repo, p->commit, p->path, p->language);
+}
+
+/* A row that cannot run: no engine file, or no bound for its C row. */
+static void missing(FILE *f, const wild_row *r, const char *why)
+{
+	fprintf(f, "| `%s` | ", r->engine);
+	lines(f, r->prov);
+	fprintf(f, " | `%s` | - | - | - | - | - | - | **%s** | - |\n", r->row, why);
+}
+
+static int one(gpu_dev *d, FILE *f, const char *spvdir, const gpu_inputs *in, const wild_row *r,
+               const char *bounds, int fallback, float *ref, float *got, int *bad)
 {
 	size_t i, same = 0, zero = 0, nonfin = 0, value = 0, value_bad_in = 0, first = in->count, above = 0;
-	double dmax = 0.0, bound = gpu_bound(bounds, r->row);
-	if (bound < 0.0 || gpu_c_outputs(r->row, in, ref) != 0)
+	char spv[4096], from[4096];
+	double dmax = 0.0, bound;
+	snprintf(spv, sizeof spv, "%s/wild/%s.spv", spvdir, r->engine);
+	if (access(spv, R_OK) != 0) {
+		missing(f, r, "not run: no src/gpu/wild/ENGINE.glsl (docs/adding-a-method.md)");
+		return ++*bad, 0;
+	}
+	if ((bound = row_bound(bounds, fallback, r->row, from, sizeof from)) < 0.0) {
+		if (access(bounds, R_OK) != 0)
+			return -1;
+		missing(f, r, "no bound: its C row is in no certify CSV read");
+		return ++*bad, 0;
+	}
+	if (gpu_c_outputs(r->row, in, ref) != 0)
 		return -1;
-	if (gpu_run(d, spv, r->id, (const uint32_t *)(const void *)in->n, 3 * in->count,
+	if (gpu_run(d, spv, 0, (const uint32_t *)(const void *)in->n, 3 * in->count,
 	            (uint32_t *)(void *)got, 6 * in->count, (uint32_t)((in->count + 63) / 64)) != 0)
 		return -1;
 	for (i = 0; i < in->count; i++) {
@@ -60,9 +140,11 @@ static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const
 			if (!(dd <= bound)) above++;
 		}
 	}
-	fprintf(f, "| `%s` | %s | `%s` | %zu | %zu | %zu | %s%zu%s (%zu at a NaN/inf input) | %.3g | %.3g | %s | ", r->engine, r->lines,
+	fprintf(f, "| `%s` | ", r->engine);
+	lines(f, r->prov);
+	fprintf(f, " | `%s` | %zu | %zu | %zu | %s%zu%s (%zu at a NaN/inf input) | %.3g | %.3g%s%s | %s | ",
 	        r->row, same, zero, nonfin, value ? "**" : "", value, value ? "**" : "", value_bad_in, dmax, bound,
-	        above ? "**outside**" : "inside");
+	        strcmp(from, bounds) ? " from " : "", strcmp(from, bounds) ? from : "", above ? "**outside**" : "inside");
 	if (first < in->count)
 		first_diff(f, in, ref, got, first);
 	else
@@ -75,10 +157,11 @@ static int one(gpu_dev *d, FILE *f, const char *spv, const gpu_inputs *in, const
 	return 0;
 }
 
-int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds)
+int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds, int fallback)
 {
 	float *ref = malloc(6 * in->count * sizeof *ref), *got = malloc(6 * in->count * sizeof *got);
-	char spv[4096];
+	wild_row r[64];
+	const size_t n = wild_rows(r, sizeof r / sizeof r[0]);
 	size_t k;
 	int bad = 0, rc = 0;
 	if (!ref || !got) {
@@ -86,11 +169,10 @@ int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, cons
 		free(ref); free(got);
 		return -1;
 	}
-	snprintf(spv, sizeof spv, "%s/wild.spv", spvdir);
 	fprintf(f, "| engine | its lines | C row | same bits (NaN payloads aside) | +-0 | NaN/inf | value | largest D on unit inputs | bound (C row) | envelope | first differing input: driver b1 b2, C b1 b2 |\n"
 	           "|---|---|---|---|---|---|---|---|---|---|---|\n");
-	for (k = 0; k < NROWS && rc == 0; k++)
-		rc = one(d, f, spv, in, &rows[k], bounds, ref, got, &bad);
+	for (k = 0; k < n && rc == 0; k++)
+		rc = one(d, f, spvdir, in, &r[k], bounds, fallback, ref, got, &bad);
 	free(ref); free(got);
 	return rc ? -1 : bad;
 }

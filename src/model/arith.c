@@ -33,10 +33,17 @@
 #define IEEE_OPS      { RN,     RN,     RN,     RN,        RN,        RN,       RN,       RN,    RN }
 #define VK_OPS        { ULP(1), ULP(1), ULP(1), ULP(2.5),  ULP(2.5),  SPLIT,    ULP(2),   SPLIT, ULP(1) }
 #define D3D_OPS       { ULP(1), ULP(1), ULP(1), SPLIT,     REL(0x1p-21), REL(0x1p-21), REL(0x1p-21), SPLIT, ULP(1) }
+#define D3D_D_OPS     { ULP(1), ULP(1), ULP(1), ULP(1),    ULP(1),    NONE,     NONE,     ULP(1), ULP(1) }
 #define CL_F_OPS      { RN,     RN,     RN,     ULP(2.5),  ULP(2.5),  ULP(3),   ULP(2),   RN,    RN }
 #define CL_D_OPS      { RN,     RN,     RN,     RN,        RN,        RN,       ULP(2),   RN,    RN }
 #define CUDA_F_OPS    { RN,     RN,     RN,     ULP(2),    ULP(2),    ULP(3),   ULP(2),   RN,    RN }
 #define NONE_OPS      { NONE,   NONE,   NONE,   NONE,      NONE,      NONE,     NONE,     NONE,  NONE }
+
+/* Vulkan's half-precision column (Float16 arithmetic, shaderFloat16): the
+   same rules in binary16, division's range [2^-14, 2^14].  An operation
+   decorated RelaxedPrecision (GLSL mediump) on 32-bit values is in
+   neither column: Vulkan grants it no precision at all. */
+#define VK_HALF_NOTE "Float16 (shaderFloat16): OpFAdd/OpFSub/OpFMul/conversions correctly rounded; OpFDiv 2.5 ulp for |y| in [2^-14, 2^14]; InverseSqrt 2 ulp; Sqrt from 1.0/InverseSqrt; Fma from OpFMul then OpFAdd (the table's half-precision column). RelaxedPrecision (mediump) on 32-bit values: no precision required (the single-precision column excludes it)"
 
 static const arith_profile profiles[] = {
 	{ "ieee", "IEEE 754 binary32/binary64, round to nearest, no contraction, subnormals kept (the C kernels as built)", 1,
@@ -49,19 +56,23 @@ static const arith_profile profiles[] = {
 	  { { VK_OPS, 24, 1, 0x1p-126, 0x1p126,
 	      "OpFAdd/OpFSub/OpFMul/OpFConvert correctly rounded (rounding mode not fixed: < 1 ulp); OpFDiv 2.5 ulp for |y| in [2^-126, 2^126]; InverseSqrt 2 ulp; Sqrt inherited from 1.0/InverseSqrt; Fma inherited from OpFMul then OpFAdd" },
 	    { VK_OPS, 24, 1, 0x1p-126, 0x1p126,
-	      "\"the precision of double-precision instructions is at least that of single precision\": the float allowances, in float ulps" } },
+	      "\"the precision of double-precision instructions is at least that of single precision\": the float allowances, in float ulps" },
+	    { VK_OPS, 11, 1, 0x1p-14, 0x1p14, VK_HALF_NOTE } },
 	  1, 1, 1, "Vulkan 1.3 spec, Appendix A (Vulkan Environment for SPIR-V): Precision and Operation of SPIR-V Instructions; SPIR-V 1.6 section 3.20 (NoContraction), 3.6 (DenormPreserve, SignedZeroInfNanPreserve); GLSL 4.60 section 4.7.1",
 	  "dot: OpFMul and OpFAdd; cross: OpFMul and OpFSub; length: Sqrt(Dot); normalize: x * InverseSqrt(Dot(x, x)); FAbs, FSign exact (GLSL sign(0) = 0); no copysign in GLSL" },
 	{ "vulkan-precise", "Vulkan 1.3 / SPIR-V with NoContraction on every operation (GLSL precise): no fusion, no reassociation", 0,
 	  { { VK_OPS, 24, 1, 0x1p-126, 0x1p126, "as vulkan, NoContraction on every operation" },
-	    { VK_OPS, 24, 1, 0x1p-126, 0x1p126, "as vulkan: single-precision allowances" } },
+	    { VK_OPS, 24, 1, 0x1p-126, 0x1p126, "as vulkan: single-precision allowances" },
+	    { VK_OPS, 11, 1, 0x1p-14, 0x1p14, VK_HALF_NOTE } },
 	  0, 0, 1, "as vulkan; SPIR-V 1.6 section 3.20 NoContraction: no fusing into one operation, no reassociation",
 	  "as vulkan; an explicit fma() is still Fma, inherited from OpFMul then OpFAdd (two roundings)" },
 	{ "d3d11", "Direct3D 11 floating-point rules (HLSL without precise)", 0,
 	  { { D3D_OPS, 24, 1, 0.0, INFINITY,
 	      "add/sub/mul 0.5 ulp \"truncation allowed\" (read: < 1 ulp); rcp, rsq 2^-21 relative; x/y as x * rcp(y); sqrt read as rsq's 2^-21 (no separate figure); mad fused or two roundings; denormals flushed to sign-preserved zero" },
-	    { NONE_OPS, 53, 0, 0.0, INFINITY, "the Direct3D 11 double-precision rules are not transcribed here: nothing proven" } },
-	  1, 1, 0, "Direct3D 11 Programming Guide, Floating-point rules (32-bit floating-point rules)",
+	    { D3D_D_OPS, 53, 0, 0.0, INFINITY,
+	      "doubles (optional: DoublePrecisionFloatShaderOps) \"follow IEEE 754R\" (dadd, dmul: read, as the 32-bit rules read 0.5 ULP, as < 1 ulp), denormals kept; ddiv 0.5 ULP, drcp 1.0 ULP, dfma 0.5 ULP fused (Direct3D 11.1 ExtendedDoublesShaderInstructions: without it no double division exists); no double sqrt or rsq in Shader Model 5: none" },
+	    { NONE_OPS, 11, 0, 0.0, INFINITY, "16-bit floats are a storage format (16-bit floating-point rules: conversions); min16float gives no operation precision: none" } },
+	  1, 1, 0, "Direct3D 11 Programming Guide, Floating-point rules (32-bit, 64-bit (double precision) and 16-bit floating-point rules); Shader Model 5 assembly reference: ddiv, drcp, dfma (Direct3D 11.1, ExtendedDoublesShaderInstructions)",
 	  "dot, cross, normalize, length: mul and add/mad; rsqrt: rsq; sign, abs exact" },
 	{ "opencl", "OpenCL C 3.0 full profile, default build options (FP_CONTRACT on, no -cl-fast-relaxed-math)", 0,
 	  { { CL_F_OPS, 24, 1, 0.0, INFINITY,
@@ -89,6 +100,15 @@ int arith_count(void) { return NPROF; }
 const arith_profile *arith_at(int i) { return i >= 0 && i < NPROF ? &profiles[i] : NULL; }
 const arith_profile *arith_ieee(void) { return &profiles[0]; }
 int arith_is_ieee(const arith_profile *p) { return !p || p->ieee; }
+
+int arith_has_format(const arith_profile *p, int f)
+{
+	int op;
+	for (op = 0; p && f >= 0 && f < PREC_COUNT && op < AR_NOPS; op++)
+		if (p->fmt[f].op[op].how != AR_NONE)
+			return 1;
+	return 0;
+}
 
 const arith_profile *arith_find(const char *s)
 {

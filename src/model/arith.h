@@ -76,6 +76,8 @@ const arith_profile *arith_ieee(void);
 const arith_profile *arith_find(const char *s);
 /* "ieee, vulkan, ..." into buf (for error messages). */
 void arith_names(char *buf, size_t n);
+/* 1 when the profile bounds some operation of format f (not every one none). */
+int arith_has_format(const arith_profile *p, int f);
 /* A profile that changes nothing: NULL or ieee. */
 int arith_is_ieee(const arith_profile *p);
 const char *arith_op_name(int op);

@@ -21,18 +21,17 @@ static double fmt_round(int f, double v)
 		volatile float r = (float)v;
 		return r;
 	}
-	return v;
+	return f == PREC_HALF ? prec_half_round(v) : v;
 }
 
-static double step(int f, double x, double dir)
-{
-	return f == PREC_FLOAT ? (double)nextafterf((float)x, (float)dir) : nextafter(x, dir);
-}
-
-/* A monotone integer of a format value, and back. */
+/* A monotone integer of a format value, and back (binary16: its
+   encoding, common/prec.h's prec_half_bits). */
 static int64_t ord(int f, double x)
 {
-	if (f == PREC_FLOAT) {
+	if (f == PREC_HALF) {
+		const uint16_t i = prec_half_bits(x);
+		return (i & 0x8000u) ? -(int64_t)(i & 0x7fffu) : (int64_t)i;
+	} else if (f == PREC_FLOAT) {
 		float v = (float)x;
 		int32_t i;
 		memcpy(&i, &v, sizeof i);
@@ -46,7 +45,9 @@ static int64_t ord(int f, double x)
 
 static double unord(int f, int64_t k)
 {
-	if (f == PREC_FLOAT) {
+	if (f == PREC_HALF) {
+		return prec_half_value((uint16_t)(k < 0 ? (-k) | 0x8000 : k));
+	} else if (f == PREC_FLOAT) {
 		int32_t i = k < 0 ? (int32_t)((-k) | 0x80000000) : (int32_t)k;
 		float v;
 		memcpy(&v, &i, sizeof v);
@@ -57,6 +58,40 @@ static double unord(int f, int64_t k)
 		memcpy(&v, &i, sizeof v);
 		return v;
 	}
+}
+
+/* The next format value from x toward dir (nextafter in format f). */
+static double step(int f, double x, double dir)
+{
+	if (f == PREC_HALF) {
+		if (isnan(x) || isnan(dir) || x == dir)
+			return isnan(x) || isnan(dir) ? NAN : x;
+		if (x == 0.0)
+			return dir > 0.0 ? 0x1p-24 : -0x1p-24;
+		return unord(f, ord(f, x) + (dir > x ? 1 : -1));
+	}
+	return f == PREC_FLOAT ? (double)nextafterf((float)x, (float)dir) : nextafter(x, dir);
+}
+
+/* fma(a, b, d) correctly rounded to format f: binary16 from the exact
+   sum hi + lo of the (exact, 22-bit) product and d, the one case where
+   rounding hi alone can be wrong (hi a binary16 midpoint, lo not 0) set
+   right. */
+static double fma_rn(int f, double a, double b, double d)
+{
+	double ph, pl, hi, lo, r;
+	if (f == PREC_FLOAT)
+		return (double)fmaf((float)a, (float)b, (float)d);
+	if (f != PREC_HALF)
+		return fma(a, b, d);
+	ph = a * b;
+	pl = fma(a, b, -ph);
+	hi = ph + d;
+	lo = (ph - (hi - (hi - ph))) + (d - (hi - ph)) + pl;
+	r = prec_half_round(hi);
+	if (isfinite(r) && lo != 0.0 && fabs(hi - r) == 0.5 * fabs(step(f, r, hi) - r) && (lo > 0.0) == (hi > r))
+		r = step(f, r, hi);
+	return r;
 }
 
 static unsigned long long rnd(cm *c)
@@ -206,7 +241,7 @@ static cv emu_round(cm *c, int k, int f, cv ia, cv ib)
 		double sg = !first && k == AR_SUB ? -1.0 : 1.0;   /* a - p q = a + (-p) q */
 		if (first && k == AR_SUB)
 			other = -other;
-		rn = f == PREC_FLOAT ? (double)fmaf((float)(sg * p), (float)q, (float)other) : fma(sg * p, q, other);
+		rn = fma_rn(f, sg * p, q, other);
 		ph = sg * p * q;
 		pl = fma(sg * p, q, -ph);
 		two_sum(ph, other, &s, &t);
@@ -214,8 +249,9 @@ static cv emu_round(cm *c, int k, int f, cv ia, cv ib)
 		lo = t + pl;
 	} else {
 		exact_dd(k, a, b, &hi, &lo);
-		/* float: hi is v to 2^-53, and its rounding the nearest float (as
-		   model.c's fmt); double: hi itself is the nearest double */
+		/* float, half: hi is v to 2^-53, and its rounding the nearest
+		   float or half (53 >= 2p + 2, as model.c's fmt); double: hi
+		   itself is the nearest double */
 		rn = fmt_round(f, hi);
 	}
 	if (af_div_out(c, k, f, b))
@@ -245,7 +281,7 @@ static cv emu_fma(cm *c, int f, cv ia, cv ib, cv id)
 	a = flush_in(c, f, c->x[ia], ch, &avail);
 	b = flush_in(c, f, c->x[ib], ch, &avail);
 	d = flush_in(c, f, c->x[id], ch, &avail);
-	r = f == PREC_FLOAT ? (double)fmaf((float)a, (float)b, (float)d) : fma(a, b, d);
+	r = fma_rn(f, a, b, d);
 	if (c->ar->fmt[f].flush && subnormal(f, r)) {
 		avail |= CM_CH_FLUSH_OUT;
 		if (ch & CM_CH_FLUSH_OUT)

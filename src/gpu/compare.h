@@ -27,6 +27,20 @@ int gpu_class(const float *a, const float *b);
 /* whole-sphere float bound of `name` in a certify CSV; inf: singular; -1: absent */
 double gpu_bound(const char *csv, const char *name);
 
+/* A certify CSV's float regions of one method (gpu_regions.c): the bound
+   at an input is the largest of the regions within 8u of it, at most the
+   whole sphere's (the whole sphere's alone unless the regions tile it). */
+typedef struct { double zlo, zhi, plo, phi, b; } gpu_region;
+typedef struct {
+	gpu_region *g;
+	size_t n, cap;
+	double whole;   /* the whole-sphere bound; inf if absent */
+	int tiled;      /* the regions' areas sum to the sphere's 2 x 360 */
+} gpu_regions;
+int gpu_regions_load(const char *csv, const char *name, gpu_regions *r);
+void gpu_regions_free(gpu_regions *r);
+double gpu_regions_bound(const gpu_regions *r, const float n[3]);
+
 /* The profile of a certify CSV (its "# arith:" line); "ieee" without one. */
 void gpu_bounds_profile(const char *csv, char *name, size_t len);
 

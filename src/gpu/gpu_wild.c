@@ -103,12 +103,44 @@ static void missing(FILE *f, const wild_row *r, const char *why)
 	fprintf(f, " | `%s` | - | - | - | - | - | - | **%s** | - |\n", r->row, why);
 }
 
+/* The classes of the driver's outputs against C's, and the envelope:
+   each unit input's D against the bound at that input (its regions'). */
+typedef struct {
+	size_t same, zero, nonfin, value, value_bad_in, first, above, regional;
+	double dmax, ratio;   /* largest D; largest D / bound at the input where the bound is finite */
+} wild_scan;
+
+static void scan(const gpu_inputs *in, const float *ref, const float *got, const gpu_regions *rg, wild_scan *w)
+{
+	size_t i;
+	memset(w, 0, sizeof *w);
+	w->first = in->count;
+	for (i = 0; i < in->count; i++) {
+		const int k = gpu_class(ref + 6 * i, got + 6 * i);
+		w->same += k <= GPU_NAN;
+		w->zero += k == GPU_ZERO;
+		w->nonfin += k == GPU_NONFINITE;
+		w->value += k == GPU_VALUE;
+		w->value_bad_in += k == GPU_VALUE && !(isfinite(in->n[3 * i]) && isfinite(in->n[3 * i + 1]) && isfinite(in->n[3 * i + 2]));
+		if (k >= GPU_ZERO && w->first == in->count)
+			w->first = i;
+		if (in->unit[i]) {
+			const double dd = gpu_defect(in->n + 3 * i, got + 6 * i), b = gpu_regions_bound(rg, in->n + 3 * i);
+			if (dd > w->dmax) w->dmax = dd;
+			if (!(dd <= b)) w->above++;
+			w->regional += b < rg->whole;
+			if (b < INFINITY && b > 0.0 && dd / b > w->ratio) w->ratio = dd / b;
+		}
+	}
+}
+
 static int one(gpu_dev *d, FILE *f, const char *spvdir, const gpu_inputs *in, const wild_row *r,
                const char *bounds, int fallback, float *ref, float *got, int *bad)
 {
-	size_t i, same = 0, zero = 0, nonfin = 0, value = 0, value_bad_in = 0, first = in->count, above = 0;
 	char spv[4096], from[4096];
-	double dmax = 0.0, bound;
+	gpu_regions rg;
+	wild_scan w;
+	double bound;
 	snprintf(spv, sizeof spv, "%s/wild/%s.spv", spvdir, r->engine);
 	if (access(spv, R_OK) != 0) {
 		missing(f, r, "not run: no src/gpu/wild/ENGINE.glsl (docs/adding-a-method.md)");
@@ -120,40 +152,30 @@ static int one(gpu_dev *d, FILE *f, const char *spvdir, const gpu_inputs *in, co
 		missing(f, r, "no bound: its C row is in no certify CSV read");
 		return ++*bad, 0;
 	}
-	if (gpu_c_outputs(r->row, in, ref) != 0)
+	if (gpu_c_outputs(r->row, in, ref) != 0 || gpu_regions_load(from, r->row, &rg) != 0)
 		return -1;
 	if (gpu_run(d, spv, 0, (const uint32_t *)(const void *)in->n, 3 * in->count,
-	            (uint32_t *)(void *)got, 6 * in->count, (uint32_t)((in->count + 63) / 64)) != 0)
+	            (uint32_t *)(void *)got, 6 * in->count, (uint32_t)((in->count + 63) / 64)) != 0) {
+		gpu_regions_free(&rg);
 		return -1;
-	for (i = 0; i < in->count; i++) {
-		const int k = gpu_class(ref + 6 * i, got + 6 * i);
-		same += k <= GPU_NAN;
-		zero += k == GPU_ZERO;
-		nonfin += k == GPU_NONFINITE;
-		value += k == GPU_VALUE;
-		value_bad_in += k == GPU_VALUE && !(isfinite(in->n[3 * i]) && isfinite(in->n[3 * i + 1]) && isfinite(in->n[3 * i + 2]));
-		if (k >= GPU_ZERO && first == in->count)
-			first = i;
-		if (in->unit[i]) {
-			const double dd = gpu_defect(in->n + 3 * i, got + 6 * i);
-			if (dd > dmax) dmax = dd;
-			if (!(dd <= bound)) above++;
-		}
 	}
+	scan(in, ref, got, &rg, &w);
 	fprintf(f, "| `%s` | ", r->engine);
 	lines(f, r->prov);
-	fprintf(f, " | `%s` | %zu | %zu | %zu | %s%zu%s (%zu at a NaN/inf input) | %.3g | %.3g%s%s | %s | ",
-	        r->row, same, zero, nonfin, value ? "**" : "", value, value ? "**" : "", value_bad_in, dmax, bound,
-	        strcmp(from, bounds) ? " from " : "", strcmp(from, bounds) ? from : "", above ? "**outside**" : "inside");
-	if (first < in->count)
-		first_diff(f, in, ref, got, first);
+	fprintf(f, " | `%s` | %zu | %zu | %zu | %s%zu%s (%zu at a NaN/inf input) | %.3g | %.3g%s%s; at each input its regions' (%zu tighter): largest D/bound %.3g | %s | ",
+	        r->row, w.same, w.zero, w.nonfin, w.value ? "**" : "", w.value, w.value ? "**" : "", w.value_bad_in, w.dmax, bound,
+	        strcmp(from, bounds) ? " from " : "", strcmp(from, bounds) ? from : "", w.regional, w.ratio,
+	        w.above ? "**outside**" : "inside");
+	if (w.first < in->count)
+		first_diff(f, in, ref, got, w.first);
 	else
 		fprintf(f, "-");
 	fprintf(f, " |\n");
+	gpu_regions_free(&rg);
 	/* The engines' lines are their own (no precise but q2rtx's): a finite
 	   difference is shown, not failed, as contraction may make one; a
 	   result outside the envelope fails. */
-	*bad += above > 0;
+	*bad += w.above > 0;
 	return 0;
 }
 
@@ -169,7 +191,7 @@ int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, cons
 		free(ref); free(got);
 		return -1;
 	}
-	fprintf(f, "| engine | its lines | C row | same bits (NaN payloads aside) | +-0 | NaN/inf | value | largest D on unit inputs | bound (C row) | envelope | first differing input: driver b1 b2, C b1 b2 |\n"
+	fprintf(f, "| engine | its lines | C row | same bits (NaN payloads aside) | +-0 | NaN/inf | value | largest D on unit inputs | bound (C row): whole sphere; at each input | envelope | first differing input: driver b1 b2, C b1 b2 |\n"
 	           "|---|---|---|---|---|---|---|---|---|---|---|\n");
 	for (k = 0; k < n && rc == 0; k++)
 		rc = one(d, f, spvdir, in, &r[k], bounds, fallback, ref, got, &bad);

@@ -52,13 +52,13 @@ CSV='function split_csv(l, f,   n, q, c, i, cur) { n = 0; q = 0; cur = ""
 fbound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print ($4 ~ /^[0-9]/ ? $4 " u" : $4); f = 1 } END { if (!f) print "not run" }'; }
 ffound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print $5 " u" }'; }
 # lavapipe's largest defect D on unit inputs for the engine's own lines (results/lavapipe/report.md)
-lvp() { awk -F'|' -v e="\`$1\`" -v e0="$1" '$2 ~ "^ " e " $" && $4 ~ /`/ && NF >= 12 && $11 ~ /inside|outside/ { gsub(/ /, "", $11); printf "D = %.3g u (%s)\n", $9 / 2^-24, $11; f = 1; exit } END { if (!f) print "not run (no src/gpu/wild/" e0 ".glsl)" }' results/lavapipe/report.md; }
+lvp() { awk -F'|' -v e="\`$1\`" -v e0="$1" '$2 ~ "^ " e " $" && $4 ~ /`/ && NF >= 12 && $11 ~ /inside|outside/ { gsub(/ /, "", $11); gsub(/ /, "", $9); if ($9 ~ /inf/) printf "D = inf at its singular inputs; %s of its regions\x27 bounds\n", $11; else printf "D = %.3g u (%s)\n", $9 / 2^-24, $11; f = 1; exit } END { if (!f) print "not run (no src/gpu/wild/" e0 ".glsl)" }' results/lavapipe/report.md; }
 engines() {
 	echo "Every shader engine of docs/wild.md (the registry's rows in GLSL, HLSL or Slang) under the"
 	echo "profile of its language (GLSL: vulkan; HLSL: d3d11; Slang, which targets both: each), float,"
 	echo "whole-sphere bound / found in u = 2^-24 (results/gpu, --quick), and its own lines on lavapipe"
 	echo "(results/lavapipe/report.md, \`onbstudy-gpu wild\`: the largest defect D on unit inputs, in u,"
-	echo "and whether it is inside the C row's IEEE bound)."
+	echo "and whether every unit input is inside the C row's IEEE bound at that input)."
 	echo
 	echo "| engine | its code | C row | profile | IEEE bound | bound under the profile | found under the profile | lavapipe, its own lines |"
 	echo "|---|---|---|---|---|---|---|---|"

@@ -32,8 +32,15 @@ grep -q 'EXCEEDS' "$T/w.out" && ok || bad "--widen 2: no EXCEEDS: $(cat "$T/w.ou
 data "$T/w/arith-sweep.csv" | awk -F, 'NR > 1 && $19 > 0 { n++ } END { exit !(n > 0) }' && ok || bad "--widen 2: no input above its point bound"
 grep -q '^# widen: 2' "$T/w/arith-sweep.csv" && ok || bad "--widen 2: the CSV does not say it is mutated"
 
+# binary16 under vulkan's half column: emulated and measured (no half proof
+# model: nothing checked, said so), the nearest never above the adversary
+./onbstudy sweep --arith vulkan --methods duff --precision half --dists uniform --samples 20 --out "$T/h" > "$T/h.out" 2>&1; rc=$?
+[ $rc -eq 0 ] && grep -q '^duff  *half  *20 .*measured (no binary16 proof model)' "$T/h.out" && ok || bad "sweep --arith vulkan --precision half: exit $rc: $(cat "$T/h.out")"
+data "$T/h/arith-sweep.csv" | awk -F, 'NR > 1 && $2 == "half" && $22 == "no-half-model" && $6 == 0 && $9 + 0 > 0 && $11 + 0 >= $9 + 0 { n++ } END { exit n != 1 }' \
+	&& ok || bad "sweep half: the CSV row is not measured-only: $(data "$T/h/arith-sweep.csv" | tail -1)"
+
 # 3. bad input: exit 2 and one message, nothing written
-for args in "--arith metal" "--arith vulkan --fma" "--arith vulkan --precision half" "--arith vulkan --shard 0/2" "--widen 2" "--arith vulkan --widen 0.5" \
+for args in "--arith metal" "--arith vulkan --fma" "--arith d3d11 --precision half" "--arith vulkan --shard 0/2" "--widen 2" "--arith vulkan --widen 0.5" \
             "--arith vulkan --bounds results/gpu/d3d11/certify.csv" "--arith vulkan --bounds $T/none.csv"; do
 	./onbstudy sweep $args --methods duff --dists uniform --samples 4 --out "$T/bad" > /dev/null 2> "$T/err"; rc=$?
 	[ $rc -eq 2 ] && ok || bad "sweep $args: exit $rc (expected 2): $(cat "$T/err")"

@@ -150,6 +150,57 @@ static void ops_within(cm *c)
 	CHECK(moved > 1000, "the random emulation moved only %d of 20000 quotients off the nearest", moved);
 }
 
+/* binary16 under vulkan's half column (emu.c's half path): x/y within
+   2.5 half ulps (|y| in [2^-14, 2^14]), x+y a neighbour, sqrt within the
+   1.0/inversesqrt it is inherited from (2 ulps, then 2.5: under 5 ulps
+   here), every result a binary16 value; and the same check catches an
+   emulation allowed twice vulkan's error (the mutation).  Returns the
+   number of results outside. */
+static int half_ops(cm *c, const arith_profile *p, int *moved)
+{
+	uint64_t s = 777;
+	int i, outside = 0;
+	*moved = 0;
+	for (i = 0; i < 20000; i++) {
+		double a = prec_half_round(1.0 + (double)(rng_mix64(s++) >> 11) * 0x1p-53);
+		double b = prec_half_round(0.5 + (double)(rng_mix64(s++) >> 11) * 0x1p-53);
+		double n[3] = { a, b, 0 }, q, e, ulp;
+		int ex;
+		cv in[3], r;
+		cm_set_arith(c, p);
+		cm_set_emu(c, CM_EMU_RANDOM, s++, NULL, 0);
+		cm_exec_begin(c, PREC_HALF, n, in);
+		r = cm_div(c, PREC_HALF, in[0], in[1]);
+		q = cm_value(c, r);
+		e = a / b;
+		frexp(e, &ex);
+		ulp = ldexp(1.0, ex - 11);
+		outside += !(fabs(q - e) <= 2.5 * ulp) || prec_half_round(q) != q;
+		*moved += q != prec_half_round(e);
+		r = cm_add(c, PREC_HALF, in[0], in[1]);
+		q = cm_value(c, r);
+		frexp(a + b, &ex);
+		outside += !(fabs(q - (a + b)) < ldexp(1.0, ex - 11)) || prec_half_round(q) != q;
+		r = cm_sqrt(c, PREC_HALF, in[0]);
+		q = cm_value(c, r);
+		frexp(sqrt(a), &ex);
+		outside += !(fabs(q - sqrt(a)) < 5.0 * ldexp(1.0, ex - 11)) || prec_half_round(q) != q;
+	}
+	return outside;
+}
+
+static void half_within(cm *c)
+{
+	const arith_profile *vk = arith_find("vulkan");
+	const arith_profile wide = arith_widen(vk, WIDEN);
+	int moved, outside = half_ops(c, vk, &moved), moved2, outside2 = half_ops(c, &wide, &moved2);
+	CHECK(outside == 0, "binary16 under vulkan: %d emulated results outside their allowance", outside);
+	CHECK(moved > 1000, "binary16 under vulkan: the random emulation moved only %d of 20000 quotients", moved);
+	CHECK(outside2 > 0, "binary16: an emulation %g times wider than vulkan stayed inside vulkan's allowance", WIDEN);
+	printf("  binary16 under vulkan: 0 of 60000 results outside, %d quotients off the nearest; %gx wider: %d outside\n",
+	       moved, WIDEN, outside2);
+}
+
 /* ieee (and no profile): CM_EXEC unchanged, bit for bit. */
 static void ieee_same(cm *c)
 {
@@ -183,6 +234,7 @@ int main(void)
 	}
 	ieee_same(c);
 	ops_within(c);
+	half_within(c);
 	bounds_hold(c, rc);
 	mutation_caught(c, rc);
 	cm_free(c);

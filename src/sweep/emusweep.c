@@ -109,6 +109,15 @@ static void one_input(cm *c, ref_ctx *rc, const sweep_plan *pl, const arith_prof
 		memcpy(e->worst_n, n, sizeof e->worst_n);
 		e->worst_kind = kind;
 	}
+	if (prec == PREC_HALF) {   /* no binary16 domain test or proof model: measured, not checked */
+		if (dist == DIST_NONUNIT)
+			return;
+		e->unit++;
+		e->uworst = fmax(e->uworst, worst);
+		e->unbounded++;
+		e->unb_op = AR_NOPS + 1;
+		return;
+	}
 	if (!cert_in_domain(n, prec, -1.0))
 		return;
 	e->unit++;
@@ -261,7 +270,8 @@ static void csv_row(FILE *f, const char *name, int prec, int dist, const ecell *
 		fprintf(f, "%.17g,%llu,", w->bound, (unsigned long long)e->above_whole);
 	else
 		fprintf(f, "%s,,", w->found ? "inf" : "");
-	fprintf(f, "%s\n", e->unb_op >= 0 ? (e->unb_op == AR_NOPS ? "direction-rule" : arith_op_name(e->unb_op)) : "");
+	fprintf(f, "%s\n", e->unb_op >= 0 ? (e->unb_op == AR_NOPS ? "direction-rule" : e->unb_op == AR_NOPS + 1 ? "no-half-model"
+	                    : arith_op_name(e->unb_op)) : "");
 }
 
 /* stdout: one line per method and precision, over its distributions. */
@@ -277,7 +287,8 @@ static void print_line(const char *name, int prec, const ecell *e, const whole_r
 		snprintf(wb, sizeof wb, "%.3g", w->bound / u);
 	printf("%-24s %-6s %9llu %12.4g %12s %7llu/%-7llu %9.3g %s\n", name, prec_name(prec),
 	       (unsigned long long)e->unit, e->uworst / u, wb, (unsigned long long)e->checked, (unsigned long long)e->unit, e->ratio,
-	       e->above || e->above_whole ? "EXCEEDS" : e->checked ? "ok" : "-");
+	       e->above || e->above_whole ? "EXCEEDS" : e->checked ? "ok"
+	       : prec == PREC_HALF ? "measured (no binary16 proof model)" : "-");
 }
 
 /* The bounds file: --bounds, else results/gpu/PROFILE/certify.csv when it
@@ -329,11 +340,11 @@ int emusweep_run(const sweep_plan *pl)
 		return 1;
 	csv_header(o.f, pl, bounds);
 	printf("sweep --arith %s%s: per method, the largest emulated defect on unit inputs and its whole-sphere bound,\n"
-	       "in u (2^-24 float, 2^-53 double); w/b: the worst defect over the proven bound at the same input\n", pl->arith->name,
+	       "in u (2^-24 float, 2^-53 double, 2^-11 half); w/b: the worst defect over the proven bound at the same input\n", pl->arith->name,
 	       pl->widen != 1.0 ? " (MUTATED: allowances widened)" : "");
 	printf("%-24s %-6s %9s %12s %12s %15s %9s %s\n", "method", "prec", "unit in", "worst defect", "whole bound",
 	       "checked/unit", "max w/b", "");
-	for (prec = 0; prec < 2; prec++)
+	for (prec = 0; prec < PREC_COUNT; prec++)
 		for (k = 0; k < pl->cfg.nk; k++) {
 			const study_kernel *sk = &pl->kernels[k];
 			const cm_method *m = sk->fma ? NULL : cm_find(sk->name);

@@ -157,8 +157,9 @@ static int plan_arith_check(sweep_plan *pl)
 			study_error("sweep --arith: %s does not apply (the emulated implementations are measured in MPFR at 127 bits, in one run)", plain[i]);
 			return -1;
 		}
-	if (pl->cfg.prec_on[PREC_HALF]) {
-		study_error("sweep --arith: float and double only (the profiles' binary16 rows are not emulated); --precision half does not apply");
+	if (pl->cfg.prec_on[PREC_HALF] && !arith_has_format(pl->arith, PREC_HALF)) {
+		study_error("sweep --arith %s: the profile gives binary16 no precision (docs/gpu.md; vulkan, vulkan-precise, ieee and contract-any have a half row)",
+		            pl->arith->name);
 		return -1;
 	}
 	if (!pl->samples_given)

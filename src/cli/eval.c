@@ -33,7 +33,9 @@ static void usage(FILE *f)
 	           "the range of each output component and defect over all of them, and the proven\n"
 	           "bound over a box of ~8u around the input (certify --arith's mean value form).\n"
 	           "--format csv: rows method,precision,profile,quantity,lo,hi (hex floats;\n"
-	           "quantity b1x..b2z, n1, n2, d1n, d2n, d12, defect, bound).\n");
+	           "quantity b1x..b2z, n1, n2, d1n, d2n, d12, defect, bound).  --precision half\n"
+	           "under a profile with a binary16 row (vulkan's half column): emulated and\n"
+	           "measured; no binary16 proof model, so no bound.\n");
 }
 
 static void show3(const char *label, const double *v)

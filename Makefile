@@ -180,7 +180,7 @@ $(B)/engine.stamp: FORCE
 	@echo '$(CERT_ENGINE)' > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 $(B)/certify/keys.o: $(B)/engine.stamp
-$(B)/certify/keys.o: XFLAGS += -DONB_CERT_ENGINE='"$(CERT_ENGINE)"'
+$(B)/certify/keys.o: XFLAGS += -DONB_CERT_ENGINE='"$(CERT_ENGINE)"' -DONB_CODE_KEYS -I$(B)/certify
 .PHONY: FORCE
 FORCE:
 
@@ -232,6 +232,16 @@ $(B)/families/pair_d/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Mak
 $(B)/families/pair_l/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Makefile $(B)/deps.stamp
 	@mkdir -p $(@D)
 	$(FAMILY_CC) -DFAMILY_PASS=3 $(FAMILY_PAIR_FLAGS) -c $< -o $@
+
+# certify's keys also take, per method, a checksum of its compiled kernel and its family's
+# compiled model (scripts/code-keys.sh), so that a changed kernel or model
+# makes new keys for exactly the methods whose code changed.
+CODE_KEY_OBJ = $(filter $(B)/lib/split/outline-%,$(LIB_OBJ)) $(FAMILY_SRC:src/families/%.c=$(B)/families/%.o) \
+               $(FAMILY_PASS_OBJ) $(B)/methods/fma_kernels.o $(B)/methods/kernels.o
+$(B)/certify/code_keys.h: scripts/code-keys.sh $(CODE_KEY_OBJ)
+	@mkdir -p $(@D)
+	sh scripts/code-keys.sh $(B) > $@.tmp && mv $@.tmp $@
+$(B)/certify/keys.o: $(B)/certify/code_keys.h
 
 # The benchmark's yardstick: plain loops built for this CPU, beside
 # libonb's run-time dispatch.  Same FPFLAGS; no memcpy idiom for the copy.

@@ -13,7 +13,12 @@
 #    stops the run with a message and leaves the last checkpoint intact;
 #  - --reuse: adding a method to a finished run computes that method only,
 #    a changed key is recomputed, and the rows equal a from-scratch run's;
-#  - --check-keys: 0 on a current run, 1 naming a stale key.
+#  - --check-keys: 0 on a current run, 1 naming a stale key;
+#  - a kernel compiled anew (rtow's float kernel with its threshold 0.9f
+#    made 0.90001f, which none of the key's 96 probe inputs tells apart:
+#    only its compiled code does) changes exactly one code checksum
+#    (scripts/code-keys.sh), and an onbstudy linked with it finds exactly
+#    rtow float stale and, with --reuse, computes rtow alone.
 . "$(dirname "$0")/lib.sh"
 T=$tmp
 data() { grep -v '^#' "$1"; }
@@ -123,6 +128,35 @@ rc=$?
 # ... another arithmetic profile is another key
 run --methods $M --arith vulkan --check-keys "$T/ref" > "$T/ck3.out" 2> "$T/ck3.err"
 [ $? -eq 1 ] && grep -q 'arith=ieee.* there, arith=vulkan' "$T/ck3.err" && ok || bad "--check-keys with --arith vulkan: $(cat "$T/ck3.out" "$T/ck3.err")"
+
+# 9. a kernel changed in its code: rtow's float threshold 0.9f made
+#    0.90001f in a copy of onb.h, compiled as the Makefile compiles it
+#    (make -n: its flags), with the code keys regenerated and keys.c and
+#    onbstudy rebuilt in $T/b; the build's objects are linked, not copied
+mkdir -p "$T/inc" "$T/b/lib/split" "$T/b/certify" && cp -r include/libonb "$T/inc/" &&
+	sed -i 's/if (fabsf(uw.x) > 0.9f)/if (fabsf(uw.x) > 0.90001f)/' "$T/inc/libonb/onb.h" &&
+	! cmp -s include/libonb/onb.h "$T/inc/libonb/onb.h" && ok || bad "rtow's float threshold not found in onb.h"
+for o in build/lib/split/outline-*.o; do ln -s "$root/$o" "$T/b/lib/split/"; done
+ln -s "$root/build/families" "$T/b/families"; ln -s "$root/build/methods" "$T/b/methods"
+rm "$T/b/lib/split/outline-f-rtow.o"
+cc_of() { make -s -n -B "$1" 2> /dev/null | grep "^[^ ]*cc .* -o $1\$" | tail -1; }
+c1=$(cc_of build/lib/split/outline-f-rtow.o | sed "s| -Iinclude | -I$T/inc -Iinclude |; s| -o build/| -o $T/b/|")
+c2=$(cc_of build/certify/keys.o | sed "s| -Ibuild/certify | -I$T/b/certify |; s| -o build/| -o $T/b/|")
+c3=$(make -s -n -W libonb.a onbstudy 2> /dev/null | grep '^[^ ]*cc .* -o onbstudy ' |
+	sed "s| -o onbstudy | $SAN -o $T/onbstudy |; s| build/libstudy.a | $T/b/certify/keys.o $T/b/lib/split/outline-f-rtow.o build/libstudy.a |")
+if eval "$c1 $SAN" && sh scripts/code-keys.sh "$T/b" > "$T/b/certify/code_keys.h" && eval "$c2 $SAN" && eval "$c3"; then ok
+else bad "the changed rtow could not be built: '$c1' '$c2' '$c3'"; fi
+n=$(diff build/certify/code_keys.h "$T/b/certify/code_keys.h" | grep -c '^> CODE_KEY')
+diff build/certify/code_keys.h "$T/b/certify/code_keys.h" | grep -q '^> CODE_KEY("kernel", "rtow", .f.,' && [ "$n" -eq 1 ] &&
+	ok || bad "the changed rtow float kernel: $n code checksums changed: $(diff build/certify/code_keys.h "$T/b/certify/code_keys.h" | head -5)"
+"$T/onbstudy" certify $Q --methods $M --check-keys "$T/ref" > "$T/ck4.out" 2>&1
+rc=$?
+[ $rc -eq 1 ] && [ "$(grep -c '^stale: ' "$T/ck4.out")" -eq 1 ] && grep -q '^stale: rtow float' "$T/ck4.out" && ok ||
+	bad "--check-keys with the changed rtow: exit $rc: $(cat "$T/ck4.out")"
+"$T/onbstudy" certify $Q --methods $M --reuse "$T/ref" --out "$T/chg2" > /dev/null 2> "$T/chg2.err"
+grep -q '2 of 3 methods and precisions re-used' "$T/chg2.err" && ok || bad "--reuse with the changed rtow: $(cat "$T/chg2.err")"
+data "$T/chg2/certify-times.csv" | awk -F, 'NR > 1 { s[$1] += $7 + $8 + $9 + $10 + $11 + $12 } END { exit !(s["frisvad"] == 0 && s["naive"] == 0 && s["rtow"] > 0) }' &&
+	ok || bad "--reuse with the changed rtow: rtow not recomputed, or frisvad or naive not re-used"
 
 # 8. bad input: exit 2, one message, nothing written
 for a in "--checkpoint-every -1" "--checkpoint-every x" "--resume $T/bad1 --out $T/bad2"; do

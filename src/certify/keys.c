@@ -41,6 +41,46 @@ static uint64_t hash_int(uint64_t h, long v)
 	return cert_hash_bytes(h, &v, sizeof v);
 }
 
+/* The checksums of the compiled kernels and models (the Makefile:
+   scripts/code-keys.sh writes code_keys.h, -DONB_CODE_KEYS; a build
+   without them, scripts/fuzz.sh's, has none: every sum 0). */
+typedef struct {
+	const char *kind, *name;
+	char prec;              /* 'd', 'f'; 0 for a family */
+	unsigned long sum;
+} code_key;
+#define CODE_KEY(kind, name, prec, sum) { kind, name, prec, sum },
+static const code_key code_keys[] = {
+#ifdef ONB_CODE_KEYS
+#include "code_keys.h"
+#endif
+	{ NULL, NULL, 0, 0 }
+};
+#undef CODE_KEY
+
+unsigned long cert_code_sum(const char *kind, const char *name, int prec)
+{
+	const char p = prec == PREC_FLOAT ? 'f' : prec == PREC_DOUBLE ? 'd' : 0;
+	const code_key *c;
+	for (c = code_keys; c->kind; c++)
+		if (strcmp(c->kind, kind) == 0 && strcmp(c->name, name) == 0 && (c->prec == 0 || c->prec == p))
+			return c->sum;
+	return 0;
+}
+
+/* Kernel k's code in precision prec, and its family's model: 0 where
+   none is known. */
+static uint64_t hash_code(uint64_t h, const study_kernel *k, int prec)
+{
+	if (k->fma)
+		h = hash_int(h, (long)cert_code_sum("fma", "", 0));
+	else if (!k->m)
+		h = hash_int(h, (long)cert_code_sum("direction", "", 0));
+	else
+		h = hash_int(h, (long)cert_code_sum("kernel", k->m->name, prec));
+	return hash_int(h, (long)cert_code_sum("family", k->fam ? k->fam->name : k->name, 0));
+}
+
 const char *cert_engine(void)
 {
 	static char s[512];
@@ -107,6 +147,7 @@ uint64_t cert_method_key(cert_ctx *x, const study_kernel *k, const cm_method *m,
 	h = hash_int(h, (long)m->zero_any_n);
 	h = hash_int(h, m->contract);
 	h = hash_int(h, m->direction);
+	h = hash_code(h, k, prec);
 	for (i = 0; i < KEY_INPUTS; i++) {
 		double u[3], n[3], d;
 		int nonfinite = 0;

@@ -22,8 +22,17 @@
    flags the bound reads) and the real kernel's defect as certify measures
    it (cert_probe), on a fixed set of inputs covering every branch path
    (the axes, the poles' neighbourhoods, random inputs); with the model's
-   table row (branch count, contraction, direction). */
+   table row (branch count, contraction, direction) and the checksums of
+   the compiled kernel and model (cert_code_sum). */
 uint64_t cert_method_key(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec);
+
+/* The checksum of a compiled object the keys take (scripts/code-keys.sh):
+   kind "kernel" (name: a registry method; prec: PREC_FLOAT or
+   PREC_DOUBLE), "family" (name: a family), "fma" or "direction" (name
+   ""); 0 when there is none.  cert_method_key takes its kernel's and its
+   family's, so that a changed kernel or model changes exactly the keys of
+   the methods whose compiled code changed. */
+unsigned long cert_code_sum(const char *kind, const char *name, int prec);
 
 /* The certify engine: a hash of the sources that decide a region's result
    beyond its method (src/certify, src/model, src/reference, src/inputs,

@@ -9,7 +9,8 @@
 # rows"), so panels sit where they sit in the other.
 # Called by plots.sh with: out, ttl, files, names, cbmin, cbmax, uname,
 # ncols, nrows, here, note (what the grid's resolution can and cannot show),
-# blank (the note of an empty panel)
+# blank (the note of an empty panel); optional dirnames (the methods whose
+# rows are a direction error)
 load here."/style.gp"
 set datafile separator whitespace
 set xrange [0:360]
@@ -35,7 +36,9 @@ do for [term_i = 1:NTERM] {
     set multiplot layout nrows,ncols title ttl."\n{/*0.8 ".note."}" font F_TITLE margins 0.06, 0.86, 70.0/H, 1 - 100.0/H spacing 0.04, 80.0/H
     set label 901 "x: azimuth (degrees); y: n.z of the input" at screen 0.06, screen 20.0/H left font F_AXIS
     do for [i = 1:n] {
-        set title word(names, i) font F_PANEL offset 0,-0.5 noenhanced
+        # (a method whose rows are a direction error, not the defect the
+        # colour bar names: dirnames, from plots.sh, says so in its title)
+        set title word(names, i).((exists("dirnames") && strstrt(" ".dirnames." ", " ".word(names, i)." ") > 0) ? " (direction error)" : "") font F_PANEL offset 0,-0.5 noenhanced
         if (word(files, i) eq "-") {
             # a method with no rows here: its panel keeps its place, its
             # name and says so (white, not the grey of a non-finite cell)

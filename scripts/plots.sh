@@ -261,7 +261,7 @@ for P in float double; do
 			fails=$(awk -F, -v p="$P" '!/^#/ && $2 == p && $3 == "south" { s[$1] = $6 + 0 } !/^#/ && $2 == p && $3 == "grid" { u[$1] = $6 + 0 }
 				END { for (m in s) if (s[m] > 1e-4 && s[m] > 10 * u[m]) n++; print n + 0 }' "$RUN/summary.csv")
 			[ "$fails" -gt 0 ] && mnote="$mnote, so it cannot show the failures within 1e-4 of -z (the $([ -f "$PCDIR/polecap.csv" ] && echo pole-cap map || echo pole chart) shows them)"
-			gp map.gp "blank='no rows in $P'; files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
+			gp map.gp "blank='no rows in $P'; dirnames='$(grep -q '^frisvad_rotate,' "$RUN/summary.csv" && echo frisvad_rotate)'; files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

@@ -36,7 +36,7 @@ ymax1 = (STATS_max >= ceil) ? ceil * 4 : STATS_max * 4
 W = single ? W_SINGLE : W_MULTI
 # taller with many methods: the labels need free rows (50 methods filled
 # 790 px, and a label with no free spot would overprint another)
-H = single ? H_SINGLE + 110 : (npts > 30 ? 790 + (npts - 30) * 14 : 790)
+H = single ? H_SINGLE + 60 : (npts > 30 ? 790 + (npts - 30) * 14 : 790)
 # the graph's size in pixels (for the label placer's character sizes)
 gw = (single ? W : W / 2) - 150
 gh = H - 170
@@ -45,7 +45,8 @@ set xrange [xmin:xmax]
 set xlabel "batch throughput, 1 thread, L2-resident (million bases per second)" font F_AXIS
 set lmargin 14
 set rmargin 3
-set tmargin 5
+# (single: no panel title above the graph, so no room kept for one)
+set tmargin (single ? 2 : 5)
 set bmargin 4
 # nonfinite(y1): the band and the axis label of non-finite output
 nf_band(y1) = (y1 > ceil) ? 1 : 0

@@ -272,6 +272,13 @@ $(B)/tests/%: tests/%.c $(STUDY_LIB) libonb.a include/libonb/onb.h $(wildcard te
 # nothing more to find there, and they take minutes.
 SANITIZE_SKIP = tests/doc_links.sh tests/findings.sh tests/plots_cli.sh tests/wild.sh tests/charts_committed.sh tests/charts_small.sh
 TEST_SH = $(filter-out tests/lib.sh $(if $(SANITIZE),$(SANITIZE_SKIP)),$(wildcard tests/*.sh))
+# Under SANITIZE the C tests that repeat the same code over more inputs run
+# smaller budgets (TEST:ARGUMENT; the plain suite runs the full ones): the
+# same distributions, methods, precisions and special inputs, fewer random
+# ones per method.  test_reffast 500 inputs per distribution (2000),
+# test_certify 10^5 per method and precision (10^6), test_indep --quick
+# (16384 uniform inputs, every pole and threshold input; 10^6).
+SANITIZE_ARGS = test_reffast:500 test_certify:100000 test_indep:--quick
 # everything the tests need, built (in parallel with make -jN test-build:
 # CI does that first); `make test` itself then runs the tests one by one
 .PHONY: test-build
@@ -279,8 +286,10 @@ test-build: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX) gpu
 test: test-build
 	@fail=0; : > $(B)/test-times.tsv; \
 	$(if $(SANITIZE),echo "make test: not run under SANITIZE: $(SANITIZE_SKIP)";) \
-	for t in $(TEST_BIN) $(TEST_SH); do echo "== $$t"; s=$$(date +%s); \
-	  case $$t in *.sh) ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1;; *) $$t || fail=1;; esac; \
+	for t in $(TEST_BIN) $(TEST_SH); do a=; \
+	  $(if $(SANITIZE),for x in $(SANITIZE_ARGS); do [ "$${x%%:*}" = "$${t##*/}" ] && a=$${x#*:}; done;) \
+	  echo "== $$t$${a:+ $$a}"; s=$$(date +%s); \
+	  case $$t in *.sh) ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1;; *) $$t $$a || fail=1;; esac; \
 	  printf '%s\t%s\n' "$$t" $$(( $$(date +%s) - s )) >> $(B)/test-times.tsv; done; \
 	echo "make test: seconds per test (the slowest five; all in $(B)/test-times.tsv):"; sort -k2,2nr $(B)/test-times.tsv | head -5; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"

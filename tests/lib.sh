@@ -11,6 +11,11 @@
 #                  failed, 1 otherwise (scripts/robustness.sh counts the
 #                  lines without a NAME in the sanitized run's log)
 #   skip MESSAGE   print "SKIP: MESSAGE" and exit 0 (a tool is not installed)
+#   family_methods [NAME...]  the first method of each family (onbstudy
+#                  list) and the NAMEs, comma separated, each once: under SAN
+#                  a test's loop over every method can run these alone (each
+#                  family's code once under the sanitizer; the C tests run
+#                  every method there)
 # Under `make test SANITIZE=...` the Makefile passes the sanitizer flags in
 # $ONB_SANFLAGS; SAN holds them (empty otherwise) for tests that compile.
 set -u
@@ -26,5 +31,10 @@ finish() {
 	exit
 }
 skip() { echo "SKIP: $*"; exit 0; }
+family_methods() {
+	./onbstudy list --format csv | awk -F, -v extra="$*" 'NR > 1 && !seen[$2]++ { pick[$1] = 1; order[++n] = $1 }
+		END { k = split(extra, e, " "); for (i = 1; i <= k; i++) if (!(e[i] in pick)) { pick[e[i]] = 1; order[++n] = e[i] }
+		      for (i = 1; i <= n; i++) printf "%s%s", (i > 1 ? "," : ""), order[i] }'
+}
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT

@@ -1428,7 +1428,7 @@ static void set_live(run_ctl *ctl, const study_kernel *ks, const cert_region *re
 	}
 }
 
-int cert_stop_save(cert_saved *v)
+int cert_stop(cert_saved *v)
 {
 	int rc = 1, i;
 	memset(v, 0, sizeof *v);
@@ -1444,8 +1444,17 @@ int cert_stop_save(cert_saved *v)
 			v->images += (c->ck.flag[i] & CK_IMAGES) != 0;
 			v->refined += (c->ck.flag[i] & CK_REFINED) != 0;
 		}
-		rc = ck_write(live.dir, &c->ck) != 0 ? -1 : 0;
+		rc = 0;
 	}
+	return rc;
+}
+
+int cert_stop_save(void)
+{
+	int rc = 1;
+#pragma omp critical(cert_commit)
+	if (live.ctl)
+		rc = ck_write(live.dir, &live.ctl->ck) != 0 ? -1 : 0;
 	return rc;
 }
 

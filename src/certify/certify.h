@@ -56,18 +56,20 @@ typedef struct {
 extern const cert_dist *cert_distribute;
 
 /* onbstudy-mpi's rank 0, when the job is being ended (a rank died, mpirun
-   was stopped): no result is committed after this call, and the
-   checkpoint of every result committed so far is written (to the --resume
-   DIR, or else to the run's output directory, which --resume DIR then
-   continues).  0 written, -1 not (a message said why; the last one, if
-   any, is intact), 1 no run under way.  v: the directory and the region
-   tasks with a result of each pass in it. */
+   was stopped).  cert_stop: no result is committed after it; into v the
+   directory of the checkpoint (the --resume DIR, or else the run's
+   output directory, which --resume DIR then continues) and the region
+   tasks with a result of each pass; 0, or 1 when no run is under way.
+   cert_stop_save then writes the checkpoint of every result committed:
+   0 written, -1 not (a message said why; the last one, if any, is
+   intact), 1 no run under way. */
 typedef struct {
 	char dir[4096];
 	int nt, run, images, refined;
 	int resume;                  /* the run has --resume DIR */
 } cert_saved;
-int cert_stop_save(cert_saved *v);
+int cert_stop(cert_saved *v);
+int cert_stop_save(void);
 /* Region task i of the run under way, named: its method, precision,
    region number and bounds ("" when no run is under way). */
 void cert_task_name(int i, char *buf, size_t cap);

@@ -27,8 +27,8 @@
  * every result committed so far (to --resume DIR, or else to the run's
  * directory: certify.h's cert_stop_save), says how to continue, and exits
  * 1; certify.csv is written at the end only, whole or not at all.  The
- * other ranks let mpirun's SIGTERM pass (its SIGKILL follows), so that
- * the rank that died is the one gone.  Ranks other than 0 print nothing.
+ * other ranks end a second after mpirun's SIGTERM (SIGALRM), so that the
+ * rank that died is the one gone.  Ranks other than 0 print nothing.
  */
 #include <mpi.h>
 #include <pthread.h>
@@ -314,8 +314,10 @@ static void on_stop(int sig, siginfo_t *si, void *ctx)
 {
 	(void)ctx;
 	if (rank != 0) {
-		if (si && si->si_pid == getppid())
-			return;   /* mpirun ends the job (its SIGKILL follows): the rank that died stays the one gone */
+		if (si && si->si_pid == getppid()) {
+			alarm(1);   /* mpirun ends the job: ended by SIGALRM a second later, so that the rank that died is the one gone */
+			return;
+		}
 		signal(sig, SIG_DFL);
 		raise(sig);
 		return;
@@ -384,26 +386,27 @@ static void stop_report(void)
 	for (r = 1; where && r < nranks; r++)
 		if (strcmp(where[r].host, host) == 0 && gone(where[r].pid))
 			fprintf(stderr, "onbstudy-mpi: rank %d (pid %ld, this node) has died\n", r, (long)where[r].pid);
-	rc = cert_stop_save(&v);
+	rc = cert_stop(&v);   /* no more commits: what is in flight now is lost */
 	if (report_lost() == 0)
 		fprintf(stderr, "onbstudy-mpi: no region was in flight\n");
 	if (rc == 1) {
 		fprintf(stderr, "onbstudy-mpi: no pass of regions was under way; certify.csv not written\n");
 		return;
 	}
-	if (rc == 0)
-		fprintf(stderr, "onbstudy-mpi: kept in %s/%s: every result committed so far (first pass: %d of %d "
-		        "regions, images pass: %d, refined: %d); certify.csv not written\n", v.dir, CK_NAME, v.run, v.nt,
-		        v.images, v.refined);
-	else
-		fprintf(stderr, "onbstudy-mpi: the checkpoint could not be written; the last complete one in %s, if "
-		        "any, is intact; certify.csv not written\n", v.dir);
 	if (v.resume)
 		fprintf(stderr, "onbstudy-mpi: to continue: the same command line (--resume %s redoes only what its "
 		        "checkpoint lacks)\n", v.dir);
 	else
 		fprintf(stderr, "onbstudy-mpi: to continue: the same command line with --resume %s in place of --out "
 		        "(it redoes only what the checkpoint lacks)\n", v.dir);
+	fflush(stderr);
+	if (cert_stop_save() == 0)
+		fprintf(stderr, "onbstudy-mpi: kept in %s/%s: every result committed so far (first pass: %d of %d "
+		        "regions, images pass: %d, refined: %d); certify.csv not written\n", v.dir, CK_NAME, v.run, v.nt,
+		        v.images, v.refined);
+	else
+		fprintf(stderr, "onbstudy-mpi: the checkpoint could not be written; the last complete one in %s, if "
+		        "any, is intact; certify.csv not written\n", v.dir);
 }
 
 static void *watch(void *arg)

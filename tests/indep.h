@@ -364,6 +364,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 #include "indep_wild_d.h"
 #include "indep_wild.h"
 #include "indep_wild_c.h"
+#include "indep_wild_b5.h"
 
 /* One entry per registry method: name, and both precisions by an id. */
 
@@ -372,7 +373,8 @@ enum { IM_NAIVE, IM_HM, IM_FRISVAD, IM_FRISVAD_MAX, IM_DUFF, IM_DUFF_BL, IM_STAR
 static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
 	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2) ||
-	    indep_wild_d_f(id, n, b1, b2) || indep_wild_c_f(id, n, b1, b2))
+	    indep_wild_d_f(id, n, b1, b2) || indep_wild_c_f(id, n, b1, b2) ||
+	    indep_wild_b5_f(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naivef(n, b1, b2, k); break;
@@ -393,7 +395,8 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 static void indep_d(int id, int k, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
 	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2) ||
-	    indep_wild_d_d(id, n, b1, b2) || indep_wild_c_d(id, n, b1, b2))
+	    indep_wild_d_d(id, n, b1, b2) || indep_wild_c_d(id, n, b1, b2) ||
+	    indep_wild_b5_d(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naived(n, b1, b2, k); break;
@@ -461,6 +464,7 @@ static const indep_row T[] = {
 	{ "rp3d", onb_rp3d, onb_rp3df, IW_RP3D, 0 },
 	{ "open3d", onb_open3d, onb_open3df, IW_OPEN3D, 0 },
 	INDEP_WILD_C_ROWS
+	INDEP_WILD_B5_ROWS
 	{ "physx_fixed", onb_physx_fixed, onb_physx_fixedf, IW_PHYSX_FIXED, 0 },
 	{ "open3d_fixed", onb_open3d_fixed, onb_open3d_fixedf, IW_OPEN3D_FIXED, 0 },
 	{ "filament_fixed", onb_filament_fixed, onb_filament_fixedf, IW_FILAMENT_FIXED, 0 },

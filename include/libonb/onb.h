@@ -52,6 +52,8 @@
  *     onb_directxmath      onb_directxmathf       DirectXMath XMVector3Orthogonal + cross
  *     onb_ogre             onb_ogref              Ogre Vector3::perpendicular + cross
  *     onb_bx               onb_bxf                bgfx bx::calcTangentFrame
+ *     onb_blender          onb_blenderf           Blender BLI ortho_basis_v3v3_v3
+ *     onb_box3d            onb_box3df             Box3D b3Perp + contact tangents
  *     onb_godot_fixed      onb_godot_fixedf       this project: Godot fixed
  *     onb_bx_fixed         onb_bx_fixedf          this project: bx fixed
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
@@ -2383,6 +2385,88 @@ static inline void ONB__K(bxf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb_
 static inline void ONB__K(bx_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__bx(n, b1, b2, 1); }
 static inline void ONB__K(bx_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__bxf(n, b1, b2, 1); }
 
+/* ------------------------------------------------------------------ */
+/* blender (Blender BLI ortho_basis_v3v3_v3)                            */
+/* ------------------------------------------------------------------ */
+/* f = len_squared_v2(n) = x*x + y*y; if f > FLT_EPSILON (2^-23):
+   d = 1/sqrtf(f), b1 = (y*d, (-x)*d, 0), b2 = ((-z)*b1.y, z*b1.x,
+   x*b1.y - y*b1.x) (n x b1 with the zero products left out); else the
+   fixed frame b1 = (z < 0 ? -1 : 1, 0, 0), b2 = (0, 1, 0), whose b1.n =
+   +-x reaches sqrt(FLT_EPSILON) ~ 3.45e-4 just inside the threshold (the
+   formula's own defect, near +-z).  Blender's BLI is float only; the
+   double kernel is the same operations and the same FLT_EPSILON constant
+   in double.  Handedness +1. */
+static inline void ONB__K(blender)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double f = n.x * n.x + n.y * n.y;
+	if (f > ONB__CAST(double, 0x1p-23f)) {
+		const double d = 1.0 / sqrt(f);
+		b1->x = n.y * d; b1->y = -n.x * d; b1->z = 0.0;
+		b2->x = -n.z * b1->y; b2->y = n.z * b1->x; b2->z = n.x * b1->y - n.y * b1->x;
+	} else {
+		b1->x = n.z < 0.0 ? -1.0 : 1.0; b1->y = 0.0; b1->z = 0.0;
+		b2->x = 0.0; b2->y = 1.0; b2->z = 0.0;
+	}
+}
+static inline void ONB__K(blenderf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float f = n.x * n.x + n.y * n.y;
+	if (f > 0x1p-23f) {
+		const float d = 1.0f / sqrtf(f);
+		b1->x = n.y * d; b1->y = -n.x * d; b1->z = 0.0f;
+		b2->x = -n.z * b1->y; b2->y = n.z * b1->x; b2->z = n.x * b1->y - n.y * b1->x;
+	} else {
+		b1->x = n.z < 0.0f ? -1.0f : 1.0f; b1->y = 0.0f; b1->z = 0.0f;
+		b2->x = 0.0f; b2->y = 1.0f; b2->z = 0.0f;
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* box3d (Box3D b3Perp + the contact solver's tangent2)                 */
+/* ------------------------------------------------------------------ */
+/* b3Perp: p = (y, -x, 0) if x < -0.5 || 0.5 < x, else (0, z, -y) (a NaN x
+   takes the else); b1 = b3Normalize(p): ls = x*x + y*y + z*z, if ls >
+   1000*FLT_MIN, s = 1/sqrtf(ls) and b1 = (s*p.x, s*p.y, s*p.z), else
+   (0, 0, 0); the contact solver's b2 = b3Cross(b1, n) (b1 the LEFT
+   operand).  (b1, b2, n) is left-handed: b1 x b2 = -n.  On the unit
+   sphere |p|^2 >= 1/4.  Box3D is float only (built -ffp-contract=off);
+   the double kernel is the same operations and the same float constant in
+   double.  Handedness -1. */
+static inline void ONB__K(box3d)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 p;
+	double ls;
+	if (n.x < -0.5 || 0.5 < n.x) { p.x = n.y; p.y = -n.x; p.z = 0.0; }
+	else { p.x = 0.0; p.y = n.z; p.z = -n.y; }
+	ls = p.x * p.x + p.y * p.y + p.z * p.z;
+	if (ls > ONB__CAST(double, 1000.0f * 0x1p-126f)) {
+		const double s = 1.0 / sqrt(ls);
+		b1->x = s * p.x; b1->y = s * p.y; b1->z = s * p.z;
+	} else {
+		b1->x = 0.0; b1->y = 0.0; b1->z = 0.0;
+	}
+	b2->x = b1->y * n.z - b1->z * n.y;
+	b2->y = b1->z * n.x - b1->x * n.z;
+	b2->z = b1->x * n.y - b1->y * n.x;
+}
+static inline void ONB__K(box3df)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f p;
+	float ls;
+	if (n.x < -0.5f || 0.5f < n.x) { p.x = n.y; p.y = -n.x; p.z = 0.0f; }
+	else { p.x = 0.0f; p.y = n.z; p.z = -n.y; }
+	ls = p.x * p.x + p.y * p.y + p.z * p.z;
+	if (ls > 1000.0f * 0x1p-126f) {
+		const float s = 1.0f / sqrtf(ls);
+		b1->x = s * p.x; b1->y = s * p.y; b1->z = s * p.z;
+	} else {
+		b1->x = 0.0f; b1->y = 0.0f; b1->z = 0.0f;
+	}
+	b2->x = b1->y * n.z - b1->z * n.y;
+	b2->y = b1->z * n.x - b1->x * n.z;
+	b2->z = b1->x * n.y - b1->y * n.x;
+}
+
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
    lines with the guard comparing n with the unit diagonal
    d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
@@ -2463,7 +2547,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(godot_fixed) X(bx_fixed) \
+	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \

@@ -709,6 +709,33 @@ static void bxh(V n, V *b1, V *b2, int fixed)
 void onb_bxh(V n, V *b1, V *b2)       { bxh(n, b1, b2, 0); }
 void onb_bx_fixedh(V n, V *b1, V *b2) { bxh(n, b1, b2, 1); }
 
+/* ---- blender: len_squared_v2 > FLT_EPSILON (2^-23, a binary16
+   subnormal), else the fixed frame; b2 = n x b1 without the zero
+   products ---- */
+void onb_blenderh(V n, V *b1, V *b2)
+{
+	const H f = hadd(hmul(n.x, n.x), hmul(n.y, n.y));
+	if (f > hcst(0x1p-23)) {
+		const H d = hdiv(H1, hsqrt(f));
+		*b1 = hvec(hmul(n.y, d), hmul(hneg(n.x), d), H0);
+		*b2 = hvec(hmul(hneg(n.z), b1->y), hmul(n.z, b1->x), hsub(hmul(n.x, b1->y), hmul(n.y, b1->x)));
+	} else {
+		*b1 = hvec(n.z < H0 ? hneg(H1) : H1, H0, H0);
+		*b2 = hvec(H0, H1, H0);
+	}
+}
+
+/* ---- box3d: b3Perp, b3Normalize (1000*FLT_MIN rounds to 0 in binary16),
+   b2 = b3Cross(b1, n) ---- */
+void onb_box3dh(V n, V *b1, V *b2)
+{
+	const H half = hcst(0.5);
+	const V p = n.x < hneg(half) || half < n.x ? hvec(n.y, hneg(n.x), H0) : hvec(H0, n.z, hneg(n.y));
+	const H ls = hdot(p, p);
+	*b1 = ls > hcst(1000.0 * 0x1p-126) ? hscale(p, hdiv(H1, hsqrt(ls))) : hvec(H0, H0, H0);
+	*b2 = hcross(*b1, n);
+}
+
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
 void onb_duff_wideh(V n, V *b1, V *b2)

@@ -70,6 +70,12 @@ static const onb_provenance P_OGRE = { "github.com/OGRECave/ogre", "3e955a168617
 static const onb_provenance P_BX = { "github.com/bkaradzic/bx", "43bfe2940275ef7fa5bc362814883d5252715122",
 	"include/bx/inline/math.inl:1327-1349", "BSD-2-Clause", "C++", "float (bx has no double build; the double row is the same operations and constants in double)",
 	"x86 with BX_SIMD_SUPPORTED: sqrt = sqrtSimd (:857-875, 0 below kFloatSmallest), rcpSafe (:264-267), cross (:1221-1229); source-level IEEE" };
+static const onb_provenance P_BLENDER = { "github.com/blender/blender", "0c0030fb125ce559fb5a28b320f490be049c0a95",
+	"source/blender/blenlib/intern/math_vector.cc:568-591", "GPL-2.0-or-later", "C++", "float (BLI's float[3]; the double row is the same operations and FLT_EPSILON in double)",
+	"source-level IEEE (x86-64 builds: no FMA); len_squared_v2 = x*x + y*y (BLI_math_vector_inline.c)" };
+static const onb_provenance P_BOX3D = { "github.com/erincatto/box3d", "30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c",
+	"include/box3d/math_functions.h:306-322", "MIT", "C", "float (Box3D has no double build; the double row is the same operations and 1000*FLT_MIN in double)",
+	"-ffp-contract=off (CMakeLists.txt:79-89); b3Normalize (:276-288: 0 at or below 1000*FLT_MIN), b2 = b3Cross(b1, n) (:350-357) as src/contact_solver.c:175-176" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -217,6 +223,11 @@ static const onb_method onb__table[] = {
 	{ "bx", "bx", "bgfx bx::calcTangentFrame: T = pbrt-v3's vector on |n.x| > |n.z|, rcpSafe(sqrt), B = cross(n, T)",
 	  "none exactly; where |n.x| > |n.z| and n.x^2 + n.z^2 < FLT_MIN (|n.y| ~ 1) sqrt flushes to 0 and |T| ~ |n.x| 2^126",
 	  "|n.x| > |n.z|", +1, 0, NAN, 0, ONB__PTRS(bx), &P_BX },
+	{ "blender", "blender", "Blender BLI ortho_basis_v3v3_v3: b1 = (y, -x, 0)/sqrt(x^2 + y^2), b2 = n x b1; (+-1, 0, 0), (0, 1, 0) when x^2 + y^2 <= FLT_EPSILON",
+	  "none; within sqrt(FLT_EPSILON) of +-z b1 = (+-1, 0, 0) is off-orthogonal by |n.x| <= 3.45e-4 (by design)",
+	  "n.x^2 + n.y^2 > FLT_EPSILON (2^-23)", +1, 0, NAN, 0, ONB__PTRS(blender), &P_BLENDER },
+	{ "box3d", "box3d", "Box3D b3Perp (|x| > 0.5: (y, -x, 0), else (0, z, -y); b3Normalize) and the contact solver's tangent2 = b3Cross(b1, n)",
+	  "none", "n.x < -0.5 or 0.5 < n.x", -1, 0, NAN, 0, ONB__PTRS(box3d), &P_BOX3D },
 	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
 	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },
 	{ "bx_fixed", "bx", "onbstudy, not shipped: bx::calcTangentFrame with pbrt-v3's branch |n.x| > |n.y|",

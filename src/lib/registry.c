@@ -226,7 +226,7 @@ static const onb_method onb__table[] = {
 	{ "blender", "blender", "Blender BLI ortho_basis_v3v3_v3: b1 = (y, -x, 0)/sqrt(x^2 + y^2), b2 = n x b1; (+-1, 0, 0), (0, 1, 0) when x^2 + y^2 <= FLT_EPSILON",
 	  "none; within sqrt(FLT_EPSILON) of +-z b1 = (+-1, 0, 0) is off-orthogonal by |n.x| <= 3.45e-4 (by design)",
 	  "n.x^2 + n.y^2 > FLT_EPSILON (2^-23)", +1, 0, NAN, 0, ONB__PTRS(blender), &P_BLENDER },
-	{ "box3d", "box3d", "Box3D b3Perp (|x| > 0.5: (y, -x, 0), else (0, z, -y); b3Normalize) and the contact solver's tangent2 = b3Cross(b1, n)",
+	{ "box3d", "box3d", "Box3D b3Perp (x < -0.5 or 0.5 < x: (y, -x, 0), else (0, z, -y); b3Normalize) and the contact solver's tangent2 = b3Cross(b1, n)",
 	  "none", "n.x < -0.5 or 0.5 < n.x", -1, 0, NAN, 0, ONB__PTRS(box3d), &P_BOX3D },
 	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
 	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },

@@ -5,8 +5,8 @@
 # there and the cc line compiles examples/render.c against the installed
 # header and library; the last line runs the program, which checks its
 # own bases (exit 1 on a direction that is not unit or leaves the
-# hemisphere).  The pkg-config form of the cc line given below the block is
-# run too when pkg-config is installed.  A file the block names that does
+# hemisphere).  The one-line pkg-config form of the cc line that
+# docs/library.md gives is run too when pkg-config is installed.  A file the block names that does
 # not exist, or a command that fails, fails this test.
 # (Under SANITIZE libonb.a carries the sanitizers: a cc on PATH adds $SAN.)
 . "$(dirname "$0")/lib.sh"
@@ -32,8 +32,8 @@ done < "$tmp/quickstart.sh"
 	bad "make install put $(find "$tmp/home/.local" -type f | wc -l) files under \$HOME/.local, the README says 5"
 [ "$had_aout" -eq 1 ] || rm -f "$root/a.out"
 if command -v pkg-config >/dev/null 2>&1; then
-	pc=$(tr '\n' ' ' < README.md | grep -o '`cc -O2 examples/render\.c \$(PKG_CONFIG_PATH=[^`]*`' | tr -d '`')
+	pc=$(tr '\n' ' ' < docs/library.md | grep -o '`cc -O2 examples/render\.c \$(PKG_CONFIG_PATH=[^`]*`' | tr -d '`')
 	[ -n "$pc" ] && run "$pc -o $tmp/w/render-pc && $tmp/w/render-pc" && ok ||
-		bad "the README's pkg-config line '$pc' failed: $(tail -3 "$tmp/out")"
+		bad "docs/library.md's pkg-config line '$pc' failed: $(tail -3 "$tmp/out")"
 fi
 finish lib_quickstart

@@ -107,16 +107,19 @@ all: libonb.a onbstudy
 
 # Dependencies: installed by the script when missing (a stamp records
 # success): the study's few for `make`, the charts' for `make plots` and
-# `make render`, and everything the tests and CI use for `make test`
-# (README, "Quick start: the full study", gives what each costs).  The
-# stamps come one after the other: two apt-get runs at once would fight
-# over dpkg's lock under make -j.
+# `make render`, Open MPI for `make mpi`, and everything the tests and CI
+# use for `make test` (docs/install.md gives what
+# each costs).  The stamps come one after the other: two apt-get runs at
+# once would fight over dpkg's lock under make -j.
 $(B)/deps.stamp: scripts/install-deps.sh
 	@mkdir -p $(B)
 	sh scripts/install-deps.sh
 	@touch $@
 $(B)/plot-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
 	sh scripts/install-deps.sh --plots
+	@touch $@
+$(B)/mpi-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
+	sh scripts/install-deps.sh --mpi
 	@touch $@
 $(B)/test-deps.stamp: scripts/install-deps.sh $(B)/deps.stamp
 	sh scripts/install-deps.sh --test
@@ -323,7 +326,7 @@ plots:
 	sh scripts/plots.sh $(RUN)
 
 # # make robustness: the hardening run (scripts/harden.sh, ~10 min on 2 cores),
-# then the committed results/robustness.md and the README's copy of its
+# then the committed results/robustness.md and docs/testing.md's copy of its
 # summary from that run's logs.  CI runs the same checks but writes its
 # table to build/harden/ only, so it changes no tracked file.
 FUZZ_SECS ?= 120
@@ -362,13 +365,14 @@ clean:
 	rm -rf $(B) libonb.a onbstudy onbstudy-mpi onbstudy-gpu onb.pc   # onb.pc: left by older Makefiles
 
 # The MPI driver: `make mpi` builds onbstudy-mpi with Open MPI's
-# mpicc; the default build does not need MPI.  It links the same study
+# mpicc (installed by scripts/install-deps.sh --mpi when missing); the
+# default build does not need MPI.  It links the same study
 # library, so it runs the same engine as ./onbstudy.
 MPICC ?= mpicc
 .PHONY: mpi
 mpi: onbstudy-mpi
 MPI_OBJ = $(B)/mpi/onbstudy_mpi.o $(B)/mpi/certify_mpi.o
-$(MPI_OBJ): $(B)/mpi/%.o: src/mpi/%.c src/mpi/certify_mpi.h $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp
+$(MPI_OBJ): $(B)/mpi/%.o: src/mpi/%.c src/mpi/certify_mpi.h $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/rev.stamp $(B)/mpi-deps.stamp
 	@mkdir -p $(@D)
 	$(MPICC) $(BASE) $(WARN) $(OMP) $(PROV) -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-mpi: $(MPI_OBJ) $(STUDY_LIB) libonb.a

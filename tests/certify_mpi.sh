@@ -19,16 +19,7 @@
 #  - a bad option is refused once, exit 2, no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
 . "$(dirname "$0")/lib.sh"
-if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
-	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh --test installs it)"
-fi
-make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
-# ASan: Open MPI's never-freed allocations are not ours (as in tests/mpi.sh)
-if [ -n "${ONB_SANFLAGS:-}" ]; then export ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
-# the timeout is a hang guard, not a speed limit
-MPIRUN="timeout 600 mpirun --oversubscribe"
+mpi_start
 T=$tmp
 Q="--quick --quiet --precision float --methods frisvad,rtow"
 data() { grep -v '^#' "$1"; }

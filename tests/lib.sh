@@ -16,6 +16,9 @@
 #                  a test's loop over every method can run these alone (each
 #                  family's code once under the sanitizer; the C tests run
 #                  every method there)
+#   mpi_start      the MPI tests' start: skip without Open MPI, `make mpi`,
+#                  Open MPI's settings for root (CI), shared memory only and
+#                  more ranks than cores, and MPIRUN (mpirun under a hang guard)
 # Under `make test SANITIZE=...` the Makefile passes the sanitizer flags in
 # $ONB_SANFLAGS; SAN holds them (empty otherwise) for tests that compile.
 set -u
@@ -38,3 +41,20 @@ family_methods() {
 }
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
+
+mpi_start() {
+	if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
+		skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh --mpi installs it)"
+	fi
+	make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
+	# as root (CI) and without a network: shared memory only
+	export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+	export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+	# Under ASan (make test SANITIZE=...), Open MPI's own allocations that it
+	# never frees (its component tables, dlopen'd modules) would fail every
+	# run at exit: leak detection is off for the MPI runs only; ASan's other
+	# checks and UBSan stay on.
+	if [ -n "$SAN" ]; then export ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
+	# the timeout is a hang guard, not a speed limit: generous, for loaded machines
+	MPIRUN="timeout 600 mpirun --oversubscribe"
+}

@@ -9,20 +9,11 @@
 # options are refused with one message and no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
 . "$(dirname "$0")/lib.sh"
-if ! command -v mpirun > /dev/null 2>&1 || ! command -v mpicc > /dev/null 2>&1; then
-	skip "no mpirun/mpicc (Open MPI: scripts/install-deps.sh --test installs it)"
-fi
-make -s mpi > "$tmp/make.log" 2>&1 || { cat "$tmp/make.log"; echo "FAIL: make mpi"; exit 1; }
-# Open MPI as root (CI) and without a network: shared memory only
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
-# Under ASan (make test SANITIZE=...), Open MPI's own allocations that it
-# never frees (its component tables, dlopen'd modules) would fail every run
-# at exit: leak detection is off for the MPI runs only; ASan's other checks
-# and UBSan stay on.
-if [ -n "${ONB_SANFLAGS:-}" ]; then export ASAN_OPTIONS="detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"; fi
-# the timeout is a hang guard, not a speed limit: generous, for loaded machines
-MPIRUN="timeout 600 mpirun --oversubscribe"
+# `make mpi` installs Open MPI itself on a fresh machine, as `make` and
+# `make plots` install theirs (checked before the skip: it needs no MPI)
+env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -n -B mpi B="$tmp/nob" 2>/dev/null |
+	grep -q 'install-deps\.sh --mpi' && ok || bad "make mpi does not run scripts/install-deps.sh --mpi"
+mpi_start
 
 # same DIR1 DIR2 WHAT: the data (every line but the '#' provenance) and stdout
 same() {

@@ -9,7 +9,8 @@
  * |x| = 0.9, |x| = |y|, |x| = |z| and |y| = |z| thresholds, the axes with
  * signed zeros, the n.z = +-0 seam and the approach to -x.
  * A model that drops, adds or moves one rounding fails here.
- * The contracted models (cm_find_fma: the methods of cm_fma_names) are
+ * The contracted models (cm_find_fma: every method whose family's fma_model
+ * says it has one, cm_fma_name) are
  * checked the same way against the study's --fma copies of their kernels
  * (compiled with -mfma -ffp-contract=fast), where the CPU has FMA, on a
  * quarter of the count.
@@ -147,16 +148,17 @@ static int check_fma(const char *only, long count, int *checked)
 		printf("skip the contracted models: no FMA on this CPU or build\n");
 		return 0;
 	}
-	for (i = 0; cm_fma_names[i]; i++) {
-		const onb_method *m = onb_find(cm_fma_names[i]);
-		const cm_method *cmm = cm_find_fma(cm_fma_names[i]);
+	for (i = 0; cm_fma_name((size_t)i); i++) {
+		const char *name = cm_fma_name((size_t)i);
+		const onb_method *m = onb_find(name);
+		const cm_method *cmm = cm_find_fma(name);
 		onb_method mf;
 		rotate_fn rot;
 		rotatef_fn rotf;
-		if (only && strcmp(only, cm_fma_names[i]) != 0)
+		if (only && strcmp(only, name) != 0)
 			continue;
 		if (!m || !cmm) {
-			printf("FAIL %s+fma: no method or contracted model\n", cm_fma_names[i]);
+			printf("FAIL %s+fma: no method or contracted model\n", name);
 			fail = 1;
 			continue;
 		}
@@ -173,7 +175,7 @@ static int check_fma(const char *only, long count, int *checked)
 			bad = check(&mf, cmm, prec, count);
 			(*checked)++;
 			printf("%s %-24s %-6s %ld inputs, %ld not bit-identical\n", bad ? "FAIL" : "ok  ",
-			       cm_fma_names[i], prec == PREC_FLOAT ? "float+fma" : "double+fma", count, bad);
+			       name, prec == PREC_FLOAT ? "float+fma" : "double+fma", count, bad);
 			fail |= bad != 0;
 		}
 	}

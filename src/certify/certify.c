@@ -954,8 +954,8 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	if (c->fma) {
 		int j;
 		fprintf(f, "# fma: METHOD+fma rows are the kernels compiled with -mfma -ffp-contract=fast, bounded with contracted models (");
-		for (j = 0; cm_fma_names[j]; j++)
-			fprintf(f, "%s%s", j ? " " : "", cm_fma_names[j]);
+		for (j = 0; cm_fma_name((size_t)j); j++)
+			fprintf(f, "%s%s", j ? " " : "", cm_fma_name((size_t)j));
 		fprintf(f, "); the other methods' +fma copies have none and no rows\n");
 	}
 	if (c->band)

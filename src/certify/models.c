@@ -19,23 +19,6 @@ static size_t ntable;
 static cm_method rotate;
 static int filled;
 
-/* The methods whose models follow GCC's contraction of their kernels
-   (MADD and ADDM in the family's model, where the --fma copy fuses):
-   tests/test_certify.c checks each against that copy bit for bit.  The
-   others have none (docs/certify.md says why). */
-const char *const cm_fma_names[] = { "duff_branchless", "duff", "frisvad", "frisvad_max", "pbrt_v3", "hughes_moeller", "stark", "stark_fixed", "rtow",
-	"naive", "naive_invsqrt", "naive_rsqrt", "naive_rsqrt_nr", "naive_nonorm", "hughes_moeller_invsqrt", "hughes_moeller_rsqrt",
-	"hughes_moeller_rsqrt_nr", "hughes_moeller_nonorm", "q2rtx", "filament", "jolt_fma", "duff_wide", "duff_comp", "bullet", "eigen", "rp3d", "jolt", "luxcore", "physx", "physx_fixed", "mujoco", "embree", "cycles_cross111", "cycles_cross111_avx2", "tangent_cross_z", "open3d", "open3d_fixed", "mitsuba3", "filament_fixed", "luxcore_fixed", NULL };
-
-static int fma_modelled(const char *name)
-{
-	int i;
-	for (i = 0; cm_fma_names[i]; i++)
-		if (strcmp(cm_fma_names[i], name) == 0)
-			return 1;
-	return 0;
-}
-
 static void fill(void)
 {
 	size_t i, n;
@@ -49,7 +32,7 @@ static void fill(void)
 		table[ntable].nbranch = f->model_branches;
 		table[ntable].zero_any_n = f->zero_any_n(&ms[i]);
 		table_fma[ntable] = table[ntable];
-		table_fma[ntable].contract = fma_modelled(ms[i].name);
+		table_fma[ntable].contract = !f->fma_model || f->fma_model(&ms[i]);
 		ntable++;
 	}
 	rotate.fam = family_rotate();
@@ -84,6 +67,21 @@ const cm_method *cm_find_fma(const char *name)
 	const cm_method *m = cm_find(name);
 	/* frisvad_rotate's model lies outside the tables, and has no contracted twin */
 	return m && !m->direction && table_fma[m - table].contract ? &table_fma[m - table] : NULL;
+}
+
+const char *cm_fma_name(size_t i)
+{
+	const char *r = NULL;
+	size_t k;
+#pragma omp critical(cm_find)
+	{
+		if (!filled)
+			fill();
+		for (k = 0; k < ntable && !r; k++)
+			if (table_fma[k].contract && i-- == 0)
+				r = table_fma[k].m->name;
+	}
+	return r;
 }
 
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6])

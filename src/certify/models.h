@@ -30,9 +30,11 @@ const cm_method *cm_find(const char *name);
 /* The model of the method's --fma copy (its kernel compiled with -mfma
    -ffp-contract=fast: GCC fuses some a*b + c into one rounding), or NULL
    where no contracted model has been written and checked bit for bit
-   against that copy (cm_fma_names lists those that have). */
+   against that copy: its family's fma_model, family.h). */
 const cm_method *cm_find_fma(const char *name);
-extern const char *const cm_fma_names[];
+/* The i-th registry method (in the registry's order) that has a contracted
+   model, or NULL past the last. */
+const char *cm_fma_name(size_t i);
 /* The kernel's operations on n, writing b1 (out[0..2]) and b2 (out[3..5])
    in precision P (PREC_FLOAT or PREC_DOUBLE). */
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6]);

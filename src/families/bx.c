@@ -75,5 +75,6 @@ FAMILY_DECLARE(bx);
 const study_family family_bx = {
 	"bx", FAMILY_PASSES(bx), names, mpfr, FAMILY_PAIRS(bx), variant,
 	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -80,5 +80,6 @@ FAMILY_DECLARE(capsaicin);
 const study_family family_capsaicin = {
 	"capsaicin", FAMILY_PASSES(capsaicin), names, mpfr, FAMILY_PAIRS(capsaicin), variant,
 	family_no_exact_zero, model, 1, zero_any_n, singular, meets_singular,
+	family_no_fma_model,
 };
 #endif

@@ -102,5 +102,6 @@ FAMILY_DECLARE(cycles_cross111);
 const study_family family_cycles_cross111 = {
 	"cycles_cross111", FAMILY_PASSES(cycles_cross111), names, mpfr, FAMILY_PAIRS(cycles_cross111),
 	family_no_variant, family_no_exact_zero, model, 4, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -96,5 +96,6 @@ FAMILY_DECLARE(directxmath);
 const study_family family_directxmath = {
 	"directxmath", FAMILY_PASSES(directxmath), names, mpfr, FAMILY_PAIRS(directxmath), family_no_variant,
 	family_no_exact_zero, model, 4, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -92,6 +92,7 @@ FAMILY_DECLARE(duff);
 const study_family family_duff = {
 	"duff", FAMILY_PASSES(duff), names, mpfr, FAMILY_PAIRS(duff), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 
 FAMILY_DECLARE(unity);

@@ -141,5 +141,6 @@ FAMILY_DECLARE(duff_branchless);
 const study_family family_duff_branchless = {
 	"duff_branchless", FAMILY_PASSES(duff_branchless), names, mpfr, FAMILY_PAIRS(duff_branchless),
 	family_no_variant, family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -117,11 +117,13 @@ FAMILY_DECLARE(eigen);
 const study_family family_eigen = {
 	"eigen", FAMILY_PASSES(eigen), names, mpfr, FAMILY_PAIRS(eigen), family_no_variant,
 	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 
 FAMILY_DECLARE(filament_hm);
 const study_family family_filament_hm = {
 	"filament_hm", FAMILY_PASSES(filament_hm), names_hm, mpfr, FAMILY_PAIRS(filament_hm), family_no_variant,
 	family_no_exact_zero, model_hm, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -112,5 +112,6 @@ FAMILY_DECLARE(embree);
 const study_family family_embree = {
 	"embree", FAMILY_PASSES(embree), names, mpfr, FAMILY_PAIRS(embree), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -52,3 +52,5 @@ int family_meets_none(const onb_method *m, double nz_lo, double nz_hi, double ph
 	(void)m; (void)nz_lo; (void)nz_hi; (void)phi_lo; (void)phi_hi;
 	return 0;
 }
+int family_fma_model(const onb_method *m) { (void)m; return 1; }
+int family_no_fma_model(const onb_method *m) { (void)m; return 0; }

@@ -75,6 +75,16 @@ typedef struct study_family {
 	   [nz_lo, nz_hi], azimuth in [phi_lo, phi_hi] degrees, meets them. */
 	const char *(*singular)(const onb_method *m);
 	int (*meets_singular)(const onb_method *m, double nz_lo, double nz_hi, double phi_lo, double phi_hi);
+	/* Whether the model of m is also its --fma copy's (the kernel compiled
+	   with -mfma -ffp-contract=fast, where GCC fuses some a*b + c): 1 where
+	   MADD, ADDM, SUBM and MSUB under c->contract mark exactly the products
+	   GCC fuses (or the kernel has none), so certify --fma bounds the copy
+	   and tests/test_certify.c checks the model against it bit for bit;
+	   0 where no contracted model is written (certify --fma then writes no
+	   METHOD+fma rows).  Every family says which (family_fma_model,
+	   family_no_fma_model or its own rule); NULL counts as 1, so a family
+	   that forgets is checked, not skipped. */
+	int (*fma_model)(const onb_method *m);
 } study_family;
 
 /* The family of registry method m (its `family` field), or NULL when no
@@ -123,5 +133,7 @@ int family_no_variant(const onb_method *m);
 int family_no_exact_zero(const onb_method *m, int br);
 const char *family_no_singular(const onb_method *m);
 int family_meets_none(const onb_method *m, double nz_lo, double nz_hi, double phi_lo, double phi_hi);
+int family_fma_model(const onb_method *m);
+int family_no_fma_model(const onb_method *m);
 
 #endif

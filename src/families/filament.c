@@ -135,5 +135,6 @@ FAMILY_DECLARE(filament);
 const study_family family_filament = {
 	"filament", FAMILY_PASSES(filament), names, mpfr, FAMILY_PAIRS(filament), variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

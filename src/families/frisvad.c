@@ -68,5 +68,6 @@ FAMILY_DECLARE(frisvad);
 const study_family family_frisvad = {
 	"frisvad", FAMILY_PASSES(frisvad), names, mpfr, FAMILY_PAIRS(frisvad), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

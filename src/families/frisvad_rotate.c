@@ -100,5 +100,6 @@ FAMILY_DECLARE(frisvad_rotate);
 const study_family family_frisvad_rotate = {
 	"frisvad_rotate", FAMILY_PASSES(frisvad_rotate), names, mpfr, FAMILY_PAIRS(frisvad_rotate),
 	family_no_variant, family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,  /* a direction, not a basis: its --fma copy has no rows */
 };
 #endif

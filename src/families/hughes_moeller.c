@@ -83,5 +83,6 @@ FAMILY_DECLARE(hughes_moeller);
 const study_family family_hughes_moeller = {
 	"hughes_moeller", FAMILY_PASSES(hughes_moeller), names, mpfr, FAMILY_PAIRS(hughes_moeller), variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -139,5 +139,6 @@ FAMILY_DECLARE(luxcore);
 const study_family family_luxcore = {
 	"luxcore", FAMILY_PASSES(luxcore), names, mpfr, FAMILY_PAIRS(luxcore), variant,
 	exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -120,5 +120,6 @@ FAMILY_DECLARE(mujoco);
 const study_family family_mujoco = {
 	"mujoco", FAMILY_PASSES(mujoco), names, mpfr, FAMILY_PAIRS(mujoco), family_no_variant,
 	exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -113,5 +113,6 @@ FAMILY_DECLARE(naive);
 const study_family family_naive = {
 	"naive", FAMILY_PASSES(naive), names, mpfr, FAMILY_PAIRS(naive), variant, exact_zero,
 	model, 1, zero_any_n, singular, meets_singular,
+	family_fma_model,
 };
 #endif

@@ -76,5 +76,6 @@ FAMILY_DECLARE(ogre);
 const study_family family_ogre = {
 	"ogre", FAMILY_PASSES(ogre), names, mpfr, FAMILY_PAIRS(ogre), family_no_variant,
 	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -154,5 +154,6 @@ FAMILY_DECLARE(open3d);
 const study_family family_open3d = {
 	"open3d", FAMILY_PASSES(open3d), names, mpfr, FAMILY_PAIRS(open3d), family_no_variant,
 	family_no_exact_zero, model, 4, zero_any_n, singular, meets_singular,
+	family_fma_model,
 };
 #endif

@@ -101,5 +101,6 @@ FAMILY_DECLARE(osl_ortho);
 const study_family family_osl_ortho = {
 	"osl_ortho", FAMILY_PASSES(osl_ortho), names, mpfr, FAMILY_PAIRS(osl_ortho), family_no_variant,
 	family_no_exact_zero, model, 8, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -114,6 +114,7 @@ FAMILY_DECLARE(pbrt_v3);
 const study_family family_pbrt_v3 = {
 	"pbrt_v3", FAMILY_PASSES(pbrt_v3), names, mpfr, FAMILY_PAIRS(pbrt_v3), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 /* ---- nori ---- */
 static const char *names_nori(const onb_method *m, int b, char *buf, size_t n)
@@ -153,5 +154,6 @@ FAMILY_DECLARE(nori);
 const study_family family_nori = {
 	"nori", FAMILY_PASSES(nori), names_nori, mpfr_nori, FAMILY_PAIRS(nori), family_no_variant,
 	family_no_exact_zero, model_nori, 1, zero_any_n_nori, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

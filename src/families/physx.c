@@ -124,5 +124,6 @@ FAMILY_DECLARE(physx);
 const study_family family_physx = {
 	"physx", FAMILY_PASSES(physx), names, mpfr, FAMILY_PAIRS(physx), variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

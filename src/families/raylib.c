@@ -25,14 +25,11 @@ int FAMILY_BRANCH(raylib)(const onb_method *m, int prec, const double n[3])
 #endif
 
 #if FAMILY_PAIR_PASS
+/* p = n x e_br = -(e_br x n), b1 = p/|p|, b2 = n x b1 */
 void FAMILY_PAIR(raylib)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
 {
-	xv u[3];
 	(void)m; (void)loc;
-	xset3(u, br == 0, br == 1, br == 2);
-	xcross(r1, n, u, bad);
-	xnormalize(r1, bad);
-	xcross(r2, n, r1, bad);
+	xperp_cross(br, -1, n, r1, r2, bad);
 }
 #endif
 
@@ -48,10 +45,7 @@ static const char *names(const onb_method *m, int b, char *buf, size_t n)
 static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
 {
 	(void)m; (void)loc;
-	kit_set3(c->u, br == 0, br == 1, br == 2);
-	kit_cross(c, r1, n, c->u);
-	kit_normalize(c, r1);
-	kit_cross(c, r2, n, r1);
+	kit_perp_cross(c, br, -1, n, r1, r2);
 }
 
 /* Three branch points: |y| < |x|, then |z| < the smaller, then the
@@ -95,5 +89,6 @@ FAMILY_DECLARE(raylib);
 const study_family family_raylib = {
 	"raylib", FAMILY_PASSES(raylib), names, mpfr, FAMILY_PAIRS(raylib), family_no_variant,
 	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -80,5 +80,6 @@ FAMILY_DECLARE(rp3d);
 const study_family family_rp3d = {
 	"rp3d", FAMILY_PASSES(rp3d), names, mpfr, FAMILY_PAIRS(rp3d), family_no_variant,
 	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

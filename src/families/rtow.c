@@ -94,5 +94,6 @@ FAMILY_DECLARE(rtow);
 const study_family family_rtow = {
 	"rtow", FAMILY_PASSES(rtow), names, mpfr, FAMILY_PAIRS(rtow), family_no_variant,
 	family_no_exact_zero, model, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -113,10 +113,12 @@ FAMILY_DECLARE(stark);
 const study_family family_stark = {
 	"stark", FAMILY_PASSES(stark), names, mpfr, FAMILY_PAIRS(stark), family_no_variant,
 	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 FAMILY_DECLARE(stark_fixed);
 const study_family family_stark_fixed = {
 	"stark_fixed", FAMILY_PASSES(stark_fixed), names, mpfr_fixed, FAMILY_PAIRS(stark_fixed), family_no_variant,
 	family_no_exact_zero, model_fixed, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_fma_model,
 };
 #endif

@@ -81,5 +81,6 @@ FAMILY_DECLARE(tangent_cross_z);
 const study_family family_tangent_cross_z = {
 	"tangent_cross_z", FAMILY_PASSES(tangent_cross_z), names, mpfr, FAMILY_PAIRS(tangent_cross_z),
 	family_no_variant, family_no_exact_zero, model, 0, zero_any_n, singular, meets_singular,
+	family_fma_model,
 };
 #endif

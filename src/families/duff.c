@@ -99,5 +99,6 @@ FAMILY_DECLARE(unity);
 const study_family family_unity = {
 	"unity", FAMILY_PASSES(unity), names, mpfr_unity, FAMILY_PAIRS(unity), family_no_variant,
 	family_no_exact_zero, model_unity, 1, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,  /* its --fma copy's fusions are not modelled yet */
 };
 #endif

@@ -325,7 +325,8 @@ plots:
 	$(MAKE) --no-print-directory onbstudy $(B)/plot-deps.stamp
 	sh scripts/plots.sh $(RUN)
 
-# # make robustness: the hardening run (scripts/harden.sh, ~10 min on 2 cores),
+# # make robustness: the hardening run (scripts/harden.sh: its steps took 1740 s
+# on 2 cores at load 1-4 in results/quickstart/ci-rehearsal.txt),
 # then the committed results/robustness.md and docs/testing.md's copy of its
 # summary from that run's logs.  CI runs the same checks but writes its
 # table to build/harden/ only, so it changes no tracked file.

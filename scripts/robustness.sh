@@ -7,7 +7,8 @@
 # the command-line cases (tests/cli_errors.sh).  Reads the logs of the last
 # `sh scripts/harden.sh` (build/harden/: sanitized make test, valgrind,
 # cppcheck, step durations) and `sh scripts/fuzz.sh` (build/fuzz/summary.tsv);
-# a row whose log is missing says "not run".
+# a row whose log is missing says "not run" and where the last full run
+# of every step is recorded ($NOTRUN).
 #   sh scripts/robustness.sh --out FILE   write FILE instead, docs/testing.md untouched
 #     (what CI does: CI changes no tracked file)
 # Regenerate the committed table and docs/testing.md's copy: make robustness
@@ -20,6 +21,7 @@ case "${1:-}" in
 *) echo "usage: robustness.sh [--out FILE]" >&2; exit 2 ;;
 esac
 L=build/harden
+NOTRUN="not run in this regeneration (no log in build/harden/ or build/fuzz/); the last full scripts/harden.sh run's outcome: results/quickstart/ci-rehearsal.txt"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail=0
 mkdir -p "$(dirname "$out")"
@@ -70,7 +72,7 @@ fuzzrow() { # harness, what
 		printf '| Fuzzing: %s | libFuzzer, clang -fsanitize=fuzzer,address,undefined, %s s from %s seeds | %s executions, %s crashes (exit %s), %s coverage edges, corpus %s |\n' \
 			"$2" "$(fz "$1" 2)" "$(find tests/fuzz/corpus/$1 -type f ! -name '.*' | wc -l)" "$(fz "$1" 3)" "$(fz "$1" 5)" "$(fz "$1" 4)" "$(fz "$1" 6)" "$(fz "$1" 7)"
 	else
-		printf '| Fuzzing: %s | libFuzzer (scripts/fuzz.sh) | not run |\n' "$2"
+		printf '| Fuzzing: %s | libFuzzer (scripts/fuzz.sh) | %s |\n' "$2" "$NOTRUN"
 	fi
 }
 nreg=$(find tests/fuzz/regressions -type f ! -name '.*' | wc -l)
@@ -86,17 +88,17 @@ if [ -f "$L/sanitize.log" ]; then
 	sanknown=$(grep '^KNOWN' "$L/sanitize.log" | sed 's/^KNOWN (\([^)]*\)): \(.*\) -- onbstudy .*/\1: \2/' | sort | uniq -c |
 		awk '{ c = $1; $1 = ""; sub(/^ /, ""); sub(/ +$/, ""); printf "%s%s (x%d)", (NR > 1 ? "; " : ""), $0, c }')
 	[ -n "$sanknown" ] && san="$san; KNOWN cases of tests/cli_errors.sh (bugs reported, not counted): $sanknown"
-else san="not run"; fi
+else san=$NOTRUN; fi
 if [ -f "$L/valgrind.log" ]; then
 	vg=$(grep -o 'ERROR SUMMARY: [0-9]* errors' "$L/valgrind.log" | awk '{ n++; e += $3 } END { printf "%d runs, %d errors", n, e }')
 	[ "$(stepval valgrind 3)" = 0 ] || vg="FAILED (exit $(stepval valgrind 3)): $vg"
-else vg="not run"; fi
+else vg=$NOTRUN; fi
 if [ -f "$L/cppcheck.log" ]; then
 	cpn=$(grep -c -E '^[^ ]+:[0-9]+:[0-9]+: ' "$L/cppcheck.log")
 	nsup=$(grep -c -v '^#\|^$' scripts/cppcheck-suppressions.txt)
 	cp="$cpn findings ($nsup suppressions, each justified in scripts/cppcheck-suppressions.txt)"
 	[ "$(stepval cppcheck 3)" = 0 ] || cp="FAILED: $cp"
-else cp="not run"; fi
+else cp=$NOTRUN; fi
 # the strict warning set, on both compilers, right now
 warn="-std=c99 -O2 -ffp-contract=off -fno-math-errno -fno-trapping-math -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror -Iinclude"
 wst=""

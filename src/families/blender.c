@@ -90,5 +90,6 @@ FAMILY_DECLARE(blender);
 const study_family family_blender = {
 	"blender", FAMILY_PASSES(blender), names, mpfr, FAMILY_PAIRS(blender), family_no_variant,
 	family_no_exact_zero, model, 2, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

@@ -81,5 +81,6 @@ FAMILY_DECLARE(box3d);
 const study_family family_box3d = {
 	"box3d", FAMILY_PASSES(box3d), names, mpfr, FAMILY_PAIRS(box3d), family_no_variant,
 	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

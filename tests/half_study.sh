@@ -19,7 +19,8 @@
 #     uniform with no non-finite basis, frisvad non-finite on threshold
 #     (n = -z), physx's defect 1 at +-y; --precision all's float rows equal
 #     --precision float's; two shards merge to the unsharded half run;
-#  5. refusals: --precision float with list --axes, --precision without
+#  5. certify --precision half: frisvad non-finite at -z, duff proven;
+#  6. refusals: --precision float with list --axes, --precision without
 #     --axes, eval --arith with half; a build without _Float16 refuses
 #     --precision half with exit 2 and says why.
 . "$(dirname "$0")/lib.sh"
@@ -77,6 +78,19 @@ grep -q '^# binary16 (sweep --precision half' "$tmp/tab.txt" && awk -v u="$(data
 for k in 0 1; do ./onbstudy sweep --precision half $S --shard $k/2 --out "$tmp/shs" > /dev/null 2>&1; done
 ./onbstudy merge --out "$tmp/shm" "$tmp/shs/sweep-state-0-of-2.bin" "$tmp/shs/sweep-state-1-of-2.bin" > /dev/null 2>&1 && ok || bad "merge of the half shards"
 [ "$(data "$sum")" = "$(data "$tmp/shm/summary.csv")" ] && ok || bad "sweep half: two shards do not merge to the unsharded run"
+
+# 5. certify --precision half (tests/test_certify_half.c checks the bounds
+#    against a scan): at the pole -z frisvad's basis is NaN (status
+#    non-finite, bound inf: no number), duff is proven within a few u; the
+#    float options are refused
+./onbstudy certify --precision half --methods duff,frisvad --band=-1,-0.999 --sectors 2 --depth 2 --azimuths 2 \
+	--quiet --out "$tmp/ch" > /dev/null 2> "$tmp/err" && ok || bad "certify --precision half: $(cat "$tmp/err")"
+data "$tmp/ch/certify-half.csv" | awk -F, 'NR > 1 && $1 == "frisvad" && $3 == -1 && $12 == "non-finite" && $7 == "inf" { f = 1 } END { exit !f }' \
+	&& ok || bad "certify half: frisvad at -z must be non-finite with no bound: $(grep '^frisvad' "$tmp/ch/certify-half.csv" | head -2)"
+data "$tmp/ch/certify-half.csv" | awk -F, 'NR > 1 && $1 == "duff" { n++; if ($12 != "proven" || !($7 <= 8 * 2^-11) || !($8 <= $7)) b = 1 } END { exit b || n == 0 }' \
+	&& ok || bad "certify half: duff must be proven within 8u: $(grep '^duff' "$tmp/ch/certify-half.csv" | head -3)"
+./onbstudy certify --precision half --fma > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "certify --precision half --fma must exit 2"
+./onbstudy certify --precision float --depth 3 > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "certify --depth without half must exit 2"
 
 ./onbstudy list --axes --precision float > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --axes --precision float must exit 2"
 ./onbstudy list --precision half > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "list --precision without --axes must exit 2"

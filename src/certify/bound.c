@@ -209,7 +209,7 @@ static double lo_of(double v) { return v - fabs(v) * 0x1p-50 - 0x1p-1000; }
 
 static void cross_rule(const cm *c, int prec, span nn, span s[NCQ])
 {
-	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-150 : 0x1p-1074;
+	const double u = prec_fmt(prec)->u, eta = fmax(prec_fmt(prec)->sub_step / 2, 0x1p-1074);
 	const int to = c->cross_to - 1;
 	const span A = nn, B = s[to ? CQ_N1 : CQ_N2], D = s[to ? CQ_D1N : CQ_D2N];
 	const span zero = { 0.0, 0.0 };
@@ -399,8 +399,8 @@ static void gram_eigs(const span *sp, span nn, double *qhi, double *qlo)
    the model's b1.n = -n.y and b2.n = -n.x). */
 static double dir_bound(const span *sp, span nn, int prec, int special, unsigned drop)
 {
-	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53;
-	const double eta = prec == PREC_FLOAT ? 0x1p-150 : 0x1p-1074;   /* half the least subnormal, up */
+	const double u = prec_fmt(prec)->u;
+	const double eta = fmax(prec_fmt(prec)->sub_step / 2, 0x1p-1074);   /* half the least subnormal, up */
 	const double rho = up(u + 2 * eta);           /* | |loc| - 1 | <= rho */
 	const double l1 = up(1.0 + rho), l2 = up(l1 * l1);
 	double qhi, qlo, b1sq, b2sq, nsq, A, C, W, e, dn, dc;
@@ -457,6 +457,8 @@ void bound_set_arith(bound_ctx *b, const arith_profile *p)
 }
 
 int bound_unbounded_op(const bound_ctx *b) { return b->unb_op; }
+
+int bound_overflow_seen(bound_ctx *b) { return mvf_overflow_seen(b->c->m); }
 
 double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop)
 {

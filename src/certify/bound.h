@@ -26,6 +26,10 @@ double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x);
    allowance left some box without a bound since then (-1: none). */
 void bound_set_arith(bound_ctx *b, const arith_profile *p);
 int  bound_unbounded_op(const bound_ctx *b);
+/* Whether some box since the last call had a path whose value may exceed
+   the format's largest finite value (an overflow: binary16's 65504), which
+   left it without a bound (reset by the call). */
+int  bound_overflow_seen(bound_ctx *b);
 /* The same with terms of frisvad_rotate's bound left out, which makes it
    unsound: tests/test_certify_dir.c shows that its checks catch that. */
 #define BOUND_DROP_DOT 1u   /* the rounding of w's dot products */

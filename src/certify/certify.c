@@ -20,6 +20,7 @@
 #include "found.h"
 #include "keys.h"
 #include "checkpoint.h"
+#include "certify_half.h"
 #include <inttypes.h>
 #include <signal.h>
 
@@ -50,6 +51,9 @@ typedef struct {
 	double ck_every;        /* --checkpoint-every S */
 	const unsigned char *frozen;   /* per group: re-used whole (--reuse), not refined */
 	int nreused;            /* groups re-used */
+	int half;               /* --precision half: certify_half.c */
+	int set_other;          /* an option that --precision half does not take */
+	long depth, az;         /* --depth, --azimuths (half only; -1: default) */
 } cert_cli;
 
 /* What the tasks commit to: the results, and the checkpoint. */
@@ -77,7 +81,7 @@ static int writer(void) { return !cert_distribute || cert_distribute->rank == 0;
 static void usage(FILE *f)
 {
 	fprintf(f,
-	"usage: onbstudy certify [--methods LIST] [--precision float|double|both] [--out DIR]\n"
+	"usage: onbstudy certify [--methods LIST] [--precision float|double|both|half] [--out DIR]\n"
 	"                        [--budget N] [--samples N] [--sectors N] [--tolerance T]\n"
 	"                        [--band LO,HI] [--starts FILE[,FILE...]] [--seed S]\n"
 	"                        [--fma] [--arith PROFILE] [--quick] [--quiet] [--resume DIR]\n"
@@ -103,7 +107,18 @@ static void usage(FILE *f)
 	"walks, boxes, box probes, images and refinement; the totals on stderr and\n"
 	"in certify.csv's '# profile' line).\n\n"
 	"  --methods LIST    comma-separated registry names, or all (default)\n"
-	"  --precision P     float, double or both (default both)\n"
+	"  --precision P     float, double or both (default both); half: binary16 alone\n"
+	"                    (certify_half.c): per region, the bound beside a scan of every\n"
+	"                    binary16 n.z of the band at --azimuths A per sector (default\n"
+	"                    16, --quick 4), halving a region up to --depth D times\n"
+	"                    (default 6, --quick 3) while the bound is above twice what\n"
+	"                    the scan found; status proven, non-finite (a half basis\n"
+	"                    with a NaN or an infinity: no bound), overflow (a value may\n"
+	"                    exceed 65504) or unbounded (no enclosure: an underflowing\n"
+	"                    length near a pole); writes DIR/certify-half.csv.  Takes\n"
+	"                    --methods, --sectors, --band, --quick, --quiet and --out\n"
+	"                    --depth and --azimuths\n");
+	fprintf(f,
 	"  --budget N        boxes bounded per region at most (default 6000)\n"
 	"  --samples N       inputs sampled per region before the boxes (default 1000)\n"
 	"  --sectors N       azimuth sectors (default 8)\n"
@@ -272,6 +287,24 @@ static int parse_band(const char *s, cert_cli *c)
 	return 0;
 }
 
+/* --precision: float, double or both (certify.c), or half (certify_half.c) */
+static int parse_precision(const char *arg, cert_cli *c)
+{
+	int on[PREC_COUNT];
+	c->half = strcmp(arg, "half") == 0;
+	return c->half ? cli_precision_half("--precision", arg, on) : cli_precision("--precision", arg, c->prec_on);
+}
+
+/* --precision half takes its own options alone, and they go with it alone. */
+static int half_options_bad(const cert_cli *c)
+{
+	if (c->half ? !c->set_other : c->depth < 0 && c->az < 0)
+		return 0;
+	study_error(c->half ? "--precision half takes --methods, --sectors, --band, --depth, --azimuths, --quick, "
+	                      "--quiet and --out alone" : "--depth and --azimuths go with --precision half");
+	return 1;
+}
+
 static int parse(int argc, char **argv, cert_cli *c)
 {
 	static const struct option lo[] = {
@@ -285,6 +318,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "resume", required_argument, NULL, 'R' },
 		{ "reuse", required_argument, NULL, 'U' }, { "check-keys", required_argument, NULL, 'K' },
 		{ "checkpoint-every", required_argument, NULL, 'E' },
+		{ "depth", required_argument, NULL, 'D' }, { "azimuths", required_argument, NULL, 'Z' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args a;
@@ -292,6 +326,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 	unsigned long long u;
 	int v, budget_set = 0, samples_set = 0, sectors_set = 0;
 	memset(c, 0, sizeof *c);
+	c->depth = c->az = -1;
 	c->methods = "all";
 	c->prec_on[0] = c->prec_on[1] = 1;
 	c->o.budget = 6000; c->o.samples = 1000; c->o.target = 1.25; c->o.tolerance = -1.0; c->o.seed = 1;
@@ -303,7 +338,9 @@ static int parse(int argc, char **argv, cert_cli *c)
 		switch (v) {
 		case CLI_HELP: usage(stdout); cli_end(&a); return -1;
 		case 'm': c->methods = a.arg; break;
-		case 'p': if (cli_precision("--precision", a.arg, c->prec_on)) goto bad; break;
+		case 'p': if (parse_precision(a.arg, c)) goto bad; break;
+		case 'D': if (parse_int("--depth", a.arg, 0, 20, &c->depth)) goto bad; break;
+		case 'Z': if (parse_int("--azimuths", a.arg, 1, 4096, &c->az)) goto bad; break;
 		case 'o': c->out = a.arg; break;
 		case 'b': if (parse_int("--budget", a.arg, 1, 1000000, &l)) goto bad; c->o.budget = l; budget_set = 1; break;
 		case 'n': if (parse_int("--samples", a.arg, 0, 100000000, &l)) goto bad; c->o.samples = l; samples_set = 1; break;
@@ -342,8 +379,11 @@ static int parse(int argc, char **argv, cert_cli *c)
 			break;
 		default: goto bad;
 		}
+		c->set_other |= v > 0 && strchr("bntSTFARUKE", v) != NULL;
 	}
 	if (cli_no_rest(&a))
+		goto bad;
+	if (half_options_bad(c))
 		goto bad;
 	if (c->arith_given && c->fma) {
 		study_error("--arith and --fma exclude each other (a profile's contraction covers the +fma copies)");
@@ -1487,6 +1527,15 @@ int cmd_certify(int argc, char **argv)
 	memset(&ctl, 0, sizeof ctl);
 	if ((r = parse(argc, argv, &c)) != 0)
 		return r < 0 ? 0 : r;
+	if (c.half) {
+		ch_opts h;
+		memset(&h, 0, sizeof h);
+		h.methods = c.methods; h.out = c.out; h.sectors = c.sectors; h.quiet = c.quiet;
+		h.band = c.band; h.band_lo = c.band_lo; h.band_hi = c.band_hi;
+		h.depth = c.depth >= 0 ? (int)c.depth : c.quick ? 3 : 6;
+		h.az = c.az >= 0 ? (int)c.az : c.quick ? 4 : 16;
+		return cert_half_run(&h);
+	}
 	if (c.fma && !fma_available()) {
 		study_error("--fma: this CPU or build has no FMA");
 		return ONB_EXIT_USAGE;

@@ -36,7 +36,7 @@ const cm_method *cm_find_fma(const char *name);
    model, or NULL past the last. */
 const char *cm_fma_name(size_t i);
 /* The kernel's operations on n, writing b1 (out[0..2]) and b2 (out[3..5])
-   in precision P (PREC_FLOAT or PREC_DOUBLE). */
+   in precision P (PREC_FLOAT, PREC_DOUBLE or PREC_HALF). */
 void cm_run(cm *c, const cm_method *m, int P, const cv n[3], cv out[6]);
 
 #endif

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <mpfr.h>
 #include "regions.h"
+#include "inputs/inputs.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 /* The error of cert_phi_deg's azimuth, in radians, with a margin of 6
@@ -36,7 +37,8 @@ int cert_in_region(const cert_region *r, const double n[3])
    in 1 - n.z near +1 (whole decades), linear steps of 0.3 in between. */
 static size_t band_edges(int prec, double *e, size_t cap)
 {
-	const int lo_dec = prec == PREC_FLOAT ? 7 : 16;
+	/* binary16's values next to -1 are 2^-11 = 4.9e-4 apart: 10^-4 is the pole */
+	const int lo_dec = prec == PREC_FLOAT ? 7 : prec == PREC_HALF ? 4 : 16;
 	size_t n = 0;
 	int k;
 	e[n++] = -1.0;
@@ -84,9 +86,46 @@ size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, 
 	return m;
 }
 
+/* Binary16's grid is coarse enough to matter: the inputs' n.z are the
+   binary16 values z1..z2 of the band, so u.z lies within half a gap of
+   them (the rounding cells of z1 and z2), not within the band widened by
+   u; at the pole, u.z >= -1 + 2^-12 for n.z >= -1 + 2^-11, where the
+   widened band reaches -1 and Frisvad's 1/(1 + z) has no bound.  A band
+   without a binary16 value is empty (half_band_empty). */
+static void half_grid(const cert_region *r, double *z1, double *z2)
+{
+	*z1 = prec_half_round(r->nz_lo);
+	if (*z1 < r->nz_lo)
+		*z1 = fmt_step(*z1, 1, PREC_HALF);
+	*z2 = prec_half_round(r->nz_hi);
+	if (*z2 > r->nz_hi)
+		*z2 = fmt_step(*z2, -1, PREC_HALF);
+	*z1 = fmax(*z1, -1.0);
+	*z2 = fmin(*z2, 1.0);
+}
+
+int half_band_empty(const cert_region *r)
+{
+	double z1, z2;
+	half_grid(r, &z1, &z2);
+	return z1 > z2;
+}
+
+static void half_band(const cert_region *r, mvf_box *b)
+{
+	double z1, z2;
+	half_grid(r, &z1, &z2);
+	if (z1 > z2)
+		return;
+	b->nz_lo = fmax(b->nz_lo, z1);
+	b->nz_hi = fmin(b->nz_hi, z2);
+	b->z_lo = fmax(b->z_lo, z1 - 0.5 * (z1 - fmt_step(z1, -1, PREC_HALF)));
+	b->z_hi = fmin(b->z_hi, z2 + 0.5 * (fmt_step(z2, 1, PREC_HALF) - z2));
+}
+
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 {
-	const double u = prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53, eta = prec == PREC_FLOAT ? 0x1p-149 : 0x1p-1074;
+	const double u = prec_fmt(prec)->u, eta = prec_fmt(prec)->sub_step;
 	/* relative widening: |u.z| <= |n.z| / (1 - T) with a tolerance */
 	const double w = tolerance >= 0 ? tolerance / (1.0 - tolerance) : u;
 	double zmax, rmin, dphi;
@@ -102,6 +141,8 @@ void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 	b->zpoint = b->dz_lo = b->dz_hi = 0.0;
 	b->z_lo = fmax(-1.0, r->nz_lo - w * fabs(r->nz_lo) * 1.01 - eta);
 	b->z_hi = fmin(1.0, r->nz_hi + w * fabs(r->nz_hi) * 1.01 + eta);
+	if (prec == PREC_HALF && tolerance < 0)
+		half_band(r, b);
 	zmax = fmax(fabs(b->z_lo), fabs(b->z_hi));   /* r = sqrt(1 - z^2) is least there */
 	rmin = sqrt(fmax(0.0, (1.0 - zmax) * (1.0 + zmax)));
 	/* the azimuth of n differs from u's by at most 2u + 2 eta / r radians
@@ -114,7 +155,9 @@ void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b)
 	if (tolerance >= 0)
 		dphi = 0.0;
 	dphi += PHI_SLACK;
-	if (!(dphi < 1e-3)) {
+	/* binary16's 2u alone is 1e-3 rad: a sector of 8 or fewer keeps its
+	   azimuths there up to 0.02 rad */
+	if (!(dphi < (prec == PREC_HALF ? 0.02 : 1e-3))) {
 		b->phi_lo = 0.0;
 		b->phi_hi = 360.0 * DEG;
 	} else {

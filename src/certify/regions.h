@@ -23,6 +23,8 @@ size_t regions_band(int prec, int nsec, double lo, double hi, cert_region *out, 
 /* The box of real unit vectors u whose rounding (or, with a tolerance,
    whose scaling) can land in r: r widened by the input's own rounding. */
 void region_box(const cert_region *r, int prec, double tolerance, mvf_box *b);
+/* 1 when band r holds no binary16 value (no input in half). */
+int half_band_empty(const cert_region *r);
 
 /* Whether the closure of region r meets the singular set of kernel k (its
    family's, src/families/). */

@@ -46,9 +46,11 @@ int  cm_backend(const cm *c);
    an interval that is not finite, a path that no point can take). */
 int  cm_failed(const cm *c);
 
-/* Operations.  Each rounds once to format f (PREC_FLOAT or PREC_DOUBLE;
-   PREC_HALF in CM_EXEC only, through MPFR at 11 bits with binary16's
-   range and subnormals: CM_MVF has no half model yet). */
+/* Operations.  Each rounds once to format f (PREC_FLOAT, PREC_DOUBLE or
+   PREC_HALF: CM_EXEC rounds to binary16 through MPFR at 11 bits with its
+   range and subnormals; CM_MVF bounds a rounding to any of the three with
+   the format's u, smallest normal and subnormal step from prec_fmt, and
+   fails the run where a value may exceed the format's largest finite). */
 cv cm_cst(cm *c, double v);              /* exact constant                  */
 cv cm_add(cm *c, int f, cv a, cv b);
 cv cm_sub(cm *c, int f, cv a, cv b);

@@ -99,6 +99,15 @@ enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG }
 mvf *mvf_new(void);
 void mvf_free(mvf *m);
 int  mvf_failed(const mvf *m);
+/* The run failed because a value may exceed its format's largest finite
+   value (binary16's 65504: a rounding there may overflow to infinity);
+   mvf_overflow_seen: whether any run did since the last call (reset). */
+int  mvf_overflowed(const mvf *m);
+int  mvf_overflow_seen(mvf *m);
+/* Tests only: the model of format f with a significand of `bits` bits
+   (u = 2^-bits; binary16's 11 as 12 is a mutant whose bounds a scan of
+   the kernels must break); bits 0 restores the format. */
+void mvf_mutate_format(int f, int bits);
 void mvf_abandon(mvf *m);
 int  mvf_no_point(const mvf *m);   /* the path is infeasible for the box */
 int  mvf_zero_e(const mvf *m);

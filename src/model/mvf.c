@@ -107,6 +107,8 @@ struct mvf {
 	cv st_a[16], st_b[16]; /* a != b for the actual values (branches) */
 	int nst;
 	int failed;
+	int overflow;          /* a failure of this run: a value may overflow */
+	int overflow_seen;     /* ... of some run since mvf_overflow_seen asked */
 	int no_point;          /* two enclosures of one value are disjoint: no
 	                          input of the box takes the path */
 	int zero_e;            /* every e is 0: values only, no gradients */
@@ -191,6 +193,15 @@ void mvf_free(mvf *m)
 
 int mvf_failed(const mvf *m) { return m->failed; }
 
+int mvf_overflowed(const mvf *m) { return m->overflow; }
+
+int mvf_overflow_seen(mvf *m)
+{
+	const int r = m->overflow_seen;
+	m->overflow_seen = 0;
+	return r;
+}
+
 int mvf_no_point(const mvf *m) { return m->no_point; }
 
 /* The rest of this run is not wanted (a path no point of the box takes):
@@ -200,8 +211,62 @@ void mvf_abandon(mvf *m) { m->failed = 1; }
 /* No gradients in this run: MVF_VALUES, MVF_AT_ZERO and MVF_AT_MID. */
 static int no_grad(const mvf *m) { return m->nograd || (m->zero_e && !m->centred); }
 
-static double unit_round(int f) { return f == PREC_FLOAT ? 0x1p-24 : 0x1p-53; }
-static double normal_min(int f) { return f == PREC_FLOAT ? 0x1p-126 : 0x1p-1022; }
+/* The format's parameters (common/prec.h's prec_fmt: binary32, binary64,
+   binary16): unit roundoff, smallest normal, and half the subnormal step
+   (the largest error of a rounding that underflows; 2^-1075 is no double,
+   so 2^-1074 there). */
+static prec_format mutant[PREC_COUNT];   /* mvf_mutate_format: bits > 0 */
+
+static const prec_format *fmt_of(int f)
+{
+	const int i = f >= 0 && f < PREC_COUNT ? f : PREC_DOUBLE;
+	return mutant[i].bits > 0 ? &mutant[i] : prec_fmt(i);
+}
+
+void mvf_mutate_format(int f, int bits)
+{
+	if (f < 0 || f >= PREC_COUNT)
+		return;
+	mutant[f] = *prec_fmt(f);
+	mutant[f].bits = bits;
+	mutant[f].u = ldexp(1.0, -bits);
+	mutant[f].sub_step = ldexp(1.0, mutant[f].emin - bits + 1);
+	if (bits <= 0)
+		mutant[f].bits = 0;
+}
+
+static double unit_round(int f) { return fmt_of(f)->u; }
+static double normal_min(int f) { return fmt_of(f)->normal_min; }
+static double tiny_of(int f)
+{
+	const double t = fmt_of(f)->sub_step / 2;
+	return t > 0.0 ? t : fmt_of(f)->sub_step;
+}
+
+/* Every value of format a is one of format f (binary16 in binary32 in
+   binary64: the significands and the exponent ranges nest). */
+static int fmt_in(int a, int f) { return prec_fmt(a)->bits <= prec_fmt(f)->bits; }
+
+/* Value x is in format f: its format's values are, or it is a constant
+   that f represents (1 in binary16, which mvf_cst marks a float). */
+static int val_in(const mval *x, int f)
+{
+	return fmt_in(x->fmt, f) || (x->is_cst && (f == PREC_HALF ? prec_half_round(x->cval) == x->cval
+	                                                          : f == PREC_DOUBLE || (double)(float)x->cval == x->cval));
+}
+
+/* |V| can exceed format f's largest finite value: a rounding to f there
+   may overflow to infinity, which no error term bounds.  The run fails
+   (its box is unbounded) and says why (mvf_overflowed). */
+static int may_overflow(mvf *m, mpfi_srcptr v, int f)
+{
+	mpfi_mag(m->f1, v);
+	if (mpfr_cmp_d(m->f1, fmt_of(f)->max) <= 0)
+		return 0;
+	m->overflow = m->overflow_seen = 1;
+	m->failed = 1;
+	return 1;
+}
 
 /* A fresh value slot with an empty gradient. */
 static cv fresh(mvf *m, int fmt)
@@ -380,7 +445,7 @@ cv mvf_cst(mvf *m, double v)
    rounding any value of V to nearest); 0 when V = {0}. */
 static double half_ulp_of(mvf *m, mpfi_srcptr v, int f)
 {
-	const int p = f == PREC_FLOAT ? 24 : 53, emin = f == PREC_FLOAT ? -126 : -1022;
+	const int p = fmt_of(f)->bits, emin = fmt_of(f)->emin;
 	long e;
 	double h;
 	mpfi_mag(m->f1, v);
@@ -435,6 +500,8 @@ static void round_to_cap(mvf *m, cv r, int f, double cap)
 		m->failed = 1;
 		return;
 	}
+	if (may_overflow(m, x->v, f))
+		return;
 	if (m->zero_e || (h = fmin(half_ulp_of(m, x->v, f), cap)) == 0.0)
 		return;                                   /* v = 0: exact */
 	set_grad(x, new_var(m, h), m->one);
@@ -450,7 +517,7 @@ static void round_to(mvf *m, cv r, int f) { round_to_cap(m, r, f, INFINITY); }
 static double round_sum_cap(mvf *m, const mval *a, const mval *b, int f)
 {
 	double ca, cb;
-	if (a->fmt > f || b->fmt > f)
+	if (!val_in(a, f) || !val_in(b, f))
 		return INFINITY;
 	mpfi_mag(m->f1, a->v);
 	ca = mpfr_get_d(m->f1, MPFR_RNDU);
@@ -476,7 +543,7 @@ static int is_pow2(const mval *x)
 static int sterbenz(mvf *m, const mval *a, const mval *b, int neg_b, int f)
 {
 	mpfi_srcptr y = b->v;
-	if (a->fmt > f || b->fmt > f)
+	if (!val_in(a, f) || !val_in(b, f))
 		return 0;
 	if (neg_b) {
 		mpfi_neg(m->t1, b->v);
@@ -513,23 +580,23 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 	case MVF_NEG:
 		return 1;
 	case MVF_CVT:
-		return f == PREC_DOUBLE || a->fmt == PREC_FLOAT;
+		return val_in(a, f);
 	case MVF_MUL:
 		if (is_zero(a) || is_zero(b))
 			return 1;
-		if (((is_cst(a, 1.0) || is_cst(a, -1.0)) && b->fmt <= f) ||
-		    ((is_cst(b, 1.0) || is_cst(b, -1.0)) && a->fmt <= f))
+		if (((is_cst(a, 1.0) || is_cst(a, -1.0)) && val_in(b, f)) ||
+		    ((is_cst(b, 1.0) || is_cst(b, -1.0)) && val_in(a, f)))
 			return 1;
-		if (f == PREC_DOUBLE && a->fmt == PREC_FLOAT && b->fmt == PREC_FLOAT)
+		if (f == PREC_DOUBLE && val_in(a, PREC_FLOAT) && val_in(b, PREC_FLOAT))
 			return 1; /* 24 + 24 bits fit in 53 */
-		if ((is_pow2(a) && b->fmt <= f) || (is_pow2(b) && a->fmt <= f)) {
-			mpfi_mig(m->f1, r->v);
+		if ((is_pow2(a) && val_in(b, f)) || (is_pow2(b) && val_in(a, f))) {
+			mpfi_mig(m->f1, r->v);   /* no underflow; may_overflow (op_value) sees the top */
 			return mpfr_cmp_d(m->f1, normal_min(f)) >= 0;
 		}
 		return 0;
 	case MVF_ADD:
 	case MVF_SUB:
-		if ((is_zero(a) && b->fmt <= f) || (is_zero(b) && a->fmt <= f))
+		if ((is_zero(a) && val_in(b, f)) || (is_zero(b) && val_in(a, f)))
 			return 1;
 		return sterbenz(m, a, b, op == MVF_ADD, f);
 	default:
@@ -639,7 +706,6 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
    shared by the three components. */
 
 static double round_up_d(double x) { return nextafter(x, INFINITY); }
-static double tiny_of(int f) { return f == PREC_FLOAT ? 0x1p-150 : 0x1p-1074; }
 
 /* (1 + a)(1 + b) - 1 and (1 + a)/(1 + b) - 1, rounded up or down */
 static double rel_mul(mvf *m, double a, double b, int up)
@@ -1176,6 +1242,8 @@ static int norm_recip(mvf *m, int f, cv ir, cv ia, cv ib)
 	mpfi_interv_fr(r->v, m->f2, m->f1);
 	r->fmt = f;
 	r->opaque = 1;
+	if (may_overflow(m, r->v, f))
+		return 1;
 	track(m, MVF_DIV, f, 0, ir, ia, ib);
 	return 1;
 }
@@ -1362,7 +1430,7 @@ static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
 	static const mval none = { .ls_nb = 0, .ls_lo = 0.0, .ls_hi = 0.0, .ls_abs = 0.0 };
 	if (m->failed || m->zero_e)
 		return;
-	if (op == MVF_NEG || (op == MVF_CVT && a->fmt <= f)) {   /* exact: the same lengths */
+	if (op == MVF_NEG || (op == MVF_CVT && val_in(a, f))) {   /* exact: the same lengths */
 		r->ls_k = a->ls_k; r->ls_q = a->ls_q; r->ls_u = a->ls_u; r->ls_eta = a->ls_eta;
 		r->ls_qv = a->ls_qv; r->ls_sg = op == MVF_NEG ? -a->ls_sg : a->ls_sg;
 		if (op == MVF_CVT) {
@@ -1441,6 +1509,8 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		m->failed = 1;
 		return ir;
 	}
+	if (op != MVF_NEG && may_overflow(m, r->v, f))
+		return ir;
 	if (op == MVF_NEG) {
 		r->fmt = a->fmt;
 	} else if (!exact_op(m, op, f, a, b, r)) {
@@ -1451,7 +1521,7 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 	} else if (op == MVF_CVT) {
 		/* a widening keeps the value a float (so a product of two
 		   widened floats in double is exact), and a seed a seed */
-		if (a->fmt < r->fmt)
+		if (fmt_in(a->fmt, r->fmt))
 			r->fmt = a->fmt;
 		r->rsqrt_of = a->rsqrt_of;
 		r->seed_k = a->seed_k;
@@ -1463,6 +1533,23 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		if (mpfr_cmp_d(m->f1, normal_min(PREC_FLOAT)) >= 0) {
 			r->cvt_of = ia;
 			r->cvt_u = unit_round(PREC_FLOAT);
+		}
+	}
+	if (op == MVF_CVT && f == PREC_FLOAT && a->fmt == PREC_HALF) {   /* the float of a half x: x itself */
+		r->cvt_of = ia;
+		r->cvt_u = 0.0;
+	}
+	if (op == MVF_CVT && f == PREC_HALF && !exact && a->rsqrt_of >= 0) {
+		/* a float seed of 1/sqrt(x) rounded to half (the half kernels'
+		   invsqrt and rsqrt): r (1 + d)/sqrt(x), |d| <= u where normal */
+		mpfi_mig(m->f1, r->v);
+		if (mpfr_cmp_d(m->f1, normal_min(f)) >= 0) {
+			r->rsqrt_of = a->rsqrt_of;
+			r->seed_k = a->seed_k;
+			r->rel_lo = rel_mul(m, a->rel_lo - 1.0, -unit_round(f), 0) + 1.0;
+			r->rel_hi = rel_mul(m, a->rel_hi - 1.0, unit_round(f), 1) + 1.0;
+			r->rel_lo = nextafter(r->rel_lo, 0.0);
+			r->rel_hi = nextafter(r->rel_hi, INFINITY);
 		}
 	}
 	track(m, op, f, exact, ir, ia, ib);
@@ -1576,6 +1663,7 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->n = 0;
 	m->nvar = 0;
 	m->failed = 0;
+	m->overflow = 0;
 	m->no_point = 0;
 	m->grad_lost = 0;
 	m->unb_op = -1;
@@ -1644,13 +1732,13 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
    n.z given, |n.z - u.z| <= max(-dz_lo, dz_hi). */
 static void input_grid(mvf *m, const mvf_box *b, const cv in[3])
 {
-	const int p = b->prec == PREC_FLOAT ? 24 : 53;
+	const int p = fmt_of(b->prec)->bits;
 	int i;
 	for (i = 0; i < 3; i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_mig(m->f1, x->v);
 		if (mpfr_cmp_d(m->f1, normal_min(b->prec)) < 0)
-			x->quantum = b->prec == PREC_FLOAT ? 0x1p-149 : 0x1p-1074;
+			x->quantum = fmt_of(b->prec)->sub_step;
 		else
 			x->quantum = ldexp(1.0, (int)mpfr_get_exp(m->f1) - p);
 	}
@@ -2253,7 +2341,9 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 	const mval *x = &m->val[ix];
 	double e = newton_rel(m, f, ix, iy, k), olo, ohi;
 	mpfi_get_left(m->f1, x->v);
-	if (m->failed || e < 0.0 || mpfr_cmp_d(m->f1, f == PREC_FLOAT ? 0x1p-100 : 0x1p-1000) < 0) {
+	/* h = x/2, h y and (h y) y normal, y = (1 + e)/sqrt(x) finite */
+	if (m->failed || e < 0.0 ||
+	    mpfr_cmp_d(m->f1, f == PREC_FLOAT ? 0x1p-100 : f == PREC_HALF ? 0x1p-12 : 0x1p-1000) < 0) {
 		m->failed = 1;
 		return ir;
 	}

@@ -83,7 +83,7 @@ d="$T/late"
 OMPI_MCA_odls_base_sigkill_timeout=3 ONB_CERT_KILL_RANK=1 ONB_CERT_KILL=images:3 OMP_NUM_THREADS=1 \
 	$MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" --checkpoint-every 600 > /dev/null 2> "$d.err1"
 kept=$(sed -n 's/.*committed so far (first pass: \([0-9]*\) of \([0-9]*\) regions, images pass: \([0-9]*\),.*/\1 \2 \3/p' "$d.err1")
-set -- $kept
+set -- ${kept:-0 -1 0}   # (none said: a failure below, not an unset $1)
 [ $# -eq 3 ] && [ "$1" = "$2" ] && [ "$3" -gt 0 ] && [ "$3" -lt "$2" ] && ok ||
 	bad "killed in the images pass, no checkpoint due: kept '$kept': $(grep -v '^-' "$d.err1" | head -8)"
 OMP_NUM_THREADS=1 $MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" > "$d.out" 2> "$d.err"

@@ -4,7 +4,8 @@
  * len_squared_v2 from BLI_math_vector_inline.c) and Box3D's b3Perp,
  * b3Normalize, b3Cross (include/box3d/math_functions.h) as the contact
  * solver uses them (tangent1 = b3Perp(normal), tangent2 =
- * b3Cross(tangent1, normal)), written from each source at the commit its
+ * b3Cross(tangent1, normal)), and appleseed's Basis3<T>::build (basis.h,
+ * with vector.h's dot, normalize, operator/ and cross), written from each source at the commit its
  * registry row names, never from include/libonb/onb.h, on the sources'
  * float arrays and structs.  Both libraries are float only: the double
  * rows are the same source with the scalar type double and the constants
@@ -107,14 +108,72 @@ static void ind_box3dd(Vec3d n, Vec3d *b1, Vec3d *b2)
 	*b1 = vd(tangent1.x, tangent1.y, tangent1.z); *b2 = vd(tangent2.x, tangent2.y, tangent2.z);
 }
 
+/* ---- appleseed foundation/math/basis.h (Basis3<T>::build) and vector.h
+   (dot as a loop from T(0.0), norm = sqrt(square_norm), normalize = v /
+   norm with the float/double operator/ as v * (1 / rhs), cross) ---- */
+#define APPLESEED_MATH(T, S, SQRT, ABS) \
+typedef struct { T x, y, z; } asVector3_##S; \
+static T as_comp_##S(const asVector3_##S *v, int i) { return i == 0 ? v->x : i == 1 ? v->y : v->z; } \
+static T as_dot_##S(asVector3_##S lhs, asVector3_##S rhs) \
+{ \
+	T result = (T)0.0; \
+	int i; \
+	for (i = 0; i < 3; ++i) \
+		result += as_comp_##S(&lhs, i) * as_comp_##S(&rhs, i); \
+	return result; \
+} \
+static asVector3_##S as_normalize_##S(asVector3_##S v) \
+{ \
+	const T nrm = SQRT(as_dot_##S(v, v)); \
+	const T rcp = (T)1.0 / nrm; \
+	asVector3_##S r = { v.x * rcp, v.y * rcp, v.z * rcp }; \
+	return r; \
+} \
+static asVector3_##S as_cross_##S(asVector3_##S lhs, asVector3_##S rhs) \
+{ \
+	asVector3_##S result; \
+	result.x = lhs.y * rhs.z - rhs.y * lhs.z; \
+	result.y = lhs.z * rhs.x - rhs.z * lhs.x; \
+	result.z = lhs.x * rhs.y - rhs.x * lhs.y; \
+	return result; \
+} \
+static void as_basis3_build_##S(asVector3_##S normal, asVector3_##S *m_u, asVector3_##S *m_v) \
+{ \
+	asVector3_##S m_n = normal, u; \
+	if (ABS(m_n.x) < ABS(m_n.y)) { \
+		if (ABS(m_n.x) < ABS(m_n.z)) { u.x = (T)0.0; u.y = -m_n.z; u.z = m_n.y; } \
+		else { u.x = -m_n.y; u.y = m_n.x; u.z = (T)0.0; } \
+	} else { \
+		if (ABS(m_n.y) < ABS(m_n.z)) { u.x = -m_n.z; u.y = (T)0.0; u.z = m_n.x; } \
+		else { u.x = -m_n.y; u.y = m_n.x; u.z = (T)0.0; } \
+	} \
+	*m_u = as_normalize_##S(u); \
+	*m_v = as_cross_##S(*m_u, m_n); \
+}
+APPLESEED_MATH(float, f, sqrtf, fabsf)
+APPLESEED_MATH(double, d, sqrt, fabs)
+static void ind_appleseedf(Vec3f n, Vec3f *b1, Vec3f *b2)
+{
+	asVector3_f nn = { n.x, n.y, n.z }, u, v;
+	as_basis3_build_f(nn, &u, &v);
+	*b1 = vf(u.x, u.y, u.z); *b2 = vf(v.x, v.y, v.z);
+}
+static void ind_appleseedd(Vec3d n, Vec3d *b1, Vec3d *b2)
+{
+	asVector3_d nn = { n.x, n.y, n.z }, u, v;
+	as_basis3_build_d(nn, &u, &v);
+	*b1 = vd(u.x, u.y, u.z); *b2 = vd(v.x, v.y, v.z);
+}
+
 /* ids 950 and up (the rows INDEP_WILD_B5_ROWS in tests/indep.h's table) */
-enum { IW_BLENDER = 950, IW_BOX3D };
+enum { IW_BLENDER = 950, IW_BOX3D, IW_APPLESEED };
 #define INDEP_WILD_B5_SWITCH(S, V) \
 static int indep_wild_b5_##S(int id, V n, V *b1, V *b2) \
 { \
 	switch (id) { \
 	case IW_BLENDER: ind_blender##S(n, b1, b2); return 1; \
 	case IW_BOX3D:   ind_box3d##S(n, b1, b2); return 1; \
+	case IW_APPLESEED: ind_appleseed##S(n, b1, b2); return 1; \
 	default:         return 0; \
 	} \
 }
@@ -123,6 +182,7 @@ INDEP_WILD_B5_SWITCH(d, Vec3d)
 /* the table rows, in registry order (after bx) */
 #define INDEP_WILD_B5_ROWS \
 	{ "blender", onb_blender, onb_blenderf, IW_BLENDER, 0 }, \
-	{ "box3d", onb_box3d, onb_box3df, IW_BOX3D, 0 },
+	{ "box3d", onb_box3d, onb_box3df, IW_BOX3D, 0 }, \
+	{ "appleseed", onb_appleseed, onb_appleseedf, IW_APPLESEED, 0 },
 
 #endif /* INDEP_WILD_B5_H */

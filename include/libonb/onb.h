@@ -54,6 +54,7 @@
  *     onb_bx               onb_bxf                bgfx bx::calcTangentFrame
  *     onb_blender          onb_blenderf           Blender BLI ortho_basis_v3v3_v3
  *     onb_box3d            onb_box3df             Box3D b3Perp + contact tangents
+ *     onb_appleseed        onb_appleseedf         appleseed Basis3::build
  *     onb_godot_fixed      onb_godot_fixedf       this project: Godot fixed
  *     onb_bx_fixed         onb_bx_fixedf          this project: bx fixed
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
@@ -2467,6 +2468,52 @@ static inline void ONB__K(box3df)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b2->z = b1->x * n.y - b1->y * n.x;
 }
 
+/* ------------------------------------------------------------------ */
+/* appleseed (appleseed foundation Basis3<T>::build(normal))            */
+/* ------------------------------------------------------------------ */
+/* Hughes-Moller's choice of the smallest |component| (strict <: |x| <
+   |y| ? (|x| < |z| ? x : z) : (|y| < |z| ? y : z)), u = (0, -z, y),
+   (-z, 0, x) or (-y, x, 0) with that component zeroed; foundation's
+   normalize: n = sqrt(dot(u, u)), the dot a loop from 0 ((0 + u.x^2) +
+   u.y^2) + u.z^2 (0 + u.x^2 = u.x^2 exactly, as written here), and the
+   float and double operator/ multiply by 1/n; v = cross(u, n).  The basis
+   is (u, n, v); as (b1, b2) = (u, v) it is left-handed (u x v = -n).
+   Basis3f (float) and Basis3d (double) both ship.  Handedness -1. */
+static inline void ONB__K(appleseed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 u;
+	double s;
+	if (fabs(n.x) < fabs(n.y)) {
+		if (fabs(n.x) < fabs(n.z)) { u.x = 0.0; u.y = -n.z; u.z = n.y; }
+		else { u.x = -n.y; u.y = n.x; u.z = 0.0; }
+	} else {
+		if (fabs(n.y) < fabs(n.z)) { u.x = -n.z; u.y = 0.0; u.z = n.x; }
+		else { u.x = -n.y; u.y = n.x; u.z = 0.0; }
+	}
+	s = 1.0 / sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+	b1->x = u.x * s; b1->y = u.y * s; b1->z = u.z * s;
+	b2->x = b1->y * n.z - n.y * b1->z;
+	b2->y = b1->z * n.x - n.z * b1->x;
+	b2->z = b1->x * n.y - n.x * b1->y;
+}
+static inline void ONB__K(appleseedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f u;
+	float s;
+	if (fabsf(n.x) < fabsf(n.y)) {
+		if (fabsf(n.x) < fabsf(n.z)) { u.x = 0.0f; u.y = -n.z; u.z = n.y; }
+		else { u.x = -n.y; u.y = n.x; u.z = 0.0f; }
+	} else {
+		if (fabsf(n.y) < fabsf(n.z)) { u.x = -n.z; u.y = 0.0f; u.z = n.x; }
+		else { u.x = -n.y; u.y = n.x; u.z = 0.0f; }
+	}
+	s = 1.0f / sqrtf(u.x * u.x + u.y * u.y + u.z * u.z);
+	b1->x = u.x * s; b1->y = u.y * s; b1->z = u.z * s;
+	b2->x = b1->y * n.z - n.y * b1->z;
+	b2->y = b1->z * n.x - n.z * b1->x;
+	b2->z = b1->x * n.y - n.x * b1->y;
+}
+
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
    lines with the guard comparing n with the unit diagonal
    d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
@@ -2547,7 +2594,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(godot_fixed) X(bx_fixed) \
+	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \

@@ -736,6 +736,20 @@ void onb_box3dh(V n, V *b1, V *b2)
 	*b2 = hcross(*b1, n);
 }
 
+/* ---- appleseed: the smallest |component| (strict <, ties to z, then
+   to y over x), u with it zeroed, u * (1/sqrt(u.u)), b2 = cross(b1, n) ---- */
+void onb_appleseedh(V n, V *b1, V *b2)
+{
+	const H ax = habs(n.x), ay = habs(n.y), az = habs(n.z);
+	V u;
+	if (ax < ay)
+		u = ax < az ? hvec(H0, hneg(n.z), n.y) : hvec(hneg(n.y), n.x, H0);
+	else
+		u = ay < az ? hvec(hneg(n.z), H0, n.x) : hvec(hneg(n.y), n.x, H0);
+	*b1 = hscale(u, hdiv(H1, hsqrt(hdot(u, u))));
+	*b2 = hcross(*b1, n);
+}
+
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
 void onb_duff_wideh(V n, V *b1, V *b2)

@@ -76,6 +76,9 @@ static const onb_provenance P_BLENDER = { "github.com/blender/blender", "0c0030f
 static const onb_provenance P_BOX3D = { "github.com/erincatto/box3d", "30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c",
 	"include/box3d/math_functions.h:306-322", "MIT", "C", "float (Box3D has no double build; the double row is the same operations and 1000*FLT_MIN in double)",
 	"-ffp-contract=off (CMakeLists.txt:79-89); b3Normalize (:276-288: 0 at or below 1000*FLT_MIN), b2 = b3Cross(b1, n) (:350-357) as src/contact_solver.c:175-176" };
+static const onb_provenance P_APPLESEED = { "github.com/appleseedhq/appleseed", "022c1590d9dae40773df8c5000385889d3f893d0",
+	"src/appleseed/foundation/math/basis.h:175-236", "MIT", "C++", "T: Basis3f (float) and Basis3d (double) both ship",
+	"source-level IEEE (no FMA target); foundation/math/vector.h (read at 95b801be): normalize = v * (1/sqrt(dot)), dot a loop from 0, cross(u, n)" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -228,6 +231,8 @@ static const onb_method onb__table[] = {
 	  "n.x^2 + n.y^2 > FLT_EPSILON (2^-23)", +1, 0, NAN, 0, ONB__PTRS(blender), &P_BLENDER },
 	{ "box3d", "box3d", "Box3D b3Perp (x < -0.5 or 0.5 < x: (y, -x, 0), else (0, z, -y); b3Normalize) and the contact solver's tangent2 = b3Cross(b1, n)",
 	  "none", "n.x < -0.5 or 0.5 < n.x", -1, 0, NAN, 0, ONB__PTRS(box3d), &P_BOX3D },
+	{ "appleseed", "appleseed", "appleseed Basis3<T>::build(normal): u = Hughes-Moller's perpendicular (smallest |n_i| zeroed), normalized; v = cross(u, n); (b1, b2) = (u, v)",
+	  "none", "|n.x| < |n.y| ? (|n.x| < |n.z| ? x : z) : (|n.y| < |n.z| ? y : z) (ties to z, then y)", -1, 0, NAN, 0, ONB__PTRS(appleseed), &P_APPLESEED },
 	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
 	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },
 	{ "bx_fixed", "bx", "onbstudy, not shipped: bx::calcTangentFrame with pbrt-v3's branch |n.x| > |n.y|",

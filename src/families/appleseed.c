@@ -82,5 +82,6 @@ FAMILY_DECLARE(appleseed);
 const study_family family_appleseed = {
 	"appleseed", FAMILY_PASSES(appleseed), names, mpfr, FAMILY_PAIRS(appleseed), family_no_variant,
 	family_no_exact_zero, model, 3, zero_any_n, family_no_singular, family_meets_none,
+	family_no_fma_model,
 };
 #endif

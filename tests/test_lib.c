@@ -18,6 +18,10 @@
  *   - naive: b1 = e - n (n.e) has length sqrt(1 - (n.e)^2); its absolute
  *     error (~3u) is divided by that length when normalized, so
  *     D <= 12u (1 + 1/sqrt(1 - (n.e)^2)).
+ *   - rtao (not rtao_fixed): cross(n, 0.3 n + c) = cross(n, c) exactly,
+ *     of length |c| s with s the sine of the angle between n and c; the
+ *     rounding residue of 0.3 n x n (a few u) is divided by it:
+ *     D <= 12u (1 + 2/s).
  *   - frisvad family above t: |b1|^2 - 1 = nx^2 delta / (1 + nz)^2
  *     (Frisvad's Appendix B redone with |n|^2 = 1 + delta), and
  *     nx^2 <= 2 (1 + nz), so D <= 12u (1 + 2/(1 + nz)).  Below t, the fixed
@@ -115,6 +119,13 @@ static bound method_bound(const onb_method *m, long double nx, long double ny, l
 			return b;
 		}
 		c = 1.0L + 2.0L / (1.0L + ny);
+	} else if (strcmp(m->family, "rtao") == 0 && m->norm != ONB__WILD_FIXED) {
+		/* the helper c = (-0.72, 0.56, -0.34): cross(n, 0.3 n + c) has
+		   length |c| s, s = |n x c|/|c|, and the residue of 0.3 n x n (~u) */
+		const long double cx = -0.72L, cy = 0.56L, cz = -0.34L, cl = sqrtl(cx * cx + cy * cy + cz * cz);
+		const long double px = ny * cz - nz * cy, py = nz * cx - nx * cz, pz = nx * cy - ny * cx;
+		const long double sn = sqrtl(px * px + py * py + pz * pz) / cl;
+		c = 1.0L + (sn > 0 ? 2.0L / sn : 1e30L);
 	} else if (strcmp(m->family, "physx") == 0 && m->norm != ONB__WILD_FIXED && fabsl(ny) > (long double)0.9999f) {
 		/* PhysX's fallback b1 = (1, 0, 0): b1.n = n.x, |n.x| <= sqrt(1 - n.y^2) */
 		b.len = b.orth = sqrtl(ldmax(0.0L, 1.0L - ny * ny)) + 12.0L * u;
@@ -469,9 +480,9 @@ static void test_signed_zero_axes(void)
 						b1.x = p1.x; b1.y = p1.y; b1.z = p1.z; b2.x = p2.x; b2.y = p2.y; b2.z = p2.z;
 					}
 					d = measure(b1.x, b1.y, b1.z, b2.x, b2.y, b2.z, n.x, n.y, n.z);
-					/* cycles_cross111's b1 at an axis is (0, -1, 1)/sqrt(2) rounded: exactly
-					   orthogonal, not exactly unit */
-					irr = strcmp(ms[i].family, "cycles_cross111") == 0;
+					/* cycles_cross111's b1 at an axis is (0, -1, 1)/sqrt(2) rounded, rtao's
+					   b2 (0, -0.34, -0.56)/|.|-like: exactly orthogonal, not exactly unit */
+					irr = strcmp(ms[i].family, "cycles_cross111") == 0 || strcmp(ms[i].family, "rtao") == 0;
 					if (!(isfinite(b1.x) && isfinite(b1.y) && isfinite(b1.z) && isfinite(b2.x) && isfinite(b2.y) && isfinite(b2.z)
 					      && ((ms[i].flags & ONB_APPROX_NORM) || irr || diagonal || (d.len1 == 0 && d.len2 == 0)) && d.d1n == 0 && d.d2n == 0 && d.d12 == 0
 					      && (d.det > 0) == (ms[i].handedness > 0))) {

@@ -31,6 +31,10 @@
  *     onb_capsaicin        onb_capsaicinf         AMD Capsaicin GetOrthoVectors
  *     onb_capsaicin_fixed  onb_capsaicin_fixedf   this project: Capsaicin fixed
  *     onb_unity            onb_unityf             Unity SRP core GetLocalFrame
+ *     onb_willems          onb_willemsf           Sascha Willems' Vulkan pbribl
+ *     onb_gltf_viewer      onb_gltf_viewerf       Khronos glTF-Sample-Viewer generateTBN
+ *     onb_rtao             onb_rtaof              DirectX-Graphics-Samples RTAO
+ *     onb_rtao_fixed       onb_rtao_fixedf        this project: RTAO fixed
  *     onb_mitsuba3         onb_mitsuba3f          Mitsuba 3 coordinate_system
  *     onb_cycles_cross111  onb_cycles_cross111f   Blender Cycles make_orthonormals
  *     onb_cycles_cross111_avx2[f]                   ... as its AVX2 kernel (fmsub cross)
@@ -1086,6 +1090,136 @@ static inline void ONB__K(unityf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b1->x = c * n.x * a - 1.0f; b1->y = sz * b; b1->z = c;
 	b2->x = b; b2->y = n.y * ya - sz; b2->z = n.y;
 }
+
+/* ------------------------------------------------------------------ */
+/* Shader sources read under IEEE arithmetic (GLSL/HLSL float as C     */
+/* float, no mad contraction): willems, gltf_viewer, rtao              */
+/* ------------------------------------------------------------------ */
+/* cross(a, b) = (a.y*b.z - b.y*a.z, a.z*b.x - b.z*a.x, a.x*b.y -
+   b.x*a.y) (GLSL; HLSL's a.yzx*b.zxy - a.zxy*b.yzx is the same), the
+   products of onb.h's cross; normalize(v) = v / length(v): each component
+   divided by sqrt(dot(v, v)), dot = (x*x + y*y) + z*z. */
+static inline onb_vec3 onb__sh_cross(onb_vec3 a, onb_vec3 b)
+{
+	onb_vec3 r;
+	r.x = a.y * b.z - a.z * b.y; r.y = a.z * b.x - a.x * b.z; r.z = a.x * b.y - a.y * b.x;
+	return r;
+}
+static inline onb_vec3f onb__sh_crossf(onb_vec3f a, onb_vec3f b)
+{
+	onb_vec3f r;
+	r.x = a.y * b.z - a.z * b.y; r.y = a.z * b.x - a.x * b.z; r.z = a.x * b.y - a.y * b.x;
+	return r;
+}
+static inline onb_vec3 onb__sh_normalize(onb_vec3 v)
+{
+	const double l = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+	v.x /= l; v.y /= l; v.z /= l;
+	return v;
+}
+static inline onb_vec3f onb__sh_normalizef(onb_vec3f v)
+{
+	const float l = sqrtf(v.x * v.x + v.y * v.y + v.z * v.z);
+	v.x /= l; v.y /= l; v.z /= l;
+	return v;
+}
+
+/* willems (Sascha Willems' Vulkan samples, shaders/glsl/pbribl/
+   prefilterenvmap.frag importanceSample_GGX, GLSL float; the HLSL and
+   Slang copies are the same): up = (0,0,1) when abs(n.z) < 0.999 (NaN:
+   false), else (1,0,0); b1 = tangentX = normalize(cross(up, n)), b2 =
+   tangentY = normalize(cross(n, tangentX)).  Handedness +1.  On the unit
+   sphere |cross(up, n)|^2 >= 1 - 0.999^2: no singular direction.  The
+   double variant is the same code in double (0.999 a double). */
+static inline void ONB__K(willems)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 up;
+	up.x = 0.0; up.y = 0.0; up.z = 1.0;
+	if (!(fabs(n.z) < 0.999)) {
+		up.x = 1.0; up.z = 0.0;
+	}
+	*b1 = onb__sh_normalize(onb__sh_cross(up, n));
+	*b2 = onb__sh_normalize(onb__sh_cross(n, *b1));
+}
+static inline void ONB__K(willemsf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f up;
+	up.x = 0.0f; up.y = 0.0f; up.z = 1.0f;
+	if (!(fabsf(n.z) < 0.999f)) {
+		up.x = 1.0f; up.z = 0.0f;
+	}
+	*b1 = onb__sh_normalizef(onb__sh_crossf(up, n));
+	*b2 = onb__sh_normalizef(onb__sh_crossf(n, *b1));
+}
+
+/* gltf_viewer (Khronos glTF-Sample-Viewer, source/shaders/ibl_filtering.frag
+   generateTBN, GLSL mediump read as float): bitangent = (0,1,0); NdotUp =
+   dot(n, (0,1,0)) = (n.x*0 + n.y*1) + n.z*0; when 1 - abs(NdotUp) <=
+   0.0000001 the bitangent is (0,0,1) if NdotUp > 0 else (0,0,-1);
+   b1 = tangent = normalize(cross(bitangent, n)), b2 = cross(n, tangent),
+   the mat3 columns (tangent, bitangent, normal).  Handedness +1.  The guard
+   keeps |cross|^2 >= ~2e-7: no singular direction.  The double variant is
+   the same code in double (the threshold 1e-7 a double). */
+static inline void ONB__K(gltf_viewer)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double d = n.x * 0.0 + n.y * 1.0 + n.z * 0.0;
+	onb_vec3 up;
+	up.x = 0.0; up.y = 1.0; up.z = 0.0;
+	if (1.0 - fabs(d) <= 0.0000001) {
+		up.y = 0.0; up.z = d > 0.0 ? 1.0 : -1.0;
+	}
+	*b1 = onb__sh_normalize(onb__sh_cross(up, n));
+	*b2 = onb__sh_cross(n, *b1);
+}
+static inline void ONB__K(gltf_viewerf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	const float d = n.x * 0.0f + n.y * 1.0f + n.z * 0.0f;
+	onb_vec3f up;
+	up.x = 0.0f; up.y = 1.0f; up.z = 0.0f;
+	if (1.0f - fabsf(d) <= 0.0000001f) {
+		up.y = 0.0f; up.z = d > 0.0f ? 1.0f : -1.0f;
+	}
+	*b1 = onb__sh_normalizef(onb__sh_crossf(up, n));
+	*b2 = onb__sh_crossf(n, *b1);
+}
+
+/* rtao (DirectX-Graphics-Samples, D3D12RaytracingRealTimeDenoisedAmbient-
+   Occlusion RTAO/Shaders/RayGen.hlsli GetRandomRayDirection, HLSL float):
+   w = n, right = 0.3f*w + (-0.72f, 0.56f, -0.34f); v = normalize(cross(w,
+   right)), u = cross(v, w); the ray is sample.x*u + sample.y*v + sample.z*w:
+   b1 = u, b2 = v.  Handedness +1.  Exactly cross(w, right) = cross(w, c):
+   zero where n is parallel to c = (-0.72, 0.56, -0.34), O(1) defect near it
+   (NaN where the cross product rounds to 0).  fixed = 1 (rtao_fixed, not
+   shipped): c' = (0.56, 0.72, 0), orthogonal to c, in place of c where
+   abs(dot(w, c)) > 0.875 (within ~26 degrees of +-c), so |cross(w, c)| >=
+   ~0.42 and |cross(w, c')| >= ~0.82: the same frames at the six axes.
+   The double variant is the same code in double (the constants doubles). */
+static inline void onb__rtao(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2, int fixed)
+{
+	onb_vec3 c, r;
+	c.x = -0.72; c.y = 0.56; c.z = -0.34;
+	if (fixed && fabs(n.x * -0.72 + n.y * 0.56 + n.z * -0.34) > 0.875) {
+		c.x = 0.56; c.y = 0.72; c.z = 0.0;
+	}
+	r.x = 0.3 * n.x + c.x; r.y = 0.3 * n.y + c.y; r.z = 0.3 * n.z + c.z;
+	*b2 = onb__sh_normalize(onb__sh_cross(n, r));
+	*b1 = onb__sh_cross(*b2, n);
+}
+static inline void onb__rtaof(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2, int fixed)
+{
+	onb_vec3f c, r;
+	c.x = -0.72f; c.y = 0.56f; c.z = -0.34f;
+	if (fixed && fabsf(n.x * -0.72f + n.y * 0.56f + n.z * -0.34f) > 0.875f) {
+		c.x = 0.56f; c.y = 0.72f; c.z = 0.0f;
+	}
+	r.x = 0.3f * n.x + c.x; r.y = 0.3f * n.y + c.y; r.z = 0.3f * n.z + c.z;
+	*b2 = onb__sh_normalizef(onb__sh_crossf(n, r));
+	*b1 = onb__sh_crossf(*b2, n);
+}
+static inline void ONB__K(rtao)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__rtao(n, b1, b2, 0); }
+static inline void ONB__K(rtaof)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__rtaof(n, b1, b2, 0); }
+static inline void ONB__K(rtao_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) { onb__rtao(n, b1, b2, 1); }
+static inline void ONB__K(rtao_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) { onb__rtaof(n, b1, b2, 1); }
 
 /* filament_fixed (this project's fix of filament, not shipped code):
    Filament's formula for n.y >= 0 (-0 included), and below it Duff et
@@ -2591,7 +2725,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(hughes_moeller_rsqrt_nr) X(hughes_moeller_nonorm) \
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
-	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
+	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(willems) X(gltf_viewer) X(rtao) X(rtao_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(godot_fixed) X(bx_fixed) \

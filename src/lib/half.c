@@ -317,6 +317,41 @@ void onb_unityh(V n, V *b1, V *b2)
 	*b1 = hvec(hsub(hmul(hmul(c, n.x), a), H1), hmul(sz, b), c);
 	*b2 = hvec(b, hsub(hmul(n.y, ya), sz), n.y);
 }
+/* ---- shader sources: normalize(v) = v / sqrt(dot(v, v)) ---- */
+static V hnormalize_div(V v)
+{
+	const H l = hsqrt(hdot(v, v));
+	return hvec(hdiv(v.x, l), hdiv(v.y, l), hdiv(v.z, l));
+}
+/* willems: up = z when |n.z| < 0.999, else x */
+void onb_willemsh(V n, V *b1, V *b2)
+{
+	const V up = habs(n.z) < hcst(0.999) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
+	*b1 = hnormalize_div(hcross(up, n));
+	*b2 = hnormalize_div(hcross(n, *b1));
+}
+/* gltf_viewer: up = y, or +-z when 1 - |n.y| <= 1e-7 */
+void onb_gltf_viewerh(V n, V *b1, V *b2)
+{
+	const H d = hadd(hadd(hmul(n.x, H0), hmul(n.y, H1)), hmul(n.z, H0));
+	V up = hvec(H0, H1, H0);
+	if (hsub(H1, habs(d)) <= hcst(0.0000001))
+		up = hvec(H0, H0, d > H0 ? H1 : hneg(H1));
+	*b1 = hnormalize_div(hcross(up, n));
+	*b2 = hcross(n, *b1);
+}
+/* rtao, rtao_fixed: right = 0.3 n + c, b2 = normalize(n x right), b1 = b2 x n */
+static void rtaoh(V n, V *b1, V *b2, int fixed)
+{
+	V c = hvec(hcst(-0.72), hcst(0.56), hcst(-0.34)), r;
+	if (fixed && habs(hdot(n, c)) > hcst(0.875))
+		c = hvec(hcst(0.56), hcst(0.72), H0);
+	r = hvec(hadd(hmul(hcst(0.3), n.x), c.x), hadd(hmul(hcst(0.3), n.y), c.y), hadd(hmul(hcst(0.3), n.z), c.z));
+	*b2 = hnormalize_div(hcross(n, r));
+	*b1 = hcross(*b2, n);
+}
+void onb_rtaoh(V n, V *b1, V *b2)       { rtaoh(n, b1, b2, 0); }
+void onb_rtao_fixedh(V n, V *b1, V *b2) { rtaoh(n, b1, b2, 1); }
 void onb_filament_fixedh(V n, V *b1, V *b2)
 {
 	H a, b;

@@ -95,6 +95,15 @@ static const onb_provenance P_UNITY = { "github.com/Unity-Technologies/Graphics"
 	"Packages/com.unity.render-pipelines.core/ShaderLibrary/CommonLighting.hlsl:451-468", "LicenseRef-Unity-Companion-License", "HLSL",
 	"real: float (half where the platform defines real as half: not modelled)",
 	"IEEE (source level; FastSign from Common.hlsl: CopySign(1, z, true) = z >= 0 ? 1 : -1; a shader compiler may form mad: not modelled)" };
+static const onb_provenance P_WILLEMS = { "github.com/SaschaWillems/Vulkan", "9c8e787f96af0ea3a22791d8f70edb96246efe6c",
+	"shaders/glsl/pbribl/prefilterenvmap.frag:48-54", "MIT", "GLSL (the HLSL and Slang copies are the same)", "float",
+	"IEEE (source level: normalize(v) = v / sqrt(dot(v, v)), no contraction; GPU arithmetic is issue 42's)" };
+static const onb_provenance P_GLTF_VIEWER = { "github.com/KhronosGroup/glTF-Sample-Viewer", "b3a7e6680032ab858036e98792c90f9664963053",
+	"source/shaders/ibl_filtering.frag:91-114", "MIT", "GLSL (precision mediump float)", "mediump read as float",
+	"IEEE (source level: normalize(v) = v / sqrt(dot(v, v)), no contraction; another stored version, 06cfd88d, has the 1e-7 guard commented out)" };
+static const onb_provenance P_RTAO = { "github.com/microsoft/DirectX-Graphics-Samples", "357ade6ec6ff0d9dcadc48f35c7a28e37c0cdf7a",
+	"Samples/Desktop/D3D12Raytracing/src/D3D12RaytracingRealTimeDenoisedAmbientOcclusion/RTAO/Shaders/RayGen.hlsli:19-25", "MIT", "HLSL", "float",
+	"IEEE (source level: normalize(v) = v / sqrt(dot(v, v)), 0.3f*w + c two roundings; DXC may form mad: not modelled)" };
 static const onb_provenance P_MITSUBA3 = { "github.com/mitsuba-renderer/mitsuba3", "b45b0a930275114de0f8c34e8cf52775e176ca9a",
 	"include/mitsuba/core/vector.h:117-138", "BSD-3-Clause", "C++ (Dr.Jit dfccdd7967547efce49fb4a929c39e4474ea73e2)",
 	"Float: float (scalar_rgb), double (scalar_*_double)",
@@ -178,6 +187,14 @@ static const onb_method onb__table[] = {
 	  "none", "|n.z| = |n.x|", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(capsaicin_fixed), NULL },
 	{ "unity", "unity", "Unity SRP core GetLocalFrame: Reynolds' form of Duff's basis turned by 180 degrees, sz = FastSign(z), x*(y*a) grouping",
 	  "none", "n.z < 0 (FastSign: -0 takes +1)", +1, 0, NAN, 0, ONB__PTRS(unity), &P_UNITY },
+	{ "willems", "willems", "Sascha Willems' Vulkan pbribl importanceSample_GGX: up = z if abs(z) < 0.999 else x, b1 = normalize(cross(up, n)), b2 = normalize(cross(n, b1))",
+	  "none", "|n.z| = 0.999", +1, 0, NAN, 0, ONB__PTRS(willems), &P_WILLEMS },
+	{ "gltf_viewer", "gltf_viewer", "Khronos glTF-Sample-Viewer generateTBN: up = y, or +-z where 1 - abs(n.y) <= 1e-7; b1 = normalize(cross(up, n)), b2 = cross(n, b1)",
+	  "none", "1 - |n.y| = 1e-7", +1, 0, NAN, 0, ONB__PTRS(gltf_viewer), &P_GLTF_VIEWER },
+	{ "rtao", "rtao", "DirectX-Graphics-Samples RTAO GetRandomRayDirection: b2 = normalize(cross(n, 0.3 n + (-0.72, 0.56, -0.34))), b1 = cross(b2, n)",
+	  "n parallel to (-0.72, 0.56, -0.34): cross = 0 exactly, O(1) defect near it", "none", +1, 0, NAN, 0, ONB__PTRS(rtao), &P_RTAO },
+	{ "rtao_fixed", "rtao", "onbstudy, not shipped: RTAO with (0.56, 0.72, 0) in place of (-0.72, 0.56, -0.34) where abs(dot(n, that)) > 0.875",
+	  "none", "|n . (-0.72, 0.56, -0.34)| = 0.875", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(rtao_fixed), NULL },
 	{ "mitsuba3", "duff_branchless", "Mitsuba 3 coordinate_system: Duff Listing 3 through Dr.Jit, b2.y = fmadd(y, y*a, s) unfused",
 	  "none", "signbit(n.z) (-0 takes the lower branch)", +1, 0, NAN, ONB__EVAL_MITSUBA3, ONB__PTRS(mitsuba3), &P_MITSUBA3 },
 	{ "cycles_cross111", "cycles_cross111", "Blender Cycles make_orthonormals: b1 = normalize((1,1,1) x n), b2 = n x b1",

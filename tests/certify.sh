@@ -143,7 +143,7 @@ else
 fi
 
 # 8. bad input: exit 2, one line, nothing written
-for args in "--budget 0" "--tolerance -1" "--tolerance 0.5" "--precision half" "--methods nosuch" "--sectors 0" "--band 0.5" "--band 0.5,2" "--band 1,0" "stray"; do
+for args in "--budget 0" "--tolerance -1" "--tolerance 0.5" "--precision quad" "--depth 3" "--methods nosuch" "--sectors 0" "--band 0.5" "--band 0.5,2" "--band 1,0" "stray"; do
 	./onbstudy certify $args --out "$T/bad" >/dev/null 2>"$T/e"; rc=$?
 	[ $rc -eq 2 ] && [ "$(wc -l <"$T/e")" -eq 1 ] && [ ! -e "$T/bad/certify.csv" ] && ok || bad "certify $args: exit $rc, $(cat "$T/e")"
 done

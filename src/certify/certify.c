@@ -305,6 +305,30 @@ static int half_options_bad(const cert_cli *c)
 	return 1;
 }
 
+/* --arith NAME: the profile, and whether it differs from ieee. */
+static int parse_arith(const char *arg, cert_cli *c)
+{
+	char names[256];
+	if ((c->o.arith = arith_find(arg)) != NULL) {
+		c->arith_given = !arith_is_ieee(c->o.arith);
+		return 0;
+	}
+	arith_names(names, sizeof names);
+	study_error("--arith: unknown profile '%s' (one of: %s)", arg, names);
+	return 1;
+}
+
+/* --checkpoint-every SECONDS, >= 0. */
+static int parse_every(const char *arg, cert_cli *c)
+{
+	if (parse_double("--checkpoint-every", arg, &c->ck_every))
+		return 1;
+	if (c->ck_every >= 0.0)
+		return 0;
+	study_error("--checkpoint-every: expected seconds >= 0, not '%s'", arg);
+	return 1;
+}
+
 static int parse(int argc, char **argv, cert_cli *c)
 {
 	static const struct option lo[] = {
@@ -358,25 +382,11 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'B': if (parse_band(a.arg, c)) goto bad; break;
 		case 'T': c->starts = a.arg; break;
 		case 'F': c->fma = 1; break;
-		case 'A':
-			if (!(c->o.arith = arith_find(a.arg))) {
-				char names[256];
-				arith_names(names, sizeof names);
-				study_error("--arith: unknown profile '%s' (one of: %s)", a.arg, names);
-				goto bad;
-			}
-			c->arith_given = !arith_is_ieee(c->o.arith);
-			break;
+		case 'A': if (parse_arith(a.arg, c)) goto bad; break;
 		case 'R': c->resume = a.arg; break;
 		case 'U': c->reuse = a.arg; break;
 		case 'K': c->check_keys = a.arg; break;
-		case 'E':
-			if (parse_double("--checkpoint-every", a.arg, &c->ck_every)) goto bad;
-			if (!(c->ck_every >= 0.0)) {
-				study_error("--checkpoint-every: expected seconds >= 0, not '%s'", a.arg);
-				goto bad;
-			}
-			break;
+		case 'E': if (parse_every(a.arg, c)) goto bad; break;
 		default: goto bad;
 		}
 		c->set_other |= v > 0 && strchr("bntSTFARUKE", v) != NULL;

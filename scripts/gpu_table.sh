@@ -1,38 +1,57 @@
 #!/bin/sh
-# gpu_table.sh [--check] - docs/gpu.md's table of findings and the
-# README's GPU headline, from the committed runs results/gpu/PROFILE/certify.csv
-# (made by `onbstudy certify --quick --arith PROFILE --methods ...`, their
-# headers say how).  Writes both between their markers, or with --check
-# exits 1 when either differs from what the runs give.
+# gpu_table.sh [--check] - docs/gpu.md's table of findings, its list of
+# full-budget runs and the README's GPU headline, from the committed runs
+# results/gpu/PROFILE/certify.csv (made by `onbstudy certify --quick --arith
+# PROFILE --methods ...`) and results/gpu/full/PROFILE/certify.csv (the full
+# budget, where run; run.txt beside it: wall, CPU, load); their headers say
+# how.  Writes all three between their markers, or with --check exits 1 when
+# one differs from what the runs give.  Either way it exits 1 when a region
+# of a full run has a looser bound than the --quick region that holds it
+# (the full budget must never prove less).  GPU_RESULTS=DIR reads DIR in
+# place of results/gpu (tests/arith.sh).
 set -eu
 cd "$(dirname "$0")/.."
 P="ieee vulkan vulkan-precise d3d11 opencl cuda-fast contract-any"
 ONBSTUDY=${ONBSTUDY:-./onbstudy}
+R=${GPU_RESULTS:-results/gpu}
 # the whole-sphere row of each method and precision: bound, found (in u), status, unbounded_by, found input
-rows() { grep -v '^#' "results/gpu/$1/certify.csv" | awk -F, -v p="$1" 'NR > 1 && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 {
+rows() { rows_of "$R/$1/certify.csv" "$1"; }
+# the same of the full-budget run, nothing where there is none
+frows() { [ -f "$R/full/$1/certify.csv" ] || return 0; rows_of "$R/full/$1/certify.csv" "$1"; }
+rows_of() { grep -v '^#' "$1" | awk -F, -v p="$2" 'NR > 1 && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 {
 	u = $2 == "float" ? 2^-24 : 2^-53
 	b = $7 == "inf" ? ($12 == "unbounded" ? "unbounded (" $17 ")" : ($12 == "singular" ? "singular" : "inf")) : sprintf("%.3g", $7 / u)
 	printf "%s|%s|%s|%s|%.3g|%s\n", $1, $2, p, b, $8 / u, ($9 == "" ? "" : "(" $9 ", " $10 ", " $11 ")") }'; }
 table() {
 	echo "Whole-sphere bound / found defect in units of u (2^-24 float, 2^-53 double), --quick runs"
 	echo "(40 boxes per region: brackets are wide; a bound is proven for every input, found is a"
-	echo "defect an emulated conforming implementation or the IEEE kernel reached)."
+	echo "defect an emulated conforming implementation or the IEEE kernel reached).  **full:** the"
+	echo "same at the full budget (results/gpu/full/PROFILE: 6000 boxes per region, the committed"
+	echo "IEEE run's options), where that run exists ([below](#full-budget-runs))."
 	echo
 	printf '| method | prec |'; for p in $P; do printf ' %s |' "$p"; done; echo
 	printf '|---|---|'; for p in $P; do printf -- '---|'; done; echo
-	for p in $P; do rows "$p"; done | sort -t'|' -k1,1 -k2,2 -s | awk -F'|' -v P="$P" '
-		{ k = $1 "|" $2; if (!(k in seen)) { seen[k] = 1; order[n++] = k } cell[k "|" $3] = ($4 ~ /^[0-9]/ ? $4 " / " $5 : $4) }
+	for p in $P; do rows "$p" | sed 's/^/q|/'; frows "$p" | sed 's/^/f|/'; done | sort -t'|' -k2,2 -k3,3 -s | awk -F'|' -v P="$P" '
+		function c(b, f) { return b ~ /^[0-9]/ ? b " / " f : b }
+		{ k = $2 "|" $3; if (!(k in seen)) { seen[k] = 1; order[n++] = k }
+		  if ($1 == "q") cell[k "|" $4] = c($5, $6); else full[k "|" $4] = c($5, $6) }
 		END { np = split(P, ps, " "); for (i = 0; i < n; i++) { split(order[i], a, "|"); printf "| %s | %s |", a[1], a[2]
-			for (j = 1; j <= np; j++) printf " %s |", cell[order[i] "|" ps[j]]; printf "\n" } }'
+			for (j = 1; j <= np; j++) { x = order[i] "|" ps[j]; printf " %s%s |", cell[x], (x in full) ? "; **full:** " full[x] : "" }
+			printf "\n" } }'
+}
+# the whole-sphere bound of method $2, precision $3 under profile $1 for the
+# headline: the full run's where it has the row ("12 u (full budget; --quick: 18.8 u)"),
+# else the --quick run's
+hb() {
+	q=$(rows "$1" | awk -F'|' -v m="$2" -v x="$3" '$1 == m && $2 == x { print $4 }')
+	f=$(frows "$1" | awk -F'|' -v m="$2" -v x="$3" '$1 == m && $2 == x { print $4 }')
+	if [ -n "$f" ]; then echo "$f u (full budget; --quick: $q u)"; else echo "$q u (--quick)"; fi
 }
 headline() {
 	d=$(rows ieee | awk -F'|' '$1 == "duff" && $2 == "float" { print $4 }')
-	v=$(rows vulkan | awk -F'|' '$1 == "duff" && $2 == "float" { print $4 }')
 	h=$(rows ieee | awk -F'|' '$1 == "hughes_moeller" && $2 == "float" { print $4 }')
-	hv=$(rows vulkan | awk -F'|' '$1 == "hughes_moeller" && $2 == "float" { print $4 }')
-	dd=$(rows vulkan | awk -F'|' '$1 == "duff" && $2 == "double" { print $4 }')
-	d3=$(rows d3d11 | awk -F'|' '$1 == "duff" && $2 == "double" { print $4 }')
-	echo "- **On every conforming Vulkan device** (docs/gpu.md: each operation anywhere within the spec's allowance, flushing, contraction): Duff's float basis is proven within ${v} u (IEEE: ${d} u), Hughes-Möller's within ${hv} u (IEEE: ${h} u), and a double kernel only to float accuracy (Duff: ${dd} u of double); Direct3D 11, whose Shader Model 5 has no double square root, leaves every kernel with a double sqrt unbounded (Duff's double basis: ${d3} u of double) (\`onbstudy certify --quick --arith PROFILE\`, results/gpu/)."
+	v=$(hb vulkan duff float); hv=$(hb vulkan hughes_moeller float); dd=$(hb vulkan duff double); d3=$(hb d3d11 duff double)
+	echo "- **On every conforming Vulkan device** (docs/gpu.md: each operation anywhere within the spec's allowance, flushing, contraction): Duff's float basis is proven within ${v} (IEEE, --quick: ${d} u), Hughes-Möller's within ${hv} (IEEE, --quick: ${h} u), and a double kernel only to float accuracy (Duff: ${dd}, in units of double); Direct3D 11, whose Shader Model 5 has no double square root, leaves every kernel with a double sqrt unbounded (Duff's double basis: ${d3}, in units of double) (\`onbstudy certify --arith PROFILE\`, results/gpu/)."
 }
 # the registry's shader engines (language GLSL, HLSL or Slang; methods and
 # aliases of `onbstudy list --format csv`, `--aliases --format csv`):
@@ -51,32 +70,89 @@ CSV='function split_csv(l, f,   n, q, c, i, cur) { n = 0; q = 0; cur = ""
 # the float whole-sphere bound of method $2 under profile $1, in u: "6.04" or "unbounded (sqrt)"
 fbound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print ($4 ~ /^[0-9]/ ? $4 " u" : $4); f = 1 } END { if (!f) print "not run" }'; }
 ffound() { rows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print $5 " u" }'; }
+# the same at the full budget, "bound / found" or "not run"
+ffull() { frows "$1" | awk -F'|' -v m="$2" '$1 == m && $2 == "float" { print ($4 ~ /^[0-9]/ ? $4 " u / " $5 " u" : $4); f = 1 } END { if (!f) print "not run" }'; }
 # lavapipe's largest defect D on unit inputs for the engine's own lines (results/lavapipe/report.md)
 lvp() { awk -F'|' -v e="\`$1\`" -v e0="$1" '$2 ~ "^ " e " $" && $4 ~ /`/ && NF >= 12 && $11 ~ /inside|outside/ { gsub(/ /, "", $11); gsub(/ /, "", $9); if ($9 ~ /inf/) printf "D = inf at its singular inputs; %s of its regions\x27 bounds\n", $11; else printf "D = %.3g u (%s)\n", $9 / 2^-24, $11; f = 1; exit } END { if (!f) print "not run (no src/gpu/wild/" e0 ".glsl)" }' results/lavapipe/report.md; }
 engines() {
 	echo "Every shader engine of docs/wild.md (the registry's rows in GLSL, HLSL or Slang) under the"
 	echo "profile of its language (GLSL: vulkan; HLSL: d3d11; Slang, which targets both: each), float,"
-	echo "whole-sphere bound / found in u = 2^-24 (results/gpu, --quick), and its own lines on lavapipe"
+	echo "whole-sphere bound / found in u = 2^-24 (results/gpu, --quick; results/gpu/full, the full budget), and its own lines on lavapipe"
 	echo "(results/lavapipe/report.md, \`onbstudy-gpu wild\`: the largest defect D on unit inputs, in u,"
 	echo "and whether every unit input is inside the C row's IEEE bound at that input)."
 	echo
-	echo "| engine | its code | C row | profile | IEEE bound | bound under the profile | found under the profile | lavapipe, its own lines |"
-	echo "|---|---|---|---|---|---|---|---|"
+	echo "| engine | its code | C row | profile | IEEE bound | bound under the profile | found under the profile | full budget: bound / found | lavapipe, its own lines |"
+	echo "|---|---|---|---|---|---|---|---|---|"
 	shader_rows | sort | while IFS='|' read -r e row lang code; do
 		for p in vulkan d3d11; do
 			case "$p/$lang" in vulkan/*GLSL*|vulkan/*Slang*|d3d11/*HLSL*|d3d11/*Slang*) ;; *) continue ;; esac
-			printf '| `%s` | %s (%s) | `%s` | `%s` | %s | %s | %s | %s |\n' "$e" "$code" "$lang" "$row" "$p" \
-				"$(fbound ieee "$row")" "$(fbound "$p" "$row")" "$(ffound "$p" "$row")" "$(lvp "$e")"
+			printf '| `%s` | %s (%s) | `%s` | `%s` | %s | %s | %s | %s | %s |\n' "$e" "$code" "$lang" "$row" "$p" \
+				"$(fbound ieee "$row")" "$(fbound "$p" "$row")" "$(ffound "$p" "$row")" "$(ffull "$p" "$row")" "$(lvp "$e")"
 		done
+	done
+}
+# the methods of a run, in its order
+methods_of() { grep -v '^#' "$1" | awk -F, 'NR > 1 && !($1 in s) { s[$1] = 1; printf "%s%s", n++ ? "," : "", $1 } END { print "" }'; }
+# the methods a full run of profile $1 should hold: its --quick run's, and
+# the C rows of the shader engines of its language (vulkan: GLSL and Slang,
+# d3d11: HLSL and Slang)
+planned() {
+	{ methods_of "$R/$1/certify.csv" | tr , '\n'
+	  case $1 in vulkan) l='GLSL|Slang' ;; d3d11) l='HLSL|Slang' ;; *) l='^$' ;; esac
+	  shader_rows | awk -F'|' -v l="$l" '$3 ~ l { print $2 }'; } | awk 'NF && !($0 in s) { s[$0] = 1; printf "%s%s", n++ ? "," : "", $0 } END { print "" }'
+}
+# one line of results/gpu/full/PROFILE/run.txt ("wall: 1234 s")
+runinfo() { sed -n "s/^$2: //p" "$R/full/$1/run.txt" | head -1; }
+fulls() {
+	echo "Full-budget runs (\`onbstudy certify --arith PROFILE --starts results/certify/starts.csv\`,"
+	echo "the committed IEEE run's budget: 6000 boxes, 1000 samples, 8 sectors per band), one"
+	echo "process (ranks 1, threads 2) on the shared 2-core machine; CPU is user + system"
+	echo "seconds, wall and load say how busy the machine was.  The same command line with"
+	echo "\`--resume DIR\` starts a run and continues it after a kill; \`--reuse\` takes the committed"
+	echo "methods whose keys are current (same model, kernel and certify engine) and computes only the rest."
+	echo
+	for p in $P; do
+		want=$(planned "$p")
+		if [ "$p" = ieee ] && [ ! -f "$R/full/$p/certify.csv" ]; then
+			echo "- \`ieee\`: every method at this budget is results/certify/certify.csv, the committed IEEE run (docs/certify.md; an older revision than the --quick runs, so not in the table)."
+		elif [ -f "$R/full/$p/certify.csv" ]; then
+			have=$(methods_of "$R/full/$p/certify.csv")
+			todo=$(echo "$want" | tr , '\n' | awk -v h=",$have," 'NF && index(h, "," $0 ",") == 0' | paste -sd, -)
+			echo "- \`$p\`: **run**, $(echo "$have" | tr , '\n' | wc -l | tr -d ' ') methods ($have), both precisions, at revision $(runinfo "$p" revision):"
+			echo "  wall $(runinfo "$p" wall), CPU $(runinfo "$p" cpu), ranks $(runinfo "$p" ranks), threads $(runinfo "$p" threads), load $(runinfo "$p" load) (results/gpu/full/$p/run.txt)."
+			if [ -n "$todo" ]; then
+				echo "  Still to run: $todo.  To add them: \`./onbstudy certify --arith $p --methods $have,$todo --starts results/certify/starts.csv --reuse results/gpu/full/$p --resume /tmp/full-$p\`"
+			fi
+		else
+			echo "- \`$p\`: **not run**.  To run (and to resume, the same command): \`./onbstudy certify --arith $p --methods $want --starts results/certify/starts.csv --resume /tmp/full-$p\`"
+		fi
+	done
+}
+# every region of a full run against the --quick region that holds it (the
+# same band, the sector that contains its own): a looser full bound is a bug
+looser() {
+	for p in $P; do
+		[ -f "$R/full/$p/certify.csv" ] || continue
+		{ grep -v '^#' "$R/$p/certify.csv" | sed 's/^/q,/'; grep -v '^#' "$R/full/$p/certify.csv" | sed 's/^/f,/'; } | awk -F, -v p="$p" '
+			$2 == "method" { next }
+			$1 == "q" { k = $2 SUBSEP $3 SUBSEP $4 SUBSEP $5; n[k]++; lo[k, n[k]] = $6; hi[k, n[k]] = $7; b[k, n[k]] = $8; next }
+			{ k = $2 SUBSEP $3 SUBSEP $4 SUBSEP $5
+			  for (i = 1; i <= n[k]; i++) if (lo[k, i] + 0 <= $6 + 0 && $7 + 0 <= hi[k, i] + 0) {
+				if (b[k, i] != "inf" && ($8 == "inf" || $8 + 0 > b[k, i] + 0))
+					printf "gpu_table.sh: %s %s %s nz [%s, %s] phi [%s, %s]: full-budget bound %s looser than the --quick bound %s\n", p, $2, $3, $4, $5, $6, $7, $8, b[k, i]
+				break } }'
 	done
 }
 replace() { # FILE BEGIN END TEXTFILE
 	awk -v b="$2" -v e="$3" -v t="$4" '$0 == b { print; while ((getline l < t) > 0) print l; skip = 1; next } $0 == e { skip = 0 } !skip' "$1"
 }
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-table > "$T/table"; headline > "$T/head"; engines > "$T/engines"
+table > "$T/table"; headline > "$T/head"; engines > "$T/engines"; fulls > "$T/fulls"
+looser > "$T/looser"
 replace docs/gpu.md '<!-- gpu-table: begin (scripts/gpu_table.sh) -->' '<!-- gpu-table: end -->' "$T/table" > "$T/gpu0.md"
-replace "$T/gpu0.md" '<!-- gpu-engines: begin (scripts/gpu_table.sh) -->' '<!-- gpu-engines: end -->' "$T/engines" > "$T/gpu.md"
+replace "$T/gpu0.md" '<!-- gpu-engines: begin (scripts/gpu_table.sh) -->' '<!-- gpu-engines: end -->' "$T/engines" > "$T/gpu1.md"
+replace "$T/gpu1.md" '<!-- gpu-full: begin (scripts/gpu_table.sh) -->' '<!-- gpu-full: end -->' "$T/fulls" > "$T/gpu.md"
+if [ -s "$T/looser" ]; then cat "$T/looser" >&2; echo "gpu_table.sh: a full-budget bound looser than the --quick one (a bug in certify or a stale run)" >&2; exit 1; fi
 replace README.md '<!-- gpu-headline: begin (scripts/gpu_table.sh) -->' '<!-- gpu-headline: end -->' "$T/head" > "$T/README.md"
 if [ "${1:-}" = --check ]; then
 	cmp -s "$T/gpu.md" docs/gpu.md && cmp -s "$T/README.md" README.md && { echo "gpu_table.sh: docs/gpu.md and README.md match results/gpu"; exit 0; }

@@ -4,7 +4,9 @@
 # profile's --quick run on a few methods keeps found <= bound wherever a
 # bound is claimed and names the operation of every unbounded row; the
 # profile's whole-sphere bound is never below the defect ieee found; bad input
-# exits 2 with the list of profiles.  (tests/test_arith.c checks the
+# exits 2 with the list of profiles; docs/gpu.md's tables are results/gpu's,
+# the full-budget runs' column included, and a full-budget bound looser than
+# the --quick one fails.  (tests/test_arith.c checks the
 # emulated implementations against the bounds.)
 . "$(dirname "$0")/lib.sh"
 T=$tmp
@@ -64,4 +66,19 @@ grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "
 [ "$(grep -c -e "^vulkan " -e "^d3d11 " "$T/list")" -eq 6 ] && ok || bad "list --arith: $(head -3 "$T/list")"
 # docs/gpu.md's table and the README's headline are those results/gpu gives
 sh scripts/gpu_table.sh --check > /dev/null 2>&1 && ok || bad "scripts/gpu_table.sh --check: docs/gpu.md or README.md differs from results/gpu"
+# the full-budget column: duff's float whole-sphere bound under vulkan from
+# results/gpu/full/vulkan (read here apart from gpu_table.sh) is in its row
+F=results/gpu/full/vulkan/certify.csv
+fb=$(data "$F" | awk -F, '$1 == "duff" && $2 == "float" && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 { printf "%.3g", $7 / 2^-24 }')
+[ -n "$fb" ] && grep "^| duff | float |" docs/gpu.md | grep -q "full:\*\* $fb / " && ok || bad "docs/gpu.md: no full-budget bound '$fb' in duff's float row"
+grep -q "^- \`vulkan\`: \*\*run\*\*" docs/gpu.md && ok || bad "docs/gpu.md: the full vulkan run not listed"
+# a full-budget region looser than the --quick region that holds it makes
+# gpu_table.sh fail, naming it: duff float's band [-0.3, 0] sector [0, 45]
+# made 1e-3 (the quick bound of [0, 180] there is ~1e-6)
+mkdir -p "$T/gpu" && cp -r results/gpu/* "$T/gpu/"
+GPU_RESULTS="$T/gpu" sh scripts/gpu_table.sh --check > /dev/null 2>&1 && ok || bad "gpu_table.sh --check on a copy of results/gpu failed"
+awk -F, -v OFS=, '$1 == "duff" && $2 == "float" && $3 == -0.29999999999999999 && $4 == 0 && $5 == 0 && $6 == 45 { $7 = "0.001" } 1' "$F" > "$T/gpu/full/vulkan/certify.csv"
+cmp -s "$F" "$T/gpu/full/vulkan/certify.csv" && bad "the looser-bound mutation changed nothing"
+GPU_RESULTS="$T/gpu" sh scripts/gpu_table.sh --check > /dev/null 2> "$T/looser"; rc=$?
+[ $rc -eq 1 ] && grep -q "vulkan duff float nz \[-0.29999999999999999, 0\] phi \[0, 45\]: full-budget bound 0.001 looser" "$T/looser" && ok || bad "a looser full-budget bound not caught (exit $rc): $(head -2 "$T/looser")"
 finish arith.sh

@@ -66,7 +66,7 @@ LIB_SRC = $(wildcard src/lib/*.c)
 LIB_METHODS  := $(shell sed -n '/define ONB_METHOD_LIST/,/^$$/p' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
 LIB_FMETHODS := $(shell grep 'define ONB_FLOAT_METHOD_LIST' include/libonb/onb.h | grep -o 'X([a-z0-9_]*)' | sed 's/X(\(.*\))/\1/')
 LIB_SPLIT    = array outline batch
-LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o) \
+LIB_OBJ = $(LIB_SRC:src/lib/%.c=$(B)/lib/%.o) $(B)/lib/half_f16c.o \
           $(foreach f,$(LIB_SPLIT),$(LIB_METHODS:%=$(B)/lib/split/$(f)-d-%.o) \
                                    $(LIB_METHODS:%=$(B)/lib/split/$(f)-f-%.o) \
                                    $(LIB_FMETHODS:%=$(B)/lib/split/$(f)-f-%.o))
@@ -150,6 +150,16 @@ $(B)/lib/split/$(1)-$(2)-%.o: src/lib/$(1).c include/libonb/onb.h src/lib/split.
 	$$(CC) $$(BASE) $$(LIBWARN) $$(ENTRYFLAGS_$(1)) -DONB_ONE=$$* -DONB_ONE_$(3) -c $$< -o $$@
 endef
 $(foreach f,$(LIB_SPLIT),$(eval $(call ONB_SPLIT_RULE,$(f),d,D))$(eval $(call ONB_SPLIT_RULE,$(f),f,F)))
+
+# half.c again with F16C conversions (vcvtph2ps, vcvtps2ph): the copy its
+# ifuncs pick on CPUs with F16C (half.c says why; an empty object where
+# there is no dispatch: clang, other architectures).
+ifeq ($(shell uname -m),x86_64)
+HALF_F16C_FLAGS = -mf16c
+endif
+$(B)/lib/half_f16c.o: src/lib/half.c include/libonb/onb.h src/lib/split.h Makefile | $(LIB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(BASE) $(LIBWARN) $(HALF_F16C_FLAGS) -DONB__HALF_F16C -c $< -o $@
 
 libonb.a: $(LIB_OBJ)
 	rm -f $@

@@ -80,8 +80,49 @@ if ./onbstudy table --bench "$tmp/s/bench.csv" --summary "$tmp/summary.csv" >"$t
 [ "$(grep -v '^#' "$tmp/s/tradeoff.csv" | wc -l)" -eq 3 ] && ok || bad "tradeoff.csv: want header + 2 rows"
 grep -q '^duff_branchless,float,' "$tmp/s/tradeoff.csv" && ok || bad "tradeoff.csv lacks duff_branchless"
 
+# binary16 (--precision half): two methods, one thread.  Every half row
+# but the copy roofline's says 'emulated' in its isa column (libonb's half kernels run in float,
+# rounded per operation: no hardware half speed) and the '# half:' line
+# says so; roofline, batch and the two call modes, no yardstick; live
+# checksums; the trade table joins the half speeds with half accuracy.
+if ./onbstudy bench --quick --methods duff_branchless,hughes_moeller --precision half --threads 1 --out "$tmp/h" >"$tmp/h.out" 2>"$tmp/h.err"; then ok; else bad "bench --precision half failed: $(cat "$tmp/h.err")"; fi
+grep -q '^# half: binary16 arithmetic EMULATED' "$tmp/h/bench.csv" && ok || bad "bench.csv (half) lacks the '# half: ... EMULATED' line"
+grep -q 'EMULATED' "$tmp/h.out" && ok || bad "the half table on stdout does not say EMULATED"
+if msg=$(grep -v '^#' "$tmp/h/bench.csv" | tail -n +2 | awk -F, '
+	{
+		n++
+		if (NF != 22) { print "line " n ": " NF " fields"; bad = 1; next }
+		if ($2 != "half") { print "line " n ": precision " $2; bad = 1 }
+		if ($3 != "roofline" && $19 !~ /^emulated-(f16c|soft|inline)$/) { print "line " n ": isa " $19 " (want emulated-*)"; bad = 1 }
+		if ($3 == "yardstick") { print "line " n ": a half yardstick"; bad = 1 }
+		if ($10 == "nan" || $10 + 0 <= 0) { print "line " n ": mbases_per_s " $10; bad = 1 }
+		if ($21 == "nan" || $21 + 0 == 0) { print "line " n ": checksum " $21; bad = 1 }
+		if ($3 == "batch" && $17 == "nan") { print "line " n ": batch row without frac_roofline"; bad = 1 }
+		rows[$3]++
+	}
+	END {
+		if (n != 2 + 2 * 2 + 2 * 2) { print n " rows, want 10"; bad = 1 }
+		if (rows["roofline"] != 2 || rows["batch"] != 4 || rows["call_throughput"] != 2 || rows["call_latency"] != 2) { print "modes: roofline " rows["roofline"] " batch " rows["batch"] " calls " rows["call_throughput"] "/" rows["call_latency"]; bad = 1 }
+		exit bad
+	}'); then ok; else bad "bench.csv (half): $msg"; fi
+# the checksums are the outputs': the same seed gives the same sums
+./onbstudy bench --quick --methods duff_branchless,hughes_moeller --precision half --threads 1 --format csv --out "$tmp/h2" >/dev/null 2>&1
+[ "$(grep -v '^#' "$tmp/h/bench.csv" | cut -d, -f1-3,5,21)" = "$(grep -v '^#' "$tmp/h2/bench.csv" | cut -d, -f1-3,5,21)" ] && ok || bad "half checksums differ between two runs of one seed"
+cat > "$tmp/hsum.csv" <<'CSV'
+# fixture
+method,precision,distribution,samples,rmse,max_defect,max_ulp,mean_bits,wrong_handed,nonfinite
+duff_branchless,half,uniform,1,1e-4,2e-3,1,0,0,0
+duff_branchless,half,south,1,1e-4,3e-3,1,0,0,0
+duff_branchless,half,threshold,1,1e-4,4e-3,1,0,0,0
+hughes_moeller,half,uniform,1,1e-4,1e-2,1,0,0,0
+hughes_moeller,half,south,1,1e-4,1e-2,1,0,0,0
+hughes_moeller,half,threshold,1,1e-4,1e-2,1,0,0,0
+CSV
+if ./onbstudy table --precision half --bench "$tmp/h/bench.csv" --summary "$tmp/hsum.csv" --format csv >"$tmp/ht.out" 2>/dev/null; then ok; else bad "table --precision half failed"; fi
+awk -F, '$1 == "duff_branchless" && $2 == "half" && $3 + 0 > 0 && $12 == "1"' "$tmp/ht.out" | grep -q . && ok || bad "table --precision half: duff_branchless lacks its half speed or front mark: $(cat "$tmp/ht.out")"
+
 # bad options: exit 2, one line on stderr, no file
-for args in "--precision half" "--methods nope" "--methods duff," "--threads -1" "--format xml" "--bogus" "--out" "--stream-mib 0"; do
+for args in "--precision quarter" "--methods nope" "--methods duff," "--threads -1" "--format xml" "--bogus" "--out" "--stream-mib 0"; do
 	./onbstudy bench --quick $args --out "$tmp/bad" >/dev/null 2>"$tmp/err"
 	rc=$?
 	if [ $rc -eq 2 ] && [ "$(wc -l < "$tmp/err")" -eq 1 ] && [ ! -e "$tmp/bad/bench.csv" ]; then ok; else bad "bench $args: exit $rc, stderr: $(cat "$tmp/err")"; fi

@@ -191,6 +191,110 @@ static long check_checked(const onb_method *m, long count)
 	return bad;
 }
 
+/* The two copies of the kernels (half.c: libgcc's soft conversions and
+   F16C's), where this build has both (GCC on x86-64) and the CPU has F16C:
+   every conversion the kernels can meet (NaNs included), then each kernel
+   on the inputs above, bit for bit (any NaN matching any NaN: same_bits).  Returns the failures, or
+   -1 when there is nothing to compare here (reported). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(ONB_NO_CLONES)
+typedef void (*hkernel)(onb_vec3h, onb_vec3h *, onb_vec3h *);
+#define COPY_DECL(m) void onb__##m##h_soft(onb_vec3h, onb_vec3h *, onb_vec3h *); \
+	void onb__##m##h_f16c(onb_vec3h, onb_vec3h *, onb_vec3h *);
+ONB_METHOD_LIST(COPY_DECL)
+ONB_FLOAT_METHOD_LIST(COPY_DECL)
+#define COPY_ROW(m) { #m, onb__##m##h_soft, onb__##m##h_f16c },
+static const struct { const char *name; hkernel soft, f16c; } copies[] = {
+	ONB_METHOD_LIST(COPY_ROW) ONB_FLOAT_METHOD_LIST(COPY_ROW)
+};
+__attribute__((target("f16c"), noinline)) static float widen_f16c(uint16_t b) { onb_half h; memcpy(&h, &b, 2); return (float)h; }
+__attribute__((target("f16c"), noinline)) static uint16_t narrow_f16c(float f) { onb_half h = (onb_half)f; uint16_t b; memcpy(&b, &h, 2); return b; }
+__attribute__((noinline)) static float widen_soft(uint16_t b) { onb_half h; memcpy(&h, &b, 2); return (float)h; }
+__attribute__((noinline)) static uint16_t narrow_soft(float f) { onb_half h = (onb_half)f; uint16_t b; memcpy(&b, &h, 2); return b; }
+static uint32_t fbits(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
+static float fval(uint32_t u) { float f; memcpy(&f, &u, 4); return f; }
+
+/* Every binary16 widened; every float within 2 ulps of a binary16 value or
+   of a midpoint between two (the rounding boundaries), and 2^20 spread
+   over all floats (NaNs, infinities, subnormals), narrowed. */
+static long check_conversions(void)
+{
+	long bad = 0;
+	uint32_t b, d;
+	for (b = 0; b < 0x10000u; b++) {
+		const uint32_t w = fbits(widen_soft((uint16_t)b));
+		const float lo = widen_soft((uint16_t)b), hi = widen_soft((uint16_t)(b + 1));
+		bad += fbits(widen_f16c((uint16_t)b)) != w;
+		for (d = 0; d < 5; d++) {
+			const float m = fval(fbits(isfinite(lo) && isfinite(hi) ? 0.5f * (lo + hi) : lo) + d - 2u);
+			const float v = fval(w + d - 2u);
+			bad += narrow_soft(m) != narrow_f16c(m);
+			bad += narrow_soft(v) != narrow_f16c(v);
+		}
+	}
+	for (b = 0; b < (1u << 20); b++) {
+		const float v = fval(b * 4093u + (uint32_t)rng_mix64(b));
+		bad += narrow_soft(v) != narrow_f16c(v);
+	}
+	return bad;
+}
+
+/* Bit for bit, but any NaN matches any NaN: where two NaNs meet in one
+   float operation, x86 returns the first operand's payload, and the two
+   compilations may order a commutative operation's operands differently
+   (the payloads are the hardware's, as in check above). */
+static int same_bits(const onb_vec3h *a, const onb_vec3h *b)
+{
+	uint16_t x[3], y[3];
+	int k;
+	memcpy(x, a, sizeof x);
+	memcpy(y, b, sizeof y);
+	for (k = 0; k < 3; k++)
+		if (x[k] != y[k] && !((x[k] & 0x7fffu) > 0x7c00u && (y[k] & 0x7fffu) > 0x7c00u))
+			return 0;
+	return 1;
+}
+
+static long check_copies(long count)
+{
+	long bad, i;
+	size_t k;
+	__builtin_cpu_init();
+	if (!__builtin_cpu_supports("f16c")) {
+		printf("note: this CPU has no F16C: the F16C copy cannot run here, not compared\n");
+		return -1;
+	}
+	bad = check_conversions();
+	printf("%s conversions: libgcc's and F16C's, %ld differ\n", bad ? "FAIL" : "ok  ", bad);
+	for (k = 0; k < sizeof copies / sizeof copies[0]; k++) {
+		long kb = 0;
+		for (i = 0; i < count; i++) {
+			uint16_t h[3];
+			onb_vec3h n, s1, s2, f1, f2;
+			input((uint64_t)i, h);
+			memcpy(&n.x, &h[0], 2); memcpy(&n.y, &h[1], 2); memcpy(&n.z, &h[2], 2);
+			copies[k].soft(n, &s1, &s2);
+			copies[k].f16c(n, &f1, &f2);
+			if (!same_bits(&s1, &f1) || !same_bits(&s2, &f2))
+				if (kb++ < 2)
+					printf("  %s: n [%04x %04x %04x]: the soft and F16C copies differ\n", copies[k].name, h[0], h[1], h[2]);
+		}
+		if (kb)
+			printf("FAIL %-24s half   soft and F16C copies differ on %ld of %ld inputs\n", copies[k].name, kb, count);
+		bad += kb;
+	}
+	printf("%s the soft and F16C copies of %zu kernels: %ld inputs each, %ld differ\n", bad ? "FAIL" : "ok  ",
+	       sizeof copies / sizeof copies[0], count, bad);
+	return bad;
+}
+#else
+static long check_copies(long count)
+{
+	(void)count;
+	printf("note: one copy of the half kernels in this build (no F16C dispatch): nothing to compare\n");
+	return -1;
+}
+#endif
+
 /* A bare _Float16 expression on this compiler: does it round per
    operation?  (Informative: the kernels never rely on it.) */
 static void report_eval(void)
@@ -231,6 +335,8 @@ int main(int argc, char **argv)
 		printf("%s onb_basis_checkedh (%s): %ld inputs, %ld wrong\n", cb ? "FAIL" : "ok  ", dm->name, count, cb);
 		fail |= cb != 0;
 	}
+	if (!only && check_copies(count) > 0)
+		fail = 1;
 	if (checked == 0) {
 		printf("FAIL: no method checked\n");
 		fail = 1;

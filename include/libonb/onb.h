@@ -2824,6 +2824,13 @@ ONB_FLOAT_METHOD_LIST(ONB__DECLARE_H)
 #define ONB_FRISVAD_TH ((onb_half)ONB_FRISVAD_TF) /* -1 in binary16 */
 void onb_frisvad_thresholdh(onb_vec3h n, onb_half t, onb_vec3h *b1, onb_vec3h *b2);
 onb_vec3h onb_frisvad_rotateh(onb_vec3h n, onb_half x, onb_half y, onb_half z);
+/* How the half kernels convert between binary16 and float: "f16c" (x86-64
+   with GCC: an F16C copy of every kernel, chosen at load time where the
+   CPU has it), "soft" (libgcc's conversion routines) or "inline" (a build
+   whose flags convert with instructions: -mf16c, arm64).  Same bits in
+   every case; the arithmetic is emulated in float either way (no native
+   half instructions, AVX512-FP16 or arm64 FP16, are used). */
+const char *onb_half_isa(void);
 #endif
 
 /* The tools out of line, for callers whose flags could change their bits. */

@@ -63,7 +63,7 @@ static bench_row *rows_add(bench_rows *rs)
 }
 
 typedef struct {
-	int quick, threads, csv, nmeth, prec_on[2];
+	int quick, threads, csv, nmeth, prec_on[PREC_COUNT];
 	int reference;                              /* --reference: that mode only */
 	const onb_method *meth[64];
 	const char *out;
@@ -76,7 +76,11 @@ typedef struct {
 static const char usage_text[] =
 	"usage: onbstudy bench [options]   (options take '--opt value' or '--opt=value')\n"
 	"  --methods a,b,...      registry methods to measure (default: all; see onbstudy list)\n"
-	"  --precision P          float, double or both (default both)\n"
+	"  --precision P          float, double, both, half or all (default both).  half: libonb's\n"
+	"                         binary16 kernels (onb_NAME_arrayh over SoA bit patterns, onb_NAMEh\n"
+	"                         per call), their arithmetic emulated in float with each result\n"
+	"                         rounded to binary16: 'emulated' in the isa column, never a\n"
+	"                         hardware half speed; no yardstick\n"
 	"  --threads N            threads of the all-threads runs (default 0: OpenMP's maximum)\n"
 	"  --out DIR              output directory (default: the current run, results/latest)\n"
 	"  --quick                a check, not a measurement: 3 short repetitions and a 16 MiB\n"
@@ -135,7 +139,7 @@ static int bench_option(int v, const char *a, bench_opts *o)
 	case 'q': o->quick = 1; return 0;
 	case 'R': o->reference = 1; return 0;
 	case 'm': return bench_methods(a, o);
-	case 'p': return cli_precision("--precision", a, o->prec_on);
+	case 'p': return cli_precision_half("--precision", a, o->prec_on);
 	case 't': /* 0: OpenMP's maximum, as the default */
 		if (parse_int("--threads", a, 0, 1024, &t) != 0) return -1;
 		o->threads = t ? (int)t : omp_get_max_threads();
@@ -212,10 +216,37 @@ typedef struct {
 	double sum;
 } call_ctx;
 
+/* Bytes of one component in precision prec. */
+static size_t elem_size(int prec)
+{
+	return prec == PREC_DOUBLE ? sizeof(double) : prec == PREC_HALF ? sizeof(uint16_t) : sizeof(float);
+}
+
+/* The isa column of a half row: the arithmetic is always emulated in float
+   (libonb's half kernels use no native half instruction), the conversions
+   are onb_half_isa()'s. */
+static const char *half_conv(void)
+{
+#if ONB_HAVE_HALF
+	return onb_half_isa();
+#else
+	return "none";
+#endif
+}
+static const char *half_isa(void)
+{
+	static char buf[32];
+	snprintf(buf, sizeof buf, "emulated-%s", half_conv());
+	return buf;
+}
+
 static void call_tp_kernel(void *ctx, size_t lo, size_t hi)
 {
 	call_ctx *c = ctx;
-	if (c->prec)
+	if (c->prec == PREC_HALF)
+		c->c->tph(hi - lo, (const char *)c->in + lo * 3 * sizeof(uint16_t),
+		          (char *)c->out + lo * 6 * sizeof(uint16_t));
+	else if (c->prec == PREC_DOUBLE)
 		c->c->tp(hi - lo, (const onb_vec3 *)c->in + lo, (bench_pair *)c->out + lo);
 	else
 		c->c->tpf(hi - lo, (const onb_vec3f *)c->in + lo, (bench_pairf *)c->out + lo);
@@ -224,7 +255,9 @@ static void call_tp_kernel(void *ctx, size_t lo, size_t hi)
 static void call_lat_kernel(void *ctx, size_t lo, size_t hi)
 {
 	call_ctx *c = ctx;
-	if (c->prec)
+	if (c->prec == PREC_HALF)
+		c->sum += c->c->lath(hi - lo, (const char *)c->in + lo * 3 * sizeof(uint16_t));
+	else if (c->prec == PREC_DOUBLE)
 		c->sum += c->c->lat(hi - lo, (const onb_vec3 *)c->in + lo);
 	else
 		c->sum += c->c->latf(hi - lo, (const onb_vec3f *)c->in + lo);
@@ -251,6 +284,15 @@ static const char *batch_vec(const char *method, int prec)
 {
 	char sym[128];
 	const char *w;
+	if (prec == PREC_HALF) { /* the kernel the ifunc picked (half.c), else the plain name */
+		snprintf(sym, sizeof sym, "onb__%sh_%s", method, half_conv());
+		w = bench_vector_width(sym);
+		if (strcmp(w, "unknown") == 0) {
+			snprintf(sym, sizeof sym, "onb_%sh", method);
+			w = bench_vector_width(sym);
+		}
+		return w;
+	}
 	snprintf(sym, sizeof sym, "onb_%s_batch%s.%s", method, prec == PREC_DOUBLE ? "" : "f", clone_name());
 	w = bench_vector_width(sym);
 	if (strcmp(w, "unknown") == 0) { /* hand-dispatched kernels (batch.c) */
@@ -267,8 +309,14 @@ static const char *batch_vec(const char *method, int prec)
 static const char *sym_vec(const char *prefix, const char *method, int prec)
 {
 	char sym[128];
-	snprintf(sym, sizeof sym, "%s%s%s", prefix, method, prec == PREC_DOUBLE ? "" : "f");
-	return bench_vector_width(sym);
+	const char *w;
+	snprintf(sym, sizeof sym, "%s%s%s", prefix, method, prec == PREC_DOUBLE ? "" : prec == PREC_HALF ? "h" : "f");
+	w = bench_vector_width(sym);
+	if (prec == PREC_HALF && strcmp(w, "unknown") == 0) { /* the half call loops' clones (bench_calls.c) */
+		snprintf(sym, sizeof sym, "%s%sh_%s", prefix, method, strcmp(half_conv(), "f16c") == 0 ? "f16c" : "plain");
+		w = bench_vector_width(sym);
+	}
+	return w;
 }
 
 /* The generated directions into both SoA sets and the n_l2 AoS inputs. */
@@ -283,6 +331,10 @@ static void fill_inputs(int prec, const double *gx, const double *gy, const doub
 				((double *)soa[s].in[0])[i] = gx[i];
 				((double *)soa[s].in[1])[i] = gy[i];
 				((double *)soa[s].in[2])[i] = gz[i];
+			} else if (prec == PREC_HALF) { /* the same directions rounded once to binary16 */
+				((uint16_t *)soa[s].in[0])[i] = prec_half_bits(prec_half_round(gx[i]));
+				((uint16_t *)soa[s].in[1])[i] = prec_half_bits(prec_half_round(gy[i]));
+				((uint16_t *)soa[s].in[2])[i] = prec_half_bits(prec_half_round(gz[i]));
 			} else {
 				((float *)soa[s].in[0])[i] = (float)gx[i];
 				((float *)soa[s].in[1])[i] = (float)gy[i];
@@ -290,7 +342,14 @@ static void fill_inputs(int prec, const double *gx, const double *gy, const doub
 			}
 		}
 	for (i = 0; i < n_l2; i++) {
-		if (prec == PREC_DOUBLE) {
+		if (prec == PREC_HALF) {
+#if ONB_HAVE_HALF
+			onb_vec3h *v = (onb_vec3h *)aos_in + i;
+			v->x = (onb_half)prec_half_round(gx[i]);
+			v->y = (onb_half)prec_half_round(gy[i]);
+			v->z = (onb_half)prec_half_round(gz[i]);
+#endif
+		} else if (prec == PREC_DOUBLE) {
 			onb_vec3 *v = (onb_vec3 *)aos_in + i;
 			v->x = gx[i]; v->y = gy[i]; v->z = gz[i];
 		} else {
@@ -301,11 +360,11 @@ static void fill_inputs(int prec, const double *gx, const double *gy, const doub
 }
 
 /* The yardstick of method mi (the last of that name), or NULL; NULL for the roofline (mi < 0). */
-static const bench_yardstick *find_yardstick(const bench_opts *o, int mi)
+static const bench_yardstick *find_yardstick(const bench_opts *o, int mi, int prec)
 {
 	size_t ny, i;
 	const bench_yardstick *yd = bench_yardsticks(&ny), *y = NULL;
-	if (mi >= 0)
+	if (mi >= 0 && prec != PREC_HALF) /* no half yardstick */
 		for (i = 0; i < ny; i++)
 			if (strcmp(yd[i].name, o->meth[mi]->name) == 0)
 				y = &yd[i];
@@ -322,6 +381,7 @@ static void set_soa_kind(bench_row *r, bench_soa *b, const bench_opts *o, int mi
 		r->mode = "roofline";
 		b->batch = bench_copy;
 		b->batchf = bench_copyf;
+		b->batchh = bench_copyh;
 		snprintf(r->isa, sizeof r->isa, "native-%s", bench_yardstick_isa());
 		r->vec = sym_vec("bench_copy", "", prec);
 	} else if (v == 0) {
@@ -329,7 +389,9 @@ static void set_soa_kind(bench_row *r, bench_soa *b, const bench_opts *o, int mi
 		r->mode = "batch";
 		b->batch = o->meth[mi]->batch;
 		b->batchf = o->meth[mi]->batchf;
-		snprintf(r->isa, sizeof r->isa, "%s", onb_batch_isa());
+		b->batchh = NULL;
+		b->arrayh = o->meth[mi]->arrayh;
+		snprintf(r->isa, sizeof r->isa, "%s", prec == PREC_HALF ? half_isa() : onb_batch_isa());
 		r->vec = batch_vec(r->method, prec);
 	} else {
 		r->method = y->name;
@@ -350,7 +412,7 @@ static int soa_row(const bench_opts *o, int prec, bench_soa *b, const char *cls,
 		return -1;
 	r->prec = prec;
 	r->size_class = cls;
-	r->bytes = n * 9 * (prec == PREC_DOUBLE ? sizeof(double) : sizeof(float));
+	r->bytes = n * 9 * elem_size(prec);
 	set_soa_kind(r, b, o, mi, v, y, prec);
 	if (measure(bench_soa_kernel, b, n, nthreads, o, &r->r) != 0)
 		return -1;
@@ -379,7 +441,9 @@ static int soa_rows(const bench_opts *o, int prec, bench_soa soa[2], const size_
 		const bench_yardstick *y;
 		if (mi >= 0 && prec == PREC_DOUBLE && !o->meth[mi]->batch)
 			continue; /* float only (ONB_FLOAT_ONLY) */
-		y = find_yardstick(o, mi);
+		if (mi >= 0 && prec == PREC_HALF && !o->meth[mi]->arrayh)
+			continue;
+		y = find_yardstick(o, mi, prec);
 		for (s = 0; s < 2; s++)
 			for (t = 0; t < nthr; t++)
 				for (v = 0; v < (y ? 2 : 1); v++)
@@ -419,8 +483,8 @@ static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const ben
 	r->prec = prec;
 	r->mode = t ? "call_latency" : "call_throughput";
 	r->size_class = "l2";
-	r->bytes = n_l2 * 9 * (prec == PREC_DOUBLE ? sizeof(double) : sizeof(float));
-	snprintf(r->isa, sizeof r->isa, "%s", bench_calls_isa());
+	r->bytes = n_l2 * 9 * elem_size(prec);
+	snprintf(r->isa, sizeof r->isa, "%s", prec == PREC_HALF ? half_isa() : bench_calls_isa());
 	cc->sum = 0.0;
 	if (measure(t ? call_lat_kernel : call_tp_kernel, cc, n_l2, 1, o, &r->r) != 0)
 		return -1;
@@ -432,7 +496,8 @@ static int call_row(call_ctx *cc, int t, size_t n_l2, double chain_ns, const ben
 		r->chain_ns = chain_ns;
 		r->vec = sym_vec("bench_lat_", c->name, prec);
 	} else {
-		r->checksum = prec == PREC_DOUBLE ? bench_pair_checksum(n_l2, cc->out) : bench_pair_checksumf(n_l2, cc->out);
+		r->checksum = prec == PREC_DOUBLE ? bench_pair_checksum(n_l2, cc->out) :
+		              prec == PREC_HALF ? bench_pair_checksumh(n_l2, cc->out) : bench_pair_checksumf(n_l2, cc->out);
 		r->vec = sym_vec("bench_tp_", c->name, prec);
 	}
 	bench_sink = r->checksum;
@@ -461,7 +526,9 @@ static int call_rows(const bench_opts *o, int prec, size_t n_l2, const void *aos
 		const bench_call *c = bench_call_find(o->meth[mi]->name);
 		if (prec == PREC_DOUBLE && !o->meth[mi]->basis)
 			continue; /* float only */
-		if (!c) {
+		if (prec == PREC_HALF && !o->meth[mi]->arrayh)
+			continue;
+		if (!c || (prec == PREC_HALF && !c->tph)) {
 			study_error("bench: no inline call loop for '%s' (add it to ONB_METHOD_LIST)", o->meth[mi]->name);
 			return -2;
 		}
@@ -488,8 +555,8 @@ static int bench_precision(const bench_opts *o, int prec, size_t n_l2, size_t n_
 	memset(soa, 0, sizeof soa);
 	if (!gx || !gy || !gz || bench_soa_alloc(&soa[0], n_l2_all, prec) || bench_soa_alloc(&soa[1], n_stream, prec))
 		goto oom;
-	aos_in = malloc(n_l2 * (prec == PREC_DOUBLE ? sizeof(onb_vec3) : sizeof(onb_vec3f)));
-	aos_out = malloc(n_l2 * (prec == PREC_DOUBLE ? sizeof(bench_pair) : sizeof(bench_pairf)));
+	aos_in = malloc(n_l2 * 3 * elem_size(prec));   /* onb_vec3, onb_vec3f, onb_vec3h */
+	aos_out = malloc(n_l2 * 6 * elem_size(prec));  /* bench_pair, bench_pairf, bench_pairh */
 	if (!aos_in || !aos_out)
 		goto oom;
 	bench_fill_uniform(n_gen, o->seed, gx, gy, gz);
@@ -599,11 +666,15 @@ static void flag_notes(const bench_opts *o, const bench_rows *rs, const char *lo
 static void print_table(const bench_opts *o, const bench_rows *rs)
 {
 	int p, mi;
-	for (p = 0; p < 2; p++) {
+	for (p = 0; p < PREC_COUNT; p++) {
 		if (!o->prec_on[p])
 			continue;
-		printf("\n%s: batch M bases/s (median), L2-resident and stream, 1 and %d threads; per call ns (inline, 1 thread)\n",
-		       prec_name(p), o->threads);
+		if (p == PREC_HALF)
+			printf("\nhalf: binary16 EMULATED (%s): libonb's half kernels do each operation in float and round it to "
+			       "binary16; batch = onb_NAME_arrayh per basis over SoA arrays; no yardstick; not hardware half speed\n",
+			       half_isa());
+		printf("\n%s: batch M bases/s (median), L2-resident and stream, 1 and %d threads; per call ns (%s, 1 thread)\n",
+		       prec_name(p), o->threads, p == PREC_HALF ? "out-of-line onb_NAMEh" : "inline");
 		printf("  roof%% = stream, 1 thread, vs the copy; vsYard = L2, 1 thread, vs the yardstick (both from best times);\n"
 		       "  vec = widest packed register of the kernel that ran; call ns = inline, independent calls; lat ns = dependent\n"
 		       "  chain; lat-ch = lat ns minus the chain alone (%.2f ns)\n",
@@ -613,8 +684,10 @@ static void print_table(const bench_opts *o, const bench_rows *rs)
 		       "roof%", "vsYard", "vec", "call ns", "lat ns", "lat-ch");
 		for (mi = -1; mi < o->nmeth; mi++) {
 			const char *name = mi < 0 ? "copy" : o->meth[mi]->name;
-			if (mi >= 0 && p && !o->meth[mi]->batch)
+			if (mi >= 0 && p == PREC_DOUBLE && !o->meth[mi]->batch)
 				continue; /* float only */
+			if (mi >= 0 && p == PREC_HALF && !o->meth[mi]->arrayh)
+				continue;
 			const char *mode = mi < 0 ? "roofline" : "batch";
 			const bench_row *a = find_row(rs, name, p, mode, "l2", 0);
 			const bench_row *b = find_row(rs, name, p, mode, "l2", 1);
@@ -662,6 +735,17 @@ static long bench_sizes(const bench_opts *o, size_t *n_l2_out, size_t *n_stream_
 	return l2;
 }
 
+/* 1 when the CPU has AVX512-FP16 (native binary16 arithmetic). */
+static int cpu_has_fp16(void)
+{
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && __GNUC__ >= 12
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("avx512fp16") != 0;
+#else
+	return 0;
+#endif
+}
+
 /* The provenance and '#' lines of bench.csv, before the header. */
 static void write_header(FILE *f, const bench_opts *o, int tsc, double ghz, const char *load0, const char *load1,
                          long l2, size_t n_l2, size_t n_stream)
@@ -681,11 +765,22 @@ static void write_header(FILE *f, const bench_opts *o, int tsc, double ghz, cons
 	           "(src/bench/yardstick.c: the flags above + -march=native -fno-tree-loop-distribute-patterns; the copy "
 	           "at full vector width); call loops %s (the flags above)\n",
 	        onb_batch_isa(), clone_name(), bench_yardstick_isa(), bench_calls_isa());
+	if (o->prec_on[PREC_HALF])
+		fprintf(f, "# half: binary16 arithmetic EMULATED (isa emulated-%s): libonb's half kernels (src/lib/half.c) do "
+		           "each operation in float and round it to binary16, with %s conversions; batch = onb_NAME_arrayh once "
+		           "per basis over SoA bit-pattern arrays (libonb has no half batch kernel), calls = onb_NAMEh out of "
+		           "line; no yardstick; inputs = the same directions rounded once to binary16; this CPU %s AVX512-FP16 "
+		           "(native half arithmetic), which these kernels do not use: no half figure is a hardware half speed\n",
+		           half_conv(), strcmp(half_conv(), "f16c") == 0 ? "F16C (vcvtph2ps, vcvtps2ph)" :
+		           strcmp(half_conv(), "soft") == 0 ? "libgcc soft-float" : "instruction",
+		           cpu_has_fp16() ? "has" : "lacks");
 	fprintf(f, "# vectorized: widest register of packed FP arithmetic in the function that ran (objdump of the "
 	           "executable): zmm, ymm, xmm, scalar, or unknown\n");
 	fprintf(f, "# sizes: l2 = %zu bases per thread (L2 %ld B per core; working set %zu B float, %zu B double); "
 	           "stream = %zu bases (%zu B float, %zu B double)\n",
 	        n_l2, l2, n_l2 * 36, n_l2 * 72, n_stream, n_stream * 36, n_stream * 72);
+	if (o->prec_on[PREC_HALF])
+		fprintf(f, "# sizes, half: the same numbers of bases, %zu B (l2) and %zu B (stream)\n", n_l2 * 18, n_stream * 18);
 	fprintf(f, "# repetitions: 1 calibration pass, %d warm-up and %d timed repetitions of >= %g s each; "
 	           "median (mbases_per_s, ns_per_call, cycles_per_call) and minimum time (_best)%s\n",
 	        o->warmup, o->reps, o->target, o->quick ? "; --quick: a check, not a measurement" : "");
@@ -729,7 +824,7 @@ int cmd_bench(int argc, char **argv)
 	bench_busy = atof(load0) >= BENCH_BUSY_LOAD;
 	tsc = bench_tsc_constant();
 	ghz = bench_tsc_ghz(o.quick ? 0.01 : 0.05);
-	for (p = 0; p < 2; p++)
+	for (p = 0; p < PREC_COUNT; p++)
 		if (o.prec_on[p])
 			if (bench_precision(&o, p, n_l2, n_stream, &rs) != 0) {
 				free(rs.v);

@@ -24,7 +24,17 @@ typedef struct {
 	   sum of the six outputs of every call. */
 	double (*lat) (size_t n, const onb_vec3  *in);
 	double (*latf)(size_t n, const onb_vec3f *in);
+	/* binary16 (NULL without ONB_HAVE_HALF): the same loops over onb_vec3h
+	   (in) and bench_pairh (out), calling libonb's out-of-line onb_NAMEh
+	   (the half kernels have no inline form); the latency chain's
+	   t = ((float)b1.x + (float)b2.x) * 0 and the input + t are computed
+	   in float and rounded to binary16 (exact: t = 0). */
+	void   (*tph) (size_t n, const void *in, void *out);
+	double (*lath)(size_t n, const void *in);
 } bench_call;
+#if ONB_HAVE_HALF
+typedef struct { onb_vec3h b1, b2; } bench_pairh;
+#endif
 
 /* The entry of registry method `name`, or NULL.  The pseudo-method
    "chain" returns b1 = b2 = n: its latency is the cost of the chain alone. */
@@ -33,6 +43,8 @@ const bench_call *bench_call_find(const char *name);
 const char *bench_calls_isa(void);
 double bench_pair_checksum (size_t n, const bench_pair  *p);
 double bench_pair_checksumf(size_t n, const bench_pairf *p);
+/* The same over n bench_pairh (0 without ONB_HAVE_HALF). */
+double bench_pair_checksumh(size_t n, const void *p);
 
 
 #endif

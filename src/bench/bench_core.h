@@ -59,13 +59,18 @@ double bench_median(double *v, size_t n);
 double bench_min(const double *v, size_t n);
 
 /* ---- structure-of-arrays buffers and the batch kernel adaptor ------- */
+/* A SoA loop over binary16 bit patterns (the half copy roofline). */
+typedef void (*bench_batchh_fn)(size_t count, const uint16_t *nx, const uint16_t *ny, const uint16_t *nz,
+                                uint16_t *b1x, uint16_t *b1y, uint16_t *b1z, uint16_t *b2x, uint16_t *b2y, uint16_t *b2z);
 typedef struct {
-	int     prec;           /* PREC_DOUBLE: double arrays, PREC_FLOAT: float   */
-	size_t  n;
+	int     prec;           /* PREC_DOUBLE: double arrays, PREC_FLOAT: float,  */
+	size_t  n;              /* PREC_HALF: binary16 bit patterns (uint16_t)     */
 	void   *in[3];          /* nx, ny, nz                                      */
 	void   *out[6];         /* b1x, b1y, b1z, b2x, b2y, b2z                    */
-	onb_batch_fn  batch;    /* the kernel the adaptor calls (one of the two)   */
+	onb_batch_fn  batch;    /* the kernel the adaptor calls (one of these)     */
 	onb_batchf_fn batchf;
+	bench_batchh_fn batchh; /* half: a SoA loop, else arrayh once per basis   */
+	onb_arrayh_fn arrayh;
 } bench_soa;
 
 /* Allocates n items in one precision (64-byte aligned arrays, outputs

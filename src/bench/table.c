@@ -290,8 +290,8 @@ static int load_accuracy(const char *summary_csv, tradeoff_row *rows, int n)
 }
 
 /* A row (accuracy only) for every binary16 method of summary.csv that
-   bench.csv has no speed for: bench measures float and double, sweep
-   --precision half adds half rows.  0, or -1 (reported). */
+   bench.csv has no speed for (a bench run without --precision half).
+   0, or -1 (reported). */
 static int add_half_rows(const char *summary_csv, row_set *s)
 {
 	csv_file c;
@@ -386,16 +386,20 @@ static void print_cell(double v, const char *fmt, int w)
 static void table_usage(void)
 {
 	printf("usage: onbstudy table [--bench FILE] [--summary FILE] [--out DIR] [--speed-tol T] [--format table|csv]\n"
+	       "                     [--precision P]\n"
 	       "  --bench FILE     a bench.csv (default results/latest/bench.csv, else the newest results/run-*/bench.csv)\n"
 	       "  --summary FILE   a sweep's summary.csv (default: found the same way)\n"
 	       "  --out DIR        where tradeoff.csv goes (default: the directory of the bench.csv)\n"
 	       "  --speed-tol T    speeds within this fraction count as equal on the Pareto front (default 0.05)\n"
-	       "  --format F       table (default) or csv on stdout\n");
+	       "  --format F       table (default) or csv on stdout\n"
+	       "  --precision P    float, double, both, half or all: the rows kept (default: every precision of\n"
+	       "                   the two files).  half: bench --precision half's speeds (binary16 emulated in\n"
+	       "                   float: not hardware half speed) beside sweep --precision half's accuracy\n");
 }
 
 typedef struct {
 	const char *bench, *summary, *out;
-	int csv;
+	int csv, prec_given, prec_on[PREC_COUNT];
 	double tol;
 } table_opts;
 
@@ -403,7 +407,7 @@ static int table_option(int v, const char *a, table_opts *o)
 {
 	if (!*a) {
 		study_error("--%s needs a value", v == 'b' ? "bench" : v == 's' ? "summary" : v == 'o' ? "out" :
-		            v == 't' ? "speed-tol" : "format");
+		            v == 't' ? "speed-tol" : v == 'p' ? "precision" : "format");
 		return -1;
 	}
 	switch (v) {
@@ -419,6 +423,7 @@ static int table_option(int v, const char *a, table_opts *o)
 		}
 		return 0;
 	case 'f': return (o->csv = cli_format("--format", a, 0)) < 0 ? -1 : 0;
+	case 'p': o->prec_given = 1; return cli_precision_half("--precision", a, o->prec_on);
 	}
 	return -1;
 }
@@ -429,7 +434,8 @@ static int table_parse(int argc, char **argv, table_opts *o)
 	static const struct option lo[] = {
 		{ "bench", required_argument, NULL, 'b' }, { "summary", required_argument, NULL, 's' },
 		{ "out", required_argument, NULL, 'o' }, { "speed-tol", required_argument, NULL, 't' },
-		{ "format", required_argument, NULL, 'f' }, CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
+		{ "format", required_argument, NULL, 'f' }, { "precision", required_argument, NULL, 'p' },
+		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
 	cli_args c;
 	int v, rc = 0;
@@ -487,6 +493,11 @@ static int table_write(const table_opts *o, const tradeoff_row *rows, int n, stu
 	              "any nonfinite output = infinite) and better in one; na without speed or accuracy\n", 100.0 * o->tol);
 	fprintf(f->f, "# floor (uniform): max_floor_uniform = the largest defect of the method's exact formula rounded once to the format; "
 	              "x_floor = max_defect_uniform / max_floor_uniform; *_floor_ratio_uniform: the per-input ratio's RMS and max (summary.csv)\n");
+	for (i = 0; i < n && !(rows[i].prec == PREC_HALF && rows[i].has_speed); i++)
+		;
+	if (i < n)
+		fprintf(f->f, "# half: speeds from bench --precision half, binary16 arithmetic EMULATED in float (libonb's half "
+		              "kernels, each operation rounded to binary16): not hardware half speed\n");
 	fprintf(f->f, "%s\n", TRADEOFF_COLUMNS);
 	for (p = 0; p < PREC_COUNT; p++)
 		for (i = 0; i < n; i++) {
@@ -523,6 +534,12 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 	printf("# speed from %s, accuracy from %s; * = Pareto front of its precision (speeds within %g%% equal)\n",
 	       o->bench, o->summary, 100.0 * o->tol);
 	printf("# xfloor = max defect on uniform / the floor's (the method's exact formula rounded once to the format)\n");
+	for (i = 0; i < n && rows[i].prec == PREC_HALF; i++)
+		;
+	if (i == n) { /* binary16 alone */
+		table_print_half(rows, n);
+		return;
+	}
 	printf("%-24s |%51s |%51s\n", "", "float", "double");
 	printf("%-24s |", "method");
 	for (p = 0; p < 2; p++)
@@ -551,24 +568,34 @@ static void table_print(const table_opts *o, const tradeoff_row *rows, int n)
 	table_print_half(rows, n);
 }
 
-/* The binary16 rows (sweep --precision half), accuracy only: bench.csv
-   has no half speeds. */
+/* The binary16 rows: accuracy from sweep --precision half, speeds (where
+   the bench.csv has half rows) from bench --precision half, whose
+   arithmetic is emulated in float. */
 static void table_print_half(const tradeoff_row *rows, int n)
 {
-	int i, any = 0;
+	int i, any = 0, speeds = 0;
+	for (i = 0; i < n; i++)
+		speeds |= rows[i].prec == PREC_HALF && rows[i].has_speed;
 	for (i = 0; i < n; i++) {
 		if (rows[i].prec != PREC_HALF)
 			continue;
 		if (!any++)
-			printf("\n# binary16 (sweep --precision half; no speeds: bench has no half rows), u = 2^-11\n"
-			       "%-24s | %8s %8s %8s %6s %8s\n", "method", "rmse uni", "max sth", "max thr", "xfloor", "max uni/u");
+			printf("\n# binary16 (sweep --precision half), u = 2^-11; %s\n"
+			       "%-24s | %7s %7s %6s %8s %8s %8s %6s %8s\n",
+			       speeds ? "speeds from bench --precision half: EMULATED in float (libonb's half kernels), "
+			                "not hardware half speed; * = Pareto front of the half rows" :
+			                "no speeds: the bench.csv has no half rows (bench --precision half)",
+			       "method", "M/s 1t", "M/s all", "ns", "rmse uni", "max sth", "max thr", "xfloor", "max uni/u");
 		printf("%-24s |", rows[i].method);
+		print_cell(rows[i].batch1, " %*.1f", 7);
+		print_cell(rows[i].batchn, " %*.1f", 7);
+		print_cell(rows[i].call_ns, " %*.1f", 6);
 		print_cell(rows[i].rmse_uniform, " %*.1e", 8);
 		print_cell(rows[i].max_south, " %*.1e", 8);
 		print_cell(rows[i].max_threshold, " %*.1e", 8);
 		print_cell(rows[i].x_floor, " %*.2f", 6);
 		print_cell(rows[i].max_uniform * 2048.0, " %*.3g", 8);
-		printf("\n");
+		printf("%s\n", rows[i].pareto ? "*" : "");
 	}
 }
 
@@ -631,6 +658,19 @@ int cmd_table(int argc, char **argv)
 	if (n < 0)
 		return ONB_EXIT_USAGE;
 	bench_caveats(o.bench);
+	if (o.prec_given) { /* the precisions asked for alone (the front is per precision: unchanged) */
+		int i, m = 0;
+		for (i = 0; i < n; i++)
+			if (o.prec_on[rows[i].prec])
+				rows[m++] = rows[i];
+		if (m == 0 && n > 0) {
+			study_error("table: --precision: '%s' and '%s' have no rows of that precision (bench --precision half "
+			            "and sweep --precision half make the half ones)", o.bench, o.summary);
+			free(rows);
+			return ONB_EXIT_USAGE;
+		}
+		n = m;
+	}
 	if (n == 0) {
 		study_error("table: '%s' has no batch or call_throughput rows", o.bench);
 		free(rows);

@@ -60,6 +60,17 @@ BENCH_FULL_WIDTH void bench_copyf(SOA_ARGS(float))
 	}
 }
 
+/* binary16 bit patterns: the half roofline. */
+BENCH_FULL_WIDTH void bench_copyh(SOA_ARGS(uint16_t))
+{
+	size_t i;
+	for (i = 0; i < count; i++) {
+		const uint16_t x = nx[i], y = ny[i], z = nz[i];
+		b1x[i] = x; b1y[i] = y; b1z[i] = z;
+		b2x[i] = x; b2y[i] = y; b2z[i] = z;
+	}
+}
+
 /* Duff et al. 2017, Listing 3. */
 void bench_yard_duff_branchless(SOA_ARGS(double));
 void bench_yard_duff_branchless(SOA_ARGS(double))

@@ -21,6 +21,8 @@ void bench_copy  (size_t count, const double *nx, const double *ny, const double
                   double *b1x, double *b1y, double *b1z, double *b2x, double *b2y, double *b2z);
 void bench_copyf (size_t count, const float *nx, const float *ny, const float *nz,
                   float *b1x, float *b1y, float *b1z, float *b2x, float *b2y, float *b2z);
+void bench_copyh (size_t count, const uint16_t *nx, const uint16_t *ny, const uint16_t *nz,
+                  uint16_t *b1x, uint16_t *b1y, uint16_t *b1z, uint16_t *b2x, uint16_t *b2y, uint16_t *b2z);
 /* The -march the yardstick was built for, as its predefined macros say. */
 const char *bench_yardstick_isa(void);
 

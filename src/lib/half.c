@@ -34,11 +34,42 @@
  *
  * Constants: the float kernel's, rounded to binary16 (onb.h's
  * ONB__DECLARE_H comment lists what they become).
+ *
+ * Conversions: without F16C, GCC converts _Float16 to and from float
+ * through libgcc's soft-float routines (__extendhfsf2, __truncsfhf2: a
+ * call each, several per operation).  So on x86-64 with GCC this file is
+ * compiled twice: as it is (the kernels named onb__NAMEh_soft, HN below),
+ * and with -mf16c -DONB__HALF_F16C (build/lib/half_f16c.o: onb__NAMEh_f16c,
+ * vcvtph2ps and vcvtps2ph), and each public onb_NAMEh is an ifunc that
+ * picks the F16C copy where the CPU has it (onb_half_isa names the one
+ * that runs).  Same bits: both conversions are exact (half to float) or
+ * round to nearest even under the default MXCSR (float to half, imm8 4),
+ * and every operation is the same float operation; tests/test_half.c
+ * compares the two copies bit for bit.  Arithmetic stays emulated in
+ * float either way: neither copy uses AVX512-FP16's native half
+ * instructions.
  */
 #define ONB_BUILDING_LIB 1
 #include "libonb/onb.h"
 
-#if ONB_HAVE_HALF
+/* Two copies and ifuncs (see the top): GCC on x86-64, as batch.c's clones. */
+#if ONB_HAVE_HALF && defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(ONB_NO_CLONES) && \
+    (!defined(__F16C__) || defined(ONB__HALF_F16C))
+#define ONB__HALF_DISPATCH 1
+#else
+#define ONB__HALF_DISPATCH 0
+#endif
+
+#if ONB_HAVE_HALF && (ONB__HALF_DISPATCH || !defined(ONB__HALF_F16C))
+
+/* HN(NAMEh): a kernel's name in this compilation (see the top). */
+#if ONB__HALF_DISPATCH && defined(ONB__HALF_F16C)
+#define HN(f) onb__##f##_f16c
+#elif ONB__HALF_DISPATCH
+#define HN(f) onb__##f##_soft
+#else
+#define HN(f) onb_##f
+#endif
 
 typedef onb_half  H;
 typedef onb_vec3h V;
@@ -120,11 +151,11 @@ static void naiveh(V n, V *b1, V *b2, int norm)
 	b.z = hsub(b.z, hmul(n.z, d));
 	hpost(n, b, hrsq(hdot(b, b), norm), b1, b2);
 }
-void onb_naiveh(V n, V *b1, V *b2)           { naiveh(n, b1, b2, ONB__NORM_LIBM); }
-void onb_naive_invsqrth(V n, V *b1, V *b2)   { naiveh(n, b1, b2, ONB__NORM_INVSQRT); }
-void onb_naive_rsqrth(V n, V *b1, V *b2)     { naiveh(n, b1, b2, ONB__NORM_RSQRT); }
-void onb_naive_rsqrt_nrh(V n, V *b1, V *b2)  { naiveh(n, b1, b2, ONB__NORM_RSQRT_NR); }
-void onb_naive_nonormh(V n, V *b1, V *b2)    { naiveh(n, b1, b2, ONB__NORM_NONE); }
+void HN(naiveh)(V n, V *b1, V *b2)           { naiveh(n, b1, b2, ONB__NORM_LIBM); }
+void HN(naive_invsqrth)(V n, V *b1, V *b2)   { naiveh(n, b1, b2, ONB__NORM_INVSQRT); }
+void HN(naive_rsqrth)(V n, V *b1, V *b2)     { naiveh(n, b1, b2, ONB__NORM_RSQRT); }
+void HN(naive_rsqrt_nrh)(V n, V *b1, V *b2)  { naiveh(n, b1, b2, ONB__NORM_RSQRT_NR); }
+void HN(naive_nonormh)(V n, V *b1, V *b2)    { naiveh(n, b1, b2, ONB__NORM_NONE); }
 
 /* ---- hughes_moeller ---- */
 static void hughes_moellerh(V n, V *b1, V *b2, int norm)
@@ -138,14 +169,14 @@ static void hughes_moellerh(V n, V *b1, V *b2, int norm)
 	*b2 = v;
 	*b1 = hcross(v, n);
 }
-void onb_hughes_moellerh(V n, V *b1, V *b2)           { hughes_moellerh(n, b1, b2, ONB__NORM_LIBM); }
-void onb_hughes_moeller_invsqrth(V n, V *b1, V *b2)   { hughes_moellerh(n, b1, b2, ONB__NORM_INVSQRT); }
-void onb_hughes_moeller_rsqrth(V n, V *b1, V *b2)     { hughes_moellerh(n, b1, b2, ONB__NORM_RSQRT); }
-void onb_hughes_moeller_rsqrt_nrh(V n, V *b1, V *b2)  { hughes_moellerh(n, b1, b2, ONB__NORM_RSQRT_NR); }
-void onb_hughes_moeller_nonormh(V n, V *b1, V *b2)    { hughes_moellerh(n, b1, b2, ONB__NORM_NONE); }
+void HN(hughes_moellerh)(V n, V *b1, V *b2)           { hughes_moellerh(n, b1, b2, ONB__NORM_LIBM); }
+void HN(hughes_moeller_invsqrth)(V n, V *b1, V *b2)   { hughes_moellerh(n, b1, b2, ONB__NORM_INVSQRT); }
+void HN(hughes_moeller_rsqrth)(V n, V *b1, V *b2)     { hughes_moellerh(n, b1, b2, ONB__NORM_RSQRT); }
+void HN(hughes_moeller_rsqrt_nrh)(V n, V *b1, V *b2)  { hughes_moellerh(n, b1, b2, ONB__NORM_RSQRT_NR); }
+void HN(hughes_moeller_nonormh)(V n, V *b1, V *b2)    { hughes_moellerh(n, b1, b2, ONB__NORM_NONE); }
 
 /* ---- frisvad, frisvad_max, q2rtx: Listing 2 with threshold t ---- */
-void onb_frisvad_thresholdh(V n, H t, V *b1, V *b2)
+void HN(frisvad_thresholdh)(V n, H t, V *b1, V *b2)
 {
 	H a, b;
 	if (n.z < t) {
@@ -158,12 +189,12 @@ void onb_frisvad_thresholdh(V n, H t, V *b1, V *b2)
 	*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), b, hneg(n.x));
 	*b2 = hvec(b, hsub(H1, hmul(hmul(n.y, n.y), a)), hneg(n.y));
 }
-void onb_frisvadh(V n, V *b1, V *b2)     { onb_frisvad_thresholdh(n, (H)ONB_FRISVAD_TF, b1, b2); }
-void onb_frisvad_maxh(V n, V *b1, V *b2) { onb_frisvad_thresholdh(n, (H)ONB_FRISVAD_MAX_TF, b1, b2); }
-void onb_q2rtxh(V n, V *b1, V *b2)       { onb_frisvad_thresholdh(n, (H)ONB_Q2RTX_TF, b1, b2); }
+void HN(frisvadh)(V n, V *b1, V *b2)     { HN(frisvad_thresholdh)(n, (H)ONB_FRISVAD_TF, b1, b2); }
+void HN(frisvad_maxh)(V n, V *b1, V *b2) { HN(frisvad_thresholdh)(n, (H)ONB_FRISVAD_MAX_TF, b1, b2); }
+void HN(q2rtxh)(V n, V *b1, V *b2)       { HN(frisvad_thresholdh)(n, (H)ONB_Q2RTX_TF, b1, b2); }
 
 /* Frisvad 2012, Equation 3 (onb_frisvad_rotatef) */
-V onb_frisvad_rotateh(V n, H x, H y, H z)
+V HN(frisvad_rotateh)(V n, H x, H y, H z)
 {
 	const H s = hadd(H1, n.z);
 	H a, b;
@@ -177,7 +208,7 @@ V onb_frisvad_rotateh(V n, H x, H y, H z)
 }
 
 /* ---- duff, duff_branchless, mitsuba3 ---- */
-void onb_duffh(V n, V *b1, V *b2)
+void HN(duffh)(V n, V *b1, V *b2)
 {
 	if (n.z < H0) {
 		const H a = hdiv(H1, hsub(H1, n.z));
@@ -192,7 +223,7 @@ void onb_duffh(V n, V *b1, V *b2)
 	}
 }
 static inline H hsign(H z) { return (H)copysignf(1.0f, (float)z); }
-void onb_duff_branchlessh(V n, V *b1, V *b2)
+void HN(duff_branchlessh)(V n, V *b1, V *b2)
 {
 	const H sign = hsign(n.z);
 	const H a = hdiv(hneg(H1), hadd(sign, n.z));
@@ -200,7 +231,7 @@ void onb_duff_branchlessh(V n, V *b1, V *b2)
 	*b1 = hvec(hadd(H1, hmul(hmul(hmul(sign, n.x), n.x), a)), hmul(sign, b), hmul(hneg(sign), n.x));
 	*b2 = hvec(b, hadd(sign, hmul(hmul(n.y, n.y), a)), hneg(n.y));
 }
-void onb_mitsuba3h(V n, V *b1, V *b2)
+void HN(mitsuba3h)(V n, V *b1, V *b2)
 {
 	const H sign = hsign(n.z);
 	const H a = hneg(hdiv(H1, hadd(sign, n.z)));
@@ -220,11 +251,11 @@ static void starkh(V n, V *b1, V *b2, int fixed)
 	const V p = hcross(n, e);
 	hpost(n, p, hdiv(H1, hsqrt(hdot(p, p))), b1, b2);
 }
-void onb_starkh(V n, V *b1, V *b2)       { starkh(n, b1, b2, 0); }
-void onb_stark_fixedh(V n, V *b1, V *b2) { starkh(n, b1, b2, 1); }
+void HN(starkh)(V n, V *b1, V *b2)       { starkh(n, b1, b2, 0); }
+void HN(stark_fixedh)(V n, V *b1, V *b2) { starkh(n, b1, b2, 1); }
 
 /* ---- pbrt_v3: Cross widened to double, each component rounded once ---- */
-void onb_pbrt_v3h(V n, V *b1, V *b2)
+void HN(pbrt_v3h)(V n, V *b1, V *b2)
 {
 	V u;
 	H inv;
@@ -245,7 +276,7 @@ void onb_pbrt_v3h(V n, V *b1, V *b2)
 }
 
 /* ---- rtow ---- */
-void onb_rtowh(V w, V *b1, V *b2)
+void HN(rtowh)(V w, V *b1, V *b2)
 {
 	const H inv = hdiv(H1, hsqrt(hdot(w, w)));
 	const V uw = hvec(hmul(inv, w.x), hmul(inv, w.y), hmul(inv, w.z));
@@ -258,7 +289,7 @@ void onb_rtowh(V w, V *b1, V *b2)
 }
 
 /* ---- tangent_cross_z ---- */
-void onb_tangent_cross_zh(V n, V *b1, V *b2)
+void HN(tangent_cross_zh)(V n, V *b1, V *b2)
 {
 	const V t = hvec(n.x, n.y, hadd(n.z, H1));
 	V c = hcross(n, t);
@@ -269,7 +300,7 @@ void onb_tangent_cross_zh(V n, V *b1, V *b2)
 }
 
 /* ---- filament, filament_fixed (y-up) ---- */
-void onb_filamenth(V n, V *b1, V *b2)
+void HN(filamenth)(V n, V *b1, V *b2)
 {
 	H va, vb;
 	if (n.y < (H)ONB_FILAMENT_TF) {
@@ -283,7 +314,7 @@ void onb_filamenth(V n, V *b1, V *b2)
 	*b2 = hvec(hsub(H1, hmul(hmul(n.x, n.x), va)), hneg(n.x), vb);
 }
 /* filament_hm: FLT_EPSILON (2^-23) is a binary16 subnormal, exact */
-void onb_filament_hmh(V n, V *b1, V *b2)
+void HN(filament_hmh)(V n, V *b1, V *b2)
 {
 	V t;
 	if (habs(n.x) > hadd(habs(n.z), (H)ONB_FILAMENT_HM_EPS)) t = hvec(hneg(n.y), n.x, H0);
@@ -306,10 +337,10 @@ static void capsaicinh(V n, int sel, V *b1, V *b2)
 	*b1 = b;
 	*b2 = hcross(n, b);
 }
-void onb_capsaicinh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > H0, b1, b2); }
-void onb_capsaicin_fixedh(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > habs(n.x), b1, b2); }
+void HN(capsaicinh)(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > H0, b1, b2); }
+void HN(capsaicin_fixedh)(V n, V *b1, V *b2) { capsaicinh(n, habs(n.z) > habs(n.x), b1, b2); }
 /* ---- unity (GetLocalFrame): FastSign(z) = z >= 0 ? 1 : -1 ---- */
-void onb_unityh(V n, V *b1, V *b2)
+void HN(unityh)(V n, V *b1, V *b2)
 {
 	const H sz = n.z >= H0 ? H1 : hneg(H1);
 	const H a = hdiv(H1, hadd(sz, n.z));
@@ -324,14 +355,14 @@ static V hnormalize_div(V v)
 	return hvec(hdiv(v.x, l), hdiv(v.y, l), hdiv(v.z, l));
 }
 /* willems: up = z when |n.z| < 0.999, else x */
-void onb_willemsh(V n, V *b1, V *b2)
+void HN(willemsh)(V n, V *b1, V *b2)
 {
 	const V up = habs(n.z) < hcst(0.999) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
 	*b1 = hnormalize_div(hcross(up, n));
 	*b2 = hnormalize_div(hcross(n, *b1));
 }
 /* gltf_viewer: up = y, or +-z when 1 - |n.y| <= 1e-7 */
-void onb_gltf_viewerh(V n, V *b1, V *b2)
+void HN(gltf_viewerh)(V n, V *b1, V *b2)
 {
 	const H d = hadd(hadd(hmul(n.x, H0), hmul(n.y, H1)), hmul(n.z, H0));
 	V up = hvec(H0, H1, H0);
@@ -350,9 +381,9 @@ static void rtaoh(V n, V *b1, V *b2, int fixed)
 	*b2 = hnormalize_div(hcross(n, r));
 	*b1 = hcross(*b2, n);
 }
-void onb_rtaoh(V n, V *b1, V *b2)       { rtaoh(n, b1, b2, 0); }
-void onb_rtao_fixedh(V n, V *b1, V *b2) { rtaoh(n, b1, b2, 1); }
-void onb_filament_fixedh(V n, V *b1, V *b2)
+void HN(rtaoh)(V n, V *b1, V *b2)       { rtaoh(n, b1, b2, 0); }
+void HN(rtao_fixedh)(V n, V *b1, V *b2) { rtaoh(n, b1, b2, 1); }
+void HN(filament_fixedh)(V n, V *b1, V *b2)
 {
 	H a, b;
 	if (n.y < H0) {
@@ -380,8 +411,8 @@ static V cycles111_b1h(V n)
 	l = hsqrt(hdot(a, a));
 	return hvec(hdiv(a.x, l), hdiv(a.y, l), hdiv(a.z, l));
 }
-void onb_cycles_cross111h(V n, V *b1, V *b2) { hpost(n, cycles111_b1h(n), H1, b1, b2); }
-void onb_cycles_cross111_avx2h(V n, V *b1, V *b2)
+void HN(cycles_cross111h)(V n, V *b1, V *b2) { hpost(n, cycles111_b1h(n), H1, b1, b2); }
+void HN(cycles_cross111_avx2h)(V n, V *b1, V *b2)
 {
 	const V a = cycles111_b1h(n);
 	*b1 = a;
@@ -396,7 +427,7 @@ static inline H hembree_rsqrt(H x)
 	const H r = (H)onb__hw_rsqrtf((float)x);
 	return hadd(hmul(hcst(1.5), r), hmul(hmul(hmul(x, hcst(-0.5)), r), hmul(r, r)));
 }
-void onb_embreeh(V n, V *b1, V *b2)
+void HN(embreeh)(V n, V *b1, V *b2)
 {
 	const H zz = hmul(n.z, n.z), d0 = hadd(zz, hmul(n.y, n.y)), d1 = hadd(zz, hmul(n.x, n.x));
 	V u, c;
@@ -411,7 +442,7 @@ void onb_embreeh(V n, V *b1, V *b2)
 }
 
 /* ---- luxcore: the 1e-5 comparison in double, as the float kernel's ---- */
-void onb_luxcoreh(V n, V *b1, V *b2)
+void HN(luxcoreh)(V n, V *b1, V *b2)
 {
 	const H len = hsqrt(hadd(hmul(n.x, n.x), hmul(n.y, n.y)));
 	V v;
@@ -419,7 +450,7 @@ void onb_luxcoreh(V n, V *b1, V *b2)
 	else                    v = hvec(hdiv(hneg(n.y), len), hdiv(n.x, len), H0);
 	hpost(n, v, H1, b2, b1);
 }
-void onb_luxcore_fixedh(V n, V *b1, V *b2)
+void HN(luxcore_fixedh)(V n, V *b1, V *b2)
 {
 	const H len = hsqrt(hadd(hmul(n.x, n.x), hmul(n.y, n.y)));
 	V v;
@@ -443,13 +474,13 @@ static V jolt_perph(V n)
 		return hvec(hdiv(H0, len), hdiv(n.z, len), hdiv(hsub(H0, n.y), len));
 	}
 }
-void onb_jolth(V n, V *b1, V *b2)
+void HN(jolth)(V n, V *b1, V *b2)
 {
 	const V p = jolt_perph(n);
 	*b1 = p;
 	*b2 = hcross(n, p);
 }
-void onb_jolt_fmah(V n, V *b1, V *b2)
+void HN(jolt_fmah)(V n, V *b1, V *b2)
 {
 	const V p = jolt_perph(n);
 	*b1 = p;
@@ -474,7 +505,7 @@ static H osl_lenh(H x, H y, H z)
 	ax = hdiv(ax, m); ay = hdiv(ay, m); az = hdiv(az, m);
 	return hmul(m, hsqrt(hadd(hadd(hmul(ax, ax), hmul(ay, ay)), hmul(az, az))));
 }
-void onb_osl_orthoh(V n, V *b1, V *b2)
+void HN(osl_orthoh)(V n, V *b1, V *b2)
 {
 	V p;
 	H l;
@@ -487,7 +518,7 @@ void onb_osl_orthoh(V n, V *b1, V *b2)
 }
 
 /* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */
-void onb_jolt_arm64h(V n, V *b1, V *b2)
+void HN(jolt_arm64h)(V n, V *b1, V *b2)
 {
 	const H xx = hmul(n.x, n.x), yy = hmul(n.y, n.y), zz = hmul(n.z, n.z);
 	const H len = hsqrt(hadd(xx < yy ? yy : xx, zz));
@@ -499,7 +530,7 @@ void onb_jolt_arm64h(V n, V *b1, V *b2)
 }
 
 /* ---- nori: c = perpendicular * (1/len), b1 = c x n, b2 = c ---- */
-void onb_norih(V a, V *b, V *c)
+void HN(norih)(V a, V *b, V *c)
 {
 	V t;
 	if (habs(a.x) > habs(a.y)) {
@@ -514,7 +545,7 @@ void onb_norih(V a, V *b, V *c)
 }
 
 /* ---- bullet ---- */
-void onb_bulleth(V n, V *b1, V *b2)
+void HN(bulleth)(V n, V *b1, V *b2)
 {
 	if (habs(n.z) > hcst(0x1.6a09e667f3bcdp-1) /* SIMDSQRT12 in binary16 */) {
 		const H a = hadd(hmul(n.y, n.y), hmul(n.z, n.z)), k = hdiv(H1, hsqrt(a));
@@ -535,7 +566,7 @@ static V mj_normalizeh(V v)
 		return hvec(H1, H0, H0);
 	return hscale(v, hdiv(H1, s));
 }
-void onb_mujocoh(V n, V *b1, V *b2)
+void HN(mujocoh)(V n, V *b1, V *b2)
 {
 	const V m = mj_normalizeh(n);
 	V e = hvec(H0, H0, H0);
@@ -549,7 +580,7 @@ void onb_mujocoh(V n, V *b1, V *b2)
 }
 
 /* ---- eigen: NumTraits<Eigen::half>::dummy_precision() = half(1e-2f) ---- */
-void onb_eigenh(V n, V *b1, V *b2)
+void HN(eigenh)(V n, V *b1, V *b2)
 {
 	const H zp = hmul(habs(n.z), (H)1e-2f);
 	V p;
@@ -570,7 +601,7 @@ static V physx_normh(V v)
 	const H m = hsqrt(hdot(v, v));
 	return m > H0 ? hscale(v, hdiv(H1, m)) : v;
 }
-void onb_physxh(V n, V *b1, V *b2)
+void HN(physxh)(V n, V *b1, V *b2)
 {
 	V r, u;
 	if (habs(n.y) <= (H)0.9999f) {
@@ -583,11 +614,11 @@ void onb_physxh(V n, V *b1, V *b2)
 	*b1 = r;
 	*b2 = u;
 }
-void onb_physx_fixedh(V n, V *b1, V *b2)
+void HN(physx_fixedh)(V n, V *b1, V *b2)
 {
 	V u;
 	if (habs(n.y) <= (H)0.9999f) {
-		onb_physxh(n, b1, b2);
+		HN(physxh)(n, b1, b2);
 		return;
 	}
 	u = physx_normh(hvec(H0, n.z, hneg(n.y)));
@@ -596,7 +627,7 @@ void onb_physx_fixedh(V n, V *b1, V *b2)
 }
 
 /* ---- rp3d ---- */
-void onb_rp3dh(V n, V *b1, V *b2)
+void HN(rp3dh)(V n, V *b1, V *b2)
 {
 	const H ax = habs(n.x), ay = habs(n.y), az = habs(n.z);
 	const int k = ax < ay ? (ax < az ? 0 : 2) : (ay < az ? 1 : 2);
@@ -634,7 +665,7 @@ static void o3d_finish(V n, V p, V *b1, V *b2)
 	*b1 = p;
 	*b2 = o3d_normalizeh(hcross(n, p));
 }
-void onb_open3dh(V n, V *b1, V *b2)
+void HN(open3dh)(V n, V *b1, V *b2)
 {
 	const V d = hvec(hsub(H0, n.x), hsub(H1, n.y), hsub(H1, n.z));
 	if (o3d_sq(d) > hcst(1e-3))
@@ -642,7 +673,7 @@ void onb_open3dh(V n, V *b1, V *b2)
 	else
 		o3d_finish(n, hvec(n.y, hsub(n.z, n.x), hneg(n.y)), b1, b2);
 }
-void onb_open3d_fixedh(V n, V *b1, V *b2)
+void HN(open3d_fixedh)(V n, V *b1, V *b2)
 {
 	const H c = hcst(0x1.6a09e667f3bcdp-1); /* 1/sqrt(2) in binary16 */
 	const V d = hvec(hsub(H0, n.x), hsub(c, n.y), hsub(c, n.z));
@@ -655,7 +686,7 @@ void onb_open3d_fixedh(V n, V *b1, V *b2)
 
 /* ---- raylib: the smallest |component|'s axis (ties to the earlier),
    Vector3Normalize (1/length, skipped when length is 0), cross(n, b1) ---- */
-void onb_raylibh(V n, V *b1, V *b2)
+void HN(raylibh)(V n, V *b1, V *b2)
 {
 	H min = habs(n.x), len;
 	V e = hvec(H1, H0, H0), p;
@@ -693,12 +724,12 @@ static void godoth(V n, V *b1, V *b2, int fixed)
 	*b1 = p;
 	*b2 = hcross(n, p);
 }
-void onb_godoth(V n, V *b1, V *b2)       { godoth(n, b1, b2, 0); }
-void onb_godot_fixedh(V n, V *b1, V *b2) { godoth(n, b1, b2, 1); }
+void HN(godoth)(V n, V *b1, V *b2)       { godoth(n, b1, b2, 0); }
+void HN(godot_fixedh)(V n, V *b1, V *b2) { godoth(n, b1, b2, 1); }
 
 /* ---- directxmath: (y + z, 0 - x, 0 - x) or (y - z, 0 - x, x), divided by
    its length (+0 for a zero length, NaN for an infinite square), cross ---- */
-void onb_directxmathh(V n, V *b1, V *b2)
+void HN(directxmathh)(V n, V *b1, V *b2)
 {
 	const int same = (n.z < H0) == (n.y < H0);
 	V p = hvec(same ? hadd(n.y, n.z) : hsub(n.y, n.z), hsub(H0, n.x), same ? hsub(H0, n.x) : n.x);
@@ -715,7 +746,7 @@ void onb_directxmathh(V n, V *b1, V *b2)
 
 /* ---- ogre: Hocevar's vector, normalisedCopy (1/length from a sum
    started at 0, skipped when length is 0), cross(n, b1) ---- */
-void onb_ogreh(V n, V *b1, V *b2)
+void HN(ogreh)(V n, V *b1, V *b2)
 {
 	V p = habs(n.x) > habs(n.z) ? hvec(hneg(n.y), n.x, H0) : hvec(H0, hneg(n.z), n.y);
 	H sq = H0, len;
@@ -741,13 +772,13 @@ static void bxh(V n, V *b1, V *b2, int fixed)
 	*b1 = t;
 	*b2 = hcross(n, t);
 }
-void onb_bxh(V n, V *b1, V *b2)       { bxh(n, b1, b2, 0); }
-void onb_bx_fixedh(V n, V *b1, V *b2) { bxh(n, b1, b2, 1); }
+void HN(bxh)(V n, V *b1, V *b2)       { bxh(n, b1, b2, 0); }
+void HN(bx_fixedh)(V n, V *b1, V *b2) { bxh(n, b1, b2, 1); }
 
 /* ---- blender: len_squared_v2 > FLT_EPSILON (2^-23, a binary16
    subnormal), else the fixed frame; b2 = n x b1 without the zero
    products ---- */
-void onb_blenderh(V n, V *b1, V *b2)
+void HN(blenderh)(V n, V *b1, V *b2)
 {
 	const H f = hadd(hmul(n.x, n.x), hmul(n.y, n.y));
 	if (f > hcst(0x1p-23)) {
@@ -762,7 +793,7 @@ void onb_blenderh(V n, V *b1, V *b2)
 
 /* ---- box3d: b3Perp, b3Normalize (1000*FLT_MIN rounds to 0 in binary16),
    b2 = b3Cross(b1, n) ---- */
-void onb_box3dh(V n, V *b1, V *b2)
+void HN(box3dh)(V n, V *b1, V *b2)
 {
 	const H half = hcst(0.5);
 	const V p = n.x < hneg(half) || half < n.x ? hvec(n.y, hneg(n.x), H0) : hvec(H0, n.z, hneg(n.y));
@@ -773,7 +804,7 @@ void onb_box3dh(V n, V *b1, V *b2)
 
 /* ---- appleseed: the smallest |component| (strict <, ties to z, then
    to y over x), u with it zeroed, u * (1/sqrt(u.u)), b2 = cross(b1, n) ---- */
-void onb_appleseedh(V n, V *b1, V *b2)
+void HN(appleseedh)(V n, V *b1, V *b2)
 {
 	const H ax = habs(n.x), ay = habs(n.y), az = habs(n.z);
 	V u;
@@ -787,7 +818,7 @@ void onb_appleseedh(V n, V *b1, V *b2)
 
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
-void onb_duff_wideh(V n, V *b1, V *b2)
+void HN(duff_wideh)(V n, V *b1, V *b2)
 {
 	const double x = (double)n.x, y = (double)n.y, z = (double)n.z;
 	const double sign = copysign(1.0, z);
@@ -798,7 +829,7 @@ void onb_duff_wideh(V n, V *b1, V *b2)
 }
 
 /* ---- duff_comp: duff_compf's error-free transformations in binary16 ---- */
-void onb_duff_comph(V n, V *b1, V *b2)
+void HN(duff_comph)(V n, V *b1, V *b2)
 {
 	const H x = n.x, y = n.y, z = n.z;
 	const H s = hsign(z);
@@ -820,6 +851,52 @@ void onb_duff_comph(V n, V *b1, V *b2)
 	*b2 = hvec(bb, hadd(t2, hadd(t2l, ql)), hneg(y));
 }
 
+#if !defined(ONB__HALF_F16C)
+#if ONB__HALF_DISPATCH
+/* The public names: ifuncs resolved once, at load time, to the F16C copy
+   where the CPU has F16C, else to this file's own (soft) copy. */
+#define ONB__HRESOLVE(m)                                                      \
+	void onb__##m##h_f16c(V n, V *b1, V *b2);                                 \
+	static void (*onb__##m##h_resolve(void))(V, V *, V *)                     \
+	{                                                                         \
+		__builtin_cpu_init();                                                 \
+		return __builtin_cpu_supports("f16c") ? onb__##m##h_f16c : onb__##m##h_soft; \
+	}                                                                         \
+	void onb_##m##h(V n, V *b1, V *b2) __attribute__((ifunc("onb__" #m "h_resolve")));
+ONB_METHOD_LIST(ONB__HRESOLVE)
+ONB_FLOAT_METHOD_LIST(ONB__HRESOLVE)
+void onb__frisvad_thresholdh_f16c(V n, H t, V *b1, V *b2);
+static void (*onb__frisvad_thresholdh_resolve(void))(V, H, V *, V *)
+{
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("f16c") ? onb__frisvad_thresholdh_f16c : onb__frisvad_thresholdh_soft;
+}
+void onb_frisvad_thresholdh(V n, H t, V *b1, V *b2) __attribute__((ifunc("onb__frisvad_thresholdh_resolve")));
+V onb__frisvad_rotateh_f16c(V n, H x, H y, H z);
+static V (*onb__frisvad_rotateh_resolve(void))(V, H, H, H)
+{
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("f16c") ? onb__frisvad_rotateh_f16c : onb__frisvad_rotateh_soft;
+}
+V onb_frisvad_rotateh(V n, H x, H y, H z) __attribute__((ifunc("onb__frisvad_rotateh_resolve")));
+#endif
+
+/* The conversions the half kernels run with: "f16c" (vcvtph2ps and
+   vcvtps2ph, chosen at load time), "soft" (libgcc's routines) or "inline"
+   (a build that converts with instructions everywhere: -mf16c, arm64's fcvt); the arithmetic is float's,
+   each result rounded to binary16, in every case. */
+const char *onb_half_isa(void)
+{
+#if ONB__HALF_DISPATCH
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("f16c") ? "f16c" : "soft";
+#elif defined(__F16C__) || defined(__aarch64__)
+	return "inline";
+#else
+	return "soft";
+#endif
+}
+
 /* ---- the array entries, on binary16 bit patterns ---- */
 static inline H hget(uint16_t b) { H h; memcpy(&h, &b, sizeof h); return h; }
 static inline uint16_t hbits(H h) { uint16_t b; memcpy(&b, &h, sizeof b); return b; }
@@ -834,6 +911,7 @@ static inline uint16_t hbits(H h) { uint16_t b; memcpy(&b, &h, sizeof b); return
 	}
 ONB_METHOD_LIST(ONB__ARRAY_H)
 ONB_FLOAT_METHOD_LIST(ONB__ARRAY_H)
+#endif /* !ONB__HALF_F16C */
 
 #else
 /* No _Float16 here: no half entry points (onb.h, ONB_HAVE_HALF). */

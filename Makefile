@@ -402,7 +402,7 @@ onbstudy-mpi: $(MPI_OBJ) $(STUDY_LIB) libonb.a
 GLSLANG ?= glslangValidator
 GPU_SRC  = $(wildcard src/gpu/*.c)
 GPU_OBJ  = $(GPU_SRC:src/%.c=$(B)/%.o)
-GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv ops_preserve.spv) $(WILD_SPV)
+GPU_SPV  = $(addprefix $(B)/gpu/,onb_glsl.spv onb_glsl_precise.spv onb_hlsl.spv onb_hlsl_precise.spv onb_glsl_nof64.spv ops.spv ops_preserve.spv half.spv relaxed/gltf_viewer.spv) $(WILD_SPV)
 # The shader engines' own lines: one file each under src/gpu/wild/, each
 # compiled with the harness wild.comp (which includes it as engine.glsl).
 WILD_SPV = $(patsubst src/gpu/wild/%.glsl,$(B)/gpu/wild/%.spv,$(wildcard src/gpu/wild/*.glsl))
@@ -410,7 +410,7 @@ GPU_KDEPS = include/libonb/onb.glsl include/libonb/onb.hlsl src/gpu/methods.inc 
 GLSLC    = $(GLSLANG) -V -Iinclude -Isrc --quiet
 .PHONY: gpu
 gpu: onbstudy-gpu $(GPU_SPV)
-$(GPU_OBJ): $(B)/%.o: src/%.c $(wildcard src/gpu/*.h) src/gpu/methods.inc $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/test-deps.stamp $(B)/rev.stamp
+$(GPU_OBJ): $(B)/%.o: src/%.c $(wildcard src/gpu/*.h) src/gpu/methods.inc src/gpu/half_methods.inc $(STUDY_HDR) include/libonb/onb.h Makefile $(B)/test-deps.stamp $(B)/rev.stamp
 	@mkdir -p $(@D)
 	$(CC) $(BASE) $(WARN) $(PROV) -DONB_GLSLANG='"$(shell $(GLSLANG) --version 2>/dev/null | head -1)"' -Isrc -D_POSIX_C_SOURCE=200809L -c $< -o $@
 onbstudy-gpu: $(GPU_OBJ) $(STUDY_LIB) libonb.a
@@ -430,6 +430,14 @@ $(B)/gpu/onb_hlsl.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
 $(B)/gpu/onb_hlsl_precise.spv: src/gpu/kernel.hlsl $(GPU_KDEPS)
 	@mkdir -p $(@D)
 	$(GLSLC) -D -e main -S comp -DONB_FLOAT64 -DONB_PRECISE=precise $< -o $@
+$(B)/gpu/half.spv: src/gpu/half.comp src/gpu/half_methods.inc $(B)/test-deps.stamp
+	@mkdir -p $(@D)
+	$(GLSLC) $< -o $@
+# gltf_viewer as its source declares it, `precision mediump float` (RelaxedPrecision)
+$(B)/gpu/relaxed/gltf_viewer.spv: src/gpu/wild/gltf_viewer.glsl src/gpu/wild.comp $(B)/test-deps.stamp
+	@mkdir -p $(B)/gpu/relaxed/gltf_viewer
+	cp $< $(B)/gpu/relaxed/gltf_viewer/engine.glsl
+	$(GLSLC) -DONB_MEDIUMP -I$(B)/gpu/relaxed/gltf_viewer src/gpu/wild.comp -o $@
 $(B)/gpu/ops_preserve.spv: src/gpu/ops.comp $(B)/test-deps.stamp
 	@mkdir -p $(@D)
 	$(GLSLC) -DONB_PRESERVE $< -o $@

@@ -64,6 +64,17 @@ grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "
 [ $rc -eq 2 ] && ok || bad "--arith without a profile: exit $rc"
 ./onbstudy list --arith > "$T/list" 2>&1 && ok || bad "list --arith failed"
 [ "$(grep -c -e "^vulkan " -e "^d3d11 " "$T/list")" -eq 6 ] && ok || bad "list --arith: $(head -3 "$T/list")"
+# 4. binary16 under a profile (certify --precision half --arith): CUDA
+#    documents no accuracy for __hdiv, so duff is unbounded by div, named in
+#    the row, never a number; a profile without a half row is refused
+./onbstudy certify --precision half --arith cuda-fast --methods duff --sectors 1 --depth 1 --azimuths 1 --quiet --out "$T/h" > /dev/null 2>&1 &&
+	grep -q '^# arith: cuda-fast ' "$T/h/certify-half.csv" && ok || bad "certify --precision half --arith cuda-fast failed"
+data "$T/h/certify-half.csv" | awk -F, 'NR == 1 { ok = $NF == "unbounded_by" } NR > 1 && $12 == "unbounded" { u++; ok = ok && $15 == "div" && $7 == "inf" }
+	NR > 1 && $12 == "proven" && $13 > 0 { ok = 0 } END { exit !(ok && u > 0) }' && ok || bad "cuda-fast half: duff not unbounded by div: $(data "$T/h/certify-half.csv" | head -3)"
+./onbstudy certify --precision half --arith d3d11 --methods duff --quick --out "$T/bad" > /dev/null 2> "$T/err"; rc=$?
+[ $rc -eq 2 ] && grep -q 'gives binary16 no precision' "$T/err" && [ ! -e "$T/bad/certify-half.csv" ] && ok || bad "certify --precision half --arith d3d11: exit $rc, $(cat "$T/err")"
+./onbstudy certify --precision half --arith metal --quick > /dev/null 2> "$T/err"; rc=$?
+[ $rc -eq 2 ] && grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "$T/err" && ok || bad "half, unknown profile: exit $rc"
 # docs/gpu.md's table and the README's headline are those results/gpu gives
 sh scripts/gpu_table.sh --check > /dev/null 2>&1 && ok || bad "scripts/gpu_table.sh --check: docs/gpu.md or README.md differs from results/gpu"
 # the full-budget column: duff's float whole-sphere bound under vulkan from

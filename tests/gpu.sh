@@ -15,6 +15,16 @@
 #   - the shader engines' own lines (wild: every GLSL, HLSL and Slang row
 #     of the registry, src/gpu/wild/NAME.glsl) lie within their C rows'
 #     bounds, and a missing file or a bound below the defect fails;
+#   - binary16 (`onbstudy-gpu half`): the kernels of src/gpu/half.comp in
+#     explicit float16_t arithmetic give the C half kernels' bits but the
+#     sign of a zero, NaN/inf (the driver's folding) and the double ->
+#     binary16 conversion done through float, and every result on a
+#     binary16 rounding of a unit vector lies within certify --arith vulkan
+#     --precision half's bound at that input; gltf_viewer built with
+#     `precision mediump float` carries RelaxedPrecision and gives its
+#     float build's bits on this driver; the checks can fail (a frisvad
+#     evaluated in 32 bits, GLSL's sign() in Duff's formula, duff's bounds
+#     divided by 10);
 #   - bad usage exits 2, an absent device 3, with a message.
 . "$(dirname "$0")/lib.sh"
 # Under ASan, the driver's own allocations that it never frees (LLVM's
@@ -75,6 +85,30 @@ f=$(grep -l '^capsaicin,float,-1,1,0,360,' results/wild/add/*/certify.csv | head
 $G wild --per 100 --bounds "$tmp/whalf.csv" > "$tmp/wild3" 2>&1; rc=$?
 [ $rc -eq 1 ] && grep -q '^| `capsaicin` .*| \*\*outside\*\* |' "$tmp/wild3" && [ "$(grep -c '| \*\*outside\*\* |' "$tmp/wild3")" -eq 1 ] && ok ||
 	{ cat "$tmp/wild3"; bad "wild with capsaicin's region bounds halved: exit $rc (want 1, capsaicin alone outside)"; }
+
+# half: explicit binary16 on the driver (no shaderFloat16 is a failure: exit 1)
+$G half --per 1000 > "$tmp/half" 2>&1; rc=$?
+n=$(grep -c '| inside |$' "$tmp/half")
+[ $rc -eq 0 ] && [ "$n" -eq 18 ] && ! grep -q '\*\*value' "$tmp/half" && grep -q 'shaderFloat16 on' "$tmp/half" && ok ||
+	{ cat "$tmp/half"; bad "half: exit $rc, $n binary16 kernels inside (want 0 and 18, no value difference)"; }
+# mediump: RelaxedPrecision decorations, and on lavapipe the float build's bits on every input
+awk -F'|' '$2 ~ /gltf_viewer`, mediump/ { split($6, a, " "); ok = $3 + 0 > 0 && a[1] == a[3] && a[1] > 0 } END { exit !ok }' "$tmp/half" && ok ||
+	{ grep -A3 RelaxedPrecision "$tmp/half"; bad "half: the mediump gltf_viewer has no RelaxedPrecision or other bits than its float build"; }
+# ... and its checks can fail
+$G half --per 300 --methods broken_frisvad_f32 > "$tmp/h1" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '^| `broken_frisvad_f32` | `frisvad` | .*\*\*value: [1-9]' "$tmp/h1" && ok ||
+	{ cat "$tmp/h1"; bad "half: frisvad in 32 bits not caught by the bit comparison (exit $rc)"; }
+$G half --per 300 --methods broken_duff_sign > "$tmp/h2" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '^| `broken_duff_sign` .*| \*\*outside\*\* |$' "$tmp/h2" && ok ||
+	{ cat "$tmp/h2"; bad "half: GLSL's sign() in Duff's formula not outside its envelope (exit $rc)"; }
+awk -F, -v OFS=, '$1 == "duff" && $2 == "half" && $7 != "inf" { $7 = $7 / 10 } 1' results/gpu/half/vulkan/certify-half.csv > "$tmp/h10.csv"
+$G half --per 300 --methods duff --bounds "$tmp/h10.csv" > "$tmp/h3" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q '^| `duff` | `duff` | .*| \*\*outside\*\* |$' "$tmp/h3" && ok ||
+	{ cat "$tmp/h3"; bad "half: duff's bounds divided by 10 not crossed (exit $rc)"; }
+$G half --methods duff,nosuch > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 2 ] && grep -q 'valid:.*broken_frisvad_f32' "$tmp/err" && ok || bad "half --methods nosuch: exit $rc, $(cat "$tmp/err")"
+$G half --per 10 --bounds "$tmp/none.csv" > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && grep -q 'cannot open the binary16 bounds' "$tmp/err" && ok || bad "half without its bounds: exit $rc, $(cat "$tmp/err")"
 
 $G frobnicate > /dev/null 2>&1; [ $? -eq 2 ] && ok || bad "an unknown command does not exit 2"
 $G compare --methods duff,nosuch > /dev/null 2> "$tmp/err"; rc=$?

@@ -116,8 +116,10 @@ static void usage(FILE *f)
 	"                    with a NaN or an infinity: no bound), overflow (a value may\n"
 	"                    exceed 65504) or unbounded (no enclosure: an underflowing\n"
 	"                    length near a pole); writes DIR/certify-half.csv.  Takes\n"
-	"                    --methods, --sectors, --band, --quick, --quiet and --out\n"
-	"                    --depth and --azimuths\n");
+	"                    --methods, --sectors, --band, --quick, --quiet, --out,\n"
+	"                    --depth, --azimuths and --arith (the profile's binary16 row;\n"
+	"                    the found side is the IEEE half kernel's scan; an unbounded\n"
+	"                    row names the operation where the profile gives no bound)\n");
 	fprintf(f,
 	"  --budget N        boxes bounded per region at most (default 6000)\n"
 	"  --samples N       inputs sampled per region before the boxes (default 1000)\n"
@@ -300,8 +302,8 @@ static int half_options_bad(const cert_cli *c)
 {
 	if (c->half ? !c->set_other : c->depth < 0 && c->az < 0)
 		return 0;
-	study_error(c->half ? "--precision half takes --methods, --sectors, --band, --depth, --azimuths, --quick, "
-	                      "--quiet and --out alone" : "--depth and --azimuths go with --precision half");
+	study_error(c->half ? "--precision half takes --methods, --sectors, --band, --depth, --azimuths, --arith, "
+	                      "--quick, --quiet and --out alone" : "--depth and --azimuths go with --precision half");
 	return 1;
 }
 
@@ -389,7 +391,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'E': if (parse_every(a.arg, c)) goto bad; break;
 		default: goto bad;
 		}
-		c->set_other |= v > 0 && strchr("bntSTFARUKE", v) != NULL;
+		c->set_other |= v > 0 && strchr("bntSTFRUKE", v) != NULL;
 	}
 	if (cli_no_rest(&a))
 		goto bad;
@@ -1537,11 +1539,17 @@ int cmd_certify(int argc, char **argv)
 	memset(&ctl, 0, sizeof ctl);
 	if ((r = parse(argc, argv, &c)) != 0)
 		return r < 0 ? 0 : r;
+	if (c.half && c.arith_given && !arith_has_format(c.o.arith, PREC_HALF)) {
+		study_error("certify: --arith %s gives binary16 no precision (docs/gpu.md; ieee, vulkan, vulkan-precise, opencl, "
+		            "cuda-fast and contract-any have a half row)", c.o.arith->name);
+		return ONB_EXIT_USAGE;
+	}
 	if (c.half) {
 		ch_opts h;
 		memset(&h, 0, sizeof h);
 		h.methods = c.methods; h.out = c.out; h.sectors = c.sectors; h.quiet = c.quiet;
 		h.band = c.band; h.band_lo = c.band_lo; h.band_hi = c.band_hi;
+		h.arith = c.arith_given ? c.o.arith : NULL;
 		h.depth = c.depth >= 0 ? (int)c.depth : c.quick ? 3 : 6;
 		h.az = c.az >= 0 ? (int)c.az : c.quick ? 4 : 16;
 		return cert_half_run(&h);

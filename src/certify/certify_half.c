@@ -213,6 +213,7 @@ void ch_region(bound_ctx *b, const study_kernel *k, const cm_method *m, const ce
 {
 	const double u = prec_fmt(PREC_HALF)->u;
 	memset(out, 0, sizeof *out);
+	out->unb_op = -1;
 	out->found = ch_scan(k, r, az, out->worst, &out->scanned, &out->nonfinite);
 	if (out->found > 0.0 && out->found < INFINITY)
 		out->found = exact_defect(k, out->worst);
@@ -220,9 +221,10 @@ void ch_region(bound_ctx *b, const study_kernel *k, const cm_method *m, const ce
 	out->bound = ch_bound(b, m, r, fmax(2.0 * out->found, u), depth);
 	if (out->nonfinite)
 		out->status = CH_NONFINITE;
-	else if (!(out->bound < INFINITY))
+	else if (!(out->bound < INFINITY)) {
 		out->status = bound_overflow_seen(b) ? CH_OVERFLOW : CH_UNBOUNDED;
-	else
+		out->unb_op = bound_unbounded_op(b);
+	} else
 		out->status = CH_PROVEN;
 	if (out->status != CH_PROVEN)
 		out->bound = INFINITY;
@@ -256,23 +258,32 @@ static void ch_run_all(const ch_opts *o, const study_kernel *ks, const cm_method
 				res[j].bound = INFINITY;
 				continue;
 			}
+			bound_set_arith(b, o->arith);   /* NULL: ieee; resets the unbounded operation */
 			ch_region(b, &ks[t[j].k], ms[t[j].k], &reg[t[j].i], o->depth, o->az, &res[j]);
 		}
 		bound_free(b);
 	}
 }
 
+/* --arith: the operation an unbounded row owes it to (certify.c's unbounded_by) */
+static const char *ch_unb(const ch_result *x)
+{
+	return x->status == CH_UNBOUNDED && x->unb_op >= 0 ? arith_op_name(x->unb_op) : "";
+}
+
 static void ch_write_rows(FILE *f, const study_kernel *ks, const cert_region *reg, const ch_task *t, int nt,
-                          const ch_result *res)
+                          const ch_result *res, int arith)
 {
 	int j;
-	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,scanned,nonfinite\n");
+	fprintf(f, "method,precision,nz_lo,nz_hi,phi_lo,phi_hi,bound,found,found_nx,found_ny,found_nz,status,scanned,nonfinite%s\n",
+	        arith ? ",unbounded_by" : "");
 	for (j = 0; j < nt; j++) {
 		const cert_region *r = &reg[t[j].i];
 		const ch_result *x = &res[j];
-		fprintf(f, "%s,half,%.17g,%.17g,%g,%g,%.17g,%.17g,%a,%a,%a,%s,%ld,%ld\n", ks[t[j].k].name, r->nz_lo,
+		fprintf(f, "%s,half,%.17g,%.17g,%g,%g,%.17g,%.17g,%a,%a,%a,%s,%ld,%ld", ks[t[j].k].name, r->nz_lo,
 		        r->nz_hi, r->phi_lo, r->phi_hi, x->bound, x->found, x->worst[0], x->worst[1], x->worst[2],
 		        ch_status_name(x->status), x->scanned, x->nonfinite);
+		fprintf(f, arith ? ",%s\n" : "\n", ch_unb(x));
 	}
 }
 
@@ -287,17 +298,20 @@ static void ch_summary(FILE *f, const study_kernel *ks, int nk, const ch_task *t
 	for (k = 0; k < nk; k++) {
 		double B = 0.0, F = 0.0;
 		int c[4] = { 0, 0, 0, 0 }, any = 0;
+		const char *unb = "";
 		for (j = 0; j < nt; j++)
 			if (t[j].k == k) {
 				any = 1;
 				B = fmax(B, res[j].bound);
 				F = fmax(F, res[j].found);
 				c[res[j].status]++;
+				if (!unb[0])
+					unb = ch_unb(&res[j]);
 			}
 		if (!any)
 			continue;
-		fprintf(f, "%-24s %-6s %12.4g %12.4g %7.3g  %d/%d/%d/%d\n", ks[k].name, "half", B / u, F / u,
-		        B < INFINITY && F > 0.0 ? B / F : NAN, c[0], c[1], c[2], c[3]);
+		fprintf(f, "%-24s %-6s %12.4g %12.4g %7.3g  %d/%d/%d/%d%s%s\n", ks[k].name, "half", B / u, F / u,
+		        B < INFINITY && F > 0.0 ? B / F : NAN, c[0], c[1], c[2], c[3], unb[0] ? "  unbounded by " : "", unb);
 	}
 }
 
@@ -316,8 +330,15 @@ static int ch_write(const ch_opts *o, const study_kernel *ks, int nk, const cert
 	fprintf(out.f, "# binary16: u = 2^-11, normal min 2^-14, subnormal step 2^-24, max 65504; "
 	               "depth %d, %d azimuths per sector, %d sectors; %.1f s\n", o->depth, o->az, o->sectors, secs);
 	fprintf(out.f, "# bound: proven over every binary16 rounding of a unit vector in the region (inf: none; status says why)\n");
-	fprintf(out.f, "# found: the largest defect of the scan (every binary16 n.z of the band at the azimuths; at a pole, small (x, y))\n");
-	ch_write_rows(out.f, ks, reg, t, nt, res);
+	fprintf(out.f, "# found: the largest defect of the scan (every binary16 n.z of the band at the azimuths; at a pole, small (x, y))%s\n",
+	        o->arith ? " of the IEEE binary16 kernel, whose every result the profile allows (its flushing is a permission)" : "");
+	if (o->arith) {   /* as certify.c's header: the profile and every allowance */
+		char d[2048];
+		arith_describe(o->arith, d, sizeof d);
+		fprintf(out.f, "# arith: %s (%s; %s)\n", o->arith->name, o->arith->title, o->arith->spec);
+		fprintf(out.f, "# model: the IEEE model's operations, each widened to the profile's allowance (src/model/arith.c): %s\n", d);
+	}
+	ch_write_rows(out.f, ks, reg, t, nt, res, o->arith != NULL);
 	if (study_out_commit(&out) != 0)
 		return 1;
 	if (!o->quiet) {

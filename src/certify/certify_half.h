@@ -28,6 +28,7 @@ typedef struct {
 	double worst[3];       /* its input                                             */
 	long scanned, nonfinite;
 	int status;
+	int unb_op;            /* --arith: the operation (AR_*) that left it unbounded, or -1 */
 } ch_result;
 
 /* The scan: every binary16 n.z of the region's band at az azimuths per
@@ -44,7 +45,7 @@ double ch_scan(const study_kernel *k, const cert_region *r, int az, double worst
    down to `depth` halvings; the smaller of the two. */
 double ch_bound(bound_ctx *b, const cm_method *m, const cert_region *r, double target, int depth);
 
-/* Both, and the status. */
+/* Both, and the status (b's profile, bound_set_arith, reset here). */
 void ch_region(bound_ctx *b, const study_kernel *k, const cm_method *m, const cert_region *r, int depth, int az,
                ch_result *out);
 
@@ -53,6 +54,7 @@ typedef struct {
 	const char *methods, *out;
 	int sectors, depth, az, quiet, band;
 	double band_lo, band_hi;
+	const arith_profile *arith;   /* --arith other than ieee, or NULL */
 } ch_opts;
 int cert_half_run(const ch_opts *o);
 

@@ -244,7 +244,7 @@ int cmd_eval(int argc, char **argv)
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
 	if (o.arith && prec_on[PREC_HALF] && !arith_has_format(o.arith, PREC_HALF)) {
-		study_error("eval: --arith %s gives binary16 no precision (docs/gpu.md; vulkan, vulkan-precise, ieee and contract-any have a half row)",
+		study_error("eval: --arith %s gives binary16 no precision (docs/gpu.md; ieee, vulkan, vulkan-precise, opencl, cuda-fast and contract-any have a half row)",
 		            o.arith->name);
 		return ONB_EXIT_USAGE;
 	}

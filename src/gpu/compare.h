@@ -36,8 +36,12 @@ typedef struct {
 	size_t n, cap;
 	double whole;   /* the whole-sphere bound; inf if absent */
 	int tiled;      /* the regions' areas sum to the sphere's 2 x 360 */
+	int have_whole; /* the CSV has the whole-sphere row                */
+	double w;       /* the box around n/|n|: 8u of the precision       */
 } gpu_regions;
 int gpu_regions_load(const char *csv, const char *name, gpu_regions *r);
+/* The same for precision prec ("float", "half"). */
+int gpu_regions_loadp(const char *csv, const char *name, const char *prec, gpu_regions *r);
 void gpu_regions_free(gpu_regions *r);
 double gpu_regions_bound(const gpu_regions *r, const float n[3]);
 
@@ -83,5 +87,17 @@ int gpu_methods_check(const char *list);
    Slang rows) against their C rows; as above.  fallback: a C row absent
    from bounds takes its bound from the wild runs' CSVs (results/wild/add). */
 int gpu_wild(gpu_dev *d, const char *spvdir, FILE *f, const gpu_inputs *in, const char *bounds, int fallback);
+
+/* onbstudy-gpu half (gpu_half.c): the binary16 kernels of half.comp
+   against libonb's C half kernels and within a half certify CSV's bounds
+   at each input; the number of kernels that fail, or -1.  A list naming
+   no kernel of half_methods.inc (or broken_*): -1 with a message. */
+int gpu_half(gpu_dev *d, const char *spvdir, FILE *f, uint64_t seed, uint64_t per, const char *bounds, const char *methods);
+int gpu_half_check(const char *list);
+/* gltf_viewer built with `precision mediump float` (RelaxedPrecision)
+   against C's float kernel and its plain build: a table of what the
+   driver does (Vulkan grants no precision, so nothing is bounded); 0, or
+   -1 on error. */
+int gpu_relaxed(gpu_dev *d, const char *spvdir, FILE *f, uint64_t seed, uint64_t per);
 
 #endif

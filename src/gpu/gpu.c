@@ -10,6 +10,7 @@
  *   onbstudy-gpu ops        how the driver rounds each GLSL operation
  *   onbstudy-gpu compare    every method in four shader variants against C
  *   onbstudy-gpu wild       the engines' own lines (src/gpu/wild/) against their C rows
+ *   onbstudy-gpu half       binary16 kernels (float16_t, half.comp) against the C half kernels
  *   onbstudy-gpu report     all four, with provenance, into --out FILE
  * Exit: 0 when every difference is explained and every result lies in its
  * envelope, 1 when not, 2 on bad usage, 3 when the device cannot be made.
@@ -20,6 +21,9 @@
 #include "common/options.h"
 #include "gpu/gpu.h"
 #include "gpu/compare.h"
+
+/* half's bounds: certify --quick --arith vulkan --precision half (results/gpu/README.md) */
+#define GPU_HALF_BOUNDS "results/gpu/half/vulkan/certify-half.csv"
 
 
 typedef struct {
@@ -41,19 +45,24 @@ static void usage(FILE *f)
 	           "            and every result on a rounded unit input against its proven bound\n"
 	           "  wild      the shader engines of docs/wild.md (src/gpu/wild/) in their own lines\n"
 	           "            against their C rows\n"
-	           "  report    all four with provenance, written to --out FILE\n\n"
+	           "  half      binary16 kernels in explicit float16_t arithmetic (src/gpu/half.comp,\n"
+	           "            shaderFloat16) against libonb's C half kernels, and every result on a\n"
+	           "            rounded unit input against certify --arith vulkan --precision half\n"
+	           "  report    info, ops, compare and wild with provenance, written to --out FILE\n\n"
 	           "options:\n"
 	           "  --device NAME   the first Vulkan device whose name contains NAME (default llvmpipe)\n"
 	           "  --spv DIR       the compiled kernels (default build/gpu, made by make gpu)\n"
 	           "  --bounds CSV    certify's bounds (default results/certify/certify.csv, and for\n"
 	           "                  wild's rows absent there results/wild/add/*/certify.csv; a\n"
-	           "                  certify --arith CSV for a profile's)\n"
-	           "  --methods LIST  compare: these methods only (comma-separated); broken_duff_sign is\n"
-	           "                  a deliberately broken kernel that the checks must catch\n"
+	           "                  certify --arith CSV for a profile's); half: its binary16 rows\n"
+	           "                  (default results/gpu/half/vulkan/certify-half.csv)\n"
+	           "  --methods LIST  compare, half: these methods only (comma-separated); broken_duff_sign\n"
+	           "                  (both) and broken_frisvad_f32 (half) are deliberately broken kernels\n"
+	           "                  that the checks must catch\n"
 	           "  --seed S        inputs' seed (default 1)\n"
 	           "  --per N         inputs per distribution of the sweep (default 20000)\n"
 	           "  --count N       ops: operand triples (default 200000)\n"
-	           "  --out FILE      report: the file to write\n"
+	           "  --out FILE      report (required), half: the file to write, with provenance\n"
 	           "Exit status: 0 all explained and inside, 1 not, 2 bad usage, 3 no device.\n");
 }
 
@@ -93,8 +102,8 @@ static int parse(gpu_opts *o, const char *cmd, int argc, char **argv)
 static void info(FILE *f, gpu_dev *d)
 {
 	const uint32_t a = gpu_api(d);
-	fprintf(f, "- device: %s; driver: %s; Vulkan %u.%u.%u; shaderFloat64 %s\n", gpu_name(d), gpu_driver(d),
-	        a >> 22, (a >> 12) & 0x3ffu, a & 0xfffu, gpu_float64(d) ? "on" : "off");
+	fprintf(f, "- device: %s; driver: %s; Vulkan %u.%u.%u; shaderFloat64 %s; shaderFloat16 %s\n", gpu_name(d), gpu_driver(d),
+	        a >> 22, (a >> 12) & 0x3ffu, a & 0xfffu, gpu_float64(d) ? "on" : "off", gpu_float16(d) ? "on" : "off");
 	fprintf(f, "- float controls reported: %s\n", gpu_float_controls(d));
 }
 
@@ -123,6 +132,14 @@ static int run(gpu_dev *d, const char *cmd, const gpu_opts *o, FILE *f)
 		if (gpu_ops(d, o->spv, f, o->seed, (size_t)o->count) < 0)
 			return -1;
 	}
+	if (strcmp(cmd, "half") == 0) {
+		int h;
+		info(f, d);
+		h = gpu_half(d, o->spv, f, o->seed, o->per, o->bounds, o->methods);
+		if (h >= 0 && !o->methods && gpu_relaxed(d, o->spv, f, o->seed, o->per) != 0)
+			h = -1;   /* the mediump table runs with the whole list only */
+		return h;
+	}
 	if (strcmp(cmd, "compare") != 0 && strcmp(cmd, "wild") != 0 && strcmp(cmd, "report") != 0)
 		return 0;
 	if ((fused = fma_fused(d, o->spv)) < 0 || gpu_inputs_make(&in, o->seed, o->per) != 0)
@@ -140,6 +157,7 @@ static int run(gpu_dev *d, const char *cmd, const gpu_opts *o, FILE *f)
 		w = gpu_wild(d, o->spv, f, &in, o->bounds, !o->bounds_given);
 		rc = w < 0 ? -1 : rc + w;
 	}
+
 	gpu_inputs_free(&in);
 	return rc;
 }
@@ -168,17 +186,20 @@ int main(int argc, char **argv)
 		return argc < 2 ? ONB_EXIT_USAGE : 0;
 	}
 	cmd = argv[1];
-	if (strcmp(cmd, "info") && strcmp(cmd, "ops") && strcmp(cmd, "compare") && strcmp(cmd, "wild") && strcmp(cmd, "report")) {
-		study_error("onbstudy-gpu: unknown command '%s' (info, ops, compare, wild or report)", cmd);
+	if (strcmp(cmd, "info") && strcmp(cmd, "ops") && strcmp(cmd, "compare") && strcmp(cmd, "wild") && strcmp(cmd, "half") &&
+	    strcmp(cmd, "report")) {
+		study_error("onbstudy-gpu: unknown command '%s' (info, ops, compare, wild, half or report)", cmd);
 		return ONB_EXIT_USAGE;
 	}
 	if (parse(&o, cmd, argc - 2, argv + 2) != 0)
 		return ONB_EXIT_USAGE;
-	if ((strcmp(cmd, "report") == 0) != (o.out != NULL)) {
-		study_error("onbstudy-gpu: --out FILE goes with report, and only with it");
+	if ((strcmp(cmd, "report") == 0 && !o.out) || (o.out && strcmp(cmd, "report") != 0 && strcmp(cmd, "half") != 0)) {
+		study_error("onbstudy-gpu: --out FILE goes with report (required) and half, and only with them");
 		return ONB_EXIT_USAGE;
 	}
-	if (gpu_methods_check(o.methods) != 0)
+	if (strcmp(cmd, "half") == 0 && !o.bounds_given)
+		o.bounds = GPU_HALF_BOUNDS;
+	if (strcmp(cmd, "half") == 0 ? gpu_half_check(o.methods) != 0 : gpu_methods_check(o.methods) != 0)
 		return ONB_EXIT_USAGE;
 	if (!(d = gpu_open(o.device)))
 		return 3;

@@ -1,5 +1,6 @@
 /*
- * gpu_regions.c - a certify CSV's regions of one method in float, and the
+ * gpu_regions.c - a certify CSV's regions of one method in float (or
+ * half: gpu_regions_loadp, the box 8 half ulps wide), and the
  * bound that holds at one input: certify proves each region's bound for
  * every rounding of a real unit vector v in the region (nz = v.z in
  * [nz_lo, nz_hi], its azimuth in [phi_lo, phi_hi] degrees).  The input n
@@ -16,22 +17,30 @@
 
 int gpu_regions_load(const char *csv, const char *name, gpu_regions *r)
 {
+	return gpu_regions_loadp(csv, name, "float", r);
+}
+
+int gpu_regions_loadp(const char *csv, const char *name, const char *prec, gpu_regions *r)
+{
 	FILE *f = fopen(csv, "r");
-	char line[1024];
+	char line[1024], key[32];
 	const size_t len = strlen(name);
 	double area = 0.0;
 	memset(r, 0, sizeof *r);
 	r->whole = INFINITY;
+	r->w = 8.0 * (strcmp(prec, "half") == 0 ? 0x1p-11 : 0x1p-24);
+	snprintf(key, sizeof key, ",%s,", prec);
 	if (!f)
 		return -1;
 	while (fgets(line, sizeof line, f)) {
 		double v[5];
 		gpu_region *g;
-		if (strncmp(line, name, len) != 0 || strncmp(line + len, ",float,", 7) != 0 ||
-		    sscanf(line + len + 7, "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5)
+		if (strncmp(line, name, len) != 0 || strncmp(line + len, key, strlen(key)) != 0 ||
+		    sscanf(line + len + strlen(key), "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5)
 			continue;   /* "inf" reads as inf with %lf */
 		if (v[0] == -1.0 && v[1] == 1.0 && v[2] == 0.0 && v[3] == 360.0) {
 			r->whole = v[4];
+			r->have_whole = 1;
 			continue;
 		}
 		if (r->n == r->cap) {
@@ -48,6 +57,13 @@ int gpu_regions_load(const char *csv, const char *name, gpu_regions *r)
 	}
 	fclose(f);
 	r->tiled = r->n > 0 && fabs(area - 720.0) <= 1e-9 * 720.0;
+	if (!r->have_whole && r->tiled) {   /* certify --precision half writes regions alone */
+		size_t i;
+		r->whole = 0.0;
+		for (i = 0; i < r->n; i++)
+			r->whole = fmax(r->whole, r->g[i].b);   /* NaN-free: inf reads as inf */
+		r->have_whole = 1;
+	}
 	return 0;
 }
 
@@ -71,7 +87,7 @@ static int meets_phi(double a, double b, double c, double d)
 
 double gpu_regions_bound(const gpu_regions *r, const float nf[3])
 {
-	const double x = nf[0], y = nf[1], zz = nf[2], l = sqrt(x * x + y * y + zz * zz), w = 8.0 * 0x1p-24;
+	const double x = nf[0], y = nf[1], zz = nf[2], l = sqrt(x * x + y * y + zz * zz), w = r->w;
 	double z, rho, phi, dphi, b = -INFINITY;
 	size_t i;
 	if (!r->tiled || !(l > 0.0) || !isfinite(l))

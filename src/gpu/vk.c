@@ -21,8 +21,8 @@ struct gpu_dev {
 	VkPhysicalDeviceMemoryProperties mem;
 	VkPhysicalDeviceProperties props;
 	VkPhysicalDeviceDriverProperties drv;
-	char controls[256];
-	int f64;
+	char controls[512];
+	int f64, f16;
 };
 
 static int vk_fail(const char *what, VkResult r)
@@ -77,6 +77,11 @@ static void describe(gpu_dev *d)
 	         (unsigned)fc.shaderDenormPreserveFloat32, (unsigned)fc.shaderDenormFlushToZeroFloat32,
 	         (unsigned)fc.shaderSignedZeroInfNanPreserveFloat32, (unsigned)fc.shaderRoundingModeRTEFloat32,
 	         (unsigned)fc.shaderRoundingModeRTZFloat32);
+	snprintf(d->controls + strlen(d->controls), sizeof d->controls - strlen(d->controls),
+	         "; float16: denorm preserve %u, denorm flush-to-zero %u, signed zero/inf/nan preserve %u, rounding RTE %u, RTZ %u",
+	         (unsigned)fc.shaderDenormPreserveFloat16, (unsigned)fc.shaderDenormFlushToZeroFloat16,
+	         (unsigned)fc.shaderSignedZeroInfNanPreserveFloat16, (unsigned)fc.shaderRoundingModeRTEFloat16,
+	         (unsigned)fc.shaderRoundingModeRTZFloat16);
 	vkGetPhysicalDeviceMemoryProperties(d->phys, &d->mem);
 }
 
@@ -88,6 +93,8 @@ static int make_device(gpu_dev *d)
 	VkDeviceQueueCreateInfo qi;
 	VkDeviceCreateInfo di;
 	VkPhysicalDeviceFeatures have, use;
+	VkPhysicalDeviceShaderFloat16Int8Features h16, u16;
+	VkPhysicalDeviceFeatures2 f2;
 	VkResult r;
 	vkGetPhysicalDeviceQueueFamilyProperties(d->phys, &nq, qf);
 	for (i = 0; i < nq && !(qf[i].queueFlags & VK_QUEUE_COMPUTE_BIT); i++)
@@ -101,6 +108,18 @@ static int make_device(gpu_dev *d)
 	memset(&use, 0, sizeof use);
 	use.shaderFloat64 = have.shaderFloat64;  /* the kernels that widen to double */
 	d->f64 = have.shaderFloat64 == VK_TRUE;
+	/* binary16 arithmetic (onbstudy-gpu half): shaderFloat16, core in 1.2 */
+	memset(&h16, 0, sizeof h16);
+	h16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
+	memset(&f2, 0, sizeof f2);
+	f2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+	f2.pNext = &h16;
+	if (d->props.apiVersion >= VK_API_VERSION_1_2)
+		vkGetPhysicalDeviceFeatures2(d->phys, &f2);
+	d->f16 = h16.shaderFloat16 == VK_TRUE;
+	memset(&u16, 0, sizeof u16);
+	u16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
+	u16.shaderFloat16 = h16.shaderFloat16;
 	memset(&qi, 0, sizeof qi);
 	qi.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
 	qi.queueFamilyIndex = d->qfam;
@@ -111,6 +130,8 @@ static int make_device(gpu_dev *d)
 	di.queueCreateInfoCount = 1;
 	di.pQueueCreateInfos = &qi;
 	di.pEnabledFeatures = &use;
+	if (d->f16)
+		di.pNext = &u16;
 	r = vkCreateDevice(d->phys, &di, NULL, &d->dev);
 	if (r != VK_SUCCESS)
 		return vk_fail("vkCreateDevice", r);
@@ -169,6 +190,7 @@ const char *gpu_name(const gpu_dev *d) { return d->props.deviceName; }
 const char *gpu_driver(const gpu_dev *d) { return d->drv.driverInfo; }
 uint32_t gpu_api(const gpu_dev *d) { return d->props.apiVersion; }
 int gpu_float64(const gpu_dev *d) { return d->f64; }
+int gpu_float16(const gpu_dev *d) { return d->f16; }
 const char *gpu_float_controls(const gpu_dev *d) { return d->controls; }
 
 VkDevice gpu__dev(const gpu_dev *d) { return d->dev; }

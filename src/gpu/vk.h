@@ -28,8 +28,11 @@ const char *gpu_name(const gpu_dev *d);
 const char *gpu_driver(const gpu_dev *d);
 uint32_t gpu_api(const gpu_dev *d);
 int gpu_float64(const gpu_dev *d);
+/* Whether shaderFloat16 (explicit binary16 arithmetic) is enabled. */
+int gpu_float16(const gpu_dev *d);
 /* The float controls the driver reports (VkPhysicalDeviceFloatControlsProperties),
-   one line of text: denormals preserved or flushed, signed zeros kept, RTE. */
+   one line of text, float32 then float16: denormals preserved or flushed,
+   signed zeros kept, RTE. */
 const char *gpu_float_controls(const gpu_dev *d);
 
 /* Run the SPIR-V file `spv` (entry point "main", local size 64) with

@@ -10,8 +10,14 @@
  * compares it with the row's C method.  An engine file defines
  *     void wild_basis(vec3 n, out vec3 b1, out vec3 b2)
  * around the engine's own function (docs/adding-a-method.md, "A shader
- * row on the driver").
+ * row on the driver").  With ONB_MEDIUMP defined, every float is
+ * `precision mediump float` (SPIR-V RelaxedPrecision): the Makefile builds
+ * gltf_viewer so, as its source declares it (build/gpu/relaxed/, run by
+ * `onbstudy-gpu half`).
  */
+#ifdef ONB_MEDIUMP
+precision mediump float;
+#endif
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer In { uint v[]; } inp;
 layout(std430, binding = 1) writeonly buffer Out { uint v[]; } outp;

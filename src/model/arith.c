@@ -37,6 +37,8 @@
 #define CL_F_OPS      { RN,     RN,     RN,     ULP(2.5),  ULP(2.5),  ULP(3),   ULP(2),   RN,    RN }
 #define CL_D_OPS      { RN,     RN,     RN,     RN,        RN,        RN,       ULP(2),   RN,    RN }
 #define CUDA_F_OPS    { RN,     RN,     RN,     ULP(2),    ULP(2),    ULP(3),   ULP(2),   RN,    RN }
+#define CL_H_OPS      { ULP(1), ULP(1), ULP(1), ULP(1),    ULP(1),    ULP(1.5), ULP(1),   ULP(1), RN }
+#define CUDA_H_OPS    { RN,     RN,     RN,     NONE,      NONE,      NONE,     NONE,     RN,    RN }
 #define NONE_OPS      { NONE,   NONE,   NONE,   NONE,      NONE,      NONE,     NONE,     NONE,  NONE }
 
 /* Vulkan's half-precision column (Float16 arithmetic, shaderFloat16): the
@@ -77,14 +79,18 @@ static const arith_profile profiles[] = {
 	{ "opencl", "OpenCL C 3.0 full profile, default build options (FP_CONTRACT on, no -cl-fast-relaxed-math)", 0,
 	  { { CL_F_OPS, 24, 1, 0.0, INFINITY,
 	      "x+y, x-y, x*y, fma correctly rounded; x/y and 1/x 2.5 ulp; sqrt 3 ulp; rsqrt 2 ulp; denormals optional (CL_FP_DENORM): may flush" },
-	    { CL_D_OPS, 53, 0, 0.0, INFINITY, "x+y, x-y, x*y, x/y, 1/x, sqrt, fma correctly rounded; rsqrt 2 ulp; denormals supported" } },
-	  1, 0, 0, "OpenCL C 3.0 section 7.4 (Relative Error as ULPs), 7.5 (Edge Case Behavior in Flush To Zero Mode), 6.13.2 (FP_CONTRACT)",
+	    { CL_D_OPS, 53, 0, 0.0, INFINITY, "x+y, x-y, x*y, x/y, 1/x, sqrt, fma correctly rounded; rsqrt 2 ulp; denormals supported" },
+	    { CL_H_OPS, 11, 1, 0.0, INFINITY,
+	      "cl_khr_fp16, full profile (table \"ULP Values for Half-Precision Floating-Point Arithmetic Operations\"): x+y, x-y, x*y, fma correctly rounded in the device's mode, which may be round to zero (CL_DEVICE_HALF_FP_CONFIG's minimum is CL_FP_ROUND_TO_ZERO): < 1 ulp; x/y and 1.0/x 1 ulp; sqrt 1.5 ulp; rsqrt 1 ulp; conversions to half round to nearest even (the default _rte); denormals optional (CL_FP_DENORM): may flush" } },
+	  1, 0, 0, "OpenCL C 3.0 section 7.4 (Relative Error as ULPs; its half-precision table with cl_khr_fp16), 7.5 (Edge Case Behavior in Flush To Zero Mode), 6.13.2 (FP_CONTRACT), 6.4.3 (conversions: default rounding _rte); OpenCL 3.0 API 4.2 (CL_DEVICE_HALF_FP_CONFIG)",
 	  "dot, cross, length, normalize built-ins have their own ulp bounds (normalize 2 + n ulp); the C kernels use +, *, /, sqrt" },
 	{ "cuda-fast", "CUDA with --use_fast_math (-ftz=true -prec-div=false -prec-sqrt=false -fmad=true)", 0,
 	  { { CUDA_F_OPS, 24, 1, 0x1p-126, 0x1p126,
 	      "x/y 2 ulp for |y| in [2^-126, 2^126]; sqrtf 3 ulp; rsqrtf 2 ulp; +, -, *, fmaf IEEE; flushed to zero (NVIDIA: bounds tested, not guaranteed)" },
-	    { IEEE_OPS, 53, 0, 0.0, INFINITY, "fast math does not change double precision (but -fmad=true contracts it)" } },
-	  1, 0, 0, "CUDA C++ Programming Guide, Mathematical Functions appendix (single-precision functions, intrinsic functions) and nvcc --use_fast_math",
+	    { IEEE_OPS, 53, 0, 0.0, INFINITY, "fast math does not change double precision (but -fmad=true contracts it)" },
+	    { CUDA_H_OPS, 11, 0, 0.0, INFINITY,
+	      "__half (cuda_fp16.h; CUDA Math API, Half Precision Intrinsics): every operation is documented as done \"in round-to-nearest-even mode\" and none with an error figure; __hadd, __hsub, __hmul, __hfma (fused), single IEEE operations, are read as correctly rounded, and so are __float2half and __double2half; __hdiv (Half Arithmetic Functions) and hsqrt, hrsqrt, hrcp (Half Math Functions, worded as hsin and hexp, which are not correctly rounded) have no figure: none, so a method that divides or takes a square root in half is unbounded; -ftz is single precision's: half denormals kept" } },
+	  1, 0, 0, "CUDA C++ Programming Guide, Mathematical Functions appendix (single-precision functions, intrinsic functions) and nvcc --use_fast_math; CUDA Math API, Half Precision Intrinsics (Half Arithmetic Functions, Half Math Functions, conversions)",
 	  "no dot/normalize built-ins in C++: the source's own operations" },
 	{ "contract-any", "IEEE rounding, every a*b + c may be fused or not (GCC -ffp-contract=fast, clang's default on arm64, shader compilers)", 0,
 	  { { IEEE_OPS, 24, 0, 0.0, INFINITY, "IEEE round to nearest; contraction per ISO C99 6.5 paragraph 8 and beyond" },

@@ -2467,15 +2467,15 @@ static int prof_exact(mvf *m, int op, int f, const mval *a, const mval *b, const
 {
 	double vmin, vmax;
 	int ok;
-	switch (op) {
+	switch (op) {   /* fmt_in, not the enum's order: PREC_HALF is 2 */
 	case MVF_NEG: return 1;
-	case MVF_CVT: ok = f == PREC_DOUBLE || a->fmt == PREC_FLOAT; break;
+	case MVF_CVT: ok = fmt_in(a->fmt, f); break;
 	case MVF_MUL:
-		ok = is_zero(a) || is_zero(b) || ((is_cst(a, 1.0) || is_cst(a, -1.0)) && b->fmt <= f) ||
-		     ((is_cst(b, 1.0) || is_cst(b, -1.0)) && a->fmt <= f);
+		ok = is_zero(a) || is_zero(b) || ((is_cst(a, 1.0) || is_cst(a, -1.0)) && fmt_in(b->fmt, f)) ||
+		     ((is_cst(b, 1.0) || is_cst(b, -1.0)) && fmt_in(a->fmt, f));
 		break;
 	case MVF_ADD: case MVF_SUB:
-		ok = (is_zero(a) && b->fmt <= f) || (is_zero(b) && a->fmt <= f);
+		ok = (is_zero(a) && fmt_in(b->fmt, f)) || (is_zero(b) && fmt_in(a->fmt, f));
 		break;
 	default: return 0;
 	}
@@ -2515,8 +2515,8 @@ static cv prof_round(mvf *m, int op, int k, int f, cv ia, cv ib, cv id)
 		return ir;
 	}
 	if (prof_exact(m, op, f, a, b, r)) {
-		if (op == MVF_CVT && a->fmt < r->fmt)
-			r->fmt = a->fmt;
+		if (op == MVF_CVT && a->fmt != r->fmt && fmt_in(a->fmt, r->fmt))
+			r->fmt = a->fmt;   /* a widening: the value stays in the narrower format */
 		return ir;
 	}
 	mag_range(m, r->v, &vmin, &vmax);
@@ -2569,7 +2569,7 @@ static cv prof_op(mvf *m, int op, int f, cv ia, cv ib, cv id)
 	const ar_allow *al = &m->ar->fmt[f].op[k];
 	if (m->failed)
 		return fresh(m, f);
-	if (op == MVF_CVT && (f == PREC_DOUBLE || m->val[ia].fmt == PREC_FLOAT))
+	if (op == MVF_CVT && fmt_in(m->val[ia].fmt, f))
 		return prof_round(m, op, k, f, ia, ib, id);   /* a widening: exact whatever the profile */
 	if (op != MVF_NEG && al->how == AR_NONE) {
 		cv ir = fresh(m, f);

@@ -160,7 +160,7 @@ static int plan_arith_check(sweep_plan *pl)
 			return -1;
 		}
 	if (pl->cfg.prec_on[PREC_HALF] && !arith_has_format(pl->arith, PREC_HALF)) {
-		study_error("sweep --arith %s: the profile gives binary16 no precision (docs/gpu.md; vulkan, vulkan-precise, ieee and contract-any have a half row)",
+		study_error("sweep --arith %s: the profile gives binary16 no precision (docs/gpu.md; ieee, vulkan, vulkan-precise, opencl, cuda-fast and contract-any have a half row)",
 		            pl->arith->name);
 		return -1;
 	}

@@ -8,7 +8,9 @@
 # one differs from what the runs give.  Either way it exits 1 when a region
 # of a full run has a looser bound than the --quick region that holds it
 # (the full budget must never prove less).  GPU_RESULTS=DIR reads DIR in
-# place of results/gpu (tests/arith.sh).
+# place of results/gpu (tests/arith.sh).  docs/gpu.md's binary16 table comes
+# from DIR/half/PROFILE/certify-half.csv (`certify --quick --precision half
+# --arith PROFILE`).
 set -eu
 cd "$(dirname "$0")/.."
 P="ieee vulkan vulkan-precise d3d11 opencl cuda-fast contract-any"
@@ -46,6 +48,35 @@ hb() {
 	q=$(rows "$1" | awk -F'|' -v m="$2" -v x="$3" '$1 == m && $2 == x { print $4 }')
 	f=$(frows "$1" | awk -F'|' -v m="$2" -v x="$3" '$1 == m && $2 == x { print $4 }')
 	if [ -n "$f" ]; then echo "$f u (full budget; --quick: $q u)"; else echo "$q u (--quick)"; fi
+}
+# binary16: each method's regions of results/gpu/half/PROFILE/certify-half.csv
+# (certify --precision half writes no whole-sphere row) into one cell:
+# the largest bound / found in u = 2^-11, or why there is no bound
+PH="ieee vulkan vulkan-precise opencl cuda-fast contract-any"
+hrows() { [ -f "$R/half/$1/certify-half.csv" ] || return 0; grep -v '^#' "$R/half/$1/certify-half.csv" | awk -F, -v p="$1" 'NR > 1 {
+	m = $1; if (!(m in seen)) { seen[m] = 1; order[n++] = m; b[m] = 0; f[m] = 0 }
+	if ($7 == "inf") inf[m] = 1; else if ($7 + 0 > b[m]) b[m] = $7 + 0
+	if ($8 != "inf" && $8 + 0 > f[m]) f[m] = $8 + 0
+	if ($12 == "non-finite") nf[m] = 1
+	if ($12 == "overflow") ov[m] = 1
+	if ($12 == "unbounded" && NF >= 15 && $15 != "" && !(m in op)) op[m] = $15 }
+	END { u = 2^-11; for (i = 0; i < n; i++) { m = order[i]
+		c = nf[m] ? "non-finite" : ov[m] ? "overflow" : inf[m] ? "unbounded" (m in op ? " (" op[m] ")" : "") : sprintf("%.3g / %.3g", b[m] / u, f[m] / u)
+		printf "%s|%s|%s\n", m, p, c } }'; }
+htable() {
+	echo "Binary16: the largest bound / found defect over each method's regions, in u = 2^-11,"
+	echo "\`onbstudy certify --quick --precision half --arith PROFILE\` (results/gpu/half/; found: the"
+	echo "IEEE half kernel's scan).  non-finite: the IEEE half kernel returns a NaN or an infinity on"
+	echo "a rounded unit input; unbounded (OP): the profile gives operation OP no bound there;"
+	echo "unbounded: an enclosure reaches a division by 0 or a pole (an underflowing or flushed"
+	echo "squared length).  d3d11 has no binary16 row (min16float: no operation precision)."
+	echo
+	printf '| method |'; for p in $PH; do printf ' %s |' "$p"; done; echo
+	printf '|---|'; for p in $PH; do printf -- '---|'; done; echo
+	for p in $PH; do hrows "$p"; done | sort -t'|' -k1,1 -s | awk -F'|' -v P="$PH" '
+		{ if (!($1 in seen)) { seen[$1] = 1; order[n++] = $1 } cell[$1 "|" $2] = $3 }
+		END { np = split(P, ps, " "); for (i = 0; i < n; i++) { printf "| %s |", order[i]
+			for (j = 1; j <= np; j++) printf " %s |", cell[order[i] "|" ps[j]]; printf "\n" } }'
 }
 headline() {
 	d=$(rows ieee | awk -F'|' '$1 == "duff" && $2 == "float" { print $4 }')
@@ -147,11 +178,12 @@ replace() { # FILE BEGIN END TEXTFILE
 	awk -v b="$2" -v e="$3" -v t="$4" '$0 == b { print; while ((getline l < t) > 0) print l; skip = 1; next } $0 == e { skip = 0 } !skip' "$1"
 }
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
-table > "$T/table"; headline > "$T/head"; engines > "$T/engines"; fulls > "$T/fulls"
+table > "$T/table"; headline > "$T/head"; engines > "$T/engines"; fulls > "$T/fulls"; htable > "$T/half"
 looser > "$T/looser"
 replace docs/gpu.md '<!-- gpu-table: begin (scripts/gpu_table.sh) -->' '<!-- gpu-table: end -->' "$T/table" > "$T/gpu0.md"
 replace "$T/gpu0.md" '<!-- gpu-engines: begin (scripts/gpu_table.sh) -->' '<!-- gpu-engines: end -->' "$T/engines" > "$T/gpu1.md"
-replace "$T/gpu1.md" '<!-- gpu-full: begin (scripts/gpu_table.sh) -->' '<!-- gpu-full: end -->' "$T/fulls" > "$T/gpu.md"
+replace "$T/gpu1.md" '<!-- gpu-half: begin (scripts/gpu_table.sh) -->' '<!-- gpu-half: end -->' "$T/half" > "$T/gpu2.md"
+replace "$T/gpu2.md" '<!-- gpu-full: begin (scripts/gpu_table.sh) -->' '<!-- gpu-full: end -->' "$T/fulls" > "$T/gpu.md"
 if [ -s "$T/looser" ]; then cat "$T/looser" >&2; echo "gpu_table.sh: a full-budget bound looser than the --quick one (a bug in certify or a stale run)" >&2; exit 1; fi
 replace README.md '<!-- gpu-headline: begin (scripts/gpu_table.sh) -->' '<!-- gpu-headline: end -->' "$T/head" > "$T/README.md"
 if [ "${1:-}" = --check ]; then

@@ -1523,6 +1523,24 @@ void cert_task_name(int i, char *buf, size_t cap)
 	}
 }
 
+/* --precision half: certify_half.c, with the profile's binary16 row. */
+static int run_half(const cert_cli *c)
+{
+	ch_opts h;
+	if (c->arith_given && !arith_has_format(c->o.arith, PREC_HALF)) {
+		study_error("certify: --arith %s gives binary16 no precision (docs/gpu.md; ieee, vulkan, vulkan-precise, opencl, "
+		            "cuda-fast and contract-any have a half row)", c->o.arith->name);
+		return ONB_EXIT_USAGE;
+	}
+	memset(&h, 0, sizeof h);
+	h.methods = c->methods; h.out = c->out; h.sectors = c->sectors; h.quiet = c->quiet;
+	h.band = c->band; h.band_lo = c->band_lo; h.band_hi = c->band_hi;
+	h.arith = c->arith_given ? c->o.arith : NULL;
+	h.depth = c->depth >= 0 ? (int)c->depth : c->quick ? 3 : 6;
+	h.az = c->az >= 0 ? (int)c->az : c->quick ? 4 : 16;
+	return cert_half_run(&h);
+}
+
 int cmd_certify(int argc, char **argv)
 {
 	cert_cli c;
@@ -1539,21 +1557,8 @@ int cmd_certify(int argc, char **argv)
 	memset(&ctl, 0, sizeof ctl);
 	if ((r = parse(argc, argv, &c)) != 0)
 		return r < 0 ? 0 : r;
-	if (c.half && c.arith_given && !arith_has_format(c.o.arith, PREC_HALF)) {
-		study_error("certify: --arith %s gives binary16 no precision (docs/gpu.md; ieee, vulkan, vulkan-precise, opencl, "
-		            "cuda-fast and contract-any have a half row)", c.o.arith->name);
-		return ONB_EXIT_USAGE;
-	}
-	if (c.half) {
-		ch_opts h;
-		memset(&h, 0, sizeof h);
-		h.methods = c.methods; h.out = c.out; h.sectors = c.sectors; h.quiet = c.quiet;
-		h.band = c.band; h.band_lo = c.band_lo; h.band_hi = c.band_hi;
-		h.arith = c.arith_given ? c.o.arith : NULL;
-		h.depth = c.depth >= 0 ? (int)c.depth : c.quick ? 3 : 6;
-		h.az = c.az >= 0 ? (int)c.az : c.quick ? 4 : 16;
-		return cert_half_run(&h);
-	}
+	if (c.half)
+		return run_half(&c);
 	if (c.fma && !fma_available()) {
 		study_error("--fma: this CPU or build has no FMA");
 		return ONB_EXIT_USAGE;

@@ -469,7 +469,7 @@ render-brushed: $(B)/aorender $(B)/plot-deps.stamp
 	  mx=$$(echo "$$l" | sed 's/.*max |image - exact frame| \([^ ]*\) .*/\1/'); nn=$$(echo "$$l" | sed 's/.*NaN pixels //'); \
 	  e=$$(echo $$m | sed 's/_/\\_/g'); \
 	  gnuplot -e "here='scripts'; nosvg=1; file='$(B)/brushed-$$m.dat'; out='$(RENDERS)/brushed/$$m-float'; name='$$e'; prec='float'; maxd=$$mx; nan=$$nn" scripts/brushed.gp || exit 1; \
-	  if command -v pngquant >/dev/null 2>&1; then pngquant --force --skip-if-larger --speed 1 --output $(RENDERS)/brushed/$$m-float.png 64 $(RENDERS)/brushed/$$m-float.png || true; fi; \
+	  if command -v pngquant >/dev/null 2>&1; then pngquant --force --skip-if-larger --speed 1 --output $(RENDERS)/brushed/$$m-float.png 256 $(RENDERS)/brushed/$$m-float.png || true; fi; \
 	done | tee $(RENDERS)/brushed/summary.txt
 render: $(B)/aorender $(B)/plot-deps.stamp render-brushed
 	@mkdir -p $(RENDERS)
@@ -490,7 +490,7 @@ render: $(B)/aorender $(B)/plot-deps.stamp render-brushed
 	  gnuplot -e "here='scripts'; nosvg=1; $$g diff='$(B)/render-diff.png'; out='$(RENDERS)/$$m-float-diff'; name='$$e'; prec='float'; maxd=$$mx; over=$$ov; nan=$$nn" scripts/ao.gp || exit 1; \
 	done | tee $(RENDERS)/summary.txt
 	@if command -v pngquant >/dev/null 2>&1; then for f in $(RENDERS)/*.png; do \
-	  pngquant --force --skip-if-larger --speed 1 --output $$f 64 $$f || true; done; \
+	  pngquant --force --skip-if-larger --speed 1 --output $$f 256 $$f || true; done; \
 	else echo "render: pngquant missing (scripts/install-deps.sh --plots): the PNGs stay uncompressed"; fi
 
 # Man pages: man/onbstudy.1 is generated from the commands' own

@@ -17,7 +17,9 @@ if (!exists("diff")) diff = ""
 if (!exists("grey")) grey = ""
 one = (diff eq "")
 np = (grey ne "") + (diff ne "")
-W = (np == 1) ? 960 : 1180; H = 540
+# (two images side by side: the height the title, four caption lines and
+# two 480x360 images at their own aspect need, no blank band above them)
+W = (np == 1) ? 960 : 1180; H = (np == 1) ? 540 : 468
 is(m) = (name eq m)
 look = one ? "every float render of this page is compared with this image" : \
        (nan > 0 ? sprintf("cyan: %d NaN pixels%s%s", nan, is("tangent\\_cross\\_z") ? ", the flat ceiling at n = -z exactly" : "", grey ne "" ? " (black in the image)" : "") : \
@@ -41,7 +43,7 @@ do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
     set output out.ext(term_i)
     # (margins that leave room right of each colour bar for its label)
-    if (np == 2) { set multiplot layout 1, 2 title ttl."\n".sub font F_TITLE margins 0.02, 0.86, 0.04, 0.78 spacing 0.15, 0 } else { set multiplot layout 1, 1 title ttl."\n".sub font F_TITLE margins 0.12, 0.74, 0.04, 0.78 }
+    if (np == 2) { set multiplot layout 1, 2 title ttl."\n".sub font F_TITLE margins 0.02, 0.86, 20.0 / H, 1 - 120.0 / H spacing 0.15, 0 } else { set multiplot layout 1, 1 title ttl."\n".sub font F_TITLE margins 0.12, 0.74, 0.04, 0.78 }
     if (grey ne "") {
     set palette grey
     set cbrange [0:1]

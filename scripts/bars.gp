@@ -5,7 +5,7 @@
 load here."/style.gp"
 set datafile separator whitespace
 set style data histograms
-set style fill solid 0.85 border -1
+set style fill solid 1.0 border -1  # (opaque: each bar in its method's own colour, scripts/palette.txt)
 set boxwidth 0.8
 set yrange [0:2.45]
 set ytics 0, 0.5, 2

@@ -14,7 +14,9 @@ set xrange [-0.5:159.5]
 set yrange [-0.5:119.5]
 set size ratio -1
 unset xtics; unset ytics; unset key; unset border
-W = 1180; H = 540
+# (the height the title, four caption lines and two 160x120 images at
+# their own aspect need: no blank band between the caption and the images)
+W = 1180; H = 458
 # what to look for, by method (name comes escaped: "duff\_branchless")
 is(m) = (name eq m)
 look = (is("duff") || is("duff\\_branchless")) ? "duff's seam: at n.z = 0 its b1 turns by 62 deg, so the ball's lower-right highlight breaks into a V there" : \
@@ -32,7 +34,7 @@ do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
     set output out.ext(term_i)
     # (margins that leave room right of each colour bar for its label)
-    set multiplot layout 1, 2 title ttl."\n".sub font F_TITLE margins 0.02, 0.86, 0.04, 0.76 spacing 0.15, 0
+    set multiplot layout 1, 2 title ttl."\n".sub font F_TITLE margins 0.02, 0.86, 20.0 / H, 1 - 118.0 / H spacing 0.15, 0
     set palette grey
     set cbrange [0:1]
     set cbtics 0.25 font F_TICK

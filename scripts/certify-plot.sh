@@ -128,7 +128,7 @@ for p in float double; do
 		outs="$outs $FIGS/certify_frisvad_duff_$p"
 	fi
 	if command -v pngquant >/dev/null 2>&1; then
-		for o in $outs; do pngquant --force --skip-if-larger --speed 1 --output "$o.png" 64 "$o.png" || true; done
+		for o in $outs; do pngquant --force --skip-if-larger --speed 1 --output "$o.png" 256 "$o.png" || true; done
 	fi
 done
 echo "certify-plot: wrote $DIR/certify_float.png, certify_double.png, certify_ratio_float.png, certify_ratio_double.png"

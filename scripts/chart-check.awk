@@ -26,6 +26,13 @@
 #    series of that plot counts non-finite outputs in its key title: no
 #    band reserved where nothing is non-finite, none missing where
 #    something is.
+# 7. no two series of one plot share a colour: a method's line (its
+#    stroke or marker colour) differs from every other method's of that
+#    plot, NAME+fma excepted (drawn dashed in NAME's colour), and no two
+#    floor bands of a plot share a colour and a fill (solid, or the same
+#    hatch); the colours come from scripts/palette.txt, whose any two
+#    differ by a CIELAB delta-E of at least 10 (tests/plots_cli.sh), so a
+#    colour shared is a method missing from it or a band drawn twice.
 # A text's box is estimated from gnuplot's font size (width 0.56 em per
 # character, height 1 em, on the baseline), so "overlap" means boxes
 # that share more than 1.5 px each way.  Texts turned by other than 0 or
@@ -50,6 +57,12 @@ insvg && /height="[0-9.]+"/ && !ch { match($0, /height="[0-9.]+"/); ch = substr(
 	lastpid = pid; spl[ns] = npl
 	cur = ns; keyy[ns] = -1e9; npts[ns] = 0
 }
+# a series' style (check 7): its first line or marker colour, or for a
+# band its fill colour with its opacity or hatch
+function rgb(s) { gsub(/ /, "", s); return s }
+cur && st[cur] != "" && !(cur in sty) && match($0, /stroke:rgb\([ 0-9,]+\)' d='[^']*'/) { sty[cur] = "hatch " rgb(substr($0, RSTART + 7, RLENGTH - 7)) }
+cur && st[cur] != "" && !(cur in sty) && match($0, /fill = 'rgb\([ 0-9,]+\)' fill-opacity = '[0-9.]+'/) { sty[cur] = "solid " rgb(substr($0, RSTART + 8, RLENGTH - 8)) }
+cur && st[cur] != "" && !(cur in sty) && match($0, /(stroke|color)='rgb\([ 0-9,]+\)'/) { sty[cur] = rgb(substr($0, RSTART, RLENGTH)); sub(/^[a-z]+=/, "", sty[cur]) }
 # a non-finite band (drawn behind, before its plot's series)
 /<polygon fill = 'rgb\(251, 227, 212\)'/ { nfpend = 1 }
 # the end of a plot's group (a text's group ends in the rule below)
@@ -142,6 +155,7 @@ END {
 	overdata()
 	floors()
 	if (nfband) nfbands()
+	colours()
 	exit bad > 0
 }
 # cross(i, s): 1 when segment s passes through text box i (shrunk 1.5 px):
@@ -199,5 +213,17 @@ function nfbands(   s, pl) {
 	for (pl = 1; pl <= npl; pl++) {
 		if (pband[pl] && !pnf[pl]) fail(sprintf("plot %d reserves a non-finite band, but none of its series is non-finite", pl))
 		if (!pband[pl] && pnf[pl]) fail(sprintf("plot %d has a non-finite series but no non-finite band", pl))
+	}
+}
+# colours(): no two series of a plot in one colour (check 7)
+function colours(   s, t, b, k, seen2) {
+	for (s = 1; s <= ns; s++) {
+		if (st[s] == "" || !(s in sty) || ((spl[s], st[s]) in seen2)) continue
+		seen2[spl[s], st[s]] = 1
+		t = st[s]; sub(/ .*/, "", t); b = t; sub(/\+fma$/, "", b)
+		k = (st[s] ~ /^floor/) ? "band " sty[s] : "line " sty[s]
+		if ((spl[s], k) in owner && !(st[s] !~ /^floor/ && owner[spl[s], k] == b))
+			fail(sprintf("\"%s\" and \"%s\" share the colour %s in one plot", own[spl[s], k], st[s], sty[s]))
+		if (!((spl[s], k) in owner)) { owner[spl[s], k] = (st[s] ~ /^floor/) ? st[s] : b; own[spl[s], k] = st[s] }
 	}
 }

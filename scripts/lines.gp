@@ -41,7 +41,12 @@ off(x) = has_zx && x < zx * 1.5
 # slot, so that its label and the slot's never crowd: "-z 10^{-16}" in double)
 if (has_zx) {
     set xtics ()
-    do for [d = ceil(log10(zx * 10)):floor(log10(xmax))] { set xtics add (sprintf("10^{%d}", d) 10.0**d) }
+    # (a labelled tick every decade up to 9 decades, every second or
+    # third beyond, counted down from the last, so that the labels of a
+    # half-width panel never touch: double's 17 decades near the pole)
+    xd0 = ceil(log10(zx * 10)); xd1 = floor(log10(xmax)); xdn = xd1 - xd0 + 1
+    xstep = (xdn > 15) ? 3 : ((xdn > 9) ? 2 : 1)
+    do for [d = xd0:xd1] { if ((xd1 - d) % xstep == 0) { set xtics add (sprintf("10^{%d}", d) 10.0**d) } else { set xtics add ("" 10.0**d 1) } }
     set mxtics 10
     set xtics add ((exists("zero_label") ? zero_label : "-z") zero_x)
     eval xbreak(zx * sqrt(10.0), xmin, xmax)
@@ -106,7 +111,7 @@ do for [wide_try = 0:1] {
 }
 set key vertical maxrows krows
 # fixed margins, so that every panel's graph has the same size
-set tmargin 2.5 + 1.5 * krows
+set tmargin 1.8 + 1.15 * krows
 # (and a taller canvas for a key of more rows than the usual, so that the
 # graphs keep their height)
 H = single ? H_SINGLE + 24 * (krows > 3 ? krows - 3 : 0) : 90 + (H_PANEL_ROW + 24 * (krows > 4 ? krows - 4 : 0)) * nrows

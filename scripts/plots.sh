@@ -44,11 +44,13 @@ gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	script=$1; shift
 	gnuplot -e "here='$HERE'; nosvg=${NOSVG:-0}; $*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
 	made=$((made + 1))
-	# a palette PNG (pngquant, when installed): a third of the size, and the
-	# same to the eye at these few colours
+	# a palette PNG (pngquant, when installed): smaller, and with 256
+	# colours every method keeps its own (at 64 the anti-aliased greys took
+	# most entries and pngquant merged methods' colours: frisvad and
+	# frisvad_max drawn in one red)
 	o=$(echo "$*" | sed -n "s/.*out='\([^']*\)'.*/\1/p")
 	if [ -n "$o" ] && command -v pngquant >/dev/null 2>&1; then
-		pngquant --force --skip-if-larger --speed 1 --output "$o.png" 64 "$o.png" 2>>"$LOG" || true
+		pngquant --force --skip-if-larger --speed 1 --output "$o.png" 256 "$o.png" 2>>"$LOG" || true
 	fi
 }
 

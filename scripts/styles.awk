@@ -9,6 +9,9 @@ BEGIN {
 	nh = split("#E69F00 #009E73 #D55E00 #0072B2 #CC79A7 #56B4E9 #8C6D00 #5C3A92 #E7298A #66A61E #17BECF #BCBD22", hue, " ")
 	split("7 5 9 11 13 15", pts, " ")
 	split(HEAD, h, " "); for (i in h) head[h[i]] = 1
+	# one colour per method in every chart: scripts/palette.txt (a method
+	# it lacks falls back to a shade of its group's hue: palette.sh --check)
+	if (PAL != "") while ((getline l < PAL) > 0) if (l !~ /^#/ && split(l, a, " ") >= 2) pal[a[1]] = tolower(a[2])
 }
 # the registry family; else the shortest family (or, without a registry,
 # other method) whose name is a prefix of this one, followed by "_"
@@ -73,7 +76,7 @@ END {
 				if ((b in head) != pass) continue
 				s = slot[b]
 				d = (m ~ /\+fma$/) ? 2 : ((s - 1) % 5) + 1
-				print m, p, lab_shade(hue[(hi - 1) % nh + 1], s, nb), d, pts[(s - 1) % 6 + 1], (b in head) ? 3 : 1.5, g
+				print m, p, (b in pal) ? pal[b] : lab_shade(hue[(hi - 1) % nh + 1], s, nb), d, pts[(s - 1) % 6 + 1], (b in head) ? 3 : 1.5, g
 			}
 	}
 }

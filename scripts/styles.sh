@@ -8,11 +8,12 @@
 # prefix; NAME+fma rows join NAME's).  A family whose name is another
 # family's followed by "_" (duff_branchless after duff, stark_fixed after
 # stark) joins that family's hue group, so that the variants of one formula
-# sit side by side in one hue.  One hue per group (Okabe-Ito, colour-blind
-# safe, then darker stand-ins; never black), and within a group one shade
-# per member, spread in CIELAB lightness and hue so that any two members
-# differ by a delta-E of at least 15 (tests/plots_cli.sh checks it), none
-# darker than L* = 28; a dash type and point type per member.  The
+# sit side by side in one hue.  A method's colour is its row of
+# scripts/palette.txt, the same in every chart (scripts/palette.sh: related
+# hues within a group, every colour far from every other); only a method
+# the table lacks gets a shade computed here (its group's hue, Okabe-Ito,
+# spread in CIELAB lightness: palette.sh --check names such methods).  A
+# dash type and point type per member.  The
 # headline methods (frisvad, frisvad_max, duff) are drawn wide and first,
 # so that each thin variant drawn over them stays visible where the two
 # coincide.  Groups are packed, in registry order and never split, into
@@ -25,4 +26,4 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 list=$(mktemp); trap 'rm -f "$list"' EXIT
 ONBSTUDY=${ONBSTUDY:-$HERE/../onbstudy}
 "$ONBSTUDY" list --format csv 2>/dev/null | awk -F, 'NR > 1 { print $1, $2 }' > "$list" || true
-awk -F, -v L="$list" -v MAX="${PANEL_MAX:-5}" -v HEAD="${HEADLINE:-frisvad frisvad_max duff}" -f "$HERE/lab.awk" -f "$HERE/styles.awk" "$summary"
+awk -F, -v L="$list" -v PAL="${PALETTE:-$HERE/palette.txt}" -v MAX="${PANEL_MAX:-5}" -v HEAD="${HEADLINE:-frisvad frisvad_max duff}" -f "$HERE/lab.awk" -f "$HERE/styles.awk" "$summary"

@@ -75,8 +75,10 @@ W = W_SINGLE; H = H_SINGLE + 120
 set key at screen 0.5, screen 1 - 45.0 / H center top
 set tmargin at screen 1 - (45.0 + 19 * (3 + nm + (nfrows > 0)) + 12) / H
 mtitle(k) = system(sprintf("sed -n '%dp' '%s'", k, mtitles))
-# the marks: the minimax green, solid; the published ones grey, dotted and dashed
-mcol(k) = (strstrt(mtitle(k), "minimax") > 0) ? "#009E73" : "#555555"
+# the marks: the minimax green, solid; the published ones dotted and
+# dashed, Frisvad 2012's grey and Max 2017's purple (no two marks in one
+# colour: chart-check.awk's check 7)
+mcol(k) = (strstrt(mtitle(k), "minimax") > 0) ? "#009E73" : (strstrt(mtitle(k), "Frisvad") > 0 ? "#555555" : "#8E44AD")
 mdt(k) = (strstrt(mtitle(k), "minimax") > 0) ? 1 : (k % 2 ? 3 : 2)
 nftitle = sprintf("t = %s (Frisvad 2012 without its fallback: n = -z divides by zero): non-finite, %d row%s", nft, nfrows, nfrows == 1 ? "" : "s")
 if (!exists("single")) single = 0
@@ -88,6 +90,6 @@ do for [term_i = 1:NTERM] {
          file using 1:3 with lines lw 2 dt 2 lc rgb "#D55E00" title "orthogonality  max(|b1.n|, |b2.n|, |b1.b2|)", \
          file using 1:4 with lines lw 1 lc rgb "#333333" title "both (the larger)", \
          for [k = 1:nm] word(mfiles, k) using 1:($2 < 1 ? y0 / 3 : (nfrows > 0 ? ynf * 6 : y1 * 3)) with lines lw 1.5 dt mdt(k) lc rgb mcol(k) title mtitle(k), \
-         (nfrows > 0 ? "+" : "< true") using (xnf):(ynf) every ::0::0 with points pt 7 ps 1.2 lc rgb "#333333" title (nfrows > 0 ? nftitle : "")
+         (nfrows > 0 ? "+" : "< true") using (xnf):(ynf) every ::0::0 with points pt 7 ps 1.2 lc rgb "#000000" title (nfrows > 0 ? nftitle : "")
     unset multiplot
 }

@@ -21,11 +21,17 @@
 #     "fails" only where polecap.csv has a defect of 0.1 or more;
 #   - the render charts' texts (scripts/ao.gp, brushed.gp) fit their
 #     canvas, drawn on fixture images.
+#   - scripts/palette.sh --check: every method of the registry and of the
+#     committed runs has its colour in scripts/palette.txt, any two apart;
+#     chart-check.awk's check 7 on every committed chart: no two series of
+#     one panel in one colour (and it fails on a chart with duff_wide
+#     drawn in duff's colour);
 # Not checked here: the PNGs themselves (the same gnuplot scripts draw
 # them; they are looked at by eye before each commit).
 . "$(dirname "$0")/lib.sh"
 command -v gnuplot >/dev/null 2>&1 || { echo "charts_committed: gnuplot missing: scripts/install-deps.sh --test must install it"; exit 1; }
 T=$tmp
+out=$(sh scripts/palette.sh --check 2>&1) && ok || bad "$out"
 ./onbstudy list --format csv | awk -F, 'NR > 1 { print $1 }' > "$T/registry"
 # check DIR RUN_SUMMARY...: chart-check every SVG of DIR, and no registry
 # method in any text of it that the run's summary (or certify) files lack
@@ -74,7 +80,12 @@ n=$(grep -c "fill = 'rgb(251, 227, 212)'" "$T/poles/north_pole_float.svg")
 sed 's/(31 non-finite)<\/title>/<\/title>/' "$T/poles/north_pole_float.svg" > "$T/m1.svg"
 sed 's/<title>duff<\/title>/<title>duff (2 non-finite)<\/title>/' "$T/poles/north_pole_float.svg" > "$T/m2.svg"
 sed '0,/floor of the other 4/s//floor of naive, zzz/' "$T/poles/north_pole_float.svg" > "$T/m3.svg"
-for m in m1 m2 m3; do
+# two series of one panel in one colour (check 7): duff_wide drawn in duff's
+cw() { awk -v t="$1" 'index($0, "<title>" t "</title>") { f = 1; next } f && match($0, /stroke=\047rgb\([ 0-9,]+\)\047/) { print substr($0, RSTART + 8, RLENGTH - 9); exit }' "$T/poles/north_pole_float.svg"; }
+c1=$(cw duff); c2=$(cw duff_wide)
+[ -n "$c1" ] && [ -n "$c2" ] && [ "$c1" != "$c2" ] && ok || bad "north_pole_float: duff ($c1) and duff_wide ($c2) not found in distinct colours"
+sed "s/$c2/$c1/g" "$T/poles/north_pole_float.svg" > "$T/m4.svg"
+for m in m1 m2 m3 m4; do
 	cmp -s "$T/$m.svg" "$T/poles/north_pole_float.svg" && bad "$m: the broken chart is not broken (the SVG changed form?)"
 	awk -v nfband=1 -f scripts/chart-check.awk "$T/$m.svg" > /dev/null 2>&1 && bad "chart check passed a broken chart ($m)" || ok
 done

@@ -11,11 +11,16 @@
 #     "no finite point".
 #   - no text lies over a drawn line segment or marker of a series;
 #   - every accuracy-floor band names methods drawn in its own panel;
+#   - no two series of one plot share a colour, nor two floor bands a
+#     colour and fill;
 # that the tradeoff chart's Pareto circles are onbstudy table's (a file
 # whose pareto column breaks the table's rule is refused);
 # and the colours of scripts/styles.sh: within a hue group every two
 # shades differ by a CIELAB delta-E of at least 15, none is near-black,
-# duff and duff_branchless share a group and sit side by side.
+# duff and duff_branchless share a group and sit side by side; the
+# palette (scripts/palette.sh --check: any two methods 10 apart, none
+# near-black, fails on broken tables) and a method's colour the same in
+# runs that hold different methods.
 # Not checked mechanically, and why:
 #   - a text over a filled area or an image (a map's cells): only lines
 #     and markers are data paths in gnuplot's SVG;
@@ -117,6 +122,22 @@ END { for (i = 1; i <= NR; i++) { lab_of(c[i]); if (LAB_L < 25) printf "%s is ne
 EOF2
 )
 [ -z "$out" ] && ok || bad "shades: $out"
+# the palette (scripts/palette.txt, one colour per method in every chart):
+# any two colours apart by a delta-E of 10 and none near-black, or
+# palette.sh --check fails: a table giving duff_wide duff's colour, one
+# without jolt, one with a near-black row
+out=$(sh scripts/palette.sh --check 2>&1) && ok || bad "$out"
+sed 's/^duff_wide .*/duff_wide #0072b2/' scripts/palette.txt > "$T/p1.txt"
+grep -v '^jolt ' scripts/palette.txt > "$T/p2.txt"
+sed 's/^jolt .*/jolt #1a1a1a/' scripts/palette.txt > "$T/p3.txt"
+for p in p1 p2 p3; do PALETTE="$T/$p.txt" sh scripts/palette.sh --check > /dev/null 2>&1 && bad "palette.sh --check passed a broken table ($p)" || ok; done
+# a method keeps its colour whatever else a run holds: duff's in the whole
+# reference run and in a run of duff and jolt alone is its palette row
+awk -F, '/^#/ || $1 == "method" || $1 == "duff" || $1 == "jolt"' results/reference/summary.csv results/wild/summary.csv > "$T/two.csv"
+sh scripts/styles.sh "$T/two.csv" > "$T/sty2"
+p=$(awk '$1 == "duff" { print $2 }' scripts/palette.txt)
+for f in sty sty2; do c=$(awk '$1 == "duff" { print $3 }' "$T/$f")
+	[ -n "$c" ] && [ "$c" = "$p" ] && ok || bad "duff drawn in $c ($f), its palette colour is $p"; done
 # bad input
 sh scripts/plots.sh "$T/nothing" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "plots.sh on a missing run must exit 2"
 NZ=x sh scripts/polecap.sh "$T/pc2" >/dev/null 2>&1; [ $? -eq 2 ] && ok || bad "polecap.sh with NZ=x must exit 2"

@@ -7,8 +7,10 @@
 #   (none)    print the table the registry needs: palette.txt's rows, then
 #             a row for each method it lacks
 #   --update  write that table to scripts/palette.txt
-#   --check   exit 1, naming them, when a method of the registry or of a
-#             committed run (results/*/summary.csv, certify.csv) has no row,
+#   --check   exit 1, naming them, when a method of a committed run
+#             (results/*/summary.csv, certify.csv) has no row (a method of
+#             the registry alone is named, not failed: no committed chart
+#             draws it yet),
 #             when two rows' colours differ by a CIELAB delta-E below 10, or
 #             when a colour is near-black (L* < 25: it reads as the axes')
 # PALETTE=FILE reads and writes FILE instead of scripts/palette.txt.
@@ -28,12 +30,14 @@ TABLE=${PALETTE:-$HERE/palette.txt}
 mode=${1:-}
 case $mode in ""|--update|--check) ;; *) echo "usage: palette.sh [--update | --check]" >&2; exit 2;; esac
 [ -x "$ONBSTUDY" ] || { echo "palette: $ONBSTUDY not built (make)" >&2; exit 2; }
-list=$(mktemp); new=$(mktemp); trap 'rm -f "$list" "$new"' EXIT
+list=$(mktemp); new=$(mktemp); runs=$(mktemp); trap 'rm -f "$list" "$new" "$runs"' EXIT
 "$ONBSTUDY" list --format csv | awk -F, 'NR > 1 { print $1, $2 }' > "$list"
-# methods of the committed runs outside the registry (frisvad_rotate)
+# the methods of the committed runs (charted), and those of them outside
+# the registry (frisvad_rotate)
 for f in "$ROOT"/results/*/summary.csv "$ROOT"/results/*/*/summary.csv "$ROOT"/results/certify/certify.csv; do
 	[ -f "$f" ] && awk -F, '!/^#/ && $1 != "method" { sub(/\+fma$/, "", $1); print $1 }' "$f"
-done | sort -u | awk 'NR == FNR { have[$1] = 1; next } !($1 in have) { print $1, "-" }' "$list" - >> "$list"
+done | sort -u > "$runs"
+awk 'NR == FNR { have[$1] = 1; next } !($1 in have) { print $1, "-" }' "$list" "$runs" >> "$list"
 [ -f "$TABLE" ] || : > "$TABLE"
 awk -v T="$TABLE" -f "$HERE/lab.awk" -f "$HERE/palette.awk" "$list" > "$new"
 missing=$(awk 'NR == FNR { if (!/^#/) have[$1] = 1; next } !($1 in have) { printf "%s ", $1 }' "$TABLE" "$new")
@@ -45,9 +49,13 @@ END { for (i = 1; i <= n; i++) { lab_of(c[i]); if (LAB_L < 25) printf "%s %s is 
 	for (j = i + 1; j <= n; j++) if (delta_e(c[i], c[j]) < 10) printf "%s and %s: delta-E %.1f; ", m[i], m[j], delta_e(c[i], c[j]) } }
 EOF
 )
+	# (a registry method no committed chart draws yet is only named: its
+	# charts use a fallback shade until --update gives it a row; a method of
+	# a committed run without a row fails)
+	drawn=$(echo "$missing" | tr ' ' '\n' | grep -Fx -f "$runs" | tr '\n' ' ' || true)
 	[ -z "$missing" ] || echo "palette: no colour in $TABLE for: $missing(sh scripts/palette.sh --update adds them)" >&2
 	[ -z "$close" ] || echo "palette: colours too close in $TABLE: $close" >&2
-	[ -z "$missing$close" ];;
+	[ -z "$drawn$close" ];;
 --update)
 	{ sed -n '/^#/p' "$TABLE"; grep -v '^#' "$new"; } > "$TABLE.tmp" && mv "$TABLE.tmp" "$TABLE"
 	echo "palette: $(grep -vc '^#' "$TABLE") methods in scripts/palette.txt${missing:+; added: $missing}";;

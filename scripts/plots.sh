@@ -44,10 +44,11 @@ gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	script=$1; shift
 	gnuplot -e "here='$HERE'; nosvg=${NOSVG:-0}; $*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
 	made=$((made + 1))
-	# a palette PNG (pngquant, when installed): smaller, and with 256
-	# colours every method keeps its own (at 64 the anti-aliased greys took
-	# most entries and pngquant merged methods' colours: frisvad and
-	# frisvad_max drawn in one red)
+	# a palette PNG (pngquant, when installed): a third of the size; at 64
+	# colours the anti-aliased greys took most entries and pngquant merged
+	# methods' colours (frisvad and frisvad_max in one red); at 256 a series
+	# of many pixels keeps its colour within a delta-E of 4, one of few
+	# pixels can shift by up to 14 (docs/chart-grading.md)
 	o=$(echo "$*" | sed -n "s/.*out='\([^']*\)'.*/\1/p")
 	if [ -n "$o" ] && command -v pngquant >/dev/null 2>&1; then
 		pngquant --force --skip-if-larger --speed 1 --output "$o.png" 256 "$o.png" 2>>"$LOG" || true

@@ -38,7 +38,7 @@ table() {
 		{ k = $2 "|" $3; if (!(k in seen)) { seen[k] = 1; order[n++] = k }
 		  if ($1 == "q") cell[k "|" $4] = c($5, $6); else full[k "|" $4] = c($5, $6) }
 		END { np = split(P, ps, " "); for (i = 0; i < n; i++) { split(order[i], a, "|"); printf "| %s | %s |", a[1], a[2]
-			for (j = 1; j <= np; j++) { x = order[i] "|" ps[j]; printf " %s%s |", cell[x], (x in full) ? "; **full:** " full[x] : "" }
+			for (j = 1; j <= np; j++) { x = order[i] "|" ps[j]; printf " %s%s |", (x in cell) ? cell[x] : "-", (x in full) ? "; **full:** " full[x] : "" }
 			printf "\n" } }'
 }
 # the whole-sphere bound of method $2, precision $3 under profile $1 for the
@@ -193,10 +193,11 @@ brackets() {
 				if (wb[k] == "inf" || wf[k] + 0 <= 0 || wb[k] / wf[k] <= 1.25) continue
 				for (j = 1; j <= m; j++) if (rk[j] == k && rb[j] == wb[k]) break
 				eq = 0; nb = 0; for (l = 1; l <= m; l++) if (rk[l] == k && rlo[l] == rlo[j] && rhi[l] == rhi[j]) { nb++; if (rb[l] == wb[k]) eq++ }
-				db = qb[k] ~ /^[0-9]/ ? (wb[k] / u - qb[k]) / qb[k] : 0; df = (wf[k] / u - qf[k]) / qf[k]
-				side = eq == nb && nb > 1 ? "floor" : (db < -0.02 && df < 0.02 ? "bound" : (df > 0.1 && db > -0.02 ? "found" : "both"))
-				printf "| `%s` | %s | %s | %.3g / %.3g | %.2f | %s | [%.6g, %.6g], [%s, %s] | %.3g / %.3g, %s | %d of %d | %+.0f%%, %+.0f%% | %s |\n", p, a[1], a[2], wb[k] / u, wf[k] / u, wb[k] / wf[k],
-					qb[k] ~ /^[0-9]/ ? sprintf("%.2f", qb[k] / qf[k]) : qb[k], rlo[j], rhi[j], rpl[j], rph[j], rb[j] / u, rf[j] / u, rs[j], eq, nb, 100 * db, 100 * df, side } }'
+				q = qb[k] ~ /^[0-9]/; db = q ? (wb[k] / u - qb[k]) / qb[k] : 0; df = q ? (wf[k] / u - qf[k]) / qf[k] : 0
+				side = eq == nb && nb > 1 ? "floor" : (!q ? "not read (no --quick run)" : (db < -0.02 && df < 0.02 ? "bound" : (df > 0.1 && db > -0.02 ? "found" : "both")))
+				mv = q ? sprintf("%+.0f%%, %+.0f%%", 100 * db, 100 * df) : "no --quick run"
+				printf "| `%s` | %s | %s | %.3g / %.3g | %.2f | %s | [%.6g, %.6g], [%s, %s] | %.3g / %.3g, %s | %d of %d | %s | %s |\n", p, a[1], a[2], wb[k] / u, wf[k] / u, wb[k] / wf[k],
+					q ? sprintf("%.2f", qb[k] / qf[k]) : (k in qb ? qb[k] : "-"), rlo[j], rhi[j], rpl[j], rph[j], rb[j] / u, rf[j] / u, rs[j], eq, nb, mv, side } }'
 	done
 }
 # every region of a full run against the --quick region that holds it (the

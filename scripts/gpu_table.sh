@@ -197,7 +197,7 @@ brackets() {
 				side = eq == nb && nb > 1 ? "floor" : (!q ? "not read (no --quick run)" : (db < -0.02 && df < 0.02 ? "bound" : (df > 0.1 && db > -0.02 ? "found" : "both")))
 				mv = q ? sprintf("%+.0f%%, %+.0f%%", 100 * db, 100 * df) : "no --quick run"
 				printf "| `%s` | %s | %s | %.3g / %.3g | %.2f | %s | [%.6g, %.6g], [%s, %s] | %.3g / %.3g, %s | %d of %d | %s | %s |\n", p, a[1], a[2], wb[k] / u, wf[k] / u, wb[k] / wf[k],
-					q ? sprintf("%.2f", qb[k] / qf[k]) : (k in qb ? qb[k] : "-"), rlo[j], rhi[j], rpl[j], rph[j], rb[j] / u, rf[j] / u, rs[j], eq, nb, mv, side } }'
+					q ? sprintf("%.2f", qb[k] / qf[k]) : (qb[k] != "" ? qb[k] : "-"), rlo[j], rhi[j], rpl[j], rph[j], rb[j] / u, rf[j] / u, rs[j], eq, nb, mv, side } }'
 	done
 }
 # every region of a full run against the --quick region that holds it (the

@@ -196,8 +196,14 @@ function lead(e,   s, f, d) {
 	s = tolower(sprec[e]); f = index(s, "float"); d = index(s, "double")
 	return (d > 0 && (f == 0 || d < f)) ? "double" : "float"
 }
-# Whether an alias's identity covers precision p (its target's figures apply).
-function covers(e, p) { return !isalias[e] || index(precs[e], p) > 0 }
+# Whether an alias's identity covers precision p (its target's figures
+# apply); a source that has no float path (its precision reads "double
+# only": Babylon.js's JavaScript numbers) has no float figures, whatever its
+# float kernel (a rounding of the double row) measures.
+function covers(e, p) {
+	if (p == "float" && index(tolower(sprec[e]), "double only") == 1) return 0
+	return !isalias[e] || index(precs[e], p) > 0
+}
 
 function proven(m, p) { return ((m, p) in cstatus) && cstatus[m, p] != "singular" && !isbad(cbound[m, p]) }
 function safe(m, p) {

@@ -365,6 +365,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 #include "indep_wild.h"
 #include "indep_wild_c.h"
 #include "indep_wild_b5.h"
+#include "indep_wild_b6.h"
 
 /* One entry per registry method: name, and both precisions by an id. */
 
@@ -374,7 +375,7 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
 	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2) ||
 	    indep_wild_d_f(id, n, b1, b2) || indep_wild_c_f(id, n, b1, b2) ||
-	    indep_wild_b5_f(id, n, b1, b2))
+	    indep_wild_b5_f(id, n, b1, b2) || indep_wild_b6_f(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naivef(n, b1, b2, k); break;
@@ -396,7 +397,7 @@ static void indep_d(int id, int k, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
 	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2) ||
 	    indep_wild_d_d(id, n, b1, b2) || indep_wild_c_d(id, n, b1, b2) ||
-	    indep_wild_b5_d(id, n, b1, b2))
+	    indep_wild_b5_d(id, n, b1, b2) || indep_wild_b6_d(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naived(n, b1, b2, k); break;
@@ -469,6 +470,7 @@ static const indep_row T[] = {
 	{ "open3d", onb_open3d, onb_open3df, IW_OPEN3D, 0 },
 	INDEP_WILD_C_ROWS
 	INDEP_WILD_B5_ROWS
+	INDEP_WILD_B6_ROWS
 	{ "physx_fixed", onb_physx_fixed, onb_physx_fixedf, IW_PHYSX_FIXED, 0 },
 	{ "open3d_fixed", onb_open3d_fixed, onb_open3d_fixedf, IW_OPEN3D_FIXED, 0 },
 	{ "filament_fixed", onb_filament_fixed, onb_filament_fixedf, IW_FILAMENT_FIXED, 0 },

@@ -59,6 +59,7 @@
  *     onb_blender          onb_blenderf           Blender BLI ortho_basis_v3v3_v3
  *     onb_box3d            onb_box3df             Box3D b3Perp + contact tangents
  *     onb_appleseed        onb_appleseedf         appleseed Basis3::build
+ *     onb_babylon          onb_babylonf           Babylon.js getNormalToRef + cross (JS double)
  *     onb_godot_fixed      onb_godot_fixedf       this project: Godot fixed
  *     onb_bx_fixed         onb_bx_fixedf          this project: bx fixed
  *     onb_physx_fixed      onb_physx_fixedf       this project: PhysX fixed
@@ -2648,6 +2649,60 @@ static inline void ONB__K(appleseedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b2->z = b1->x * n.y - n.x * b1->y;
 }
 
+/* ------------------------------------------------------------------ */
+/* babylon (Babylon.js Vector3.getNormalToRef, JavaScript double)       */
+/* ------------------------------------------------------------------ */
+/* V8's fdlibm (src/lib/fdlibm.c): Node.js's Math.acos, atan2, sin, cos. */
+extern double onb__fdlibm_acos(double x);   /* internal: the babylon kernel's */
+extern double onb__fdlibm_atan2(double y, double x);
+extern double onb__fdlibm_sin(double x);
+extern double onb__fdlibm_cos(double x);
+/* getNormalToRef: radius = length() = sqrt(x*x + y*y + z*z); theta =
+   acos(y / radius), phi = atan2(z, x); theta -= PI/2 where theta > PI/2,
+   else theta += PI/2 (Math.PI / 2 = 0x1.921fb54442d18p+0); the result
+   ((radius * sin(theta)) * cos(phi), radius * cos(theta), (radius *
+   sin(theta)) * sin(phi)), evaluated left to right in double with V8's
+   fdlibm.  Completed (docs/wild-specs/README.md): b1 = that vector through
+   Vector3.normalize() (normalizeFromLength(length()): unchanged where the
+   length is 0 or 1, else scaled by 1/length), b2 = Vector3.CrossToRef(n,
+   b1) (x = n.y b1.z - n.z b1.y, ...).  Handedness +1.  At +-y, atan2(0, 0)
+   = 0 gives b1 = (1, cos(PI/2), 0), b1.y = 6.1e-17.  Babylon.js has no
+   float path (JavaScript numbers are doubles): onb_babylonf widens n,
+   runs the double row and rounds b1 and b2 to float (a Float32Array
+   store), as duff_widef does. */
+static inline void ONB__K(babylon)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	const double pio2 = 0x1.921fb54442d18p+0;   /* Math.PI / 2 */
+	const double radius = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+	double theta = onb__fdlibm_acos(n.y / radius);
+	const double phi = onb__fdlibm_atan2(n.z, n.x);
+	double x, y, z, len;
+	if (theta > pio2)
+		theta -= pio2;
+	else
+		theta += pio2;
+	x = radius * onb__fdlibm_sin(theta) * onb__fdlibm_cos(phi);
+	y = radius * onb__fdlibm_cos(theta);
+	z = radius * onb__fdlibm_sin(theta) * onb__fdlibm_sin(phi);
+	len = sqrt(x * x + y * y + z * z);
+	if (!(len == 0.0 || len == 1.0)) {
+		const double s = 1.0 / len;
+		x *= s; y *= s; z *= s;
+	}
+	b1->x = x; b1->y = y; b1->z = z;
+	b2->x = n.y * z - n.z * y;
+	b2->y = n.z * x - n.x * z;
+	b2->z = n.x * y - n.y * x;
+}
+static inline void ONB__K(babylonf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3 nd, d1, d2;
+	nd.x = (double)n.x; nd.y = (double)n.y; nd.z = (double)n.z;
+	ONB__K(babylon)(nd, &d1, &d2);
+	b1->x = (float)d1.x; b1->y = (float)d1.y; b1->z = (float)d1.z;
+	b2->x = (float)d2.x; b2->y = (float)d2.y; b2->z = (float)d2.z;
+}
+
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's
    lines with the guard comparing n with the unit diagonal
    d = (0, 1, 1)/sqrt(2) = (0, c, c) and its antipode: the cross with
@@ -2728,7 +2783,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(willems) X(gltf_viewer) X(rtao) X(rtao_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
 	X(nori) X(osl_ortho) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
-	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(godot_fixed) X(bx_fixed) \
+	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(babylon) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)
 
 #define ONB__DECLARE(m) \

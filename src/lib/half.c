@@ -816,6 +816,18 @@ void HN(appleseedh)(V n, V *b1, V *b2)
 	*b2 = hcross(*b1, n);
 }
 
+/* ---- babylon: JavaScript's double, no float or half path: the double row
+   (V8's fdlibm) on n widened, b1 and b2 rounded once to binary16, as
+   onb_babylonf rounds them to float ---- */
+void onb_babylonh(V n, V *b1, V *b2)
+{
+	onb_vec3 nd, d1, d2;
+	nd.x = (double)n.x; nd.y = (double)n.y; nd.z = (double)n.z;
+	onb_babylon_outline(nd, &d1, &d2);
+	*b1 = hvec((H)d1.x, (H)d1.y, (H)d1.z);
+	*b2 = hvec((H)d2.x, (H)d2.y, (H)d2.z);
+}
+
 /* ---- duff_wide: duff_branchless's formula in double, each output
    rounded once to binary16 (as duff_widef rounds to float) ---- */
 void HN(duff_wideh)(V n, V *b1, V *b2)

@@ -79,6 +79,9 @@ static const onb_provenance P_BOX3D = { "github.com/erincatto/box3d", "30c67b5e6
 static const onb_provenance P_APPLESEED = { "github.com/appleseedhq/appleseed", "022c1590d9dae40773df8c5000385889d3f893d0",
 	"src/appleseed/foundation/math/basis.h:175-236", "MIT", "C++", "T: Basis3f (float) and Basis3d (double) both ship",
 	"source-level IEEE (no FMA target); foundation/math/vector.h (read at 95b801be): normalize = v * (1/sqrt(dot)), dot a loop from 0, cross(u, n)" };
+static const onb_provenance P_BABYLON = { "github.com/BabylonJS/Babylon.js", "141e38dddee1ac94408a53bacf22508973697532",
+	"packages/dev/core/src/Maths/math.vector.ts, Vector3.getNormalToRef (characters 58482-59850 of the 350247; normalize, length :74700-76500)", "Apache-2.0", "TypeScript -> JavaScript", "double only (JavaScript numbers; Babylon.js has no float path: the float kernel rounds the double row's b1, b2 to float, and the table gives no float figure)",
+	"Node.js 20.20.2 (V8 11.3.244.8): Math.acos, atan2, sin, cos are V8's fdlibm port (src/base/ieee754.cc, src/lib/fdlibm.c, bit for bit); completed with normalize() (unchanged at length 0 or 1, else times 1/length) and b2 = Vector3.CrossToRef(n, b1)" };
 static const onb_provenance P_Q2RTX = { "github.com/NVIDIA/Q2RTX", "f2526e9a165949f66e91e82f0d63aa7bb2567b4d",
 	"src/refresh/vkpt/shader/utils.glsl:241-257", "GPL-2.0-or-later", "GLSL", "float",
 	"IEEE: `precise` forbids contraction; Vulkan's 2.5-ulp division read as correctly rounded" };
@@ -250,6 +253,9 @@ static const onb_method onb__table[] = {
 	  "none", "n.x < -0.5 or 0.5 < n.x", -1, 0, NAN, 0, ONB__PTRS(box3d), &P_BOX3D },
 	{ "appleseed", "appleseed", "appleseed Basis3<T>::build(normal): u = Hughes-Moller's perpendicular (smallest |n_i| zeroed), normalized; v = cross(u, n); (b1, b2) = (u, v)",
 	  "none", "|n.x| < |n.y| ? (|n.x| < |n.z| ? x : z) : (|n.y| < |n.z| ? y : z) (ties to z, then y)", -1, 0, NAN, 0, ONB__PTRS(appleseed), &P_APPLESEED },
+	{ "babylon", "babylon", "Babylon.js Vector3.getNormalToRef (theta = acos(y/r) +- PI/2, phi = atan2(z, x), JavaScript double, V8's fdlibm); completed: b1 = normalize(), b2 = Vector3.CrossToRef(n, b1)",
+	  "none (finite on the unit sphere; at +-y atan2(0, 0) = 0 gives b1 = (1, 6.1e-17, 0)); near +-y acos(y/r) loses the angle (|b1.n| up to ~1e-8 in double)",
+	  "acos(y/r) > PI/2 (theta - PI/2), else theta + PI/2: b1 flips at y = 0", +1, 0, NAN, 0, ONB__PTRS(babylon), &P_BABYLON },
 	{ "godot_fixed", "godot", "onbstudy, not shipped: Godot get_any_perpendicular with BACK (0,0,1) where |n.z| < |n.y| is the smallest",
 	  "none", "|n.x| <= |n.y|, |n.x| <= |n.z| (RIGHT); |n.y| <= |n.z| (UP); else BACK", +1, 0, NAN, ONB__WILD_FIXED, ONB__PTRS(godot_fixed), NULL },
 	{ "bx_fixed", "bx", "onbstudy, not shipped: bx::calcTangentFrame with pbrt-v3's branch |n.x| > |n.y|",

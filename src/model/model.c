@@ -210,6 +210,24 @@ cv cm_sqrt(cm *c, int f, cv a)
 	     : f == PREC_HALF ? put(c, half_op(c, HX_SQRT, c->x[a], 0.0, 0.0))
 	                            : put(c, fmt(f, sqrt(c->x[a])));
 }
+/* V8's fdlibm (src/lib/fdlibm.c), in double.  CM_MVF has no enclosure of
+   these functions: the run fails (no bound), see model.h. */
+cv cm_libm(cm *c, int fn, cv a, cv b)
+{
+	double x, r;
+	if (c->backend == CM_MVF) {
+		mvf_fail(c->m);
+		return mvf_cst(c->m, 0.0);
+	}
+	x = c->x[a];
+	switch (fn) {
+	case CM_ACOS:  r = onb__fdlibm_acos(x); break;
+	case CM_ATAN2: r = onb__fdlibm_atan2(x, c->x[b]); break;
+	case CM_SIN:   r = onb__fdlibm_sin(x); break;
+	default:       r = onb__fdlibm_cos(x); break;
+	}
+	return put(c, r);
+}
 cv cm_fma(cm *c, int f, cv a, cv b, cv d)
 {
 	EMU(MVF_FMA, f, a, b, d);

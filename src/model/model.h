@@ -77,6 +77,14 @@ cv cm_newton_embree(cm *c, int f, cv x, cv y);
 cv cm_newton_fused(cm *c, int f, cv x, cv y);
 cv cm_newton_embree_fused(cm *c, int f, cv x, cv y);
 
+/* A function of V8's fdlibm (src/lib/fdlibm.c: Node.js's Math.acos,
+   atan2(a, b), sin, cos), in double; b is used by CM_ATAN2 alone.  CM_EXEC
+   calls it, so a model with it is bit-exact; CM_MVF has no enclosure of it
+   (fdlibm documents < 1 ulp for each, which this back end does not carry):
+   the run fails and no bound is proven (the babylon family). */
+enum { CM_ACOS = 0, CM_ATAN2, CM_SIN, CM_COS };
+cv cm_libm(cm *c, int fn, cv a, cv b);
+
 /* Branch point number `id` of the model: a OP b on the values as computed,
    and |a| OP |b| for cm_branch_abs.  Returns the side taken (0 or 1). */
 int cm_branch(cm *c, int id, int op, cv a, cv b);

@@ -99,6 +99,7 @@ enum { MVF_ADD, MVF_SUB, MVF_MUL, MVF_DIV, MVF_SQRT, MVF_FMA, MVF_CVT, MVF_NEG }
 mvf *mvf_new(void);
 void mvf_free(mvf *m);
 int  mvf_failed(const mvf *m);
+void mvf_fail(mvf *m);   /* mark the run failed (cm_libm: no enclosure) */
 /* The run failed because a value may exceed its format's largest finite
    value (binary16's 65504: a rounding there may overflow to infinity);
    mvf_overflow_seen: whether any run did since the last call (reset). */

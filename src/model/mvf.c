@@ -191,6 +191,7 @@ void mvf_free(mvf *m)
 	free(m);
 }
 
+void mvf_fail(mvf *m) { m->failed = 1; }
 int mvf_failed(const mvf *m) { return m->failed; }
 
 int mvf_overflowed(const mvf *m) { return m->overflow; }

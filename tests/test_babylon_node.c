@@ -7,8 +7,8 @@
  * to float (where the input is a float) the golden b1, b2 rounded to
  * float.  NaN matches NaN (JavaScript has one NaN).  This is the check of
  * src/lib/fdlibm.c (V8's fdlibm) and of the kernel's operation order: a
- * libm other than V8's differs (glibc 2.36's atan2 and sin/cos differ from
- * it on a third of random arguments).
+ * libm other than V8's differs (glibc 2.36's atan2, sin and cos differ from
+ * it on 63777 of 1.8 million values, docs/wild-specs/babylon.md).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,7 +41,7 @@ int main(int argc, char **argv)
 		uint64_t v[9];
 		double d[9];
 		onb_vec3 n, b1, b2, o1, o2;
-		int i;
+		int i, float_input;
 		if (sscanf(line, "%" SCNx64 ",%" SCNx64 ",%" SCNx64 ",%" SCNx64 ",%" SCNx64 ",%" SCNx64 ",%" SCNx64
 		           ",%" SCNx64 ",%" SCNx64, &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7], &v[8]) != 9)
 			continue;   /* the comment and the header */
@@ -61,7 +61,11 @@ int main(int argc, char **argv)
 				printf("FAIL babylon (%a, %a, %a): b1 (%a, %a, %a), b2 (%a, %a, %a); node b1 (%a, %a, %a), b2 (%a, %a, %a)\n",
 				       n.x, n.y, n.z, got[0], got[1], got[2], got[3], got[4], got[5], d[3], d[4], d[5], d[6], d[7], d[8]);
 		}
-		if ((double)(float)n.x == n.x && (double)(float)n.y == n.y && (double)(float)n.z == n.z) {
+		{   /* through volatile floats: GCC at -O3 may keep a (double)(float) pair unrounded */
+			volatile float fx = (float)n.x, fy = (float)n.y, fz = (float)n.z;
+			float_input = (double)fx == n.x && (double)fy == n.y && (double)fz == n.z;
+		}
+		if (float_input) {
 			onb_vec3f nf3, f1, f2;
 			nf3.x = (float)n.x; nf3.y = (float)n.y; nf3.z = (float)n.z;
 			onb_babylonf(nf3, &f1, &f2);
@@ -77,8 +81,8 @@ int main(int argc, char **argv)
 		}
 	}
 	fclose(f);
-	if (rows < 700 || nf < 20) {
-		printf("FAIL test_babylon_node: %ld rows (%ld float inputs) in %s, expected 800\n", rows, nf, path);
+	if (rows < 700 || nf < 10) {
+		printf("FAIL test_babylon_node: %ld rows (%ld float inputs) in %s, expected 800 (16)\n", rows, nf, path);
 		return 1;
 	}
 	printf("test_babylon_node: %ld inputs, %ld differ from node's bits (double); %ld float inputs, %ld differ\n",

@@ -819,7 +819,7 @@ void HN(appleseedh)(V n, V *b1, V *b2)
 /* ---- babylon: JavaScript's double, no float or half path: the double row
    (V8's fdlibm) on n widened, b1 and b2 rounded once to binary16, as
    onb_babylonf rounds them to float ---- */
-void onb_babylonh(V n, V *b1, V *b2)
+void HN(babylonh)(V n, V *b1, V *b2)
 {
 	onb_vec3 nd, d1, d2;
 	nd.x = (double)n.x; nd.y = (double)n.y; nd.z = (double)n.z;

@@ -32,9 +32,21 @@
 #include "mvf.h"
 #include "newton_f.h"
 #include "arith.h"
+#include "fastfi.h"
 
 #define MV_PREC   80
 #define MV_MAXVAR 192
+#define REL_MEMO  256   /* a power of two */
+
+/* MPFI's set, neg, interv_d and set_d, bit for bit, faster (fastfi.h). */
+static void fi_set(mpfi_ptr a, mpfi_srcptr b) { fastfi_set(a, b, MV_PREC); }
+static void fi_neg(mpfi_ptr a, mpfi_srcptr b) { fastfi_neg(a, b, MV_PREC); }
+static void fi_interv_d(mpfi_ptr a, double lo, double hi) { fastfi_interv_d(a, lo, hi, MV_PREC); }
+static void fi_set_d(mpfi_ptr a, double v)
+{
+	if (!fastfi_set_d(&a->left, v, MV_PREC) || !fastfi_set_d(&a->right, v, MV_PREC))
+		mpfi_set_d(a, v);
+}
 
 typedef struct {
 	mpfi_t v;        /* the value over the box                         */
@@ -125,6 +137,16 @@ struct mvf {
 	mpfi_t u[3];           /* the inputs' exact values u_i over the box */
 	mpfr_t f1, f2;
 	mpfr_t p1, p2;         /* scratch of imul */
+	/* mvf_begin's geometry of the last box (box_geometry): every path and
+	   mode of one box starts from it.  geo_ok: it is set. */
+	int geo_ok;
+	double geo_key[8];
+	mpfi_t geo_in[3], geo_t1, geo_t2, geo_s1, geo_s2;
+	mpfr_t geo_f1, geo_f2;
+	double geo_rr_lo;
+	mpfr_t cd;             /* fi_cmp_d's double */
+	/* rel_mul and rel_div's results, by their arguments (rel_memo) */
+	struct { double a, b, r; int kind; } memo[REL_MEMO];
 };
 
 mvf *mvf_new(void)
@@ -151,14 +173,25 @@ mvf *mvf_new(void)
 	mpfi_init2(m->s2, MV_PREC);
 	mpfi_init2(m->one, MV_PREC);
 	mpfi_init2(m->mone, MV_PREC);
-	mpfi_set_d(m->one, 1.0);
-	mpfi_set_d(m->mone, -1.0);
+	fi_set_d(m->one, 1.0);
+	fi_set_d(m->mone, -1.0);
 	for (i = 0; i < 3; i++)
 		mpfi_init2(m->u[i], MV_PREC);
 	mpfr_init2(m->f1, MV_PREC);
 	mpfr_init2(m->f2, MV_PREC);
 	mpfr_init2(m->p1, MV_PREC);
 	mpfr_init2(m->p2, MV_PREC);
+	for (i = 0; i < 3; i++)
+		mpfi_init2(m->geo_in[i], MV_PREC);
+	mpfi_init2(m->geo_t1, MV_PREC);
+	mpfi_init2(m->geo_t2, MV_PREC);
+	mpfi_init2(m->geo_s1, MV_PREC);
+	mpfi_init2(m->geo_s2, MV_PREC);
+	mpfr_init2(m->geo_f1, MV_PREC);
+	mpfr_init2(m->geo_f2, MV_PREC);
+	mpfr_init2(m->cd, MV_PREC);
+	for (i = 0; i < REL_MEMO; i++)
+		m->memo[i].kind = -1;
 	return m;
 }
 
@@ -188,6 +221,15 @@ void mvf_free(mvf *m)
 	mpfr_clear(m->f2);
 	mpfr_clear(m->p1);
 	mpfr_clear(m->p2);
+	for (i = 0; i < 3; i++)
+		mpfi_clear(m->geo_in[i]);
+	mpfi_clear(m->geo_t1);
+	mpfi_clear(m->geo_t2);
+	mpfi_clear(m->geo_s1);
+	mpfi_clear(m->geo_s2);
+	mpfr_clear(m->geo_f1);
+	mpfr_clear(m->geo_f2);
+	mpfr_clear(m->cd);
 	free(m);
 }
 
@@ -256,13 +298,21 @@ static int val_in(const mval *x, int f)
 	                                                          : f == PREC_DOUBLE || (double)(float)x->cval == x->cval));
 }
 
+/* mpfr_cmp_d(x, d), without its temporary where d is a normal double. */
+static int fi_cmp_d(mvf *m, mpfr_srcptr x, double d)
+{
+	if (!fastfi_set_d(m->cd, d, MV_PREC))
+		return mpfr_cmp_d(x, d);
+	return mpfr_cmp(x, m->cd);
+}
+
 /* |V| can exceed format f's largest finite value: a rounding to f there
    may overflow to infinity, which no error term bounds.  The run fails
    (its box is unbounded) and says why (mvf_overflowed). */
 static int may_overflow(mvf *m, mpfi_srcptr v, int f)
 {
 	mpfi_mag(m->f1, v);
-	if (mpfr_cmp_d(m->f1, fmt_of(f)->max) <= 0)
+	if (fi_cmp_d(m, m->f1, fmt_of(f)->max) <= 0)
 		return 0;
 	m->overflow = m->overflow_seen = 1;
 	m->failed = 1;
@@ -278,8 +328,7 @@ static cv fresh(mvf *m, int fmt)
 		return CM_MAXV - 1;
 	}
 	x = &m->val[m->n];
-	memset(x->nz, 0, (size_t)(x->ng > 0 ? x->ng : 0));
-	x->ng = 0;
+	x->ng = 0;   /* nz[k] for k >= ng is stale: mark clears it as ng grows */
 	x->fmt = fmt;
 	x->is_cst = 0;
 	x->rsqrt_of = x->cvt_of = x->seed_k = -1;
@@ -317,14 +366,23 @@ static int new_var(mvf *m, double range)
 	return m->nvar++;
 }
 
+/* Entry k of x's gradient is nonzero; the entries between the old ng
+   and k are zero (nz[] past ng is left over from earlier values). */
+static void mark(mval *x, int k)
+{
+	while (x->ng < k)
+		x->nz[x->ng++] = 0;
+	if (x->ng == k)
+		x->ng = k + 1;
+	x->nz[k] = 1;
+}
+
 static void set_grad(mval *x, int k, mpfi_srcptr g)
 {
 	if (k < 0)
 		return;
-	mpfi_set(x->g[k], g);
-	x->nz[k] = 1;
-	if (x->ng <= k)
-		x->ng = k + 1;
+	fi_set(x->g[k], g);
+	mark(x, k);
 }
 
 /* a = b * c: MPFI 1.5's mpfi_mul, case for case and so bit for bit, with
@@ -333,36 +391,38 @@ static void set_grad(mval *x, int k, mpfi_srcptr g)
 static void imul(mvf *m, mpfi_ptr a, mpfi_srcptr b, mpfi_srcptr c)
 {
 	mpfr_srcptr bl = &b->left, br = &b->right, cl = &c->left, cr = &c->right;
+	mpfr_ptr lo;   /* the left end: into a itself unless a is an operand */
 	if (mpfr_get_prec(&a->left) != MV_PREC || mpfr_get_prec(&a->right) != MV_PREC || mpfr_nan_p(bl) ||
 	    mpfr_nan_p(br) || mpfr_nan_p(cl) || mpfr_nan_p(cr) || (mpfr_zero_p(bl) && mpfr_zero_p(br)) ||
 	    (mpfr_zero_p(cl) && mpfr_zero_p(cr)) || (mpfr_sgn(bl) >= 0 && mpfr_sgn(cl) >= 0)) {
 		mpfi_mul(a, b, c);   /* no temporaries there */
 		return;
 	}
+	lo = a != b && a != c ? &a->left : m->p1;
 	if (mpfr_sgn(bl) >= 0) {                       /* b >= 0; c < 0 somewhere */
 		if (mpfr_sgn(cr) <= 0) {
-			mpfr_mul(m->p1, br, cl, MPFR_RNDD);
+			mpfr_mul(lo, br, cl, MPFR_RNDD);
 			mpfr_mul(&a->right, bl, cr, MPFR_RNDU);
 		} else {
-			mpfr_mul(m->p1, br, cl, MPFR_RNDD);
+			mpfr_mul(lo, br, cl, MPFR_RNDD);
 			mpfr_mul(&a->right, br, cr, MPFR_RNDU);
 		}
 	} else if (mpfr_sgn(br) <= 0) {                /* b <= 0 */
 		if (mpfr_sgn(cl) >= 0) {
-			mpfr_mul(m->p1, bl, cr, MPFR_RNDD);
+			mpfr_mul(lo, bl, cr, MPFR_RNDD);
 			mpfr_mul(&a->right, br, cl, MPFR_RNDU);
 		} else if (mpfr_sgn(cr) <= 0) {
-			mpfr_mul(m->p1, br, cr, MPFR_RNDD);
+			mpfr_mul(lo, br, cr, MPFR_RNDD);
 			mpfr_mul(&a->right, bl, cl, MPFR_RNDU);
 		} else {
-			mpfr_mul(m->p1, bl, cr, MPFR_RNDD);
+			mpfr_mul(lo, bl, cr, MPFR_RNDD);
 			mpfr_mul(&a->right, bl, cl, MPFR_RNDU);
 		}
 	} else if (mpfr_sgn(cl) >= 0) {                /* b contains 0 */
-		mpfr_mul(m->p1, bl, cr, MPFR_RNDD);
+		mpfr_mul(lo, bl, cr, MPFR_RNDD);
 		mpfr_mul(&a->right, br, cr, MPFR_RNDU);
 	} else if (mpfr_sgn(cr) <= 0) {
-		mpfr_mul(m->p1, br, cl, MPFR_RNDD);
+		mpfr_mul(lo, br, cl, MPFR_RNDD);
 		mpfr_mul(&a->right, bl, cl, MPFR_RNDU);
 	} else {                                       /* both contain 0 */
 		mpfr_mul(m->p1, bl, cr, MPFR_RNDD);
@@ -377,7 +437,8 @@ static void imul(mvf *m, mpfi_ptr a, mpfi_srcptr b, mpfi_srcptr c)
 		mpfr_set(&a->left, m->p2, MPFR_RNDD);
 		return;
 	}
-	mpfr_set(&a->left, m->p1, MPFR_RNDD);
+	if (lo != &a->left)
+		mpfr_set(&a->left, lo, MPFR_RNDD);   /* exact: one precision */
 }
 
 /* g = s x: a copy or a negation when s is the constant 1 or -1 (what
@@ -385,9 +446,9 @@ static void imul(mvf *m, mpfi_ptr a, mpfi_srcptr b, mpfi_srcptr c)
 static void scale(mvf *m, mpfi_ptr g, mpfi_srcptr x, mpfi_srcptr s)
 {
 	if (s == m->one)
-		mpfi_set(g, x);
+		fi_set(g, x);
 	else if (s == m->mone)
-		mpfi_neg(g, x);
+		fi_neg(g, x);
 	else
 		imul(m, g, x, s);
 }
@@ -417,18 +478,15 @@ static void grad_lin(mvf *m, mval *r, const mval *a, mpfi_srcptr sa, const mval 
 			scale(m, g, b->g[k], sb);
 		if (alias)
 			set_grad(r, k, g);
-		else {
-			r->nz[k] = 1;
-			if (r->ng <= k)
-				r->ng = k + 1;
-		}
+		else
+			mark(r, k);
 	}
 }
 
 cv mvf_cst(mvf *m, double v)
 {
 	cv i = fresh(m, (double)(float)v == v ? PREC_FLOAT : PREC_DOUBLE);
-	mpfi_set_d(m->val[i].v, v);
+	fi_set_d(m->val[i].v, v);
 	m->val[i].is_cst = 1;
 	m->val[i].cval = v;
 	m->val[i].theta_free = 1;
@@ -482,10 +540,10 @@ static void add_sym(mvf *m, mval *x, double h)
 {
 	const int keep = no_grad(m) || !has_grad(x);
 	const int nonneg = keep && mpfi_is_nonneg(x->v), nonpos = keep && mpfi_is_nonpos(x->v);
-	mpfi_interv_d(m->t1, -h, h);
+	fi_interv_d(m->t1, -h, h);
 	mpfi_add(x->v, x->v, m->t1);
 	if (nonneg || nonpos) {
-		mpfi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
+		fi_interv_d(m->t1, nonneg ? 0.0 : -INFINITY, nonneg ? INFINITY : 0.0);
 		mpfi_intersect(x->v, x->v, m->t1);
 	}
 }
@@ -547,12 +605,12 @@ static int sterbenz(mvf *m, const mval *a, const mval *b, int neg_b, int f)
 	if (!val_in(a, f) || !val_in(b, f))
 		return 0;
 	if (neg_b) {
-		mpfi_neg(m->t1, b->v);
+		fi_neg(m->t1, b->v);
 		y = m->t1;
 	}
 	if (mpfi_is_strictly_neg(a->v) && mpfi_is_strictly_neg(y)) {
-		mpfi_neg(m->t2, a->v);
-		mpfi_neg(m->t1, y);
+		fi_neg(m->t2, a->v);
+		fi_neg(m->t1, y);
 		return mvf_ratio_within_2(m, m->t2, m->t1);
 	}
 	if (mpfi_is_strictly_pos(a->v) && mpfi_is_strictly_pos(y))
@@ -592,7 +650,7 @@ static int exact_op(mvf *m, int op, int f, const mval *a, const mval *b, const m
 			return 1; /* 24 + 24 bits fit in 53 */
 		if ((is_pow2(a) && val_in(b, f)) || (is_pow2(b) && val_in(a, f))) {
 			mpfi_mig(m->f1, r->v);   /* no underflow; may_overflow (op_value) sees the top */
-			return mpfr_cmp_d(m->f1, normal_min(f)) >= 0;
+			return fi_cmp_d(m, m->f1, normal_min(f)) >= 0;
 		}
 		return 0;
 	case MVF_ADD:
@@ -663,7 +721,7 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 		mpfi_div(r->v, a->v, b->v);
 		mpfi_inv(m->s1, b->v);          /* d(a/b) = da/b - db a/b^2 */
 		mpfi_div(m->s2, r->v, b->v);
-		mpfi_neg(m->s2, m->s2);
+		fi_neg(m->s2, m->s2);
 		grad_lin(m, r, a, m->s1, b, m->s2);
 		return 1;
 	case MVF_SQRT:
@@ -679,11 +737,11 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 		grad_lin(m, r, a, m->s1, NULL, NULL);
 		return 1;
 	case MVF_NEG:
-		mpfi_neg(r->v, a->v);
+		fi_neg(r->v, a->v);
 		grad_lin(m, r, a, m->mone, NULL, NULL);
 		return 1;
 	default: /* MVF_CVT */
-		mpfi_set(r->v, a->v);
+		fi_set(r->v, a->v);
 		copy_grad(m, r, a);
 		return 1;
 	}
@@ -708,30 +766,46 @@ static int exact_eval(mvf *m, int op, mval *r, const mval *a, const mval *b, con
 
 static double round_up_d(double x) { return nextafter(x, INFINITY); }
 
-/* (1 + a)(1 + b) - 1 and (1 + a)/(1 + b) - 1, rounded up or down */
-static double rel_mul(mvf *m, double a, double b, int up)
+/* (1 + a)(1 + b) - 1 and (1 + a)/(1 + b) - 1, rounded up or down (kind:
+   2 div + up), from m->memo where these arguments were seen: functions of
+   their arguments alone, and a few pairs recur in every run. */
+static double rel_eval(mvf *m, double a, double b, int kind)
 {
-	const mpfr_rnd_t d = up ? MPFR_RNDU : MPFR_RNDD;
+	const mpfr_rnd_t d = kind & 1 ? MPFR_RNDU : MPFR_RNDD;
 	mpfr_set_d(m->f1, a, MPFR_RNDN);
 	mpfr_add_ui(m->f1, m->f1, 1, d);
 	mpfr_set_d(m->f2, b, MPFR_RNDN);
-	mpfr_add_ui(m->f2, m->f2, 1, d);
-	mpfr_mul(m->f1, m->f1, m->f2, d);
+	if (kind & 2) {
+		mpfr_add_ui(m->f2, m->f2, 1, kind & 1 ? MPFR_RNDD : MPFR_RNDU);
+		mpfr_div(m->f1, m->f1, m->f2, d);
+	} else {
+		mpfr_add_ui(m->f2, m->f2, 1, d);
+		mpfr_mul(m->f1, m->f1, m->f2, d);
+	}
 	mpfr_sub_ui(m->f1, m->f1, 1, d);
 	return mpfr_get_d(m->f1, d);
 }
 
-static double rel_div(mvf *m, double a, double b, int up)
+static double rel_memo(mvf *m, double a, double b, int kind)
 {
-	const mpfr_rnd_t d = up ? MPFR_RNDU : MPFR_RNDD;
-	mpfr_set_d(m->f1, a, MPFR_RNDN);
-	mpfr_add_ui(m->f1, m->f1, 1, d);
-	mpfr_set_d(m->f2, b, MPFR_RNDN);
-	mpfr_add_ui(m->f2, m->f2, 1, up ? MPFR_RNDD : MPFR_RNDU);
-	mpfr_div(m->f1, m->f1, m->f2, d);
-	mpfr_sub_ui(m->f1, m->f1, 1, d);
-	return mpfr_get_d(m->f1, d);
+	uint64_t ka, kb;
+	unsigned h;
+	memcpy(&ka, &a, sizeof ka);
+	memcpy(&kb, &b, sizeof kb);
+	h = (unsigned)(((ka * UINT64_C(0x9e3779b97f4a7c15)) ^ (kb * UINT64_C(0xc2b2ae3d27d4eb4f)) ^ (uint64_t)kind) >> 56) &
+	    (REL_MEMO - 1);
+	if (m->memo[h].kind != kind || memcmp(&m->memo[h].a, &a, sizeof a) != 0 || memcmp(&m->memo[h].b, &b, sizeof b) != 0) {
+		m->memo[h].a = a;
+		m->memo[h].b = b;
+		m->memo[h].kind = kind;
+		m->memo[h].r = rel_eval(m, a, b, kind);
+	}
+	return m->memo[h].r;
 }
+
+static double rel_mul(mvf *m, double a, double b, int up) { return rel_memo(m, a, b, up ? 1 : 0); }
+
+static double rel_div(mvf *m, double a, double b, int up) { return rel_memo(m, a, b, up ? 3 : 2); }
 
 /* a != b is known for the actual values (a branch took a strict side) */
 static int strict_pair(const mvf *m, cv a, cv b)
@@ -901,7 +975,7 @@ static void squares_lo(mvf *m, const cv *bases, int nb)
 		const mval *b = &m->val[bases[j]];
 		const double lo = actual_lo(m, b, &nz);
 		mpfi_mig(m->f1, b->v);
-		if (mpfr_cmp_d(m->f1, lo) < 0)
+		if (fi_cmp_d(m, m->f1, lo) < 0)
 			mpfr_set_d(m->f1, lo, MPFR_RNDD);
 		mpfr_sqr(m->f1, m->f1, MPFR_RNDD);
 		mpfr_add(m->f2, m->f2, m->f1, MPFR_RNDD);
@@ -948,7 +1022,7 @@ static int norm_factor(mvf *m, const mval *t)
 		return 0;
 	mpfi_interv_fr(m->s1, m->f1, m->f2);
 	mpfi_sqrt(m->s1, m->s1);                          /* sqrt(1 + e)      */
-	mpfi_interv_d(m->s2, t->tg_olo, t->tg_ohi);
+	fi_interv_d(m->s2, t->tg_olo, t->tg_ohi);
 	mpfi_add_d(m->s2, m->s2, 1.0);                    /* 1 + o            */
 	if (t->tg_p == -1) {
 		mpfi_div(m->s1, m->s2, m->s1);
@@ -1008,7 +1082,7 @@ static void norm_unit_phi(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
 	mpfr_add(m->f1, m->f1, m->f2, MPFR_RNDU);
 	mpfr_sqrt(m->f1, m->f1, MPFR_RNDU);
 	mpfr_div_d(m->f1, m->f1, planar_rr(m, t), MPFR_RNDU);   /* d / rr */
-	if (mpfr_cmp_d(m->f1, 0.5) > 0)
+	if (fi_cmp_d(m, m->f1, 0.5) > 0)
 		return;
 	mpfr_mul_d(m->f1, m->f1, 1.05, MPFR_RNDU);           /* D */
 	mpfr_set_d(m->f2, m->phi_lo, MPFR_RNDD);
@@ -1020,14 +1094,14 @@ static void norm_unit_phi(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
 	else
 		mpfi_sin(m->t3, m->t3);
 	if (sign < 0)
-		mpfi_neg(m->t3, m->t3);
+		fi_neg(m->t3, m->t3);
 	mpfi_intersect(m->t3, m->t3, out);
 	if (mpfi_is_empty(m->t3)) {   /* no input of the box takes this path */
 		m->no_point = 1;
 		m->failed = 1;
 		return;
 	}
-	mpfi_set(out, m->t3);
+	fi_set(out, m->t3);
 }
 
 /* b_j / |a| over the box into out: its square from the squares of the
@@ -1038,7 +1112,7 @@ static void norm_unit(mvf *m, const mval *t, int j, int sign, mpfi_ptr out)
 	int k;
 	mpfr_t plo, phi;
 	mpfi_sqr(m->t1, m->val[t->tg_b[j]].v);            /* P */
-	mpfi_set_d(m->t2, 0.0);
+	fi_set_d(m->t2, 0.0);
 	for (k = 0; k < t->tg_nb; k++)
 		if (k != j) {
 			mpfi_sqr(m->t3, m->val[t->tg_b[k]].v);
@@ -1103,7 +1177,7 @@ static void norm_in_grad(mvf *m, const mval *t, const mval *x, mpfi_srcptr ahat,
 	mpfi_init2(inv, MV_PREC); mpfi_init2(g, MV_PREC); mpfi_init2(h, MV_PREC);
 	for (j = 0; j < 3; j++)
 		mpfi_init2(bh[j], MV_PREC);
-	mpfi_set_d(inv, 0.0);
+	fi_set_d(inv, 0.0);
 	for (j = 0; j < t->tg_nb; j++) {
 		mpfi_sqr(g, m->val[t->tg_b[j]].v);
 		mpfi_add(inv, inv, g);
@@ -1119,7 +1193,7 @@ static void norm_in_grad(mvf *m, const mval *t, const mval *x, mpfi_srcptr ahat,
 		mpfi_inv(inv, inv);                          /* 1/|a| */
 		for (k = 0; k < ng; k++) {
 			int used = k < x->ng && x->nz[k];
-			mpfi_set_d(h, 0.0);
+			fi_set_d(h, 0.0);
 			for (j = 0; j < t->tg_nb; j++) {
 				const mval *b = &m->val[t->tg_b[j]];
 				if (k < b->ng && b->nz[k]) {
@@ -1134,7 +1208,7 @@ static void norm_in_grad(mvf *m, const mval *t, const mval *x, mpfi_srcptr ahat,
 			if (k < x->ng && x->nz[k])
 				mpfi_sub(h, x->g[k], h);
 			else
-				mpfi_neg(h, h);
+				fi_neg(h, h);
 			imul(m, h, h, inv);
 			imul(m, h, h, cf);
 			set_grad(r, k, h);
@@ -1150,7 +1224,7 @@ static void norm_in_grad(mvf *m, const mval *t, const mval *x, mpfi_srcptr ahat,
 static int norm_narrow(mvf *m, const mval *t)
 {
 	int j;
-	mpfi_set_d(m->t2, 0.0);
+	fi_set_d(m->t2, 0.0);
 	for (j = 0; j < t->tg_nb; j++) {
 		mpfi_sqr(m->t3, m->val[t->tg_b[j]].v);
 		mpfi_add(m->t2, m->t2, m->t3);
@@ -1189,13 +1263,13 @@ static int norm_out(mvf *m, int op, int f, cv ir, cv ia, cv ib)
 		return 0;
 	mpfi_init2(ahat, MV_PREC);
 	mpfi_init2(cf, MV_PREC);
-	mpfi_set(cf, m->s1);                              /* C              */
+	fi_set(cf, m->s1);                              /* C              */
 	mpfi_sub_d(m->s2, cf, 1.0);
 	mpfi_mag(m->f1, m->s2);
 	gr = mpfr_get_d(m->f1, MPFR_RNDU);                /* |C - 1| <= gr  */
 	norm_unit(m, t, j, x->bsign, ahat);
 	if (!m->zero_e) {
-		mpfi_interv_d(cf, -gr, gr);
+		fi_interv_d(cf, -gr, gr);
 		mpfi_add_d(cf, cf, 1.0);
 	}
 	imul(m, r->v, ahat, cf);
@@ -1325,12 +1399,12 @@ static int norm_sqrt(mvf *m, int f, cv ir, cv ia)
 	const double u = m->zero_e ? 0.0 : unit_round(f);
 	if (a->tg_p != 2 || mpfi_is_strictly_pos(a->v))
 		return 0;
-	mpfi_interv_d(m->t1, 0.0, INFINITY);
+	fi_interv_d(m->t1, 0.0, INFINITY);
 	mpfi_intersect(r->v, a->v, m->t1);
 	if (mpfi_is_empty(r->v) || !mpfi_bounded_p(r->v))
 		return 0;
 	mpfi_sqrt(r->v, r->v);
-	mpfi_interv_d(m->t1, -u, u);
+	fi_interv_d(m->t1, -u, u);
 	mpfi_add_d(m->t1, m->t1, 1.0);
 	imul(m, r->v, r->v, m->t1);
 	r->fmt = f;
@@ -1452,7 +1526,7 @@ static void len_track(mvf *m, int op, int f, cv ir, cv ia, cv ib, cv id)
 			r->ls_p = 2;
 		} else if (a->ls_p == 1 || a->ls_p == -1) {
 			mpfi_mig(m->f1, a->v);
-			if (mpfr_cmp_d(m->f1, normal_min(f)) >= 0) {
+			if (fi_cmp_d(m, m->f1, normal_min(f)) >= 0) {
 				len_recip(r, a->ls_x, rel_mul(m, a->ls_olo, -u, 0), rel_mul(m, a->ls_ohi, u, 1));
 				r->ls_p = a->ls_p;
 			}
@@ -1531,7 +1605,7 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 	}
 	if (op == MVF_CVT && f == PREC_FLOAT && a->fmt == PREC_DOUBLE) {
 		mpfi_mig(m->f1, a->v);
-		if (mpfr_cmp_d(m->f1, normal_min(PREC_FLOAT)) >= 0) {
+		if (fi_cmp_d(m, m->f1, normal_min(PREC_FLOAT)) >= 0) {
 			r->cvt_of = ia;
 			r->cvt_u = unit_round(PREC_FLOAT);
 		}
@@ -1544,7 +1618,7 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
 		/* a float seed of 1/sqrt(x) rounded to half (the half kernels'
 		   invsqrt and rsqrt): r (1 + d)/sqrt(x), |d| <= u where normal */
 		mpfi_mig(m->f1, r->v);
-		if (mpfr_cmp_d(m->f1, normal_min(f)) >= 0) {
+		if (fi_cmp_d(m, m->f1, normal_min(f)) >= 0) {
 			r->rsqrt_of = a->rsqrt_of;
 			r->seed_k = a->seed_k;
 			r->rel_lo = rel_mul(m, a->rel_lo - 1.0, -unit_round(f), 0) + 1.0;
@@ -1563,10 +1637,10 @@ static cv op_value(mvf *m, int op, int f, cv ia, cv ib, cv id)
    entry), with its gradient -1/(2 a sqrt(a)) in a centred run. */
 static void exact_rsqrt(mvf *m, mval *r, const mval *a)
 {
-	mpfi_set(r->v, m->s1);
+	fi_set(r->v, m->s1);
 	mpfi_div(m->s2, m->s1, a->v);
 	mpfi_div_2ui(m->s2, m->s2, 1);
-	mpfi_neg(m->s2, m->s2);
+	fi_neg(m->s2, m->s2);
 	grad_lin(m, r, a, m->s2, NULL, NULL);
 }
 
@@ -1581,13 +1655,13 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 		return ir;
 	mpfi_get_left(m->f1, a->v);
 	mpfi_get_right(m->f2, a->v);
-	if (seed_bound_get(k, &sb) != 0 || mpfr_cmp_d(m->f1, sb.x_lo) < 0 || mpfr_cmp_d(m->f2, sb.x_hi) > 0) {
+	if (seed_bound_get(k, &sb) != 0 || fi_cmp_d(m, m->f1, sb.x_lo) < 0 || fi_cmp_d(m, m->f2, sb.x_hi) > 0) {
 		m->failed = 1; /* outside the inputs whose seed error was bounded */
 		return ir;
 	}
 	mpfi_sqrt(m->s1, a->v);                          /* 1/sqrt(a)               */
 	mpfi_inv(m->s1, m->s1);
-	mpfi_interv_d(m->t1, 1.0 - sb.bound, 1.0 + sb.bound);
+	fi_interv_d(m->t1, 1.0 - sb.bound, 1.0 + sb.bound);
 	imul(m, r->v, m->s1, m->t1);                    /* (1 + e)/sqrt(a)         */
 	r->rsqrt_of = ia;
 	r->seed_k = (int)k;
@@ -1601,7 +1675,7 @@ cv mvf_seed(mvf *m, seed_kind k, cv ia)
 		len_recip(r, ia, -sb.bound, sb.bound);
 	mpfi_div(m->s2, r->v, a->v);                     /* d/da = -(1 + e)/(2 a^1.5) */
 	mpfi_div_2ui(m->s2, m->s2, 1);
-	mpfi_neg(m->s2, m->s2);
+	fi_neg(m->s2, m->s2);
 	grad_lin(m, r, a, m->s2, NULL, NULL);
 	set_grad(r, new_var(m, sb.bound), m->s1);        /* d/de = 1/sqrt(a)        */
 	return ir;
@@ -1658,6 +1732,78 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3]);
 static void centre_inputs(mvf *m, int mode, const cv in[3]);
 static void input_grid(mvf *m, const mvf_box *b, const cv in[3]);
 
+/* The inputs' exact values over box b into in[]: u.z, and
+   (u.x, u.y) = r (cos phi, sin phi) with r = sqrt(1 - z^2); rr_lo, the
+   smallest r.  Every path and mode of a box computes the same (the
+   interval sine and cosine cost a fifth of bounding a box), so the last
+   box's values, and the scratch they leave, are kept and copied. */
+static void box_geometry(mvf *m, const mvf_box *b, const cv in[3])
+{
+	const double key[8] = { b->z_lo, b->z_hi, b->phi_lo, b->phi_hi, b->zpoint, b->dz_lo, b->dz_hi,
+	                        (double)b->has_zpoint };
+	int i;
+	m->phi_lo = b->phi_lo;
+	m->phi_hi = b->phi_hi;
+	if (m->geo_ok && memcmp(key, m->geo_key, sizeof key) == 0) {
+		for (i = 0; i < 3; i++)
+			fi_set(m->val[in[i]].v, m->geo_in[i]);
+		fi_set(m->t1, m->geo_t1);
+		fi_set(m->t2, m->geo_t2);
+		fi_set(m->s1, m->geo_s1);
+		fi_set(m->s2, m->geo_s2);
+		mpfr_set(m->f1, m->geo_f1, MPFR_RNDN);
+		if (b->has_zpoint)
+			mpfr_set(m->f2, m->geo_f2, MPFR_RNDN);
+		m->rr_lo = m->geo_rr_lo;
+		return;
+	}
+	if (b->has_zpoint) {   /* zpoint + [dz_lo, dz_hi], rounded outward */
+		mpfr_set_d(m->f1, b->zpoint, MPFR_RNDN);
+		mpfr_add_d(m->f1, m->f1, b->dz_lo, MPFR_RNDD);
+		mpfr_set_d(m->f2, b->zpoint, MPFR_RNDN);
+		mpfr_add_d(m->f2, m->f2, b->dz_hi, MPFR_RNDU);
+		mpfi_interv_fr(m->t1, m->f1, m->f2);
+	} else {
+		fi_interv_d(m->t1, b->z_lo, b->z_hi);             /* z             */
+	}
+	/* 1 - z^2 two ways, both enclosures: (1 - z)(1 + z) keeps its relative
+	   accuracy near the poles, 1 - z^2 (one use of z) is tight near the
+	   equator, where the product's two factors move against each other */
+	mpfi_d_sub(m->s1, 1.0, m->t1);
+	mpfi_add_d(m->s2, m->t1, 1.0);
+	imul(m, m->s1, m->s1, m->s2);
+	mpfi_sqr(m->s2, m->t1);
+	mpfi_d_sub(m->s2, 1.0, m->s2);
+	mpfi_intersect(m->s1, m->s1, m->s2);
+	fi_interv_d(m->s2, 0.0, 1.0);                         /* |z| <= 1      */
+	mpfi_intersect(m->s1, m->s1, m->s2);
+	if (mpfi_is_empty(m->s1))
+		fi_interv_d(m->s1, 0.0, 1.0);
+	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
+	mpfi_get_left(m->f1, m->s1);
+	m->rr_lo = mpfr_get_d(m->f1, MPFR_RNDD);
+	if (b->has_zpoint)
+		fi_set_d(m->val[in[2]].v, b->zpoint);   /* exact: no error term */
+	else
+		fi_set(m->val[in[2]].v, m->t1);
+	fi_interv_d(m->t2, b->phi_lo, b->phi_hi);             /* phi, radians  */
+	mpfi_cos(m->s2, m->t2);
+	imul(m, m->val[in[0]].v, m->s1, m->s2);
+	mpfi_sin(m->s2, m->t2);
+	imul(m, m->val[in[1]].v, m->s1, m->s2);
+	for (i = 0; i < 3; i++)
+		fi_set(m->geo_in[i], m->val[in[i]].v);
+	fi_set(m->geo_t1, m->t1);
+	fi_set(m->geo_t2, m->t2);
+	fi_set(m->geo_s1, m->s1);
+	fi_set(m->geo_s2, m->s2);
+	mpfr_set(m->geo_f1, m->f1, MPFR_RNDN);
+	mpfr_set(m->geo_f2, m->f2, MPFR_RNDN);
+	m->geo_rr_lo = m->rr_lo;
+	memcpy(m->geo_key, key, sizeof key);
+	m->geo_ok = 1;
+}
+
 void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 {
 	int i;
@@ -1678,45 +1824,10 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 		in[i] = fresh(m, b->prec);
 		m->val[in[i]].theta_free = 1;
 	}
-	if (b->has_zpoint) {   /* zpoint + [dz_lo, dz_hi], rounded outward */
-		mpfr_set_d(m->f1, b->zpoint, MPFR_RNDN);
-		mpfr_add_d(m->f1, m->f1, b->dz_lo, MPFR_RNDD);
-		mpfr_set_d(m->f2, b->zpoint, MPFR_RNDN);
-		mpfr_add_d(m->f2, m->f2, b->dz_hi, MPFR_RNDU);
-		mpfi_interv_fr(m->t1, m->f1, m->f2);
-	} else {
-		mpfi_interv_d(m->t1, b->z_lo, b->z_hi);             /* z             */
-	}
-	/* 1 - z^2 two ways, both enclosures: (1 - z)(1 + z) keeps its relative
-	   accuracy near the poles, 1 - z^2 (one use of z) is tight near the
-	   equator, where the product's two factors move against each other */
-	mpfi_d_sub(m->s1, 1.0, m->t1);
-	mpfi_add_d(m->s2, m->t1, 1.0);
-	imul(m, m->s1, m->s1, m->s2);
-	mpfi_sqr(m->s2, m->t1);
-	mpfi_d_sub(m->s2, 1.0, m->s2);
-	mpfi_intersect(m->s1, m->s1, m->s2);
-	mpfi_interv_d(m->s2, 0.0, 1.0);                         /* |z| <= 1      */
-	mpfi_intersect(m->s1, m->s1, m->s2);
-	if (mpfi_is_empty(m->s1))
-		mpfi_interv_d(m->s1, 0.0, 1.0);
-	mpfi_sqrt(m->s1, m->s1);                                /* r = sqrt(1 - z^2) */
-	mpfi_get_left(m->f1, m->s1);
-	m->rr_lo = mpfr_get_d(m->f1, MPFR_RNDD);
-	m->phi_lo = b->phi_lo;
-	m->phi_hi = b->phi_hi;
-	if (b->has_zpoint)
-		mpfi_set_d(m->val[in[2]].v, b->zpoint);   /* exact: no error term */
-	else
-		mpfi_set(m->val[in[2]].v, m->t1);
-	mpfi_interv_d(m->t2, b->phi_lo, b->phi_hi);             /* phi, radians  */
-	mpfi_cos(m->s2, m->t2);
-	imul(m, m->val[in[0]].v, m->s1, m->s2);
-	mpfi_sin(m->s2, m->t2);
-	imul(m, m->val[in[1]].v, m->s1, m->s2);
+	box_geometry(m, b, in);
 	for (i = 0; i < 3; i++) {
 		m->val[in[i]].input = i;
-		mpfi_set(m->u[i], m->val[in[i]].v);
+		fi_set(m->u[i], m->val[in[i]].v);
 	}
 	m->val[in[2]].input = b->has_zpoint ? -1 : 2;
 	if (mode == MVF_AT_MID || mode == MVF_CENTRED)
@@ -1738,7 +1849,7 @@ static void input_grid(mvf *m, const mvf_box *b, const cv in[3])
 	for (i = 0; i < 3; i++) {
 		mval *x = &m->val[in[i]];
 		mpfi_mig(m->f1, x->v);
-		if (mpfr_cmp_d(m->f1, normal_min(b->prec)) < 0)
+		if (fi_cmp_d(m, m->f1, normal_min(b->prec)) < 0)
 			x->quantum = fmt_of(b->prec)->sub_step;
 		else
 			x->quantum = ldexp(1.0, (int)mpfr_get_exp(m->f1) - p);
@@ -1782,7 +1893,7 @@ static void centre_inputs(mvf *m, int mode, const cv in[3])
 static void band_constraint(mvf *m, const mvf_box *b, cv iz)
 {
 	mval *z = &m->val[iz];
-	mpfi_interv_d(m->t1, b->nz_lo, b->nz_hi);
+	fi_interv_d(m->t1, b->nz_lo, b->nz_hi);
 	mpfi_intersect(z->br, z->v, m->t1);
 	z->has_br = 1;  /* empty: no input of the box is in the band, no path */
 	refine_input(m, z);
@@ -1798,13 +1909,13 @@ static void refine_input(mvf *m, mval *x)
 {
 	if (x->input < 0 || !x->has_br || mpfi_is_empty(x->br))
 		return;
-	mpfi_set(m->t2, m->u[x->input]);
+	fi_set(m->t2, m->u[x->input]);
 	if (x->in_h > 0.0) {
-		mpfi_interv_d(m->t3, -x->in_h, x->in_h);
+		fi_interv_d(m->t3, -x->in_h, x->in_h);
 		mpfi_add(m->t3, m->t3, x->br);
 		mpfi_intersect(m->t3, m->t3, m->t2);
 		if (!mpfi_is_empty(m->t3))
-			mpfi_set(m->t2, m->t3);
+			fi_set(m->t2, m->t3);
 	}
 	mpfi_union(m->t2, m->t2, x->br);
 	mpfi_intersect(x->v, x->v, m->t2);
@@ -1839,7 +1950,7 @@ static void constrain_length(mvf *m, const mval *t, const mval *b)
 			continue;
 		mpfi_interv_fr(m->t1, m->f2, m->f1);
 		if (!x->has_br) {
-			mpfi_set(x->br, x->v);
+			fi_set(x->br, x->v);
 			x->has_br = 1;
 		}
 		mpfi_intersect(x->br, x->br, m->t1);
@@ -1886,7 +1997,7 @@ void mvf_constrain(mvf *m, int op, int absolute, cv ia, cv ib, int side)
 	}
 	mpfi_interv_fr(m->t1, m->f1, m->f2);
 	if (!a->has_br) {
-		mpfi_set(a->br, a->v);
+		fi_set(a->br, a->v);
 		a->has_br = 1;
 	}
 	mpfi_intersect(a->br, a->br, m->t1);
@@ -1899,9 +2010,9 @@ void mvf_constrain_sign(mvf *m, cv ia, int set)
 	mval *a = &m->val[ia];
 	if (a->input < 0 || m->zero_e)
 		return;
-	mpfi_interv_d(m->t1, set ? -INFINITY : 0.0, set ? 0.0 : INFINITY);
+	fi_interv_d(m->t1, set ? -INFINITY : 0.0, set ? 0.0 : INFINITY);
 	if (!a->has_br) {
-		mpfi_set(a->br, a->v);
+		fi_set(a->br, a->v);
 		a->has_br = 1;
 	}
 	mpfi_intersect(a->br, a->br, m->t1);
@@ -1920,14 +2031,14 @@ static void input_errors(mvf *m, const mvf_box *b, cv in[3])
 		m->in_var[t_var] = 1;
 	for (i = 0; i < (b->has_zpoint ? 2 : 3); i++) {
 		mval *x = &m->val[in[i]];
-		mpfi_set(m->s2, x->v);                              /* u_i           */
+		fi_set(m->s2, x->v);                              /* u_i           */
 		if (b->tolerance >= 0) {
 			mpfi_mag(m->f1, m->s2);
 			x->in_h = mpfr_get_d(m->f1, MPFR_RNDU) * b->tolerance;
 			x->in_h = x->in_h > 0.0 ? nextafter(x->in_h, INFINITY) : 0.0;
 			m->nh[i] = x->in_h;
 			set_grad(x, t_var, m->s2);
-			mpfi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
+			fi_interv_d(m->t1, 1.0 - b->tolerance, 1.0 + b->tolerance);
 			imul(m, x->v, x->v, m->t1);
 			continue;
 		}
@@ -2029,19 +2140,19 @@ static int len_direct(mvf *m, const cv out[3], double *lo, double *hi)
 	if (mpfr_sgn(m->f2) <= 0)
 		return 0;
 	mpfi_interv_fr(m->s1, m->f2, m->f1);
-	mpfi_interv_d(m->s2, 1.0 + k->ls_olo, 1.0 + k->ls_ohi);   /* exact: |o| >= 2^-60 */
+	fi_interv_d(m->s2, 1.0 + k->ls_olo, 1.0 + k->ls_ohi);   /* exact: |o| >= 2^-60 */
 	mpfi_sqr(m->s2, m->s2);
 	if (k->ls_p == 1)
 		mpfi_inv(m->s2, m->s2);
 	mpfi_div(m->s1, m->s2, m->s1);
-	mpfi_interv_d(m->s2, 1.0 - u, 1.0 + u);
+	fi_interv_d(m->s2, 1.0 - u, 1.0 + u);
 	mpfi_sqr(m->s2, m->s2);
 	imul(m, m->s1, m->s1, m->s2);                           /* |b~|^2         */
 	mpfi_sqrt(m->s1, m->s1);
 	mpfr_set_d(m->f1, eta, MPFR_RNDU);
 	mpfr_mul_d(m->f1, m->f1, 1.7320508075688774, MPFR_RNDU);
 	mpfi_interv_fr(m->s2, m->f1, m->f1);
-	mpfi_neg(m->t1, m->s2);
+	fi_neg(m->t1, m->s2);
 	mpfi_put(m->s2, m->t1);
 	mpfi_add(m->s1, m->s1, m->s2);
 	if (mpfi_has_zero(m->s1))
@@ -2195,7 +2306,7 @@ void mvf_bounds(mvf *m, cv iq, double *lo, double *hi, double *lin)
 /* f(r) = r (1.5 - 0.5 r^2 p) at the point (r, p), enclosed in m->t1. */
 static void newton_poly(mvf *m, double r, mpfi_srcptr p, mpfi_ptr out)
 {
-	mpfi_set_d(m->t2, r);
+	fi_set_d(m->t2, r);
 	mpfi_sqr(m->t3, m->t2);
 	imul(m, m->t3, m->t3, p);
 	mpfi_div_2ui(m->t3, m->t3, 1);
@@ -2226,7 +2337,7 @@ static double newton_rel(mvf *m, int f, cv ix, cv iy, newton_kind k)
 		rlo = rlo / sqrt(1.0 + a->cvt_u) * (1.0 - 0x1p-50);
 		rhi = rhi / sqrt(1.0 - a->cvt_u) * (1.0 + 0x1p-50);
 	}
-	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	fi_interv_d(m->s1, 1.0 - u, 1.0 + u);
 	if (embree) {   /* p = (1 + da)(1 + db)(1 + dc)/(1 + dd): see mvf_newton_embree */
 		mpfi_sqr(m->t1, m->s1);
 		imul(m, m->t1, m->t1, m->s1);
@@ -2254,8 +2365,8 @@ static double newton_rel(mvf *m, int f, cv ix, cv iy, newton_kind k)
 	mpfi_get_left(m->f1, m->t1);
 	mpfr_min(m->f2, m->f2, m->f1, MPFR_RNDD);
 	lo = mpfr_get_d(m->f2, MPFR_RNDD);
-	mpfi_interv_d(m->t1, lo, hi);                   /* times (1 + d3)(1 + d4) */
-	mpfi_interv_d(m->s1, 1.0 - u, 1.0 + u);
+	fi_interv_d(m->t1, lo, hi);                   /* times (1 + d3)(1 + d4) */
+	fi_interv_d(m->s1, 1.0 - u, 1.0 + u);
 	imul(m, m->t1, m->t1, m->s1);
 	imul(m, m->t1, m->t1, m->s1);
 	mpfi_sub_d(m->t1, m->t1, 1.0);
@@ -2344,7 +2455,7 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 	mpfi_get_left(m->f1, x->v);
 	/* h = x/2, h y and (h y) y normal, y = (1 + e)/sqrt(x) finite */
 	if (m->failed || e < 0.0 ||
-	    mpfr_cmp_d(m->f1, f == PREC_FLOAT ? 0x1p-100 : f == PREC_HALF ? 0x1p-12 : 0x1p-1000) < 0) {
+	    fi_cmp_d(m, m->f1, f == PREC_FLOAT ? 0x1p-100 : f == PREC_HALF ? 0x1p-12 : 0x1p-1000) < 0) {
 		m->failed = 1;
 		return ir;
 	}
@@ -2358,11 +2469,11 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 		newton_o(m, f, ix, iy, k, e, &olo, &ohi);
 		len_recip(r, ix, olo, ohi);
 	}
-	mpfi_interv_d(m->t1, 1.0 - e, 1.0 + e);
+	fi_interv_d(m->t1, 1.0 - e, 1.0 + e);
 	imul(m, r->v, m->s1, m->t1);
 	mpfi_div(m->s2, r->v, x->v);                     /* d/dx = -(1 + e)/(2 x^1.5) */
 	mpfi_div_2ui(m->s2, m->s2, 1);
-	mpfi_neg(m->s2, m->s2);
+	fi_neg(m->s2, m->s2);
 	grad_lin(m, r, x, m->s2, NULL, NULL);
 	set_grad(r, new_var(m, e), m->s1);
 	return ir;
@@ -2409,7 +2520,7 @@ static void prof_term(mvf *m, cv ix, double h, int op)
 		return;
 	}
 	set_grad(x, new_var(m, h), m->one);
-	mpfi_interv_d(m->t1, -h, h);
+	fi_interv_d(m->t1, -h, h);
 	mpfi_add(x->v, x->v, m->t1);
 }
 
@@ -2418,7 +2529,7 @@ static cv prof_copy(mvf *m, cv ia)
 {
 	cv ir = fresh(m, m->val[ia].fmt);
 	mval *r = &m->val[ir];
-	mpfi_set(r->v, m->val[ia].v);
+	fi_set(r->v, m->val[ia].v);
 	copy_grad(m, r, &m->val[ia]);
 	r->fmt = m->val[ia].fmt;
 	return ir;

@@ -20,11 +20,17 @@
 set -eu
 DIR=${1:-results/certify}
 HERE=$(cd "$(dirname "$0")" && pwd)
-[ -f "$DIR/certify.csv" ] || { echo "certify-plot: $DIR/certify.csv not found (run ./onbstudy certify --out $DIR)" >&2; exit 2; }
+# DIR/certify.csv (float, double), or DIR/certify-half.csv (certify
+# --precision half: DIR/certify_half.png and certify_ratio_half.png, u =
+# 2^-11; the bands that hold no binary16 input, scanned 0, left out)
+CSV=$DIR/certify.csv
+[ -f "$CSV" ] || CSV=$DIR/certify-half.csv
+[ -f "$CSV" ] || { echo "certify-plot: $DIR/certify.csv not found (run ./onbstudy certify --out $DIR)" >&2; exit 2; }
 command -v gnuplot >/dev/null 2>&1 || { echo "certify-plot: gnuplot is not installed" >&2; exit 2; }
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
-sh "$HERE/styles.sh" "$DIR/certify.csv" > "$W/styles"
+sh "$HERE/styles.sh" "$CSV" > "$W/styles"
+made=""
 # keys "FILES" "NAMES" "PANELS": per method, "DUP FILL TITLE", and a sixth
 # column in each file: 1 where the band's bracket (found, bound) is an
 # earlier method's of the same panel, said once: drawn for the earlier
@@ -54,18 +60,22 @@ keys() {
 			close(f[i])
 			print (all ? 1 : 0), fill, t } }'
 }
-for p in float double; do
+for p in float double half; do
+	# (a precision the file has no row of: nothing to draw, nothing to say)
+	grep -v '^#' "$CSV" | awk -F, -v p="$p" '$2 == p { f = 1; exit } END { exit !f }' || continue
 	# the bands of this precision, in order, each a slot k (0, 1, ...); per
 	# method and band: k found bound ratio (bound and ratio "nan" where
 	# singular: no bound), and the x tics
-	grep -v '^#' "$DIR/certify.csv" | awk -F, -v p="$p" -v w="$W" '
+	grep -v '^#' "$CSV" | awk -F, -v p="$p" -v w="$W" '
 	NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
 	$(h["precision"]) != p { next }
+	("scanned" in h) && $(h["scanned"]) == 0 { next }
 	{ lo = $(h["nz_lo"]); hi = $(h["nz_hi"]) }
 	lo == -1 && hi == 1 { next }
 	{ m = $1; b = lo SUBSEP hi
 	  if (!(b in seen)) { seen[b] = 1; nb++; L[nb] = lo + 0; Hh[nb] = hi + 0; key[nb] = b }
 	  f = $(h["found"]) + 0; bd = $(h["bound"])
+	  if (f > 1e300) f = 0   # (half: a non-finite basis found; its band is in the "no bound" strip)
 	  sing = ($(h["status"]) == "singular" || bd == "inf")
 	  if (!((m, b) in F) || f > F[m, b]) F[m, b] = f
 	  if (sing) S[m, b] = 1
@@ -112,7 +122,7 @@ for p in float double; do
 		points="$points $(awk -v m="$m" '$1 == m { print $5 }' "$W/styles")"
 		panels="$panels $(awk -v m="$m" '$1 == m { print $2 }' "$W/styles")"
 	done
-	[ -n "$files" ] || { echo "certify-plot: no $p rows in $DIR/certify.csv" >&2; continue; }
+	[ -n "$files" ] || { echo "certify-plot: no $p rows in $CSV" >&2; continue; }
 	keys "$files" "$names" "$panels" > "$W/keys.$p"
 	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'; keys='$W/keys.$p'"
 	gnuplot -e "$v; ratio=0; out='$DIR/certify_$p'" "$HERE/certify.gp"
@@ -127,8 +137,9 @@ for p in float double; do
 		gnuplot -e "$v; single=1; files='$(for m in $sel; do printf '%s ' "$W/$m.$p"; done)'; names='$sel'; colors='$(echo "$sv" | awk '{ print $1 }' | tr '\n' ' ')'; dashes='$(echo "$sv" | awk '{ print $2 }' | tr '\n' ' ')'; points='$(echo "$sv" | awk '{ print $3 }' | tr '\n' ' ')'; panels='$(echo $sel | sed 's/[^ ]*/1/g')'; keys='$W/keys1.$p'; ratio=0; out='$FIGS/certify_frisvad_duff_$p'" "$HERE/certify.gp"
 		outs="$outs $FIGS/certify_frisvad_duff_$p"
 	fi
+	made="$made $outs"
 	if command -v pngquant >/dev/null 2>&1; then
 		for o in $outs; do pngquant --force --skip-if-larger --speed 1 --output "$o.png" 256 "$o.png" || true; done
 	fi
 done
-echo "certify-plot: wrote $DIR/certify_float.png, certify_double.png, certify_ratio_float.png, certify_ratio_double.png"
+echo "certify-plot: wrote$(for o in $made; do printf ' %s.png' "$o"; done)"

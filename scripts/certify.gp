@@ -21,7 +21,9 @@ set datafile separator whitespace
 load xt
 set logscale y
 set xrange [0:nbands]
-u = (prec eq "float") ? 2.0**-24 : 2.0**-53
+# u of the format: 2^-24 (float), 2^-53 (double), 2^-11 (binary16, half)
+uexp = (prec eq "float") ? -24 : ((prec eq "half") ? -11 : -53)
+u = 2.0**uexp
 n = words(files)
 # the y range: from the data (found and bound), and a strip on top for "no bound"
 ymin = 1e300; ymax = 0; anysing = 0
@@ -104,9 +106,13 @@ st(c) = sprintf("< awk '{ print $1, $%d, $6; print $1 + 1, $%d, $6; print \"\" }
 shade(i) = "< awk '{ print $1, $2, $3, $5 + $6; print $1 + 1, $2, $3, $5 + $6; print \"\" }' ".word(files, i)
 sub1 = ratio ? "proven bound / largest defect found, per band (1: tight; the run's target 1.25, dotted; 100 or more drawn at 100)" \
              : "largest defect found (solid) <= true maximum (in the shade) <= proven bound (dashed), per band"
-ttl = sprintf("%s: onbstudy certify, %s\n{/*0.8 %s; u = 2^{%d}}%s", \
-              prec, ratio ? "how tight each proof is" : "the proven brackets", sub1, (prec eq "float") ? -24 : -53, \
-              anysing ? "\n{/*0.8 no bound: a singular band (the method returns NaN or inf there: no finite bound exists)}" : "")
+# (certify --precision half: a region has no bound where the scan found a
+# NaN or an infinity, a value may exceed 65504, or no enclosure exists)
+nobound = (prec eq "half") ? "no bound: a band with a non-finite basis, a possible overflow or no enclosure (certify --precision half's status)" \
+                           : "no bound: a singular band (the method returns NaN or inf there: no finite bound exists)"
+ttl = sprintf("%s: onbstudy certify%s, %s\n{/*0.8 %s; u = 2^{%d}}%s", \
+              (prec eq "half") ? "binary16" : prec, (prec eq "half") ? " --precision half" : "", ratio ? "how tight each proof is" : "the proven brackets", sub1, uexp, \
+              anysing ? "\n{/*0.8 ".nobound."}" : "")
 do for [term_i = 1:NTERM] {
     eval term(term_i, W, H)
     set output out.ext(term_i)

@@ -53,7 +53,7 @@ if (has_zx) {
 }
 has_nf = exists("nf") ? nf : (ymax >= ceil)
 set yrange [ymin:ymax]
-# the eps levels of float and double, on the right axis, where in range
+# the eps levels of half, float and double, on the right axis, where in range
 set logscale y2
 set y2range [ymin:ymax]
 set y2tics nomirror font F_TICK
@@ -61,6 +61,7 @@ set format y2 ""
 set ytics nomirror
 # (the dotted lines per panel, within its range: below)
 eps_in(e, top) = e > ymin && e < ceil / 5 && e < top
+if (EPS_HALF > ymin && EPS_HALF < ceil / 5) { set y2tics add ("half eps" EPS_HALF) }
 if (EPS_FLOAT > ymin && EPS_FLOAT < ceil / 5) { set y2tics add ("float eps" EPS_FLOAT) }
 if (EPS_DOUBLE > ymin && EPS_DOUBLE < ceil / 5) { set y2tics add ("double eps" EPS_DOUBLE) }
 set key outside top center horizontal Left reverse maxcols 3 samplen 2.5 spacing 1.1 width 1 noenhanced
@@ -141,6 +142,9 @@ do for [term_i = 1:NTERM] {
             unset object 13
         }
         ptop = panel_nf(p) ? ymax_nf : ymax_fin
+        if (eps_in(EPS_HALF, ptop)) {
+            set arrow 10 from graph 0, first EPS_HALF to graph 1, first EPS_HALF nohead dt 3 lw 1 lc rgb "#555555" back
+        } else { unset arrow 10 }
         if (eps_in(EPS_FLOAT, ptop)) {
             set arrow 11 from graph 0, first EPS_FLOAT to graph 1, first EPS_FLOAT nohead dt 3 lw 1 lc rgb "#555555" back
         } else { unset arrow 11 }

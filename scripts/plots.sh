@@ -8,7 +8,9 @@
 #   nonunit_P         error against | |n| - 1 | of non-unit input
 #   threshold_P       Max's threshold analysis (when threshold.csv is there)
 #   tradeoff_P        speed against accuracy (when tradeoff.csv is there)
-# for P in float and double.  The gnuplot scripts are scripts/*.gp.
+# for P in float and double, and half where the run has binary16 rows
+# (sweep --precision half: results/half/sweep).  The gnuplot scripts are
+# scripts/*.gp.
 set -eu
 RUN=${1:-results/latest}
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -146,9 +148,15 @@ polecap() {
 	[ -n "$two" ] && gp polecap.gp "$pcv; single=1; files='$(for m in $two; do printf '%s ' "$W/pc_$m.dat"; done)'; names='$two'; out='$FIGS/polecap_frisvad_duff'; ttl='$(awk -F, -v methods="$two" -f "$HERE/polecap-title.awk" "$pc")'"
 }
 
-for P in float double; do
+for P in float double half; do
 	grep -q "^[^#].*,$P," "$RUN/summary.csv" || continue
-	if [ "$P" = float ]; then FLOOR=1e-12; EPS=1.19e-7; ZX=7.5e-9; else FLOOR=1e-20; EPS=2.22e-16; ZX=1.33e-17; fi
+	# ZX: the "-z" slot, 2^-3 of the format's u (binary16's first n.z
+	# above -1 is -1 + 2^-11: the slot sits a decade and more left of it)
+	case $P in
+	float) FLOOR=1e-12; ZX=7.5e-9 ;;
+	double) FLOOR=1e-20; ZX=1.33e-17 ;;
+	half) FLOOR=1e-8; ZX=6.1e-5 ;;
+	esac
 	CEIL=10
 	awk -F, -v p="$P" '/^#/ || $1 == "method" || $2 == p' "$RUN/summary.csv" > "$W/summary_$P.csv"
 	# styles from both precisions, so that the panels group the same
@@ -240,7 +248,7 @@ for P in float double; do
 		# 2^-53 double), log2, from 1/4 u to 64 u, so that the seams of
 		# the accurate methods show; a larger defect saturates, zero sits
 		# at the bottom
-		U=$(awk -v p="$P" 'BEGIN { print (p == "float") ? 2 ^ -24 : 2 ^ -53 }')
+		U=$(awk -v p="$P" 'BEGIN { print (p == "float") ? 2 ^ -24 : (p == "half" ? 2 ^ -11 : 2 ^ -53) }')
 		mfiles=""; mnames=""; k=0; have=0
 		for m in $(awk '{ print $1 }' "$W/styles_all"); do
 			f="$W/map_${P}_$m.dat"
@@ -264,7 +272,7 @@ for P in float double; do
 			fails=$(awk -F, -v p="$P" '!/^#/ && $2 == p && $3 == "south" { s[$1] = $6 + 0 } !/^#/ && $2 == p && $3 == "grid" { u[$1] = $6 + 0 }
 				END { for (m in s) if (s[m] > 1e-4 && s[m] > 10 * u[m]) n++; print n + 0 }' "$RUN/summary.csv")
 			[ "$fails" -gt 0 ] && mnote="$mnote, so it cannot show the failures within 1e-4 of -z (the $([ -f "$PCDIR/polecap.csv" ] && echo pole-cap map || echo pole chart) shows them)"
-			gp map.gp "blank='no rows in $P'; dirnames='$(grep -q '^frisvad_rotate,' "$RUN/summary.csv" && echo frisvad_rotate)'; files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$([ "$P" = float ] && echo "u = 2^{-24}" || echo "u = 2^{-53}")'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
+			gp map.gp "blank='no rows in $P'; dirnames='$(grep -q '^frisvad_rotate,' "$RUN/summary.csv" && echo frisvad_rotate)'; files='$mfiles'; names='$mnames'; ncols=$ncols; nrows=$nrows; cbmin=-2; cbmax=6; uname='$(case $P in float) echo "u = 2^{-24}";; half) echo "u = 2^{-11}";; *) echo "u = 2^{-53}";; esac)'; out='$RUN/maps_$P'; ttl='$P: the orthonormality defect over the sphere, in units of u (equal-area: x azimuth, y n.z$FRD)'; note='$mnote'"
 		fi
 		awk -F, -v p="$P" -v H="$W/colors.txt" '
 			BEGIN { while ((getline l < H) > 0) { split(l, a, /[ \t]+/); if (a[1] !~ /^#/) col[a[1]] = a[2] } }

@@ -19,7 +19,9 @@ W_SINGLE = 1000
 H_SINGLE = 620
 W_MULTI = 1600
 H_PANEL_ROW = 400
-# The unit roundoff of each format: eps = 2^-23 (float), 2^-52 (double).
+# The unit roundoff of each format: eps = 2^-23 (float), 2^-52 (double),
+# 2^-10 (binary16, half).
+EPS_HALF = 2.0**-10
 EPS_FLOAT = 2.0**-23
 EPS_DOUBLE = 2.0**-52
 # One wording per axis, with units (all errors are relative to a unit

@@ -1,8 +1,8 @@
 #!/bin/sh
 # charts_committed.sh - the chart check on the inputs of every committed
 # chart, not only on fixtures: the reference run (with the pole-cap map and
-# the README figures), the wild run, the exhaustive pole runs and the
-# certify run are redrawn from their committed CSV files by the project's
+# the README figures), the wild run, the exhaustive pole runs, the
+# certify run and the binary16 sweep and proofs are redrawn from their committed CSV files by the project's
 # own scripts, as SVG, and scripts/chart-check.awk checks each (the checks
 # are listed in tests/plots_cli.sh); then
 #   - no chart's text names a method of the registry that its run does not
@@ -128,6 +128,21 @@ FIGS="$T/cfig" sh scripts/certify-plot.sh "$T/cert" > "$T/log" 2>&1 || bad "cert
 grep -qi warning "$T/log" && bad "certify-plot: gnuplot warned: $(grep -i warning "$T/log" | head -3)" || ok
 check "$T/cert" results/certify/certify.csv
 check "$T/cfig" results/certify/certify.csv
+# the binary16 sweep (half rows alone: only the _half charts, with the
+# "half eps" line) and the binary16 proofs (certify-half.csv: certify_half)
+mkdir -p "$T/half" "$T/hcert"
+cp results/half/sweep/*.csv "$T/half/"
+FIGS="$T/half/fig" PCDIR="$T/half" sh scripts/plots.sh "$T/half" > "$T/log" 2>&1 || bad "plots.sh on the half sweep failed: $(cat "$T/log")"
+check "$T/half" results/half/sweep/summary.csv
+for c in error_vs_nz_half error_vs_nz_rms_half south_pole_half nonunit_half; do
+	[ -s "$T/half/$c.svg" ] && grep -q '>half eps<' "$T/half/$c.svg" && ok || bad "the half sweep drew no $c with its half eps line"
+done
+[ -f "$T/half/error_vs_nz_float.svg" ] && bad "the half sweep drew a float chart" || ok
+cp results/half/certify/certify-half.csv "$T/hcert/"
+sh scripts/certify-plot.sh "$T/hcert" > "$T/log" 2>&1 || bad "certify-plot.sh on the half certify run failed: $(cat "$T/log")"
+grep -qi warning "$T/log" && bad "certify-plot (half): gnuplot warned: $(grep -i warning "$T/log" | head -3)" || ok
+check "$T/hcert" results/half/certify/certify-half.csv
+grep -q 'u = 2' "$T/hcert/certify_half.svg" && grep -q '>-11<' "$T/hcert/certify_half.svg" && ok || bad "certify_half.svg does not say u = 2^-11"
 # the pole figure's title claims only what summary.csv shows
 t=$(awk -F, -v p=float -v ds="south exhaustive uniform" -v methods="frisvad frisvad_max duff" -f scripts/pole-title.awk results/wild/summary.csv)
 case "$t" in *"frisvad "*|*"frisvad,"*) bad "the wild pole title names frisvad: $t";; *) ok;; esac

@@ -100,9 +100,11 @@ for p in float double half; do
 		for (m in M) {
 			f = w "/" m "." p
 			for (i = 1; i <= nb; i++) { b = key[i]; if (!((m, b) in F)) continue
-				fo = F[m, b] > 0 ? F[m, b] : 1e-300
-				if ((m, b) in S) printf "%d %.6e nan nan 1\n", i - 1, fo > f
-				else printf "%d %.6e %.6e %.6e 0\n", i - 1, fo, B[m, b], B[m, b] / fo > f }
+				# (a band with no defect found, or a non-finite one: nothing
+				# to draw on the log axis, "nan", and no ratio)
+				fo = F[m, b] > 0 ? sprintf("%.6e", F[m, b]) : "nan"
+				if ((m, b) in S) printf "%d %s nan nan 1\n", i - 1, fo > f
+				else printf "%d %s %.6e %s 0\n", i - 1, fo, B[m, b], (F[m, b] > 0 ? sprintf("%.6e", B[m, b] / F[m, b]) : "nan") > f }
 			close(f)
 		}
 		t = ""

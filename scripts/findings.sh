@@ -19,6 +19,17 @@
 #                               (threshold --precision all: float, double, half)
 #   {{HS method distribution column}}  a half row of results/half/sweep/summary.csv
 #                               (sweep --precision half); HSU: it / 2^-11, in u
+#   {{CH method key}}  from results/half/certify/certify-half.csv (certify
+#                      --precision half, scripts/half-certify.sh): the
+#                      whole-sphere bound, found (u = 2^-11), ratio,
+#                      regions, proven, non-finite, overflow, unbounded,
+#                      where (the n.z span of the regions with no bound)
+#   {{CHLIST kind}}    its methods: proven, within2, loose (bound > 2x
+#                      found), nonfinite, unbounded, overflow, all; CHN: how many
+#   {{CHP dir method key}}  bound, found or ratio of a partial run in
+#                      results/half/certify/DIR/certify-half.csv
+#   {{TABLE half}}     every method: that bracket beside the halfscan's
+#                      and the half sweep's maxima
 #   {{X method precision column}}  a tradeoff.csv value
 #   {{F method precision distribution column}}  a fma/summary.csv value
 #   {{R method field}}  from renders/summary.txt (mean, max, pixels, nan)
@@ -337,6 +348,127 @@ generate() {
 		}
 		close(f)
 		print "findings: no " m " half " d " " col " in " f > "/dev/stderr"; bad = 1; return "?"
+	}
+	# results/half/certify/certify-half.csv (certify --precision half of
+	# every method, scripts/half-certify.sh): per method the whole-sphere
+	# bracket, the largest bound and found over its regions (no bound where
+	# a region is not proven), the regions by status and the n.z they span
+	function load_ch(   f, line, a, n, m, i, st) {
+		if (CHN) return
+		f = REF "/../half/certify/certify-half.csv"
+		while ((getline line < f) > 0) {
+			if (line ~ /^#/) continue
+			n = split(line, a, ",")
+			if (a[1] == "method") { for (i = 1; i <= n; i++) chc[a[i]] = i; continue }
+			m = a[1]; st = a[chc["status"]]
+			if (!(m in CHB)) { CHM[++CHN] = m; CHB[m] = 0; CHF[m] = 0 }
+			CHR[m]++; CHS[m, st]++
+			if (st != "proven") { CHBAD[m] = 1
+				if (!((m, "lo") in CHW) || a[chc["nz_lo"]] + 0 < CHW[m, "lo"]) CHW[m, "lo"] = a[chc["nz_lo"]] + 0
+				if (!((m, "hi") in CHW) || a[chc["nz_hi"]] + 0 > CHW[m, "hi"]) CHW[m, "hi"] = a[chc["nz_hi"]] + 0 }
+			else if (a[chc["bound"]] + 0 > CHB[m]) CHB[m] = a[chc["bound"]] + 0
+			if (a[chc["found"]] ~ /inf|nan/) CHFI[m] = 1
+			else if (a[chc["found"]] + 0 > CHF[m]) CHF[m] = a[chc["found"]] + 0
+		}
+		close(f)
+		if (!CHN) { print "findings: no rows in " f > "/dev/stderr"; bad = 1 }
+	}
+	# {{CH method key}}: bound, found (in u = 2^-11, 4 digits), ratio
+	# (bound / found, 2 decimals), regions, proven, non-finite, overflow,
+	# unbounded (region counts), where (the n.z span of the regions with
+	# no bound)
+	function CH(m, k,   u) {
+		load_ch(); u = 2 ^ -11
+		if (!(m in CHB)) { print "findings: no " m " in results/half/certify/certify-half.csv" > "/dev/stderr"; bad = 1; return "?" }
+		if (k == "bound") return (m in CHBAD) ? "none" : sprintf("%.4g", CHB[m] / u)
+		if (k == "found") return (m in CHFI) ? "non-finite" : sprintf("%.4g", CHF[m] / u)
+		if (k == "ratio") return ((m in CHBAD) || (m in CHFI) || CHF[m] <= 0) ? "n/a" : sprintf("%.2f", CHB[m] / CHF[m])
+		if (k == "regions") return CHR[m]
+		if (k == "proven" || k == "non-finite" || k == "overflow" || k == "unbounded") return CHS[m, k] + 0
+		if (k == "where") return (m in CHBAD) ? sprintf("n.z in [%.6g, %.6g]", CHW[m, "lo"], CHW[m, "hi"]) : "none"
+		print "findings: bad CH key " k > "/dev/stderr"; bad = 1; return "?"
+	}
+	# {{CHLIST kind}}: the methods, comma-separated, in the order of the registry:
+	# proven (every region), within2 (proven, bound <= 2 found), loose
+	# (proven, bound > 2 found), nonfinite, unbounded, overflow (some region
+	# of that status); {{CHN kind}}: how many
+	function chsel(m, kind) {
+		if (kind == "proven") return !(m in CHBAD)
+		if (kind == "within2") return !(m in CHBAD) && !(m in CHFI) && CHF[m] > 0 && CHB[m] <= 2 * CHF[m]
+		if (kind == "loose") return !(m in CHBAD) && !((m in CHFI) || CHF[m] <= 0 || CHB[m] <= 2 * CHF[m])
+		if (kind == "nonfinite") return CHS[m, "non-finite"] > 0
+		if (kind == "unbounded") return CHS[m, "unbounded"] > 0
+		if (kind == "overflow") return CHS[m, "overflow"] > 0
+		if (kind == "all") return 1
+		print "findings: bad CHLIST kind " kind > "/dev/stderr"; bad = 1; return 0
+	}
+	function CHLIST(kind, count,   i, s, n) {
+		load_ch(); s = ""; n = 0
+		for (i = 1; i <= CHN; i++) if (chsel(CHM[i], kind)) { n++; s = s (s == "" ? "" : ", ") "`" CHM[i] "`" }
+		return count ? n : (n ? s : "none")
+	}
+	# {{CHP dir method key}}: bound, found (u) or ratio of the method over
+	# the regions of results/half/certify/DIR/certify-half.csv (a partial run)
+	function CHP(d, m, k,   f, line, a, n, i, c, bb, ff, any) {
+		f = REF "/../half/certify/" d "/certify-half.csv"; bb = 0; ff = 0
+		while ((getline line < f) > 0) {
+			if (line ~ /^#/) continue
+			n = split(line, a, ",")
+			if (a[1] == "method") { for (i = 1; i <= n; i++) c[a[i]] = i; continue }
+			if (a[1] != m) continue
+			any = 1
+			if (a[c["status"]] != "proven" || a[c["found"]] ~ /inf|nan/) { close(f); print "findings: " m " has a region without a bound in " f > "/dev/stderr"; bad = 1; return "?" }
+			if (a[c["bound"]] + 0 > bb) bb = a[c["bound"]] + 0
+			if (a[c["found"]] + 0 > ff) ff = a[c["found"]] + 0
+		}
+		close(f)
+		if (!any || ff <= 0) { print "findings: no " m " rows in " f > "/dev/stderr"; bad = 1; return "?" }
+		if (k == "bound") return sprintf("%.4g", bb * 2048)
+		if (k == "found") return sprintf("%.4g", ff * 2048)
+		if (k == "ratio") return sprintf("%.2f", bb / ff)
+		print "findings: bad CHB key " k > "/dev/stderr"; bad = 1; return "?"
+	}
+	# {{CHLOOSE}}: nothing when every proven bracket is within 2x, else the
+	# wider ones with their ratios
+	function CHLOOSE(   i, s, m) {
+		load_ch(); s = ""
+		for (i = 1; i <= CHN; i++) { m = CHM[i]; if (chsel(m, "loose")) s = s (s == "" ? "" : ", ") "`" m "` " CH(m, "ratio") "x" }
+		return s == "" ? "" : "; wider: " s " (certify.md, \"Binary16\", says which side is loose)"
+	}
+	# a value of results/half/halfscan/halfscan.csv or of the half sweep, "-"
+	# where the method has no row there
+	function hrow(path, key, col,   f, line, n, a, i, h, nh) {
+		f = REF "/../" path; nh = 0
+		while ((getline line < f) > 0) {
+			if (line ~ /^#/) continue
+			n = split(line, a, ",")
+			if (!nh) { nh = n; for (i = 1; i <= n; i++) h[a[i]] = i; continue }
+			if (a[1] == key && (col in h)) { close(f); return a[h[col]] }
+		}
+		close(f); return "-"
+	}
+	function hsw(m, col,   v, f, line, n, a, i, h, nh) {
+		f = REF "/../half/sweep/summary.csv"; nh = 0
+		while ((getline line < f) > 0) {
+			if (line ~ /^#/) continue
+			n = split(line, a, ",")
+			if (!nh) { nh = n; for (i = 1; i <= n; i++) h[a[i]] = i; continue }
+			if (a[1] == m && a[2] == "half" && a[3] == "uniform") { close(f); v = a[h[col]]; return (col == "max_defect" && v !~ /nan|inf/) ? fmt(v * 2048) : fmt(v) }
+		}
+		close(f); return "-"
+	}
+	# {{TABLE half}}: every method of the half certify run: the proven
+	# bracket over the whole sphere, the regions by status and where the
+	# unproven ones lie, beside the maxima of the halfscan and of the half sweep
+	function table_half(   i, m, out, hs, hn) {
+		load_ch()
+		out = "| method | proven bound | found (certify scan) | bound / found | regions proven / non-finite / overflow / unbounded | no bound where | halfscan max | halfscan non-finite | sweep, uniform: max | sweep, uniform: non-finite |\n"
+		out = out "|---|---:|---:|---:|---|---|---:|---:|---:|---:|\n"
+		for (i = 1; i <= CHN; i++) {
+			m = CHM[i]; hs = hrow("half/halfscan/halfscan.csv", m, "max_defect_u"); hn = hrow("half/halfscan/halfscan.csv", m, "nonfinite")
+			out = out "| `" m "` | " CH(m, "bound") " | " CH(m, "found") " | " CH(m, "ratio") " | " CH(m, "proven") " / " CH(m, "non-finite") " / " CH(m, "overflow") " / " CH(m, "unbounded") " | " CH(m, "where") " | " (hs == "-" ? "-" : fmt(hs)) " | " hn " | " hsw(m, "max_defect") " | " hsw(m, "nonfinite") " |\n"
+		}
+		return out
 	}
 	# the fastest method of a precision and, when it is off the front, one
 	# method that beats it by the rule of onbstudy table (speeds within PTOLV% equal)
@@ -729,6 +861,12 @@ generate() {
 			else if (a[1] == "V" && nt == 4) rep = V(a[2], a[3], a[4], 0)
 			else if (a[1] == "HS" && nt == 4) rep = HS(a[2], a[3], a[4], 0)
 			else if (a[1] == "HSU" && nt == 4) rep = HS(a[2], a[3], a[4], 1)
+			else if (a[1] == "CH" && nt == 3) rep = CH(a[2], a[3])
+			else if (a[1] == "CHLIST" && nt == 2) rep = CHLIST(a[2], 0)
+			else if (a[1] == "CHN" && nt == 2) rep = CHLIST(a[2], 1)
+			else if (a[1] == "CHLOOSE" && nt == 1) rep = CHLOOSE()
+			else if (a[1] == "CHP" && nt == 4) rep = CHP(a[2], a[3], a[4])
+			else if (a[1] == "TABLE" && a[2] == "half" && nt == 2) rep = table_half()
 			else if (a[1] == "VC" && nt == 4) rep = V(a[2], a[3], a[4], 1)
 			else if (a[1] == "BZ" && nt == 5) rep = BZ(a[2], a[3], a[4], a[5])
 			else if (a[1] == "PCH" && nt == 2) rep = PCH(a[2])

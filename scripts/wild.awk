@@ -481,6 +481,43 @@ function count(k,   i, n) {
 	print "wild: bad count " k > "/dev/stderr"; bad = 1; return "?"
 }
 
+# {{TABLE half}}: every shader engine (its language GLSL, HLSL or Slang;
+# methods and aliases) in binary16, as mediump and half run it on mobile
+# GPUs: the whole-sphere bracket of its C row from H (results/half/
+# certify/certify-half.csv, certify --precision half): the largest bound
+# and found over the regions (no bound where a region is not proven), the
+# regions by status, the worst input.  Generation fails when an engine's
+# C row has no rows in H.
+function load_half(   n, r, m, st, b, f, k) {
+	if (H == "") { print "wild: no -v H (results/half/certify/certify-half.csv)" > "/dev/stderr"; exit 1 }
+	n = load(H)
+	for (r = 1; r <= n; r++) {
+		m = get(H, r, "method"); st = get(H, r, "status"); b = get(H, r, "bound"); f = get(H, r, "found")
+		hreg[m]++; hst[m, st]++
+		if (st != "proven") hnob[m] = 1; else if (!((m) in hb) || b + 0 > hb[m]) hb[m] = b + 0
+		if (isbad(f)) { hfi[m] = 1; hin[m] = get(H, r, "found_nx") " " get(H, r, "found_ny") " " get(H, r, "found_nz") }
+		else if (!(m in hfi) && (!(m in hf) || f + 0 > hf[m])) { hf[m] = f + 0; hin[m] = get(H, r, "found_nx") " " get(H, r, "found_ny") " " get(H, r, "found_nz") }
+	}
+	hloaded = 1
+}
+function halftable(   i, e, t, s, u, o, nlist, ord, j, tmp, b, fo, st) {
+	if (!hloaded) load_half()
+	u = 2 ^ -11
+	for (i = 1; i <= neng; i++) if (lang[eng[i]] ~ /GLSL|HLSL|Slang/) ord[++nlist] = eng[i]
+	for (i = 2; i <= nlist; i++) for (j = i; j > 1 && ord[j] < ord[j - 1]; j--) { tmp = ord[j]; ord[j] = ord[j - 1]; ord[j - 1] = tmp }
+	s = "| engine | language | C row | proven bound, half | found, half | bound / found | regions proven / non-finite / overflow / unbounded | replay the worst input (half) |\n|---|---|---|---:|---:|---:|---|---|\n"
+	for (i = 1; i <= nlist; i++) {
+		e = ord[i]; t = target[e]
+		if (!(t in hreg)) { print "wild: the shader engine " e " (C row " t ") has no rows in " H > "/dev/stderr"; bad = 1; continue }
+		b = (t in hnob) ? "none" : sprintf("%.4gu", hb[t] / u)
+		fo = (t in hfi) ? "non-finite" : sprintf("%.4gu", hf[t] / u)
+		o = ((t in hnob) || (t in hfi) || hf[t] <= 0) ? "n/a" : sprintf("%.2f", hb[t] / hf[t])
+		st = (hst[t, "proven"] + 0) " / " (hst[t, "non-finite"] + 0) " / " (hst[t, "overflow"] + 0) " / " (hst[t, "unbounded"] + 0)
+		s = s "| `" e "` | " lang[e] " | `" t "` | " b " | " fo " | " o " | " st " | `onbstudy eval --precision half --methods " t " " hin[t] "` |\n"
+	}
+	return s
+}
+
 function expand(line,   rs, rl, tok, a, nt, rep) {
 	while (match(line, /\{\{[^}]*\}\}/)) {
 		rs = RSTART; rl = RLENGTH
@@ -489,6 +526,7 @@ function expand(line,   rs, rl, tok, a, nt, rep) {
 		if (a[1] == "TABLE" && a[2] == "wild") rep = table()
 		else if (a[1] == "FINDINGS") rep = findings()
 		else if (a[1] == "TABLE" && a[2] == "aliases") rep = aliastable()
+		else if (a[1] == "TABLE" && a[2] == "half") rep = halftable()
 		else if (a[1] == "ALIASES") rep = aliaslist()
 		else if (a[1] == "MULTIROW") rep = multirow()
 		else if (a[1] == "SINGULAR") rep = singular()

@@ -27,6 +27,9 @@
 #                         the paragraph between <!-- para NAME --> and
 #                         <!-- end --> in wild.md.in (generation fails when
 #                         one is missing)
+#     {{TABLE half}}      the shader engines (GLSL, HLSL, Slang) in binary16:
+#                         their C row's certify --precision half bracket
+#                         (results/half/certify/certify-half.csv, HALF=FILE)
 #     {{TABLE aliases}}   the aliases, grouped by their target (the groups
 #                         in the order of the target's worst defect)
 #     {{ALIASES}}         those groups in words
@@ -55,6 +58,9 @@ ADDS=$(for d in "$ROOT"/results/wild/add/*/; do if [ -d "$d" ]; then printf "%s 
 REF=${REF:-$ROOT/results/wild $ADDS}
 # the engines' run, the paper methods' proven bounds, the added engines'
 CERT=${CERT:-$ROOT/results/wild/certify.csv $ROOT/results/certify/certify.csv $(for d in $ADDS; do printf '%s ' "$d/certify.csv"; done)}
+# the binary16 proofs of every method (scripts/half-certify.sh): the shader
+# engines' half rows ({{TABLE half}})
+HALF=${HALF:-$ROOT/results/half/certify/certify-half.csv}
 ONBSTUDY=${ONBSTUDY:-$ROOT/onbstudy}
 TPL=${WILD_TPL:-$HERE/wild.md.in}
 BODY=$TPL
@@ -84,7 +90,7 @@ generate() {
 	done
 	rc=0
 	awk -v M="$T2/methods.csv" -v A="$T2/aliases.csv" -v X="$T2/axes.csv" -v S="$T2/summary.csv" \
-	    -v WO="$T2/worst.csv" -v TR="$T2/tradeoff.csv" -v C="$CERT" -v TPL="$TPL" -v PD="$ROOT/results/wild/patches" -f "$HERE/wild.awk" "$BODY" || rc=1
+	    -v WO="$T2/worst.csv" -v TR="$T2/tradeoff.csv" -v C="$CERT" -v H="$HALF" -v TPL="$TPL" -v PD="$ROOT/results/wild/patches" -f "$HERE/wild.awk" "$BODY" || rc=1
 	rm -rf "$T2"
 	return $rc
 }

@@ -55,6 +55,15 @@ awk -F, 'BEGIN { OFS = "," } /^method,/ { for (i = 1; i <= NF; i++) if ($i == "m
 out=$(REF="$T/r/reference" sh scripts/findings.sh 2>&1 >/dev/null)
 echo "$out" | grep -q "grid has no continuous field apart from the seams" && ok || bad "a grid without the gap passed CONT: $out"
 cp "$T/sum.csv" "$T/r/reference/summary.csv"
+# the binary16 proofs hold on the committed half runs (scripts/half-bounds.awk:
+# no proven method's halfscan or sweep maximum above its bound), and a set of
+# bounds divided by 4 must fail it
+H=results/half
+awk -F, -f scripts/half-bounds.awk $H/certify/certify-half.csv $H/halfscan/halfscan.csv $H/sweep/summary.csv > "$T/hb" 2>&1 && ok || bad "half bounds: $(cat "$T/hb")"
+awk -F, 'BEGIN { OFS = "," } /^method,/ { for (i = 1; i <= NF; i++) if ($i == "bound") c = i } !/^#/ && !/^method,/ && $c != "inf" { $c = $c / 4 } { print }' \
+	$H/certify/certify-half.csv > "$T/half-halved.csv"
+awk -F, -f scripts/half-bounds.awk "$T/half-halved.csv" $H/halfscan/halfscan.csv $H/sweep/summary.csv > /dev/null 2>&1 && bad "halved half bounds passed scripts/half-bounds.awk" || ok
+sh scripts/findings.sh --section certifyhalf --check docs/certify.md && ok || bad "docs/certify.md's binary16 proofs differ from results/half/certify (scripts/findings.sh --section certifyhalf)"
 n=$(sed -n '/^<!-- headlines:begin/,/^<!-- headlines:end/p' README.md | grep -c '^[0-9][0-9]*\. ')
 [ "$n" -ge 1 ] && [ "$n" -le 10 ] && ok || bad "README: $n headline findings, want 1 to 10"
 finish findings

@@ -226,6 +226,9 @@ void ch_region(bound_ctx *b, const study_kernel *k, const cm_method *m, const ce
 		out->unb_op = bound_unbounded_op(b);
 	} else
 		out->status = CH_PROVEN;
+	if (out->status == CH_PROVEN && out->found > out->bound)
+		out->status = CH_UNBOUNDED;   /* a bound under a defect the scan measured is no proof: the model's
+		                                 paths miss the kernel's (physx in half: every box "no path") */
 	if (out->status != CH_PROVEN)
 		out->bound = INFINITY;
 }

@@ -40,20 +40,31 @@ made=""
 # shades keep their own colours.  frisvad_rotate's rows are its direction
 # error, and its title says so.
 keys() {
-	awk -v files="$1" -v names="$2" -v panels="$3" 'BEGIN {
+	awk -v files="$1" -v names="$2" -v panels="$3" -v ratio="${4:-0}" 'BEGIN {
 		n = split(files, f, " "); split(names, nm, " "); split(panels, pa, " ")
 		for (i = 1; i <= n; i++) { nl[i] = 0
 			while ((getline l < f[i]) > 0) { split(l, c, " "); nl[i]++; L[i, nl[i]] = c[1] " " c[2] " " c[3] " " c[4] " " c[5]; B[i, c[1]] = c[2] " " c[3] " " c[5] }
 			close(f[i]) }
 		for (i = 1; i <= n; i++) {
 			t = nm[i]; nd = 0; split("", with)
-			for (r = 1; r <= nl[i]; r++) { split(L[i, r], c, " "); d = 0
-				for (j = 1; j < i && !d; j++) if (pa[j] == pa[i] && ((j, c[1]) in B) && B[j, c[1]] == c[2] " " c[3] " " c[5]) { d = j; with[j]++ }
+			# (an earlier method of the panel with every band the same comes
+			# first: "jolt = jolt_arm64", not 12 bands of one and 4 of another)
+			full = 0
+			for (j = 1; j < i && !full; j++) if (pa[j] == pa[i]) { same = nl[i] > 0
+				for (r = 1; r <= nl[i] && same; r++) { split(L[i, r], c, " "); if (!((j, c[1]) in B) || B[j, c[1]] != c[2] " " c[3] " " c[5]) same = 0 }
+				if (same) full = j }
+			for (r = 1; r <= nl[i]; r++) { split(L[i, r], c, " "); d = full
+				for (j = 1; j < i && !d; j++) if (pa[j] == pa[i] && ((j, c[1]) in B) && B[j, c[1]] == c[2] " " c[3] " " c[5]) d = j
+				if (d) with[d]++
 				D[i, r] = d ? 1 : 0; nd += d ? 1 : 0 }
 			best = 0; for (j in with) if (!best || with[j] > with[best]) best = j
 			if (nd == nl[i] && nd > 0 && with[best] == nd) t = t " = " nm[best]
 			else if (nd > 0) t = t sprintf(" (= %s in %d band%s)", nm[best], with[best], with[best] == 1 ? "" : "s")
 			if (nm[i] == "frisvad_rotate") t = t " (its direction error)"
+			# (the ratio chart: a method whose every band is a repeat or has
+			# no bound draws no ratio of its own, and its title says so)
+			own = 0; for (r = 1; r <= nl[i]; r++) { split(L[i, r], c, " "); own += (!D[i, r] && !(c[5] + 0 > 0)) }
+			if (ratio && own == 0 && nl[i] > 0 && nd < nl[i]) t = t (nd ? "; " : " ") "no finite point"
 			all = (nd == nl[i] && nd > 0)
 			fill = all ? 0 : (k[pa[i]]++ ? 3 + (k[pa[i]] - 2) % 4 + 1 : 0)
 			for (r = 1; r <= nl[i]; r++) print L[i, r], D[i, r] > f[i]
@@ -126,9 +137,10 @@ for p in float double half; do
 	done
 	[ -n "$files" ] || { echo "certify-plot: no $p rows in $CSV" >&2; continue; }
 	keys "$files" "$names" "$panels" > "$W/keys.$p"
-	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'; keys='$W/keys.$p'"
-	gnuplot -e "$v; ratio=0; out='$DIR/certify_$p'" "$HERE/certify.gp"
-	gnuplot -e "$v; ratio=1; out='$DIR/certify_ratio_$p'" "$HERE/certify.gp"
+	v="here='$HERE'; nosvg=${NOSVG:-0}; prec='$p'; files='$files'; names='$names'; colors='$colors'; dashes='$dashes'; points='$points'; panels='$panels'; xt='$W/xtics.$p'"
+	gnuplot -e "$v; keys='$W/keys.$p'; ratio=0; out='$DIR/certify_$p'" "$HERE/certify.gp"
+	keys "$files" "$names" "$panels" 1 > "$W/keysr.$p"
+	gnuplot -e "$v; keys='$W/keysr.$p'; ratio=1; out='$DIR/certify_ratio_$p'" "$HERE/certify.gp"
 	outs="$DIR/certify_$p $DIR/certify_ratio_$p"
 	# the README's figure (FIGS, float): frisvad, frisvad_max and duff in one panel
 	sel=""; for m in frisvad frisvad_max duff; do case " $names " in *" $m "*) sel="$sel $m";; esac; done

@@ -366,6 +366,7 @@ static void ind_blogd(Vec3d n, Vec3d *b1, Vec3d *b2)
 #include "indep_wild_c.h"
 #include "indep_wild_b5.h"
 #include "indep_wild_b6.h"
+#include "indep_wild_c6.h"
 
 /* One entry per registry method: name, and both precisions by an id. */
 
@@ -375,7 +376,8 @@ static void indep_f(int id, int k, Vec3f n, Vec3f *b1, Vec3f *b2)
 {
 	if (indep_wild_f(id, n, b1, b2) || indep_wild_b_f(id, n, b1, b2) || indep_wild_e_f(id, n, b1, b2) ||
 	    indep_wild_d_f(id, n, b1, b2) || indep_wild_c_f(id, n, b1, b2) ||
-	    indep_wild_b5_f(id, n, b1, b2) || indep_wild_b6_f(id, n, b1, b2))
+	    indep_wild_b5_f(id, n, b1, b2) || indep_wild_b6_f(id, n, b1, b2) ||
+	    indep_wild_c6_f(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naivef(n, b1, b2, k); break;
@@ -397,7 +399,8 @@ static void indep_d(int id, int k, Vec3d n, Vec3d *b1, Vec3d *b2)
 {
 	if (indep_wild_d(id, n, b1, b2) || indep_wild_b_d(id, n, b1, b2) || indep_wild_e_d(id, n, b1, b2) ||
 	    indep_wild_d_d(id, n, b1, b2) || indep_wild_c_d(id, n, b1, b2) ||
-	    indep_wild_b5_d(id, n, b1, b2) || indep_wild_b6_d(id, n, b1, b2))
+	    indep_wild_b5_d(id, n, b1, b2) || indep_wild_b6_d(id, n, b1, b2) ||
+	    indep_wild_c6_d(id, n, b1, b2))
 		return;
 	switch (id) {
 	case IM_NAIVE:       ind_naived(n, b1, b2, k); break;
@@ -460,6 +463,7 @@ static const indep_row T[] = {
 	{ "embree", onb_embree, onb_embreef, IW_EMBREE, 0 },
 	{ "luxcore", onb_luxcore, onb_luxcoref, IW_LUXCORE, 0 },
 	INDEP_WILD_E_ROWS
+	INDEP_WILD_C6_ROWS
 	{ "jolt", onb_jolt, onb_joltf, IW_JOLT, 0 },
 	{ "jolt_fma", onb_jolt_fma, onb_jolt_fmaf, IW_JOLT_FMA, 0 },
 	{ "bullet", onb_bullet, onb_bulletf, IW_BULLET, 0 },

@@ -42,6 +42,8 @@
  *     onb_luxcore          onb_luxcoref           LuxCoreRender CoordinateSystem
  *     onb_nori             onb_norif              Nori coordinateSystem (= Mitsuba 0.6)
  *     onb_osl_ortho        onb_osl_orthof         OpenShadingLanguage testrender ortho
+ *     onb_ospray           onb_osprayf            OSPRay/rkcommon frame(N) (ISPC, IEEE)
+ *     onb_osl_gabornoise   onb_osl_gabornoisef    OpenShadingLanguage make_orthonormals
  *     onb_jolt_arm64       onb_jolt_arm64f        Jolt, its non-x86 build (scalar -x)
  *     onb_jolt             onb_joltf              Jolt GetNormalizedPerpendicular
  *     onb_jolt_fma         onb_jolt_fmaf            its default x86 build (fma)
@@ -1553,6 +1555,81 @@ static inline void ONB__K(osl_orthof)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 	b2->z = n.x * p.y - n.y * p.x;
 }
 
+/* ospray (OSPRay's ISPC renderer, rkcommon math/LinearSpace.ih frame(N),
+   vec.ih normalize and cross), read as source-level IEEE arithmetic:
+   dx0 = (0, z, -y), dx1 = (-z, 0, x); u = |x| < |y| ? dx0 : dx1 (the tie
+   |x| = |y| and NaN take dx1); dx = u * (1/sqrt(dot(u, u))), the dot
+   u.x*u.x + u.y*u.y + u.z*u.z over all three components (the literal 0
+   included), one division and three products; dy = cross(N, dx) in the
+   format.  b1 = dx, b2 = dy.  Handedness +1.  pbrt_v3's exact formula with
+   the tie rule reversed, its cross product not widened.  OSPRay compiles
+   with ISPC_FAST_MATH (contract, reassoc, nsz, arcp: not modelled here).
+   No singular unit direction (|u|^2 >= 1/2 - O(eps)). */
+static inline void ONB__K(ospray)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 u;
+	double s;
+	if (fabs(n.x) < fabs(n.y)) { u.x = 0.0; u.y = n.z; u.z = -n.y; }
+	else                       { u.x = -n.z; u.y = 0.0; u.z = n.x; }
+	s = 1.0 / sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+	u.x = u.x * s; u.y = u.y * s; u.z = u.z * s;
+	*b1 = u;
+	b2->x = n.y * u.z - n.z * u.y;
+	b2->y = n.z * u.x - n.x * u.z;
+	b2->z = n.x * u.y - n.y * u.x;
+}
+static inline void ONB__K(osprayf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f u;
+	float s;
+	if (fabsf(n.x) < fabsf(n.y)) { u.x = 0.0f; u.y = n.z; u.z = -n.y; }
+	else                         { u.x = -n.z; u.y = 0.0f; u.z = n.x; }
+	s = 1.0f / sqrtf(u.x * u.x + u.y * u.y + u.z * u.z);
+	u.x = u.x * s; u.y = u.y * s; u.z = u.z * s;
+	*b1 = u;
+	b2->x = n.y * u.z - n.z * u.y;
+	b2->y = n.z * u.x - n.x * u.z;
+	b2->z = n.x * u.y - n.y * u.x;
+}
+
+/* osl_gabornoise (OpenShadingLanguage liboslnoise/gabornoise.h,
+   make_orthonormals(v, a, b)): v.normalize() (the input normalized first,
+   Imath's normalize: each component divided by length() unless it is 0);
+   a = |v.x| < 0.9f ? (0, v.z, -v.y) : (-v.z, 0, v.x); a.normalize();
+   b = v.cross(a).  b1 = a, b2 = b (the frame (t, b, n) of gabornoise.cpp).
+   Handedness +1, measured against n (b1 and b2 are built from n/|n|).
+   The float literal 0.9f is kept in the double variant.  Imath's length
+   and lengthTiny as in osl_ortho.  No singular unit direction
+   (|a|^2 >= 0.19 - O(eps)). */
+static inline void ONB__K(osl_gabornoise)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 v = n, a;
+	double l = onb__osl_lend(v.x, v.y, v.z);
+	if (!ONB__IS0(l)) { v.x /= l; v.y /= l; v.z /= l; }
+	if (fabs(v.x) < ONB__CAST(double, .9f)) { a.x = 0.0; a.y = v.z; a.z = -v.y; }
+	else                                   { a.x = -v.z; a.y = 0.0; a.z = v.x; }
+	l = onb__osl_lend(a.x, a.y, a.z);
+	if (!ONB__IS0(l)) { a.x /= l; a.y /= l; a.z /= l; }
+	*b1 = a;
+	b2->x = v.y * a.z - v.z * a.y;
+	b2->y = v.z * a.x - v.x * a.z;
+	b2->z = v.x * a.y - v.y * a.x;
+}
+static inline void ONB__K(osl_gabornoisef)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f v = n, a;
+	float l = onb__osl_lenf(v.x, v.y, v.z);
+	if (!ONB__IS0(l)) { v.x /= l; v.y /= l; v.z /= l; }
+	if (fabsf(v.x) < .9f) { a.x = 0.0f; a.y = v.z; a.z = -v.y; }
+	else                  { a.x = -v.z; a.y = 0.0f; a.z = v.x; }
+	l = onb__osl_lenf(a.x, a.y, a.z);
+	if (!ONB__IS0(l)) { a.x /= l; a.y /= l; a.z /= l; }
+	*b1 = a;
+	b2->x = v.y * a.z - v.z * a.y;
+	b2->y = v.z * a.x - v.x * a.z;
+	b2->z = v.x * a.y - v.y * a.x;
+}
+
 /* jolt_arm64: Jolt Vec3::GetNormalizedPerpendicular's non-SSE path (the
    arm64/NEON build; JPH_CROSS_PLATFORM_DETERMINISTIC off) and the NEON
    Cross: as jolt, but the perpendicular negates with unary minus
@@ -2781,7 +2858,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(willems) X(gltf_viewer) X(rtao) X(rtao_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
-	X(nori) X(osl_ortho) X(jolt_arm64) \
+	X(nori) X(osl_ortho) X(ospray) X(osl_gabornoise) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(babylon) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)

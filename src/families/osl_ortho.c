@@ -2,6 +2,9 @@
  * osl_ortho.c - OpenShadingLanguage testrender's ortho (raytracer.h):
  * b1 = (z, 0, -x) when |x| > .01f, else (0, -z, y), normalized by Imath's
  * Vec3::normalize (each component divided by the length); b2 = n x b1.
+ * osl_gabornoise (liboslnoise/gabornoise.h make_orthonormals): v = n
+ * Imath-normalized first; b1 = (0, v.z, -v.y) when |v.x| < 0.9f, else
+ * (-v.z, 0, v.x), Imath-normalized; b2 = v x b1.
  */
 #include <float.h>
 #include <math.h>
@@ -20,6 +23,24 @@ int FAMILY_BRANCH(osl_ortho)(const onb_method *m, int prec, const double n[3])
 		return fabs(prec_half_round(n[0])) > prec_half_round((double).01f);
 	return fabs(n[0]) > (double).01f;
 }
+/* 1 when not |v.x| < 0.9f, v = n / |n| as Imath's normalize computes it
+   in the format (a unit n never reaches lengthTiny or a zero length) */
+int FAMILY_BRANCH(osl_gabornoise)(const onb_method *m, int prec, const double n[3])
+{
+	(void)m;
+	if (prec == PREC_FLOAT) {
+		const float x = (float)n[0], y = (float)n[1], z = (float)n[2];
+		return !(fabsf(x / sqrtf(x * x + y * y + z * z)) < .9f);
+	} else if (prec == PREC_HALF) {
+		const double x = n[0], y = n[1], z = n[2];
+		const double d = prec_half_round(prec_half_round(prec_half_round(x * x) + prec_half_round(y * y)) +
+		                                 prec_half_round(z * z));
+		return !(fabs(prec_half_round(x / prec_half_round(sqrt(d)))) < prec_half_round((double).9f));
+	} else {
+		const double x = n[0], y = n[1], z = n[2];
+		return !(fabs(x / sqrt(x * x + y * y + z * z)) < (double).9f);
+	}
+}
 #endif
 
 #if FAMILY_PAIR_PASS
@@ -28,6 +49,17 @@ void FAMILY_PAIR(osl_ortho)(const onb_method *m, int br, const double loc[3], co
 {
 	(void)m; (void)loc;
 	xperp_cross(br ? 1 : 0, +1, n, r1, r2, bad);
+}
+/* v = n/|n|; (0, v.z, -v.y) = -(e_x x v), (-v.z, 0, v.x) = -(e_y x v) */
+void FAMILY_PAIR(osl_gabornoise)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
+{
+	xv v[3];
+	int i;
+	(void)m; (void)loc;
+	for (i = 0; i < 3; i++)
+		v[i] = n[i];
+	xnormalize(v, bad);
+	xperp_cross(br ? 1 : 0, -1, v, r1, r2, bad);
 }
 #endif
 
@@ -102,5 +134,59 @@ const study_family family_osl_ortho = {
 	"osl_ortho", FAMILY_PASSES(osl_ortho), names, mpfr, FAMILY_PAIRS(osl_ortho), family_no_variant,
 	family_no_exact_zero, model, 8, zero_any_n, family_no_singular, family_meets_none,
 	family_no_fma_model,
+};
+/* ---- osl_gabornoise ---- */
+static const char *names_gabor(const onb_method *m, int b, char *buf, size_t n)
+{
+	(void)m; (void)buf; (void)n;
+	return b ? "|v.x| >= 0.9f: b1 = (-v.z, 0, v.x) / len" : "|v.x| < 0.9f: b1 = (0, v.z, -v.y) / len";
+}
+
+static void mpfr_gabor(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n, mpfr_t *r1, mpfr_t *r2)
+{
+	(void)m; (void)loc;
+	kit_copy3(c->w, n);
+	kit_normalize(c, c->w);
+	kit_perp_cross(c, br ? 1 : 0, -1, c->w, r1, r2);
+}
+
+/* v = n / length(n), three divisions (a unit n: no lengthTiny, no zero
+   length); a = (0, v.z, -v.y) or (-v.z, 0, v.x) (the 0 a literal);
+   l = Imath's length(a) (lengthTiny below 2 * the smallest normal, never
+   for a unit n: |a|^2 >= 0.19); b1 = a / l unless l = 0; b2 = v x b1.
+   Branch points: 0 the threshold, 1 the tiny test, 2-6 lengthTiny's,
+   7 l != 0. */
+static void model_gabor(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
+{
+	const double tiny = P == PREC_FLOAT ? 0x1p-125 : P == PREC_HALF ? 0x1p-13 : 0x1p-1021;
+	cv v[3], a[3], l, l2;
+	int i, z0;
+	(void)m;
+	l = cm_sqrt(c, P, mk_dot3(c, P, n, n));
+	for (i = 0; i < 3; i++)
+		v[i] = DIV(n[i], l);
+	if (cm_branch_abs(c, 0, CM_LT, v[0], K((double).9f))) {
+		a[0] = K(0.0); a[1] = v[2]; a[2] = cm_neg(c, v[1]); z0 = 0;
+	} else {
+		a[0] = cm_neg(c, v[2]); a[1] = K(0.0); a[2] = v[0]; z0 = 1;
+	}
+	l2 = mk_dot3(c, P, a, a);
+	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, a, z0) : cm_sqrt(c, P, l2);
+	if (cm_branch(c, 7, CM_GT, l, K(0.0)))
+		for (i = 0; i < 3; i++)
+			a[i] = DIV(a[i], l);
+	for (i = 0; i < 3; i++)
+		out[i] = a[i];
+	mk_cross(c, P, v, a, out + 3);
+}
+
+/* measured against n but built from n/|n|: all five */
+static unsigned zero_any_n_gabor(const onb_method *m) { (void)m; return CQ_ALL; }
+
+FAMILY_DECLARE(osl_gabornoise);
+const study_family family_osl_gabornoise = {
+	"osl_gabornoise", FAMILY_PASSES(osl_gabornoise), names_gabor, mpfr_gabor, FAMILY_PAIRS(osl_gabornoise),
+	family_no_variant, family_no_exact_zero, model_gabor, 8, zero_any_n_gabor, family_no_singular,
+	family_meets_none, family_no_fma_model,
 };
 #endif

@@ -517,6 +517,31 @@ void HN(osl_orthoh)(V n, V *b1, V *b2)
 	*b2 = hcross(n, p);
 }
 
+/* ---- ospray: |x| < |y| picks (0, z, -y), 1/sqrt of the three-term dot, cross in the format ---- */
+void onb_osprayh(V n, V *b1, V *b2)
+{
+	V u;
+	if ((float)habs(n.x) < (float)habs(n.y)) u = hvec(H0, n.z, hneg(n.y));
+	else                                     u = hvec(hneg(n.z), H0, n.x);
+	u = hscale(u, hdiv(H1, hsqrt(hdot(u, u))));
+	*b1 = u;
+	*b2 = hcross(n, u);
+}
+
+/* ---- osl_gabornoise: n Imath-normalized, |v.x| < 0.9f, a Imath-normalized, b = v x a ---- */
+void onb_osl_gabornoiseh(V n, V *b1, V *b2)
+{
+	V v = n, a;
+	H l = osl_lenh(v.x, v.y, v.z);
+	if ((float)l != 0.0f) v = hvec(hdiv(v.x, l), hdiv(v.y, l), hdiv(v.z, l));
+	if ((float)habs(v.x) < (float)hcst((double).9f)) a = hvec(H0, v.z, hneg(v.y));
+	else                                            a = hvec(hneg(v.z), H0, v.x);
+	l = osl_lenh(a.x, a.y, a.z);
+	if ((float)l != 0.0f) a = hvec(hdiv(a.x, l), hdiv(a.y, l), hdiv(a.z, l));
+	*b1 = a;
+	*b2 = hcross(v, a);
+}
+
 /* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */
 void HN(jolt_arm64h)(V n, V *b1, V *b2)
 {

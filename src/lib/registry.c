@@ -126,6 +126,12 @@ static const onb_provenance P_NORI = { "github.com/wjakob/nori", "092f581b8664cb
 static const onb_provenance P_OSL_ORTHO = { "github.com/AcademySoftwareFoundation/OpenShadingLanguage", "ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa",
 	"src/testrender/raytracer.h:39-46", "BSD-3-Clause", "C++ (Imath)", "float (Vec3 = Imath::Vec3<Float>, Float = float)",
 	"source-level IEEE (compiler.cmake adds -ffp-contract=off with -mfma); Imath Vec3::normalize/length/lengthTiny and cross at Imath d0a0b115 src/Imath/ImathVec.h:1746-1749, 1892-1960; the OptiX build not modelled" };
+static const onb_provenance P_OSPRAY = { "github.com/ospray/rkcommon", "f1641061fd910939b2f686d09b9a55c61719f594",
+	"rkcommon/math/LinearSpace.ih:188-195", "Apache-2.0", "ISPC", "float (vec3f)",
+	"source-level IEEE (the ISPC sse4 target without fast-math); normalize vec.ih:498-501 (v * (1.f/sqrt(dot(v,v)))), dot :423-426, cross :449-456; OSPRay's ISPC_FAST_MATH (contract, reassoc, nsz, arcp) and the FMA targets' fusion not modelled; used by OSPRay f2a61c2e modules/cpu/render/Material.ih" };
+static const onb_provenance P_OSL_GABOR = { "github.com/AcademySoftwareFoundation/OpenShadingLanguage", "ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa",
+	"src/liboslnoise/gabornoise.h:208-220", "BSD-3-Clause", "C++ (Imath)", "float (Vec3 = Imath::Vec3<Float>, Float = float)",
+	"source-level IEEE (compiler.cmake adds -ffp-contract=off with -mfma); Imath Vec3::normalize/length/lengthTiny and cross at Imath d0a0b115 src/Imath/ImathVec.h:1746-1749, 1892-1960; the frame (t, b, n) of gabornoise.cpp:239-242" };
 static const onb_provenance P_JOLT_ARM64 = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
 	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (NEON)", "float",
 	"the non-SSE path (Vec3.inl:1147-1157, JPH_CROSS_PLATFORM_DETERMINISTIC off) and NEON Cross (865-871); Build/CMakeLists.txt:263-272 gives non-x86 -ffp-contract=on, which fuses nothing here (aarch64-linux-gnu-gcc 12 -O2 under qemu-aarch64: these bits)" };
@@ -213,6 +219,10 @@ static const onb_method onb__table[] = {
 	  "none", "|n.x| > |n.y|", +1, 0, NAN, 0, ONB__PTRS(nori), &P_NORI },
 	{ "osl_ortho", "osl_ortho", "OpenShadingLanguage testrender ortho: b1 = (z, 0, -x) if abs(x) > .01f else (0, -z, y), Imath-normalized; b2 = n x b1",
 	  "none", "|n.x| > .01f", +1, 0, NAN, 0, ONB__PTRS(osl_ortho), &P_OSL_ORTHO },
+	{ "ospray", "ospray", "OSPRay (rkcommon ISPC) frame(N): b1 = (0, z, -y) if abs(x) < abs(y) else (-z, 0, x), times 1/sqrt(dot); b2 = cross(N, b1)",
+	  "none", "|n.x| < |n.y|", +1, 0, NAN, 0, ONB__PTRS(ospray), &P_OSPRAY },
+	{ "osl_gabornoise", "osl_gabornoise", "OpenShadingLanguage gabornoise make_orthonormals: v = n Imath-normalized; b1 = (0, v.z, -v.y) if abs(v.x) < 0.9f else (-v.z, 0, v.x), Imath-normalized; b2 = v x b1",
+	  "none", "|unit(n).x| < 0.9f", +1, 0, NAN, 0, ONB__PTRS(osl_gabornoise), &P_OSL_GABOR },
 	{ "jolt_arm64", "jolt", "Jolt Physics, as jolt, in its non-x86 build: the scalar perpendicular negates with -x (x = +0 gives -0), NEON cross, nothing fused",
 	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, ONB__WILD_SCALAR, ONB__PTRS(jolt_arm64), &P_JOLT_ARM64 },
 	/* Engines' shipped code ("in the wild"): physics engines, geometry and

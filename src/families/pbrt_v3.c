@@ -182,7 +182,12 @@ static const char *names_ospray(const onb_method *m, int b, char *buf, size_t n)
 
 /* u = (0, z, -y) or (-z, 0, x), the 0 a literal; s = 1/sqrt(u.u) with
    u.u = (u.x*u.x + u.y*u.y) + u.z*u.z; b1 = u * s (three products);
-   b2 = cross(N, b1) in the format. */
+   b2 = cross(N, b1) in the format.  Contracted (the --fma copy: GCC 12
+   -O3 -mfma -ffp-contract=fast, read with -fdump-tree-widening_mul):
+   u.u = fma(u.z, u.z, u.x*u.x + u.y*u.y); b2.x and b2.y (vectorized) as
+   p - fused q, b2.z as fused p - q.  That is one fused build of these
+   lines, the study's model of ISPC's FMA targets; LLVM under ISPC's
+   fast-math (contract, reassoc) may fuse or reorder otherwise. */
 static void model_ospray(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	cv s, u[3];
@@ -193,16 +198,16 @@ static void model_ospray(cm *c, int P, const onb_method *m, const cv n[3], cv ou
 	} else {
 		u[0] = cm_neg(c, n[2]); u[1] = K(0.0); u[2] = n[0];
 	}
-	s = DIV(K(1.0), cm_sqrt(c, P, mk_dot3(c, P, u, u)));
+	s = DIV(K(1.0), cm_sqrt(c, P, mk_dot3_zf(c, P, u, u)));
 	for (i = 0; i < 3; i++)
 		out[i] = MUL(u[i], s);
-	mk_cross_out(c, P, n, out, 1, 1, "nnn");
+	mk_cross_out(c, P, n, out, 1, 1, "ssf");
 }
 
 FAMILY_DECLARE(ospray);
 const study_family family_ospray = {
 	"ospray", FAMILY_PASSES(ospray), names_ospray, mpfr, FAMILY_PAIRS(ospray), family_no_variant,
 	family_no_exact_zero, model_ospray, 1, zero_any_n, family_no_singular, family_meets_none,
-	family_no_fma_model,
+	family_fma_model,
 };
 #endif

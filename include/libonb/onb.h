@@ -44,6 +44,9 @@
  *     onb_osl_ortho        onb_osl_orthof         OpenShadingLanguage testrender ortho
  *     onb_ospray           onb_osprayf            OSPRay/rkcommon frame(N) (ISPC, IEEE)
  *     onb_osl_gabornoise   onb_osl_gabornoisef    OpenShadingLanguage make_orthonormals
+ *     onb_cauldron2        onb_cauldron2f         FidelityFX Cauldron2 CreateTangentVectors
+ *     onb_threejs          onb_threejsf           three.js PMREM ggxConvolution (TSL)
+ *     onb_q2rtx_fixed      onb_q2rtx_fixedf       this project: Quake II RTX (and nvpro) fixed
  *     onb_jolt_arm64       onb_jolt_arm64f        Jolt, its non-x86 build (scalar -x)
  *     onb_jolt             onb_joltf              Jolt GetNormalizedPerpendicular
  *     onb_jolt_fma         onb_jolt_fmaf            its default x86 build (fma)
@@ -1630,6 +1633,100 @@ static inline void ONB__K(osl_gabornoisef)(onb_vec3f n, onb_vec3f *b1, onb_vec3f
 	b2->z = v.x * a.y - v.y * a.x;
 }
 
+/* cauldron2 (AMD FidelityFX SDK, Cauldron2 framework raytracingcommon.hlsl
+   CreateTangentVectors, HLSL float read under IEEE as willems and rtao):
+   up = (0,0,1) when abs(n.z) < 0.99999f (NaN: false), else (1,0,0);
+   b1 = tangents[0] = normalize(cross(up, n)); b2 = tangents[1] =
+   cross(n, b1), not normalized.  Handedness +1.  On the unit sphere
+   |cross(up, n)|^2 >= 1 - 0.99999^2 = 2e-5: no singular direction.  The
+   float literal 0.99999f is kept in the double variant. */
+static inline void ONB__K(cauldron2)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 up;
+	up.x = 0.0; up.y = 0.0; up.z = 1.0;
+	if (!(fabs(n.z) < ONB__CAST(double, 0.99999f))) {
+		up.x = 1.0; up.z = 0.0;
+	}
+	*b1 = onb__sh_normalize(onb__sh_cross(up, n));
+	*b2 = onb__sh_cross(n, *b1);
+}
+static inline void ONB__K(cauldron2f)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f up;
+	up.x = 0.0f; up.y = 0.0f; up.z = 1.0f;
+	if (!(fabsf(n.z) < 0.99999f)) {
+		up.x = 1.0f; up.z = 0.0f;
+	}
+	*b1 = onb__sh_normalizef(onb__sh_crossf(up, n));
+	*b2 = onb__sh_crossf(n, *b1);
+}
+
+/* threejs (three.js src/nodes/pmrem/PMREMUtils.js ggxConvolution, a TSL
+   node shader that the WebGPU renderer emits as WGSL or GLSL, float, read
+   under IEEE as willems): up = select(abs(N.z) < 0.999, (0,0,1), (1,0,0))
+   (NaN: x); tangent = normalize(cross(up, N)); bitangent = cross(N,
+   tangent), not normalized.  b1 = tangent, b2 = bitangent.  Handedness +1.
+   cauldron2's arithmetic with the threshold 0.999 (a float in the shader,
+   kept as 0.999f in the double variant).  No singular direction. */
+static inline void ONB__K(threejs)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	onb_vec3 up;
+	up.x = 0.0; up.y = 0.0; up.z = 1.0;
+	if (!(fabs(n.z) < ONB__CAST(double, 0.999f))) {
+		up.x = 1.0; up.z = 0.0;
+	}
+	*b1 = onb__sh_normalize(onb__sh_cross(up, n));
+	*b2 = onb__sh_cross(n, *b1);
+}
+static inline void ONB__K(threejsf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	onb_vec3f up;
+	up.x = 0.0f; up.y = 0.0f; up.z = 1.0f;
+	if (!(fabsf(n.z) < 0.999f)) {
+		up.x = 1.0f; up.z = 0.0f;
+	}
+	*b1 = onb__sh_normalizef(onb__sh_crossf(up, n));
+	*b2 = onb__sh_crossf(n, *b1);
+}
+
+/* q2rtx_fixed (this project's fix of q2rtx, Quake II RTX
+   construct_ONB_frisvad, and of nvpro = frisvad_max, not shipped code):
+   Frisvad's Listing 2 for n.z >= 0 (-0 included), as both compute it;
+   below, Duff et al.'s lower-hemisphere formula (revisedONB) in place of
+   the threshold's fixed fallback, its pair turned a quarter (b1, b2) ->
+   (b2, -b1) so that n = -z keeps their fallback frame ((0, -1, 0),
+   (-1, 0, 0)): a = 1/(1 - n.z), b = n.x*n.y*a, b1 = (b, n.y*n.y*a - 1,
+   -n.y), b2 = (-(1 - n.x*n.x*a), b, -n.x).  The same frame at the six
+   axes (up to the sign of a zero).  Handedness +1. */
+static inline void ONB__K(q2rtx_fixed)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
+{
+	if (n.z < 0.0) {
+		const double a = 1.0 / (1.0 - n.z);
+		const double b = n.x * n.y * a;
+		b1->x = b; b1->y = n.y * n.y * a - 1.0; b1->z = -n.y;
+		b2->x = -(1.0 - n.x * n.x * a); b2->y = b; b2->z = -n.x;
+	} else {
+		const double a = 1.0 / (1.0 + n.z);
+		const double b = -n.x * n.y * a;
+		b1->x = 1.0 - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+		b2->x = b; b2->y = 1.0 - n.y * n.y * a; b2->z = -n.y;
+	}
+}
+static inline void ONB__K(q2rtx_fixedf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
+{
+	if (n.z < 0.0f) {
+		const float a = 1.0f / (1.0f - n.z);
+		const float b = n.x * n.y * a;
+		b1->x = b; b1->y = n.y * n.y * a - 1.0f; b1->z = -n.y;
+		b2->x = -(1.0f - n.x * n.x * a); b2->y = b; b2->z = -n.x;
+	} else {
+		const float a = 1.0f / (1.0f + n.z);
+		const float b = -n.x * n.y * a;
+		b1->x = 1.0f - n.x * n.x * a; b1->y = b; b1->z = -n.x;
+		b2->x = b; b2->y = 1.0f - n.y * n.y * a; b2->z = -n.y;
+	}
+}
+
 /* jolt_arm64: Jolt Vec3::GetNormalizedPerpendicular's non-SSE path (the
    arm64/NEON build; JPH_CROSS_PLATFORM_DETERMINISTIC off) and the NEON
    Cross: as jolt, but the perpendicular negates with unary minus
@@ -2858,7 +2955,7 @@ onb_status onb_basis_checkedh(const onb_method *method, onb_vec3h n, onb_vec3h *
 	X(frisvad) X(frisvad_max) X(duff) X(duff_branchless) X(stark) X(stark_fixed) X(pbrt_v3) \
 	X(rtow) X(tangent_cross_z) \
 	X(q2rtx) X(filament) X(filament_hm) X(capsaicin) X(capsaicin_fixed) X(unity) X(willems) X(gltf_viewer) X(rtao) X(rtao_fixed) X(mitsuba3) X(cycles_cross111) X(cycles_cross111_avx2) X(embree) X(luxcore) \
-	X(nori) X(osl_ortho) X(ospray) X(osl_gabornoise) X(jolt_arm64) \
+	X(nori) X(osl_ortho) X(ospray) X(osl_gabornoise) X(cauldron2) X(threejs) X(q2rtx_fixed) X(jolt_arm64) \
 	X(jolt) X(jolt_fma) X(bullet) X(mujoco) X(eigen) X(physx) X(rp3d) X(open3d) \
 	X(raylib) X(godot) X(directxmath) X(ogre) X(bx) X(blender) X(box3d) X(appleseed) X(babylon) X(godot_fixed) X(bx_fixed) \
 	X(physx_fixed) X(open3d_fixed) X(filament_fixed) X(luxcore_fixed)

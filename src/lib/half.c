@@ -542,6 +542,38 @@ void onb_osl_gabornoiseh(V n, V *b1, V *b2)
 	*b2 = hcross(v, a);
 }
 
+/* ---- cauldron2: up = z when |n.z| < 0.99999f (1 in binary16), else x; b2 not normalized ---- */
+void onb_cauldron2h(V n, V *b1, V *b2)
+{
+	const V up = habs(n.z) < hcst((double)0.99999f) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
+	*b1 = hnormalize_div(hcross(up, n));
+	*b2 = hcross(n, *b1);
+}
+
+/* ---- threejs: cauldron2's with 0.999f ---- */
+void onb_threejsh(V n, V *b1, V *b2)
+{
+	const V up = habs(n.z) < hcst((double)0.999f) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
+	*b1 = hnormalize_div(hcross(up, n));
+	*b2 = hcross(n, *b1);
+}
+
+/* ---- q2rtx_fixed: Frisvad above, Duff's lower branch turned a quarter below ---- */
+void onb_q2rtx_fixedh(V n, V *b1, V *b2)
+{
+	if (n.z < H0) {
+		const H a = hdiv(H1, hsub(H1, n.z));
+		const H b = hmul(hmul(n.x, n.y), a);
+		*b1 = hvec(b, hsub(hmul(hmul(n.y, n.y), a), H1), hneg(n.y));
+		*b2 = hvec(hneg(hsub(H1, hmul(hmul(n.x, n.x), a))), b, hneg(n.x));
+	} else {
+		const H a = hdiv(H1, hadd(H1, n.z));
+		const H b = hmul(hmul(hneg(n.x), n.y), a);
+		*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), b, hneg(n.x));
+		*b2 = hvec(b, hsub(H1, hmul(hmul(n.y, n.y), a)), hneg(n.y));
+	}
+}
+
 /* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */
 void HN(jolt_arm64h)(V n, V *b1, V *b2)
 {

@@ -132,6 +132,12 @@ static const onb_provenance P_OSPRAY = { "github.com/ospray/rkcommon", "f1641061
 static const onb_provenance P_OSL_GABOR = { "github.com/AcademySoftwareFoundation/OpenShadingLanguage", "ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa",
 	"src/liboslnoise/gabornoise.h:208-220", "BSD-3-Clause", "C++ (Imath)", "float (Vec3 = Imath::Vec3<Float>, Float = float)",
 	"source-level IEEE (compiler.cmake adds -ffp-contract=off with -mfma); Imath Vec3::normalize/length/lengthTiny and cross at Imath d0a0b115 src/Imath/ImathVec.h:1746-1749, 1892-1960; the frame (t, b, n) of gabornoise.cpp:239-242" };
+static const onb_provenance P_CAULDRON2 = { "github.com/GPUOpen-LibrariesAndSDKs/FidelityFX-SDK", "f4c1da8e92f3fe563b5c28c44e6267ce6b6b8eb2",
+	"Kits/Cauldron2/dx12/framework/shaders/raytracingcommon.hlsl:130-140", "MIT", "HLSL", "float",
+	"IEEE (source level: normalize(v) = v / sqrt(dot(v, v)), no mad contraction; GPU arithmetic is issue 42's); the same lines at d7531ae4 (SDK 1.0) framework/cauldron/framework/inc/shaders/raytracingcommon.hlsl:130-140; called by MapToCone (:142-)" };
+static const onb_provenance P_THREEJS = { "github.com/mrdoob/three.js", "afbc335b0a2c60f11033227544a227b821dd7fa3",
+	"src/nodes/pmrem/PMREMUtils.js:355-357", "MIT", "GLSL (three.js TSL node shader, emitted as GLSL or WGSL)", "float",
+	"IEEE (source level: normalize(v) = v / sqrt(dot(v, v)), no contraction; GPU arithmetic is issue 42's); ggxConvolution, the PMREM GGX prefilter of PMREMGenerator (WebGPU renderer)" };
 static const onb_provenance P_JOLT_ARM64 = { "github.com/jrouwe/JoltPhysics", "3b47ec390cb9b933769183eff599f72195c5873c",
 	"Jolt/Math/Vec3.inl:1119-1159", "MIT", "C++17 (NEON)", "float",
 	"the non-SSE path (Vec3.inl:1147-1157, JPH_CROSS_PLATFORM_DETERMINISTIC off) and NEON Cross (865-871); Build/CMakeLists.txt:263-272 gives non-x86 -ffp-contract=on, which fuses nothing here (aarch64-linux-gnu-gcc 12 -O2 under qemu-aarch64: these bits)" };
@@ -223,6 +229,12 @@ static const onb_method onb__table[] = {
 	  "none", "|n.x| < |n.y|", +1, 0, NAN, 0, ONB__PTRS(ospray), &P_OSPRAY },
 	{ "osl_gabornoise", "osl_gabornoise", "OpenShadingLanguage gabornoise make_orthonormals: v = n Imath-normalized; b1 = (0, v.z, -v.y) if abs(v.x) < 0.9f else (-v.z, 0, v.x), Imath-normalized; b2 = v x b1",
 	  "none", "|unit(n).x| < 0.9f", +1, 0, NAN, 0, ONB__PTRS(osl_gabornoise), &P_OSL_GABOR },
+	{ "cauldron2", "cauldron2", "FidelityFX Cauldron2 CreateTangentVectors: up = z if abs(z) < 0.99999f else x, b1 = normalize(cross(up, n)), b2 = cross(n, b1)",
+	  "none", "|n.z| = 0.99999f", +1, 0, NAN, 0, ONB__PTRS(cauldron2), &P_CAULDRON2 },
+	{ "threejs", "threejs", "three.js PMREM ggxConvolution (TSL): up = z if abs(z) < 0.999 else x, b1 = normalize(cross(up, n)), b2 = cross(n, b1)",
+	  "none", "|n.z| = 0.999f", +1, 0, NAN, 0, ONB__PTRS(threejs), &P_THREEJS },
+	{ "q2rtx_fixed", "q2rtx_fixed", "this project's fix of q2rtx (and nvpro): Frisvad's formula for n.z >= 0, Duff's lower branch turned a quarter, (b2, -b1), below",
+	  "none", "n.z < 0", +1, 0, NAN, 0, ONB__PTRS(q2rtx_fixed), NULL },
 	{ "jolt_arm64", "jolt", "Jolt Physics, as jolt, in its non-x86 build: the scalar perpendicular negates with -x (x = +0 gives -0), NEON cross, nothing fused",
 	  "none", "x*x > y*y (the rounded squares)", +1, 0, NAN, ONB__WILD_SCALAR, ONB__PTRS(jolt_arm64), &P_JOLT_ARM64 },
 	/* Engines' shipped code ("in the wild"): physics engines, geometry and

@@ -518,7 +518,7 @@ void HN(osl_orthoh)(V n, V *b1, V *b2)
 }
 
 /* ---- ospray: |x| < |y| picks (0, z, -y), 1/sqrt of the three-term dot, cross in the format ---- */
-void onb_osprayh(V n, V *b1, V *b2)
+void HN(osprayh)(V n, V *b1, V *b2)
 {
 	V u;
 	if ((float)habs(n.x) < (float)habs(n.y)) u = hvec(H0, n.z, hneg(n.y));
@@ -529,7 +529,7 @@ void onb_osprayh(V n, V *b1, V *b2)
 }
 
 /* ---- osl_gabornoise: n Imath-normalized, |v.x| < 0.9f, a Imath-normalized, b = v x a ---- */
-void onb_osl_gabornoiseh(V n, V *b1, V *b2)
+void HN(osl_gabornoiseh)(V n, V *b1, V *b2)
 {
 	V v = n, a;
 	H l = osl_lenh(v.x, v.y, v.z);
@@ -543,7 +543,7 @@ void onb_osl_gabornoiseh(V n, V *b1, V *b2)
 }
 
 /* ---- cauldron2: up = z when |n.z| < 0.99999f (1 in binary16), else x; b2 not normalized ---- */
-void onb_cauldron2h(V n, V *b1, V *b2)
+void HN(cauldron2h)(V n, V *b1, V *b2)
 {
 	const V up = habs(n.z) < hcst((double)0.99999f) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
 	*b1 = hnormalize_div(hcross(up, n));
@@ -551,7 +551,7 @@ void onb_cauldron2h(V n, V *b1, V *b2)
 }
 
 /* ---- threejs: cauldron2's with 0.999f ---- */
-void onb_threejsh(V n, V *b1, V *b2)
+void HN(threejsh)(V n, V *b1, V *b2)
 {
 	const V up = habs(n.z) < hcst((double)0.999f) ? hvec(H0, H0, H1) : hvec(H1, H0, H0);
 	*b1 = hnormalize_div(hcross(up, n));
@@ -559,7 +559,7 @@ void onb_threejsh(V n, V *b1, V *b2)
 }
 
 /* ---- q2rtx_fixed: Frisvad above, Duff's lower branch turned a quarter below ---- */
-void onb_q2rtx_fixedh(V n, V *b1, V *b2)
+void HN(q2rtx_fixedh)(V n, V *b1, V *b2)
 {
 	if (n.z < H0) {
 		const H a = hdiv(H1, hsub(H1, n.z));

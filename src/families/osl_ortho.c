@@ -82,19 +82,23 @@ static void mpfr(mpfr_kit *c, const onb_method *m, int br, const double loc[3], 
    |.| = +0 needs no comparison; m < +0 is never true): the largest |p_i|
    m, each |p_i| / m, m * sqrt of their squares' sum; 0 when m = 0.
    v >= 0 ? v : -v is read as v < 0 ? -v : v, m == 0 as !(m > 0) (the
-   same for every non-NaN value). */
-static cv length_tiny(cm *c, int P, const cv p[3], int z0)
+   same for every non-NaN value).  Branch points from id on (the
+   comparisons), zid the test m = 0; z0 = -1: no literal zero. */
+static cv length_tiny(cm *c, int P, const cv p[3], int z0, int id, int zid, int *zero)
 {
 	cv a[3], m;
-	int i, id = 2;
+	int i;
+	*zero = 0;
 	for (i = 0; i < 3; i++)
 		a[i] = i == z0 ? p[i] : (cm_branch(c, id++, CM_LT, p[i], K(0.0)) ? cm_neg(c, p[i]) : p[i]);
 	m = a[0];
 	for (i = 1; i < 3; i++)
 		if (i != z0 && cm_branch(c, id++, CM_LT, m, a[i]))
 			m = a[i];
-	if (!cm_branch(c, 6, CM_GT, m, K(0.0)))
+	if (!cm_branch(c, zid, CM_GT, m, K(0.0))) {
+		*zero = 1;
 		return K(0.0);
+	}
 	for (i = 0; i < 3; i++)
 		a[i] = DIV(a[i], m);
 	return MUL(m, cm_sqrt(c, P, mk_dot3(c, P, a, a)));
@@ -110,7 +114,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const double tiny = P == PREC_FLOAT ? 0x1p-125 : P == PREC_HALF ? 0x1p-13 : 0x1p-1021;
 	cv p[3], l, l2;
-	int i, z0;
+	int i, z0, zero;
 	(void)m;
 	if (cm_branch_abs(c, 0, CM_GT, n[0], K((double).01f))) {
 		p[0] = n[2]; p[1] = K(0.0); p[2] = cm_neg(c, n[0]); z0 = 1;
@@ -118,7 +122,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 		p[0] = K(0.0); p[1] = cm_neg(c, n[2]); p[2] = n[1]; z0 = 0;
 	}
 	l2 = mk_dot3(c, P, p, p);
-	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, p, z0) : cm_sqrt(c, P, l2);
+	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, p, z0, 2, 6, &zero) : cm_sqrt(c, P, l2);
 	if (cm_branch(c, 7, CM_GT, l, K(0.0)))
 		for (i = 0; i < 3; i++)
 			p[i] = DIV(p[i], l);
@@ -150,28 +154,38 @@ static void mpfr_gabor(mpfr_kit *c, const onb_method *m, int br, const double lo
 	kit_perp_cross(c, br ? 1 : 0, -1, c->w, r1, r2);
 }
 
-/* v = n / length(n), three divisions (a unit n: no lengthTiny, no zero
-   length); a = (0, v.z, -v.y) or (-v.z, 0, v.x) (the 0 a literal);
-   l = Imath's length(a) (lengthTiny below 2 * the smallest normal, never
-   for a unit n: |a|^2 >= 0.19); b1 = a / l unless l = 0; b2 = v x b1.
-   Branch points: 0 the threshold, 1 the tiny test, 2-6 lengthTiny's,
-   7 l != 0. */
+/* v = n / length(n), three divisions unless the length is 0 (Imath's
+   length: lengthTiny below 2 * the smallest normal, as a tiny non-unit n
+   takes it, never a unit one); a = (0, v.z, -v.y) or (-v.z, 0, v.x) (the
+   0 a literal); l = Imath's length(a) (|a|^2 >= 0.19 on the sphere);
+   b1 = a / l unless l = 0; b2 = v x b1.  Branch points (at most 8, bound.c):
+   0 the threshold, 1 a's tiny test, 2-4 and 6 a's lengthTiny, 7 a's
+   l != 0; 5 n's tiny test, infeasible on a unit n, so the lengthTiny of n
+   behind it reuses ids 0-4 and 6 (only CM_EXEC, which compares values,
+   runs it: tests/test_half's tiny inputs). */
 static void model_gabor(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const double tiny = P == PREC_FLOAT ? 0x1p-125 : P == PREC_HALF ? 0x1p-13 : 0x1p-1021;
 	cv v[3], a[3], l, l2;
-	int i, z0;
+	int i, z0, zero;
 	(void)m;
-	l = cm_sqrt(c, P, mk_dot3(c, P, n, n));
-	for (i = 0; i < 3; i++)
-		v[i] = DIV(n[i], l);
+	l2 = mk_dot3(c, P, n, n);
+	if (cm_branch(c, 5, CM_LT, l2, K(tiny))) {   /* never on a unit n: ids 0-4, 6 reused */
+		l = length_tiny(c, P, n, -1, 0, 6, &zero);
+		for (i = 0; i < 3; i++)
+			v[i] = zero ? n[i] : DIV(n[i], l);
+	} else {
+		l = cm_sqrt(c, P, l2);   /* >= sqrt(2 * the smallest normal) > 0 */
+		for (i = 0; i < 3; i++)
+			v[i] = DIV(n[i], l);
+	}
 	if (cm_branch_abs(c, 0, CM_LT, v[0], K((double).9f))) {
 		a[0] = K(0.0); a[1] = v[2]; a[2] = cm_neg(c, v[1]); z0 = 0;
 	} else {
 		a[0] = cm_neg(c, v[2]); a[1] = K(0.0); a[2] = v[0]; z0 = 1;
 	}
 	l2 = mk_dot3(c, P, a, a);
-	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, a, z0) : cm_sqrt(c, P, l2);
+	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, a, z0, 2, 6, &zero) : cm_sqrt(c, P, l2);
 	if (cm_branch(c, 7, CM_GT, l, K(0.0)))
 		for (i = 0; i < 3; i++)
 			a[i] = DIV(a[i], l);

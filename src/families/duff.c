@@ -20,10 +20,6 @@ int FAMILY_BRANCH(unity)(const onb_method *m, int prec, const double n[3])
 {
 	return FAMILY_BRANCH(duff)(m, prec, n);
 }
-int FAMILY_BRANCH(q2rtx_fixed)(const onb_method *m, int prec, const double n[3])
-{
-	return FAMILY_BRANCH(duff)(m, prec, n);
-}
 #endif
 
 #if FAMILY_PAIR_PASS
@@ -43,18 +39,6 @@ void FAMILY_PAIR(unity)(const onb_method *m, int br, const double loc[3], const 
 		r1[i] = xneg(r1[i]);
 		r2[i] = xneg(r2[i]);
 	}
-}
-void FAMILY_PAIR(q2rtx_fixed)(const onb_method *m, int br, const double loc[3], const xv *n, xv *r1, xv *r2, int *bad)
-{
-	xv t;
-	int i;
-	FAMILY_PAIR(duff)(m, br, loc, n, r1, r2, bad);
-	if (br)
-		for (i = 0; i < 3; i++) {   /* (b1, b2) -> (b2, -b1) */
-			t = r1[i];
-			r1[i] = r2[i];
-			r2[i] = xneg(t);
-		}
 }
 #endif
 
@@ -116,40 +100,5 @@ const study_family family_unity = {
 	"unity", FAMILY_PASSES(unity), names, mpfr_unity, FAMILY_PAIRS(unity), family_no_variant,
 	family_no_exact_zero, model_unity, 1, zero_any_n, family_no_singular, family_meets_none,
 	family_no_fma_model,  /* its --fma copy's fusions are not modelled yet */
-};
-
-/* ---- q2rtx_fixed ---- */
-static void mpfr_q2rtx_fixed(mpfr_kit *c, const onb_method *m, int br, const double loc[3], mpfr_t *n,
-                             mpfr_t *r1, mpfr_t *r2)
-{
-	int i;
-	mpfr(c, m, br, loc, n, r1, r2);
-	if (br)
-		for (i = 0; i < 3; i++) {   /* (b1, b2) -> (b2, -b1), exact */
-			mpfr_swap(r1[i], r2[i]);
-			mpfr_neg(r2[i], r2[i], MPFR_RNDN);
-		}
-}
-
-/* Duff's operations; below, the outputs exchanged and b2 negated (exact) */
-static void model_q2rtx_fixed(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
-{
-	const int lower = cm_branch(c, 0, CM_LT, n[2], K(0.0));
-	cv t[6];
-	int i;
-	(void)m;
-	mk_frisvad(c, P, lower ? -1 : 1, n, t);
-	for (i = 0; i < 3; i++) {
-		out[i] = lower ? t[3 + i] : t[i];
-		out[3 + i] = lower ? cm_neg(c, t[i]) : t[3 + i];
-	}
-}
-
-FAMILY_DECLARE(q2rtx_fixed);
-const study_family family_q2rtx_fixed = {
-	"q2rtx_fixed", FAMILY_PASSES(q2rtx_fixed), names, mpfr_q2rtx_fixed, FAMILY_PAIRS(q2rtx_fixed),
-	family_no_variant, family_no_exact_zero, model_q2rtx_fixed, 1, zero_any_n, family_no_singular,
-	family_meets_none,
-	family_no_fma_model,  /* a fix, studied as compiled (-ffp-contract=off) */
 };
 #endif

@@ -2859,7 +2859,7 @@ static inline void ONB__K(babylon)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 	y = radius * onb__fdlibm_cos(theta);
 	z = radius * onb__fdlibm_sin(theta) * onb__fdlibm_sin(phi);
 	len = sqrt(x * x + y * y + z * z);
-	if (!(len == 0.0 || len == 1.0)) {
+	if (!(ONB__IS0(len) || ONB__IS0(len - 1.0))) {   /* len == 0 or 1 (exact: Sterbenz) */
 		const double s = 1.0 / len;
 		x *= s; y *= s; z *= s;
 	}
@@ -2871,10 +2871,10 @@ static inline void ONB__K(babylon)(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2)
 static inline void ONB__K(babylonf)(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2)
 {
 	onb_vec3 nd, d1, d2;
-	nd.x = (double)n.x; nd.y = (double)n.y; nd.z = (double)n.z;
+	nd.x = ONB__CAST(double, n.x); nd.y = ONB__CAST(double, n.y); nd.z = ONB__CAST(double, n.z);
 	ONB__K(babylon)(nd, &d1, &d2);
-	b1->x = (float)d1.x; b1->y = (float)d1.y; b1->z = (float)d1.z;
-	b2->x = (float)d2.x; b2->y = (float)d2.y; b2->z = (float)d2.z;
+	b1->x = ONB__CAST(float, d1.x); b1->y = ONB__CAST(float, d1.y); b1->z = ONB__CAST(float, d1.z);
+	b2->x = ONB__CAST(float, d2.x); b2->y = ONB__CAST(float, d2.y); b2->z = ONB__CAST(float, d2.z);
 }
 
 /* open3d_fixed (this project's fix of open3d, not shipped code): Open3D's

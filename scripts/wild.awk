@@ -419,7 +419,7 @@ function outside(t) {
 	       " (this input, from a sweep, is normalized in float, and not among them)"
 }
 
-function findings(   i, e, s, t, n, o) {
+function findings(   i, e, s, t, n, o, pf) {
 	s = ""; n = sortrows("findings", o)
 	for (i = 1; i <= n; i++) {
 		e = o[i]
@@ -430,8 +430,9 @@ function findings(   i, e, s, t, n, o) {
 		s = s "- Worst input (float): `" (evalcmd(e, "float") == "" ? "not in the committed run" : evalcmd(e, "float")) "`.\n"
 		s = s "- Defect there: " W(e, "float", "found") (nonfin[t, "float"] > 0 ? "; non-finite output on " nonfin[t, "float"] " of the sampled unit inputs" : "") \
 		    (cstatus[t, "float"] == "singular" ? "; `onbstudy certify`: singular (" singtext(t) ")" : "; proven bound " W(e, "float", "bound") outside(t)) ".\n"
+		pf = patchof(e "_fixed", fixm[e]) ? e "_fixed" : fixm[e]   # an engine's own diff of a shared fix (nvpro_fixed.diff, "Method: q2rtx_fixed")
 		s = s "- Fix: " fix[e] (fixm[e] == "" ? "" : "; `" fixm[e] "` is proven " fixbound(e, "float") " in float and " fixbound(e, "double") " in double") \
-		    (patch(fixm[e]) ? "; as a change to the engine's file: [results/wild/patches/" fixm[e] ".diff](../results/wild/patches/" fixm[e] ".diff)" : "") ".\n\n"
+		    (patch(pf) ? "; as a change to the engine's file: [results/wild/patches/" pf ".diff](../results/wild/patches/" pf ".diff)" : "") ".\n\n"
 		s = s expand(para[e]) "\n\n"
 	}
 	return s == "" ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
@@ -448,6 +449,16 @@ function findlist(lim,   i, e, n, o, s) {
 		    (fixm[e] == "" ? "the change to its own lines in [docs/wild.md](docs/wild.md)" : "`" fixm[e] "`, proven " fixbound(e, "float")) " |\n"
 	}
 	return n == 0 ? "No engine is non-finite or above 1e-3 in float in the committed runs.\n" : s
+}
+# Whether results/wild/patches (PD) has a diff f whose header says it is
+# the fix m ("Method: m").
+function patchof(f, m,   l, r) {
+	if (m == "" || PD == "") return 0
+	r = 0
+	while ((getline l < (PD "/" f ".diff")) > 0)
+		if (l ~ ("^Method: *" m "$")) { r = 1; break }
+	close(PD "/" f ".diff")
+	return r
 }
 # Whether results/wild/patches (PD) has the fix f as a diff.
 function patch(f,   l, r) {

@@ -113,14 +113,20 @@ else bad "README's engines table is not the first $nr of docs/wild.md's findings
 # results/wild/patches: each NAME.diff is the fix NAME of a registry
 # method F (NAME's family, an engine's method), against F's file at F's
 # commit, names F's license, is a unified diff of that file, and is listed
-# in the patches' README
+# in the patches' README.  A fix of an engine outside its family names
+# both in its header: "Method: FIX" (else NAME) and "Engine: E" (a
+# registry method or alias with a commit: q2rtx_fixed patches q2rtx and
+# the alias nvpro)
 ./onbstudy list --format csv > "$T/list"
+./onbstudy list --aliases --format csv | tail -n +2 >> "$T/list"
 np=0
 for d in results/wild/patches/*.diff; do
 	[ -f "$d" ] || continue
 	np=$((np + 1)); p=$(basename "$d" .diff)
+	hm=$(sed -n 's/^Method: *\([a-z0-9_]*\).*/\1/p' "$d" | head -1); [ -n "$hm" ] && p=$hm
 	fam=$(awk -F, -v m="$p" '$1 == m { print $2 }' "$T/list")
 	if [ -z "$fam" ]; then bad "patches/$p.diff: $p is not a registry method"; continue; fi
+	he=$(sed -n 's/^Engine: *\([a-z0-9_]*\).*/\1/p' "$d" | head -1); [ -n "$he" ] && fam=$he
 	line=$(grep "^$fam," "$T/list")
 	c=$(printf '%s\n' "$line" | grep -oE '[0-9a-f]{40}' | head -1)
 	f=$(printf '%s\n' "$line" | sed -n 's/.*,"\([^":]*\):[0-9]*-[0-9]*",.*/\1/p')
@@ -129,7 +135,7 @@ for d in results/wild/patches/*.diff; do
 	if grep -q "^Of: .* at commit $c\$" "$d" && grep -q "^File: *$f\$" "$d" && grep -q "^License: $l " "$d" \
 		&& grep -q "^--- a/$f\$" "$d" && grep -q "^+++ b/$f\$" "$d" && grep -qE '^@@ -[0-9]+,[0-9]+ \+[0-9]+,[0-9]+ @@' "$d"; then ok
 	else bad "patches/$p.diff: not a diff of $fam's $f at $c naming its license $l"; fi
-	grep -q "($p.diff)" results/wild/patches/README.md && ok || bad "patches/$p.diff is not in results/wild/patches/README.md"
+	grep -q "($(basename "$d"))" results/wild/patches/README.md && ok || bad "patches/$(basename "$d") is not in results/wild/patches/README.md"
 done
 [ "$np" -ge 4 ] && ok || bad "results/wild/patches has $np diffs, fewer than 4"
 

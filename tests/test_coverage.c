@@ -293,9 +293,9 @@ static void tolerance_inputs(env *e, int sg)
 int main(void)
 {
 	static const char *names[] = { "hughes_moeller", "frisvad", "rtow" };
-	static study_kernel ks[64];
+	static study_kernel ks[STUDY_MAX_KERNELS];
 	static env e;
-	int nk = kernels_select(NULL, 0, ks, 64), i, j;
+	int nk = kernels_select(NULL, 0, ks, STUDY_MAX_KERNELS), i, j;
 	e.x = cert_ctx_new();
 	CHECK(nk > 0 && e.x != NULL, "setup");
 	if (nk <= 0 || !e.x)

@@ -92,7 +92,7 @@ static const double PIo2[] = {
 static void krp_finish(double z, int32_t *iq, int32_t jz, int32_t q0, int32_t ih, int32_t jp, double *y)
 {
 	static const double two24 = 1.67772160000000000000e+07, twon24 = 5.96046447753906250000e-08;
-	double fw, fq[20], q[20];
+	double fw, fq[20] = {0}, q[20] = {0};   /* zeroed: GCC cannot see that jz >= 0 writes fq[0] (-Wmaybe-uninitialized under the sanitizers); every read follows a write, as in V8 */
 	int32_t i, k;
 	if (z == 0.0) {
 		jz -= 1;

@@ -923,10 +923,14 @@ void HN(duff_comph)(V n, V *b1, V *b2)
 #if !defined(ONB__HALF_F16C)
 #if ONB__HALF_DISPATCH
 /* The public names: ifuncs resolved once, at load time, to the F16C copy
-   where the CPU has F16C, else to this file's own (soft) copy. */
+   where the CPU has F16C, else to this file's own (soft) copy.  A resolver
+   runs while the dynamic loader relocates, before a sanitizer's runtime
+   is set up, so it must not be instrumented (an instrumented resolver
+   crashed every sanitized binary at load). */
+#define ONB__RESOLVER __attribute__((no_sanitize_address, no_sanitize_undefined))
 #define ONB__HRESOLVE(m)                                                      \
 	void onb__##m##h_f16c(V n, V *b1, V *b2);                                 \
-	static void (*onb__##m##h_resolve(void))(V, V *, V *)                     \
+	ONB__RESOLVER static void (*onb__##m##h_resolve(void))(V, V *, V *)       \
 	{                                                                         \
 		__builtin_cpu_init();                                                 \
 		return __builtin_cpu_supports("f16c") ? onb__##m##h_f16c : onb__##m##h_soft; \
@@ -935,14 +939,14 @@ void HN(duff_comph)(V n, V *b1, V *b2)
 ONB_METHOD_LIST(ONB__HRESOLVE)
 ONB_FLOAT_METHOD_LIST(ONB__HRESOLVE)
 void onb__frisvad_thresholdh_f16c(V n, H t, V *b1, V *b2);
-static void (*onb__frisvad_thresholdh_resolve(void))(V, H, V *, V *)
+ONB__RESOLVER static void (*onb__frisvad_thresholdh_resolve(void))(V, H, V *, V *)
 {
 	__builtin_cpu_init();
 	return __builtin_cpu_supports("f16c") ? onb__frisvad_thresholdh_f16c : onb__frisvad_thresholdh_soft;
 }
 void onb_frisvad_thresholdh(V n, H t, V *b1, V *b2) __attribute__((ifunc("onb__frisvad_thresholdh_resolve")));
 V onb__frisvad_rotateh_f16c(V n, H x, H y, H z);
-static V (*onb__frisvad_rotateh_resolve(void))(V, H, H, H)
+ONB__RESOLVER static V (*onb__frisvad_rotateh_resolve(void))(V, H, H, H)
 {
 	__builtin_cpu_init();
 	return __builtin_cpu_supports("f16c") ? onb__frisvad_rotateh_f16c : onb__frisvad_rotateh_soft;

@@ -70,7 +70,7 @@ one() {
 	     cat "$w/rows"; echo '};'; echo 'const indep_row *indep_rows(size_t *n);';
 	     echo 'const indep_row *indep_rows(size_t *n) { *n = sizeof R / sizeof R[0]; return R; }'; } > "$w/p1.c" &&
 	   $CC $FLAGS -I"$w" -c -o "$w/p1.o" "$w/p1.c" 2>/dev/null &&
-	   $CC -o "$w/t1" "$d/driver.o" "$w/p1.o" -lm 2>/dev/null &&
+	   $CC -o "$w/t1" "$d/driver.o" "$w/p1.o" "$d/fdlibm.o" -lm 2>/dev/null &&
 	   ! INDEP_PARTIAL=1 INDEP_STOP_EARLY=1 timeout 60 "$w/t1" --quick > "$w/out1" 2>&1; then
 		compiled=1; changed=1; caught=1
 	elif $CC $FLAGS -I"$w" -c -o "$w/lib.o" tests/indep_lib.c 2>/dev/null && cmp -s "$w/lib.o" "$d/lib.o"; then
@@ -78,7 +78,7 @@ one() {
 		# a float initializer, an unused enum value): the same program,
 		# so the same outputs: unchanged, without running it
 		compiled=1
-	elif [ -f "$w/lib.o" ] && $CC -o "$w/t" "$d/driver.o" "$w/lib.o" -lm 2>/dev/null; then
+	elif [ -f "$w/lib.o" ] && $CC -o "$w/t" "$d/driver.o" "$w/lib.o" "$d/fdlibm.o" -lm 2>/dev/null; then
 		compiled=1
 		INDEP_FIRST=$first INDEP_STOP_EARLY=1 timeout 60 "$w/t" --quick > "$w/out" 2>&1; rc=$?
 		if [ $rc -ne 0 ]; then
@@ -105,9 +105,13 @@ awk -f scripts/mutants.awk include/libonb/onb.h > "$tmp/list"
 # MUTATE_EVERY=K: only every K-th mutant (a quick check of this script)
 if [ "${MUTATE_EVERY:-1}" -gt 1 ]; then awk -v k="$MUTATE_EVERY" 'NR % k == 1' "$tmp/list" > "$tmp/l2" && mv "$tmp/l2" "$tmp/list"; fi
 n=$(wc -l < "$tmp/list")
+# src/lib/fdlibm.c (V8's Math functions, called by the babylon kernel) is
+# not in the header: compiled once, with the unmutated header, and linked
+# into every mutant's program
 if ! $CC $FLAGS -Iinclude -DINDEP_SPLIT -c -o "$tmp/driver.o" tests/test_indep.c ||
+   ! $CC $FLAGS -Iinclude -c -o "$tmp/fdlibm.o" src/lib/fdlibm.c ||
    ! $CC $FLAGS -Iinclude -c -o "$tmp/lib.o" tests/indep_lib.c ||
-   ! $CC -o "$tmp/base" "$tmp/driver.o" "$tmp/lib.o" -lm || ! "$tmp/base" --quick > "$tmp/base.out"; then
+   ! $CC -o "$tmp/base" "$tmp/driver.o" "$tmp/lib.o" "$tmp/fdlibm.o" -lm || ! "$tmp/base" --quick > "$tmp/base.out"; then
 	echo "mutate: the unmutated header fails test_indep" >&2; exit 1
 fi
 sed -n 's/^outputs-hash //p' "$tmp/base.out" > "$tmp/base.hash"

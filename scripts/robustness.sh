@@ -31,9 +31,14 @@ nm=$(./onbstudy list --format csv 2>/dev/null | tail -n +2 | wc -l)
 
 # --- library
 libst="crashed or failed to build"
-if cc -std=c99 -O2 -ffp-contract=off -fno-math-errno -fno-trapping-math -fsanitize=address,undefined \
-      -fno-sanitize-recover=all -Wall -Wextra -Wpedantic -Wshadow -Iinclude \
-      -o "$tmp/lib_cases" tests/robust/lib_cases.c src/lib/*.c -lm 2> "$tmp/lib_cc"; then
+# half.c a second time with F16C conversions, as the Makefile's
+# half_f16c.o: the copy that its ifuncs pick (an empty object elsewhere)
+rflags="-std=c99 -O2 -ffp-contract=off -fno-math-errno -fno-trapping-math -fsanitize=address,undefined -fno-sanitize-recover=all"
+f16c=; [ "$(uname -m)" = x86_64 ] && f16c=-mf16c
+if cc $rflags $f16c -DONB__HALF_F16C -Iinclude -c -o "$tmp/half_f16c.o" src/lib/half.c 2> "$tmp/lib_cc" &&
+   cc $rflags \
+      -Wall -Wextra -Wpedantic -Wshadow -Iinclude \
+      -o "$tmp/lib_cases" tests/robust/lib_cases.c src/lib/*.c "$tmp/half_f16c.o" -lm 2>> "$tmp/lib_cc"; then
 	timeout 120 "$tmp/lib_cases" > "$tmp/lib.tsv" 2> "$tmp/lib.err"
 	rc=$?
 	if [ $rc -eq 0 ] && [ ! -s "$tmp/lib.err" ]; then libst=ok

@@ -254,7 +254,7 @@ $(B)/families/pair_l/%.o: src/families/%.c include/libonb/onb.h $(STUDY_HDR) Mak
 # compiled model (scripts/code-keys.sh), so that a changed kernel or model
 # makes new keys for exactly the methods whose code changed.
 CODE_KEY_OBJ = $(filter $(B)/lib/split/outline-%,$(LIB_OBJ)) $(FAMILY_SRC:src/families/%.c=$(B)/families/%.o) \
-               $(FAMILY_PASS_OBJ) $(B)/methods/fma_kernels.o $(B)/methods/kernels.o
+               $(FAMILY_PASS_OBJ) $(B)/methods/fma_kernels.o $(B)/methods/kernels.o $(B)/lib/half.o $(B)/lib/half_f16c.o
 $(B)/certify/code_keys.h: scripts/code-keys.sh $(CODE_KEY_OBJ)
 	@mkdir -p $(@D)
 	sh scripts/code-keys.sh $(B) > $@.tmp && mv $@.tmp $@

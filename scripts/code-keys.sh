@@ -10,7 +10,9 @@
 #     pair_l compilations, for every family FILE.c defines
 #     (CODE_KEY("family", FAMILY, 0, SUM));
 #   the --fma copies (B/methods/fma_kernels.o) and the directions
-#     (B/methods/kernels.o), each one object for all its methods.
+#     (B/methods/kernels.o), each one object for all its methods;
+#   the binary16 kernels (B/lib/half.o, half_f16c.o: CODE_KEY("half", ...)),
+#     which certify --precision half's keys take (cert_half_key).
 # A method's certify key takes its kernel's and its family's sums, so
 # that a changed kernel or model makes new keys for exactly the methods
 # whose compiled code changed (tests/certify_resume.sh).
@@ -43,3 +45,5 @@ s=$(sum "$B/methods/fma_kernels.o") || exit 1
 echo "CODE_KEY(\"fma\", \"\", 0, ${s}UL)"
 s=$(sum "$B/methods/kernels.o") || exit 1
 echo "CODE_KEY(\"direction\", \"\", 0, ${s}UL)"
+s=$(sum "$B/lib/half.o" "$B/lib/half_f16c.o") || exit 1
+echo "CODE_KEY(\"half\", \"\", 0, ${s}UL)"

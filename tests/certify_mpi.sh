@@ -16,6 +16,7 @@
 #    and no --resume) rank 0 writes one when the job is ended: the resumed
 #    run starts from exactly the regions it said it kept;
 #  - after the end the same command line says the work is done;
+#  - --precision half on 1 and 2 ranks: onbstudy certify's rows and stdout;
 #  - a bad option is refused once, exit 2, no hang.
 # Skipped (with a clear line) when Open MPI is not installed.
 . "$(dirname "$0")/lib.sh"
@@ -40,6 +41,22 @@ for nt in 1:2 2:1 4:1; do
 	cmp -s "$T/ref.out" "$d.out" && ok || bad "-n $n x $t threads: stdout differs"
 	grep -q "^# mpi: $n ranks x $t threads" "$d/certify.csv" && ok || bad "-n $n: no '# mpi: $n ranks x $t threads' provenance"
 	grep -q "CPU seconds in all ranks; regions computed per rank" "$d.err" && ok || bad "-n $n: no count of regions per rank"
+done
+
+# 1b. --precision half (issues 43 x 46): on 1 and 2 ranks, certify-half.csv's
+#     rows and stdout are onbstudy certify's, and its provenance names the ranks
+H="--quick --precision half --methods duff --sectors 1 --depth 2 --azimuths 2"
+./onbstudy certify $H --out "$T/href" > "$T/href.out" 2> "$T/href.err" || bad "onbstudy certify $H: $(cat "$T/href.err")"
+grep -v '^wrote ' "$T/href.out" > "$T/href.sum"   # the summary, without the output's path
+for n in 1 2; do
+	d="$T/h$n"
+	OMP_NUM_THREADS=1 $MPIRUN -n $n ./onbstudy-mpi certify $H --out "$d" > "$d.out" 2> "$d.err"
+	rc=$?
+	data "$d/certify-half.csv" > "$d.data" 2> /dev/null
+	[ $rc -eq 0 ] && data "$T/href/certify-half.csv" | cmp -s - "$d.data" && ok ||
+		bad "half, -n $n: exit $rc, certify-half.csv's rows differ: $(head -3 "$d.err")"
+	grep -v '^wrote ' "$d.out" | cmp -s "$T/href.sum" - && ok || bad "half, -n $n: stdout differs"
+	grep -q "^# mpi: $n ranks x 1 threads" "$d/certify-half.csv" && ok || bad "half, -n $n: no '# mpi: $n ranks' provenance"
 done
 
 # 2. a rank dies (rank 1 in the first pass and the images pass, rank 0 in

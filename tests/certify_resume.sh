@@ -14,6 +14,8 @@
 #  - --reuse: adding a method to a finished run computes that method only,
 #    a changed key is recomputed, and the rows equal a from-scratch run's;
 #  - --check-keys: 0 on a current run, 1 naming a stale key;
+#  - --precision half: killed and resumed gives the uninterrupted rows and
+#    stdout; float and half checkpoints are not resumed as each other;
 #  - a kernel compiled anew (rtow's float kernel with its threshold 0.9f
 #    made 0.90001f, which none of the key's 96 probe inputs tells apart:
 #    only its compiled code does) changes exactly one code checksum
@@ -138,6 +140,7 @@ mkdir -p "$T/inc" "$T/b/lib/split" "$T/b/certify" && cp -r include/libonb "$T/in
 	! cmp -s include/libonb/onb.h "$T/inc/libonb/onb.h" && ok || bad "rtow's float threshold not found in onb.h"
 for o in build/lib/split/outline-*.o; do ln -s "$root/$o" "$T/b/lib/split/"; done
 ln -s "$root/build/families" "$T/b/families"; ln -s "$root/build/methods" "$T/b/methods"
+ln -s "$root/build/lib/half.o" "$root/build/lib/half_f16c.o" "$T/b/lib/"
 rm "$T/b/lib/split/outline-f-rtow.o"
 cc_of() { make -s -n -B "$1" 2> /dev/null | grep "^[^ ]*cc .* -o $1\$" | tail -1; }
 c1=$(cc_of build/lib/split/outline-f-rtow.o | sed "s| -Iinclude | -I$T/inc -Iinclude |; s| -o build/| -o $T/b/|")
@@ -158,7 +161,40 @@ grep -q '2 of 3 methods and precisions re-used' "$T/chg2.err" && ok || bad "--re
 data "$T/chg2/certify-times.csv" | awk -F, 'NR > 1 { s[$1] += $7 + $8 + $9 + $10 + $11 + $12 } END { exit !(s["frisvad"] == 0 && s["naive"] == 0 && s["rtow"] > 0) }' &&
 	ok || bad "--reuse with the changed rtow: rtow not recomputed, or frisvad or naive not re-used"
 
-# 8. bad input: exit 2, one message, nothing written
+# 8. certify --precision half (issues 43 x 46): killed after its 4th region
+#    and resumed, the same certify-half.csv rows and stdout as an
+#    uninterrupted run (and its keys name the format); then the same line
+#    says done; a float checkpoint resumed in half, and a half one in
+#    float, are refused with the formats named, exit 2
+H="--quick --precision half --methods duff --sectors 1 --depth 2 --azimuths 2"
+./onbstudy certify $H --out "$T/href" > "$T/href.out" 2> "$T/href.err" || bad "certify $H: $(cat "$T/href.err")"
+ONB_CERT_KILL=run:4 ./onbstudy certify $H --resume "$T/hk" --checkpoint-every 0 > /dev/null 2> /dev/null
+rc=$?
+[ $rc -ne 0 ] && [ -f "$T/hk/certify-checkpoint.bin" ] && [ ! -f "$T/hk/certify-half.csv" ] && ok ||
+	bad "half, ONB_CERT_KILL=run:4: exit $rc, $(ls "$T/hk" 2> /dev/null | tr '\n' ' ')"
+grep -q '^settings precision=half ' "$T/hk/certify-checkpoint.bin" && ok || bad "the half checkpoint's settings do not name precision=half"
+./onbstudy certify --quick --quiet --precision float --methods duff --resume "$T/hk" > /dev/null 2> "$T/hf.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'checkpoint of certify --precision half, and this run is --precision float' "$T/hf.err" && ok ||
+	bad "a half checkpoint resumed in float: exit $rc: $(cat "$T/hf.err")"
+./onbstudy certify $H --resume "$T/hk" > "$T/hk.out" 2> "$T/hk.err"
+rc=$?
+[ $rc -eq 0 ] && grep -q 'continuing from its checkpoint (4 of ' "$T/hk.err" && ok || bad "half resumed: exit $rc: $(cat "$T/hk.err")"
+data "$T/href/certify-half.csv" > "$T/href.data"
+data "$T/hk/certify-half.csv" 2> /dev/null | cmp -s "$T/href.data" - && ok || bad "half, killed and resumed: certify-half.csv's rows differ"
+grep -v '^wrote ' "$T/href.out" > "$T/href.sum"   # the summary, without the output's path
+grep -v '^wrote ' "$T/hk.out" | cmp -s "$T/href.sum" - && grep -q '^duff  *half ' "$T/hk.out" && ok || bad "half, killed and resumed: stdout differs"
+[ ! -e "$T/hk/certify-checkpoint.bin" ] && grep -q '^duff,half,[0-9a-f]\{16\}$' "$T/hk/certify-keys.csv" && ok ||
+	bad "half: a checkpoint left, or no duff,half key: $(cat "$T/hk/certify-keys.csv" 2> /dev/null)"
+./onbstudy certify $H --resume "$T/hk" > /dev/null 2> "$T/hd.err"
+[ $? -eq 0 ] && grep -q 'the work is done' "$T/hd.err" && ok || bad "half after the end: $(cat "$T/hd.err")"
+ONB_CERT_KILL=run:1 run --methods frisvad --resume "$T/fk" --checkpoint-every 0 > /dev/null 2>&1
+./onbstudy certify $H --resume "$T/fk" > /dev/null 2> "$T/fh.err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'checkpoint of certify --precision float, double or both, and this run is --precision half' "$T/fh.err" &&
+	[ -f "$T/fk/certify-checkpoint.bin" ] && ok || bad "a float checkpoint resumed in half: exit $rc: $(cat "$T/fh.err")"
+
+# 10. bad input: exit 2, one message, nothing written
 for a in "--checkpoint-every -1" "--checkpoint-every x" "--resume $T/bad1 --out $T/bad2"; do
 	run --methods frisvad $a > /dev/null 2> "$T/bad.err"
 	rc=$?

@@ -203,6 +203,18 @@ for c in bench threshold eval; do
 	fi
 done
 
+# --- binary16 (issue 43): bench and table take --precision half; certify
+#     --precision half takes --resume but not the float run's options; a
+#     table of files without half rows, asked for half, is refused
+R bench --precision quarter --out "$out"
+R bench --precision half --methods nope --out "$out"
+R table --precision quarter --out "$out"
+printf '# x\nmethod,precision,mode,threads,size_class,mbases_per_s,ns_per_call\nduff,float,batch,1,l2,100,1\n' > "$tmp/fb.csv"
+printf '# x\nmethod,precision,distribution,rmse,max_defect\nduff,float,uniform,1e-8,1e-7\n' > "$tmp/fs.csv"
+R table --precision half --bench "$tmp/fb.csv" --summary "$tmp/fs.csv" --out "$out"
+R certify --precision half --reuse "$tmp" --out "$out"
+R certify --precision half --resume "$out" --out "$tmp/other"
+
 # --- SIGINT during a sweep: the earlier summary.csv survives, the partial
 # figures go to *.partial.csv marked '# PARTIAL'
 d="$tmp/int"

@@ -117,9 +117,11 @@ static void usage(FILE *f)
 	"                    exceed 65504) or unbounded (no enclosure: an underflowing\n"
 	"                    length near a pole); writes DIR/certify-half.csv.  Takes\n"
 	"                    --methods, --sectors, --band, --quick, --quiet, --out,\n"
-	"                    --depth, --azimuths and --arith (the profile's binary16 row;\n"
-	"                    the found side is the IEEE half kernel's scan; an unbounded\n"
-	"                    row names the operation where the profile gives no bound)\n");
+	"                    --depth, --azimuths, --resume, --checkpoint-every and --arith\n"
+	"                    (the profile's binary16 row; the found side is the IEEE half\n"
+	"                    kernel's scan; an unbounded row names the operation where the\n"
+	"                    profile gives no bound); onbstudy-mpi certify --precision half\n"
+	"                    spreads its regions over the ranks\n");
 	fprintf(f,
 	"  --budget N        boxes bounded per region at most (default 6000)\n"
 	"  --samples N       inputs sampled per region before the boxes (default 1000)\n"
@@ -150,7 +152,8 @@ static void usage(FILE *f)
 	"                    continue a run that was stopped; before the first checkpoint it\n"
 	"                    starts from the beginning, after the end it says the work is\n"
 	"                    done.  A checkpoint of other options, another revision of a\n"
-	"                    model or kernel, or a corrupted one is refused\n"
+	"                    model or kernel, of the other format (half against float,\n"
+	"                    double or both), or a corrupted one is refused\n"
 	"  --checkpoint-every S  with --resume: at most every S seconds (default 60; 0:\n"
 	"                    after every region)\n"
 	"  --reuse DIR       take the results of every method and precision whose key (its\n"
@@ -303,7 +306,8 @@ static int half_options_bad(const cert_cli *c)
 	if (c->half ? !c->set_other : c->depth < 0 && c->az < 0)
 		return 0;
 	study_error(c->half ? "--precision half takes --methods, --sectors, --band, --depth, --azimuths, --arith, "
-	                      "--quick, --quiet and --out alone" : "--depth and --azimuths go with --precision half");
+	                      "--quick, --quiet, --out, --resume and --checkpoint-every alone" :
+	                      "--depth and --azimuths go with --precision half");
 	return 1;
 }
 
@@ -391,7 +395,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'E': if (parse_every(a.arg, c)) goto bad; break;
 		default: goto bad;
 		}
-		c->set_other |= v > 0 && strchr("bntSTFRUKE", v) != NULL;
+		c->set_other |= v > 0 && strchr("bntSTFUK", v) != NULL;
 	}
 	if (cli_no_rest(&a))
 		goto bad;
@@ -1538,6 +1542,8 @@ static int run_half(const cert_cli *c)
 	h.arith = c->arith_given ? c->o.arith : NULL;
 	h.depth = c->depth >= 0 ? (int)c->depth : c->quick ? 3 : 6;
 	h.az = c->az >= 0 ? (int)c->az : c->quick ? 4 : 16;
+	h.resume = c->resume;
+	h.every = c->ck_every;
 	return cert_half_run(&h);
 }
 

@@ -14,7 +14,9 @@
  * every n.z of a band is tried (ch_scan), so the worst input is found
  * nearly everywhere without the float search's walks.
  */
+#include <inttypes.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +24,9 @@
 #include <omp.h>
 #endif
 #include "certify_half.h"
+#include "certify.h"
+#include "checkpoint.h"
+#include "keys.h"
 #include "regions.h"
 #include "common/options.h"
 #include "common/output.h"
@@ -247,25 +252,117 @@ typedef struct {
 	int k, i;
 } ch_task;
 
-static void ch_run_all(const ch_opts *o, const study_kernel *ks, const cm_method **ms, const cert_region *reg,
-                       const ch_task *t, int nt, ch_result *res)
+/* A region's ch_result travels as a cert_result (bound, found, found_n,
+   status: CH_*, unb_op; scanned in boxes, nonfinite in probes; the rest zero), so
+   that certify's checkpoint (checkpoint.c) and onbstudy-mpi's passes
+   (cert_distribute) carry it unchanged. */
+static void ch_to_cert(const ch_result *h, cert_result *r)
+{
+	memset(r, 0, sizeof *r);
+	r->bound = h->bound;
+	r->found = h->found;
+	memcpy(r->found_n, h->worst, sizeof r->found_n);
+	r->status = h->status;
+	r->boxes = h->scanned;
+	r->probes = h->nonfinite;
+	r->unb_op = h->unb_op;
+}
+static void ch_from_cert(const cert_result *r, ch_result *h)
+{
+	memset(h, 0, sizeof *h);
+	h->bound = r->bound;
+	h->found = r->found;
+	memcpy(h->worst, r->found_n, sizeof h->worst);
+	h->status = r->status;
+	h->scanned = r->boxes;
+	h->nonfinite = r->probes;
+	h->unb_op = r->unb_op;
+}
+
+/* The run's state: its tasks, their results, the checkpoint (--resume). */
+typedef struct {
+	const ch_opts *o;
+	const study_kernel *ks;
+	const cm_method *const *ms;
+	const cert_region *reg;
+	const ch_task *t;
+	cert_result *res;      /* per task */
+	ck_state ck;           /* flag[i] & CK_RUN: task i is done */
+	const char *dir;       /* where the checkpoint goes (rank 0, --resume); NULL: none */
+	double last;
+	int failed, commits, kill_at;
+} ch_run;
+
+/* Task i's result r: into the results and the checkpoint, written when
+   due; ONB_CERT_KILL=run:N (tests/certify_resume.sh) kills the process
+   after its N-th commit. */
+static void ch_commit(ch_run *s, int i, const cert_result *r)
+{
+#pragma omp critical(ch_commit)
+	if (!s->failed) {
+		s->res[i] = *r;
+		s->ck.base[i] = *r;
+		s->ck.flag[i] |= CK_RUN;
+		if (s->dir && study_now() - s->last >= s->o->every) {
+			s->failed = ck_write(s->dir, &s->ck) != 0;
+			s->last = study_now();
+		}
+		if (s->kill_at && ++s->commits == s->kill_at)
+			raise(SIGKILL);
+	}
+}
+
+static void ch_one(cert_ctx *x, int i, void *arg)
+{
+	ch_run *s = arg;
+	ch_result h;
+	cert_result r;
+	bound_ctx *b;
+	(void)x;
+	if ((s->ck.flag[i] & CK_RUN) || s->failed)
+		return;
+	memset(&h, 0, sizeof h);
+	h.unb_op = -1;
+	if ((b = bound_new()) != NULL) {
+		bound_set_arith(b, s->o->arith);   /* NULL: ieee; resets the unbounded operation */
+		ch_region(b, &s->ks[s->t[i].k], s->ms[s->t[i].k], &s->reg[s->t[i].i], s->o->depth, s->o->az, &h);
+	} else {
+		h.status = CH_UNBOUNDED;
+		h.bound = INFINITY;
+	}
+	bound_free(b);
+	ch_to_cert(&h, &r);
+	ch_commit(s, i, &r);
+}
+
+static void ch_commit_remote(void *arg, int i, const cert_result *r)
+{
+	ch_commit(arg, i, r);
+}
+
+/* Every task not done yet, here (OpenMP) or over onbstudy-mpi's ranks.
+   0, or -1 (a checkpoint could not be written, a rank failed). */
+static int ch_run_all(ch_run *s, int nt)
 {
 	int j;
-#pragma omp parallel
-	{
-		bound_ctx *b = bound_new();
-#pragma omp for schedule(dynamic, 1)
-		for (j = 0; j < nt; j++) {
-			if (!b) {
-				res[j].status = CH_UNBOUNDED;
-				res[j].bound = INFINITY;
-				continue;
-			}
-			bound_set_arith(b, o->arith);   /* NULL: ieee; resets the unbounded operation */
-			ch_region(b, &ks[t[j].k], ms[t[j].k], &reg[t[j].i], o->depth, o->az, &res[j]);
-		}
-		bound_free(b);
+	if (cert_distribute) {
+		cert_pass p;
+		memset(&p, 0, sizeof p);
+		p.n = nt;
+		p.flag = CK_RUN;
+		p.fn = ch_one;
+		p.arg = s;
+		p.commit = ch_commit_remote;
+		p.res = s->res;
+		p.flags = s->ck.flag;
+		p.nres = nt;
+		p.failed = &s->failed;
+		return cert_distribute->run(&p) != 0 || s->failed ? -1 : 0;
 	}
+#pragma omp parallel for schedule(dynamic, 1)
+	for (j = 0; j < nt; j++)
+		ch_one(NULL, j, s);
+	return s->failed ? -1 : 0;
 }
 
 /* --arith: the operation an unbounded row owes it to (certify.c's unbounded_by) */
@@ -330,6 +427,8 @@ static int ch_write(const ch_opts *o, const study_kernel *ks, int nk, const cert
 	if (study_mkdir_p(dir) != 0 || study_out_open(&out, dir, "certify-half.csv") != 0)
 		return 1;
 	study_provenance(out.f, "certify", 0, ch_threads());
+	if (cert_distribute && cert_distribute->note)
+		fprintf(out.f, "# %s\n", cert_distribute->note);
 	fprintf(out.f, "# binary16: u = 2^-11, normal min 2^-14, subnormal step 2^-24, max 65504; "
 	               "depth %d, %d azimuths per sector, %d sectors; %.1f s\n", o->depth, o->az, o->sectors, secs);
 	fprintf(out.f, "# bound: proven over every binary16 rounding of a unit vector in the region (inf: none; status says why)\n");
@@ -375,37 +474,178 @@ static int ch_select(const ch_opts *o, study_kernel *ks, const cm_method **ms)
 	return nk;
 }
 
+/* The settings line of the checkpoint and the keys file: checkpoint.c
+   tells a half run's by its first word, precision=half. */
+static void ch_settings(const ch_opts *o, char *buf, size_t cap)
+{
+	char d[4096];
+	arith_describe(o->arith ? o->arith : arith_ieee(), d, sizeof d);   /* the profile and every allowance */
+	snprintf(buf, cap, "precision=half sectors=%d depth=%d azimuths=%d band=%s%a,%a arith=%s:%016" PRIx64, o->sectors,
+	         o->depth, o->az, o->band ? "" : "none:", o->band ? o->band_lo : 0.0, o->band ? o->band_hi : 0.0,
+	         (o->arith ? o->arith : arith_ieee())->name, cert_hash_str(CERT_FNV0, d));
+}
+
+/* The groups (one per method, format half) with their keys (the settings,
+   the engine, the regions, cert_half_key), and the state's arrays.  0 or -1. */
+static int ch_state(ch_run *s, int nk, int nt, size_t nreg, ck_group *g, char *settings, size_t cap)
+{
+	int k, ng = 0;
+	ch_settings(s->o, settings, cap);
+	for (k = 0; k < nk; k++)
+		if (s->ms[k]) {
+			uint64_t h = cert_hash_str(CERT_FNV0, settings), mk = cert_half_key(&s->ks[k], s->ms[k]);
+			h = cert_hash_str(h, cert_engine());
+			h = cert_hash_bytes(h, &mk, sizeof mk);
+			h = cert_hash_bytes(h, s->reg, nreg * sizeof *s->reg);
+			snprintf(g[ng].name, sizeof g[ng].name, "%s", s->ks[k].name);
+			g[ng].prec = PREC_HALF;
+			g[ng++].key = h;
+		}
+	s->ck.settings = settings;
+	s->ck.engine = cert_engine();
+	s->ck.ng = ng;
+	s->ck.nt = nt;
+	s->ck.g = g;
+	s->ck.flag = calloc((size_t)nt + 1, 1);
+	s->ck.base = calloc((size_t)nt + 1, sizeof *s->ck.base);
+	s->ck.ref = calloc((size_t)nt + 1, sizeof *s->ck.ref);
+	return s->ck.flag && s->ck.base && s->ck.ref ? 0 : -1;
+}
+
+/* --resume DIR (rank 0): 0 to run (the checkpoint's results loaded, when
+   there is one), 1 when the work is done, -1 refused (a message said why). */
+static int ch_resume(ch_run *s)
+{
+	const char *dir = s->o->resume;
+	char path[4096];
+	int i, n = 0, r, *cur;
+	FILE *f;
+	if (!dir)
+		return 0;
+	if ((r = ck_read(dir, &s->ck)) < 0)
+		return -1;
+	if (r == 0) {
+		for (i = 0; i < s->ck.nt; i++)
+			if (s->ck.flag[i]) {
+				s->res[i] = s->ck.base[i];
+				n++;
+			}
+		fprintf(stderr, "certify: --resume %s: continuing from its checkpoint (%d of %d regions run)\n", dir, n,
+		        s->ck.nt);
+		return 0;
+	}
+	if (!(cur = calloc((size_t)s->ck.ng + 1, sizeof *cur)))
+		return -1;
+	r = keys_compare(dir, &s->ck, cur, 0);
+	for (i = 0; i < s->ck.ng && r == 0; i++)
+		if (!cur[i]) {
+			study_error("--resume %s: its finished run is of another revision of %s half's model or kernel", dir,
+			            s->ck.g[i].name);
+			r = 1;
+		}
+	free(cur);
+	if (r > 0)
+		return -1;
+	if (r == 0 && snprintf(path, sizeof path, "%s/certify-half.csv", dir) < (int)sizeof path && (f = fopen(path, "r"))) {
+		fclose(f);
+		fprintf(stderr, "certify: --resume %s: the work is done (its certify-half.csv is of this command line and "
+		        "every key is current); nothing to do\n", dir);
+		return 1;
+	}
+	fprintf(stderr, "certify: --resume %s: no checkpoint there yet: starting from the beginning\n", dir);
+	return 0;
+}
+
+/* ONB_CERT_KILL=run:N on rank ONB_CERT_KILL_RANK (default 0): as certify.c's. */
+static int ch_kill_at(void)
+{
+	const char *e = getenv("ONB_CERT_KILL"), *kr = getenv("ONB_CERT_KILL_RANK");
+	if ((cert_distribute ? cert_distribute->rank : 0) != (kr ? atoi(kr) : 0))
+		return 0;
+	return e && strncmp(e, "run:", 4) == 0 ? atoi(e + 4) : 0;
+}
+
+/* After the run (rank 0): certify-half.csv, then with --resume the keys
+   file (so that the same command line is "done") and no checkpoint. */
+static int ch_finish(ch_run *s, int nk, int nt, double secs)
+{
+	ch_result *hr = calloc((size_t)nt + 1, sizeof *hr);
+	char path[4096];
+	int i, rc;
+	if (!hr) {
+		study_error("out of memory");
+		return 1;
+	}
+	for (i = 0; i < nt; i++)
+		ch_from_cert(&s->res[i], &hr[i]);
+	rc = ch_write(s->o, s->ks, nk, s->reg, s->t, nt, hr, secs);
+	free(hr);
+	if (rc == 0 && s->o->resume) {
+		if (keys_write(s->o->resume, &s->ck, study_cmdline))
+			return 1;
+		if (snprintf(path, sizeof path, "%s/%s", s->o->resume, CK_NAME) < (int)sizeof path)
+			remove(path);
+	}
+	return rc;
+}
+
 int cert_half_run(const ch_opts *o)
 {
 	static study_kernel ks[STUDY_MAX_KERNELS];
 	static const cm_method *ms[STUDY_MAX_KERNELS];
 	static cert_region reg[CH_MAXREG];
+	static char settings[512];
+	const int writes = !cert_distribute || cert_distribute->rank == 0;
 	ch_task *t;
-	ch_result *res;
+	ch_run s;
+	ck_group *g;
 	size_t nreg, i;
-	int nk = ch_select(o, ks, ms), k, nt = 0, rc;
+	int nk = ch_select(o, ks, ms), k, nt = 0, rc = 1, r;
 	double t0;
 	if (nk < 0)
 		return ONB_EXIT_USAGE;
 	nreg = o->band ? regions_band(PREC_HALF, o->sectors, o->band_lo, o->band_hi, reg, CH_MAXREG)
 	               : regions_default(PREC_HALF, o->sectors, reg, CH_MAXREG);
+	memset(&s, 0, sizeof s);
 	t = malloc((size_t)nk * nreg * sizeof *t + 1);
-	res = calloc((size_t)nk * nreg + 1, sizeof *res);
-	if (!t || !res) {
-		free(t);
-		free(res);
-		study_error("out of memory");
-		return 1;
-	}
-	for (k = 0; k < nk; k++)
+	s.res = calloc((size_t)nk * nreg + 1, sizeof *s.res);
+	g = calloc((size_t)nk + 1, sizeof *g);
+	for (k = 0; t && k < nk; k++)
 		for (i = 0; ms[k] && i < nreg; i++) {
 			t[nt].k = k;
 			t[nt++].i = (int)i;
 		}
+	s.o = o; s.ks = ks; s.ms = ms; s.reg = reg; s.t = t;
+	if (!t || !s.res || !g || ch_state(&s, nk, nt, nreg, g, settings, sizeof settings) != 0) {
+		study_error("out of memory");
+		goto done;
+	}
+	r = writes ? ch_resume(&s) : 0;
+	if (r == 0 && writes && o->resume && study_mkdir_p(o->resume) != 0)
+		r = -1;
+	if (cert_distribute) {   /* rank 0's outcome and state to every rank */
+		cert_distribute->share(&r, sizeof r);
+		cert_distribute->share(s.res, (size_t)nt * sizeof *s.res);
+		cert_distribute->share(s.ck.flag, (size_t)nt);
+	}
+	if (r != 0) {
+		rc = r < 0 ? ONB_EXIT_USAGE : 0;
+		goto done;
+	}
+	s.dir = writes ? o->resume : NULL;
+	s.last = study_now();
+	s.kill_at = ch_kill_at();
 	t0 = study_now();
-	ch_run_all(o, ks, ms, reg, t, nt, res);
-	rc = ch_write(o, ks, nk, reg, t, nt, res, study_now() - t0);
+	if (ch_run_all(&s, nt) != 0)
+		study_error("certify --precision half: the run stopped (a checkpoint could not be written, or a rank failed)");
+	else
+		rc = writes ? ch_finish(&s, nk, nt, study_now() - t0) : 0;
+done:
 	free(t);
-	free(res);
+	free(s.res);
+	free(g);
+	free(s.ck.flag);
+	free(s.ck.base);
+	free(s.ck.ref);
 	return rc;
 }

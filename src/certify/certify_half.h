@@ -55,6 +55,8 @@ typedef struct {
 	int sectors, depth, az, quiet, band;
 	double band_lo, band_hi;
 	const arith_profile *arith;   /* --arith other than ieee, or NULL */
+	const char *resume;     /* --resume DIR (out is DIR too): checkpoint, keys */
+	double every;           /* --checkpoint-every S */
 } ch_opts;
 int cert_half_run(const ch_opts *o);
 

@@ -99,6 +99,13 @@ static void first_difference(const char *a, const char *b, char *out, size_t cap
 	snprintf(out, cap, "(no difference)");
 }
 
+/* A settings line of certify --precision half (certify_half.c), whose
+   tasks are binary16 regions: never to be resumed as float or double's. */
+static int is_half(const char *settings)
+{
+	return strncmp(settings, "precision=half ", 15) == 0;
+}
+
 /* The head of the checkpoint against s: 0, or -1 after a message. */
 static int check_head(FILE *f, uint64_t *h, const char *path, const ck_state *s)
 {
@@ -111,6 +118,12 @@ static int check_head(FILE *f, uint64_t *h, const char *path, const ck_state *s)
 	}
 	if (get_line(f, h, line, sizeof line) || strncmp(line, "settings ", 9) != 0) {
 		study_error("--resume: %s: corrupted (no settings line)", path);
+		return -1;
+	}
+	if (is_half(line + 9) != is_half(s->settings)) {
+		study_error("--resume: %s is a checkpoint of certify --precision %s, and this run is --precision %s: "
+		            "resume it with its own precision, or give this run another directory", path,
+		            is_half(line + 9) ? "half" : "float, double or both", is_half(s->settings) ? "half" : "float, double or both");
 		return -1;
 	}
 	if (strcmp(line + 9, s->settings) != 0) {

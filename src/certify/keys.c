@@ -9,6 +9,7 @@
 #include "common/output.h"
 #include "inputs/rng.h"
 #include "model/model_int.h"
+#include "common/prec.h"
 
 #ifndef ONB_CERT_ENGINE
 #define ONB_CERT_ENGINE "unknown"
@@ -158,6 +159,39 @@ uint64_t cert_method_key(cert_ctx *x, const study_kernel *k, const cm_method *m,
 		d = cert_probe(x, k, prec, n, &nonfinite);
 		h = hash_double(h, d);
 		h = hash_int(h, nonfinite);
+	}
+	cm_free(c);
+	return h;
+}
+
+uint64_t cert_half_key(const study_kernel *k, const cm_method *m)
+{
+	uint64_t h = cert_hash_str(CERT_FNV0, k->name);
+	cm *c = cm_new(CM_EXEC);
+	int i, j;
+	if (!c)
+		return 0;
+	if (!k->m || !k->m->arrayh) {
+		cm_free(c);
+		return 0;
+	}
+	h = hash_int(h, PREC_HALF);
+	h = hash_int(h, m->nbranch);
+	h = hash_int(h, (long)m->zero_any_n);
+	h = hash_int(h, m->contract);
+	h = hash_int(h, (long)cert_code_sum("half", "", 0));
+	h = hash_int(h, (long)cert_code_sum("family", k->fam ? k->fam->name : k->name, 0));
+	for (i = 0; i < KEY_INPUTS; i++) {
+		double u[3], n[3];
+		uint16_t in[3], out[6];
+		key_input(i, u);
+		for (j = 0; j < 3; j++) {
+			n[j] = prec_half_round(u[j]);
+			in[j] = prec_half_bits(n[j]);
+		}
+		h = hash_model_run(h, c, m, PREC_HALF, n);
+		k->m->arrayh(in, out, out + 3);
+		h = cert_hash_bytes(h, out, sizeof out);
 	}
 	cm_free(c);
 	return h;

@@ -25,6 +25,11 @@
    table row (branch count, contraction, direction) and the checksums of
    the compiled kernel and model (cert_code_sum). */
 uint64_t cert_method_key(cert_ctx *x, const study_kernel *k, const cm_method *m, int prec);
+/* The same for certify --precision half (certify_half.c): the format, the
+   name, the model's run in binary16 and the half kernel's output bits on
+   the key's inputs rounded to binary16, and the compiled half kernels
+   (cert_code_sum("half", "", 0)) and family model. */
+uint64_t cert_half_key(const study_kernel *k, const cm_method *m);
 
 /* The checksum of a compiled object the keys take (scripts/code-keys.sh):
    kind "kernel" (name: a registry method; prec: PREC_FLOAT or

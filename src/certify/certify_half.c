@@ -450,6 +450,23 @@ static int ch_write(const ch_opts *o, const study_kernel *ks, int nk, const cert
 	return 0;
 }
 
+/* Does a selected method's model take a seed's bound (mvf_seed)?  Those
+   whose normalization is a seed (model_kit.h's mk_norm) and embree's rsqrt
+   (embree.c).  The others never ask for one, and a run of them skips the
+   scan of every float that SEED_RSQRTSS's bound costs (seeds.c: ~7 s of
+   CPU); a model that asks anyway still gets the same bound, computed in
+   its parallel region on one thread (seed_bound_get is pthread_once). */
+static int ch_uses_seeds(const study_kernel *ks, const cm_method **ms, int nk)
+{
+	int k;
+	for (k = 0; k < nk; k++)
+		if (ms[k] && ks[k].m && (ks[k].m->norm == ONB__NORM_INVSQRT || ks[k].m->norm == ONB__NORM_RSQRT ||
+		                         ks[k].m->norm == ONB__NORM_RSQRT_NR ||
+		                         (ks[k].fam && strcmp(ks[k].fam->name, "embree") == 0)))
+			return 1;
+	return 0;
+}
+
 /* The kernels with a half entry and a rounding model (ms[k] NULL: none). */
 static int ch_select(const ch_opts *o, study_kernel *ks, const cm_method **ms)
 {
@@ -464,7 +481,7 @@ static int ch_select(const ch_opts *o, study_kernel *ks, const cm_method **ms)
 			return -1;
 		}
 	}
-	for (sk = 0; sk < NSEED; sk++) {   /* computed once, outside the parallel regions */
+	for (sk = 0; sk < NSEED && ch_uses_seeds(ks, ms, nk); sk++) {   /* computed once, outside the parallel regions */
 		seed_bound sb;
 		if (seed_bound_get((seed_kind)sk, &sb) != 0) {
 			study_error("the seed bound of %s could not be computed", seed_name((seed_kind)sk));

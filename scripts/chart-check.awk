@@ -33,6 +33,12 @@
 #    hatch); the colours come from scripts/palette.txt, whose any two
 #    differ by a CIELAB delta-E of at least 10 (tests/plots_cli.sh), so a
 #    colour shared is a method missing from it or a band drawn twice.
+# 8. (with nfband=1: the line charts) no two methods of one plot are
+#    drawn alike in dash and marker together: each has its own pair in
+#    scripts/palette.txt (palette.sh --check), as it has its own colour,
+#    so a pair shared is a method missing from the table or a style
+#    assigned by place rather than by method (NAME+fma excepted).  The
+#    dash is the series' stroke-dasharray divided by its smallest entry.
 # A text's box is estimated from gnuplot's font size (width 0.56 em per
 # character, height 1 em, on the baseline), so "overlap" means boxes
 # that share more than 1.5 px each way.  Texts turned by other than 0 or
@@ -63,6 +69,17 @@ function rgb(s) { gsub(/ /, "", s); return s }
 cur && st[cur] != "" && !(cur in sty) && match($0, /stroke:rgb\([ 0-9,]+\)' d='[^']*'/) { sty[cur] = "hatch " rgb(substr($0, RSTART + 7, RLENGTH - 7)) }
 cur && st[cur] != "" && !(cur in sty) && match($0, /fill = 'rgb\([ 0-9,]+\)' fill-opacity = '[0-9.]+'/) { sty[cur] = "solid " rgb(substr($0, RSTART + 8, RLENGTH - 8)) }
 cur && st[cur] != "" && !(cur in sty) && match($0, /(stroke|color)='rgb\([ 0-9,]+\)'/) { sty[cur] = rgb(substr($0, RSTART, RLENGTH)); sub(/^[a-z]+=/, "", sty[cur]) }
+# a series' line style (check 8): its first path's dash pattern and its
+# first marker's symbol
+function dashkey(s,   a, k, i, lo, r) {
+	if (!match(s, /stroke-dasharray='[0-9.,]+'/)) return "solid"
+	k = split(substr(s, RSTART + 18, RLENGTH - 19), a, ","); lo = a[1] + 0
+	for (i = 2; i <= k; i++) if (a[i] + 0 < lo) lo = a[i] + 0
+	for (i = 1; i <= k; i++) r = r (i > 1 ? "," : "") sprintf("%.2g", a[i] / lo)
+	return r
+}
+cur && st[cur] != "" && !(cur in sdash) && /<path stroke=/ { sdash[cur] = dashkey($0) }
+cur && st[cur] != "" && !(cur in spt) && match($0, /xlink:href='#gpPt[0-9]+'/) { spt[cur] = substr($0, RSTART + 17, RLENGTH - 18) }
 # a non-finite band (drawn behind, before its plot's series)
 /<polygon fill = 'rgb\(251, 227, 212\)'/ { nfpend = 1 }
 # the end of a plot's group (a text's group ends in the rule below)
@@ -154,7 +171,7 @@ END {
 			fail(sprintf("series \"%s\" draws nothing and does not say so", t))
 	overdata()
 	floors()
-	if (nfband) nfbands()
+	if (nfband) { nfbands(); linestyles() }
 	colours()
 	exit bad > 0
 }
@@ -225,5 +242,17 @@ function colours(   s, t, b, k, seen2) {
 		if ((spl[s], k) in owner && !(st[s] !~ /^floor/ && owner[spl[s], k] == b))
 			fail(sprintf("\"%s\" and \"%s\" share the colour %s in one plot", own[spl[s], k], st[s], sty[s]))
 		if (!((spl[s], k) in owner)) { owner[spl[s], k] = (st[s] ~ /^floor/) ? st[s] : b; own[spl[s], k] = st[s] }
+	}
+}
+# linestyles(): no two methods of a plot in one dash and marker (check 8)
+function linestyles(   s, t, b, k, seen3) {
+	for (s = 1; s <= ns; s++) {
+		if (st[s] == "" || st[s] ~ /^floor/ || !((s in sdash) || (s in spt)) || ((spl[s], st[s]) in seen3)) continue
+		seen3[spl[s], st[s]] = 1
+		t = st[s]; sub(/ .*/, "", t); b = t; sub(/\+fma$/, "", b)
+		k = "dash " ((s in sdash) ? sdash[s] : "none") ", marker " ((s in spt) ? spt[s] : "none")
+		if ((spl[s], k) in lsown && lsown[spl[s], k] != b)
+			fail(sprintf("\"%s\" and \"%s\" share the line style (%s) in one plot", lsname[spl[s], k], st[s], k))
+		if (!((spl[s], k) in lsown)) { lsown[spl[s], k] = b; lsname[spl[s], k] = st[s] }
 	}
 }

@@ -1,6 +1,7 @@
 #!/bin/sh
-# palette.sh [--update | --check] - one colour per method, in every chart:
-# scripts/palette.txt, "method colour" per line, read by scripts/styles.sh
+# palette.sh [--update | --check] - one colour and one line style per
+# method, in every chart: scripts/palette.txt, "method colour dash point"
+# per line, read by scripts/styles.sh
 # (so by every chart script: plots.sh, poles.sh, certify-plot.sh, the
 # tradeoff and bar charts).  A method keeps its colour everywhere, whatever
 # else a run holds; NAME+fma rows take NAME's colour (dashed).
@@ -12,7 +13,9 @@
 #             the registry alone is named, not failed: no committed chart
 #             draws it yet),
 #             when two rows' colours differ by a CIELAB delta-E below 10, or
-#             when a colour is near-black (L* < 25: it reads as the axes')
+#             when a colour is near-black (L* < 25: it reads as the axes'),
+#             when a row has no dash (1-7) and point (1-15), or two rows
+#             share both (the pair is a method's own, as its colour is)
 # PALETTE=FILE reads and writes FILE instead of scripts/palette.txt.
 # A new row's colour (scripts/palette.awk): the families of one hue group
 # (duff_branchless after duff) keep related hues, within 30 degrees of the
@@ -44,7 +47,10 @@ missing=$(awk 'NR == FNR { if (!/^#/) have[$1] = 1; next } !($1 in have) { print
 case $mode in
 --check)
 	close=$(awk -f "$HERE/lab.awk" -f /dev/stdin "$TABLE" <<'EOF'
-!/^#/ && NF >= 2 { m[++n] = $1; c[n] = $2 }
+!/^#/ && NF >= 2 { m[++n] = $1; c[n] = $2
+	if ($3 !~ /^[1-7]$/ || $4 !~ /^([1-9]|1[0-5])$/) printf "%s has no dash (1-7) and point (1-15): \"%s\"; ", $1, $0
+	else if (($3, $4) in ds) printf "%s and %s share dash %s and point %s; ", ds[$3, $4], $1, $3, $4
+	else ds[$3, $4] = $1 }
 END { for (i = 1; i <= n; i++) { lab_of(c[i]); if (LAB_L < 25) printf "%s %s is near-black (L* %.0f); ", m[i], c[i], LAB_L
 	for (j = i + 1; j <= n; j++) if (delta_e(c[i], c[j]) < 10) printf "%s and %s: delta-E %.1f; ", m[i], m[j], delta_e(c[i], c[j]) } }
 EOF

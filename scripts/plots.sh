@@ -46,12 +46,17 @@ gp() { # gp SCRIPT VARS...: run gnuplot, keeping its messages
 	script=$1; shift
 	gnuplot -e "here='$HERE'; nosvg=${NOSVG:-0}; $*" "$HERE/$script" >>"$LOG" 2>&1 || { cat "$LOG" >&2; echo "plots: gnuplot failed on $script" >&2; exit 1; }
 	made=$((made + 1))
-	# a palette PNG (pngquant, when installed): a third of the size; at 64
-	# colours the anti-aliased greys took most entries and pngquant merged
-	# methods' colours (frisvad and frisvad_max in one red); at 256 a series
-	# of many pixels keeps its colour within a delta-E of 4, one of few
-	# pixels can shift by up to 14 (docs/chart-grading.md)
+	# a palette PNG (pngquant, when installed): a third of the size, for
+	# the charts of flat fills and markers (maps, bars, tradeoff: at most
+	# 0.11% of their non-white pixels moved by a CIELAB delta-E above 5,
+	# scripts/png-shift.py); not for the line charts (lines.gp,
+	# threshold.gp): 256 entries cannot hold the anti-aliased edges of 20
+	# thin lines, and pngquant moved 2.3-5.9% of their non-white pixels by
+	# more than 5, a thin series' own colour by up to 45 (eigen in
+	# wild/nonunit_float; --nofs: the same), so they stay full-colour, at
+	# three times the size (docs/chart-grading.md)
 	o=$(echo "$*" | sed -n "s/.*out='\([^']*\)'.*/\1/p")
+	case $script in lines.gp|threshold.gp) o='';; esac
 	if [ -n "$o" ] && command -v pngquant >/dev/null 2>&1; then
 		pngquant --force --skip-if-larger --speed 1 --output "$o.png" 256 "$o.png" 2>>"$LOG" || true
 	fi

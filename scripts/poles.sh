@@ -61,7 +61,7 @@ for s in south north; do
 		print s }')'"
 	set -- $(range "$files" 2)
 	gnuplot -e "$band $common; files='$files'; titles='$W/titles_$s'; nf=$nf; out='$DIR/${s}_pole_float'; col=2; logx=1; xmin=$1; xmax=$2; ymin=$3; ymax=$4; zero_x=$ZX; zero_label='$zl'; xl='$xl'; yl_key='YL_ERROR'; ttl='float, every n.z within 0.1 of the $s pole, $az azimuths ($inputs inputs per method; frisvad\\_rotate: its direction error)'" "$HERE/lines.gp"
-	command -v pngquant >/dev/null 2>&1 && { pngquant --force --skip-if-larger --speed 1 --output "$DIR/${s}_pole_float.png" 256 "$DIR/${s}_pole_float.png" || true; }
+	# (a line chart: full colour, no pngquant; plots.sh's gp() says why)
 done
 
 # The worst input per method at each pole, next to the sampled sweep's worst

@@ -11,7 +11,9 @@ BEGIN {
 	split(HEAD, h, " "); for (i in h) head[h[i]] = 1
 	# one colour per method in every chart: scripts/palette.txt (a method
 	# it lacks falls back to a shade of its group's hue: palette.sh --check)
-	if (PAL != "") while ((getline l < PAL) > 0) if (l !~ /^#/ && split(l, a, " ") >= 2) pal[a[1]] = tolower(a[2])
+	if (PAL != "") while ((getline l < PAL) > 0) if (l !~ /^#/ && split(l, a, " ") >= 2) { pal[a[1]] = tolower(a[2])
+		# and its own dash and point (columns 3 and 4), as its colour
+		if (a[4] != "") { pdash[a[1]] = a[3] + 0; ppt[a[1]] = a[4] + 0 } }
 }
 # the registry family; else the shortest family (or, without a registry,
 # other method) whose name is a prefix of this one, followed by "_"
@@ -75,8 +77,12 @@ END {
 				m = mem[g, k]; b = m; sub(/\+fma$/, "", b)
 				if ((b in head) != pass) continue
 				s = slot[b]
-				d = (m ~ /\+fma$/) ? 2 : ((s - 1) % 5) + 1
-				print m, p, (b in pal) ? pal[b] : lab_shade(hue[(hi - 1) % nh + 1], s, nb), d, pts[(s - 1) % 6 + 1], (b in head) ? 3 : 1.5, g
+				# the method's own dash and point (palette.txt); NAME+fma:
+				# NAME's point, dashed (dash 2, or 4 where NAME's is 2); a
+				# method the table lacks: by its place in its group
+				d = (b in pdash) ? pdash[b] : ((s - 1) % 5) + 1
+				if (m ~ /\+fma$/) d = (d == 2) ? 4 : 2
+				print m, p, (b in pal) ? pal[b] : lab_shade(hue[(hi - 1) % nh + 1], s, nb), d, (b in ppt) ? ppt[b] : pts[(s - 1) % 6 + 1], (b in head) ? 3 : 1.5, g
 			}
 	}
 }

@@ -12,8 +12,8 @@
 # scripts/palette.txt, the same in every chart (scripts/palette.sh: related
 # hues within a group, every colour far from every other); only a method
 # the table lacks gets a shade computed here (its group's hue, Okabe-Ito,
-# spread in CIELAB lightness: palette.sh --check names such methods).  A
-# dash type and point type per member.  The
+# spread in CIELAB lightness: palette.sh --check names such methods).  Its
+# dash type and point type are its palette.txt row's too.  The
 # headline methods (frisvad, frisvad_max, duff) are drawn wide and first,
 # so that each thin variant drawn over them stays visible where the two
 # coincide.  Groups are packed, in registry order and never split, into

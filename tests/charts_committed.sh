@@ -25,7 +25,9 @@
 #     committed runs has its colour in scripts/palette.txt, any two apart;
 #     chart-check.awk's check 7 on every committed chart: no two series of
 #     one panel in one colour (and it fails on a chart with duff_wide
-#     drawn in duff's colour);
+#     drawn in duff's colour); check 8 on every committed line chart: no
+#     two methods of one panel in one dash and marker (it fails on
+#     duff_wide drawn in duff's dash and marker);
 # Not checked here: the PNGs themselves (the same gnuplot scripts draw
 # them; they are looked at by eye before each commit).
 . "$(dirname "$0")/lib.sh"
@@ -85,7 +87,14 @@ cw() { awk -v t="$1" 'index($0, "<title>" t "</title>") { f = 1; next } f && mat
 c1=$(cw duff); c2=$(cw duff_wide)
 [ -n "$c1" ] && [ -n "$c2" ] && [ "$c1" != "$c2" ] && ok || bad "north_pole_float: duff ($c1) and duff_wide ($c2) not found in distinct colours"
 sed "s/$c2/$c1/g" "$T/poles/north_pole_float.svg" > "$T/m4.svg"
-for m in m1 m2 m3 m4; do
+# two methods of one panel in one dash and marker (check 8): duff_wide
+# drawn in duff's dash pattern and point symbol
+dw() { awk -v t="$1" -v w="$2" 'index($0, "<title>" t "</title>") { f = 1; next } f && w == "d" && /<path stroke=/ { print (match($0, /stroke-dasharray=\047[^\047]*\047/) ? substr($0, RSTART, RLENGTH) : ""); exit } f && w == "p" && match($0, /#gpPt[0-9]+/) { print substr($0, RSTART, RLENGTH); exit }' "$T/poles/north_pole_float.svg"; }
+d1=$(dw duff d); d2=$(dw duff_wide d); p1=$(dw duff p); p2=$(dw duff_wide p)
+[ "$d1 $p1" != "$d2 $p2" ] && [ -n "$p1" ] && [ -n "$p2" ] && ok || bad "north_pole_float: duff ($d1 $p1) and duff_wide ($d2 $p2) not found in distinct line styles"
+awk -v t=duff_wide -v d1="$d1" -v p1="$p1" -v p2="$p2" '/<g id="gnuplot_plot_/ { f = 0 } index($0, "<title>" t "</title>") { f = 1 }
+	f { gsub(/ stroke-dasharray=\047[^\047]*\047/, ""); if (d1 != "") sub(/<path stroke=\047[^\047]*\047/, "& " d1); gsub(p2 "\047", p1 "\047") } { print }' "$T/poles/north_pole_float.svg" > "$T/m5.svg"
+for m in m1 m2 m3 m4 m5; do
 	cmp -s "$T/$m.svg" "$T/poles/north_pole_float.svg" && bad "$m: the broken chart is not broken (the SVG changed form?)"
 	awk -v nfband=1 -f scripts/chart-check.awk "$T/$m.svg" > /dev/null 2>&1 && bad "chart check passed a broken chart ($m)" || ok
 done

@@ -12,15 +12,17 @@
 #   - no text lies over a drawn line segment or marker of a series;
 #   - every accuracy-floor band names methods drawn in its own panel;
 #   - no two series of one plot share a colour, nor two floor bands a
-#     colour and fill;
+#     colour and fill; (line charts) no two methods of a plot share a
+#     dash and a marker;
 # that the tradeoff chart's Pareto circles are onbstudy table's (a file
 # whose pareto column breaks the table's rule is refused);
 # and the colours of scripts/styles.sh: within a hue group every two
 # shades differ by a CIELAB delta-E of at least 15, none is near-black,
 # duff and duff_branchless share a group and sit side by side; the
 # palette (scripts/palette.sh --check: any two methods 10 apart, none
-# near-black, fails on broken tables) and a method's colour the same in
-# runs that hold different methods.
+# near-black, each with a dash and point pair of its own, fails on broken
+# tables) and a method's colour the same in runs that hold different
+# methods.
 # Not checked mechanically, and why:
 #   - a text over a filled area or an image (a map's cells): only lines
 #     and markers are data paths in gnuplot's SVG;
@@ -135,7 +137,17 @@ out=$(sh scripts/palette.sh --check 2>&1) && ok || bad "$out"
 sed 's/^duff_wide .*/duff_wide #0072b2/' scripts/palette.txt > "$T/p1.txt"
 grep -v '^jolt ' scripts/palette.txt > "$T/p2.txt"
 sed 's/^jolt .*/jolt #1a1a1a/' scripts/palette.txt > "$T/p3.txt"
-for p in p1 p2 p3; do PALETTE="$T/$p.txt" sh scripts/palette.sh --check > /dev/null 2>&1 && bad "palette.sh --check passed a broken table ($p)" || ok; done
+# (and a method's line style, dash and point, its own: a table giving
+# duff_wide duff's pair, one where jolt has no dash and point)
+set -- $(awk '$1 == "duff" { print $3, $4 }' scripts/palette.txt)
+sed "s/^\(duff_wide [^ ]*\) .*/\1 $1 $2/" scripts/palette.txt > "$T/p4.txt"
+sed 's/^\(jolt [^ ]*\) .*/\1/' scripts/palette.txt > "$T/p5.txt"
+cmp -s "$T/p4.txt" scripts/palette.txt && bad "p4: duff_wide's row not changed"
+for p in p1 p2 p3 p4 p5; do PALETTE="$T/$p.txt" sh scripts/palette.sh --check > /dev/null 2>&1 && bad "palette.sh --check passed a broken table ($p)" || ok; done
+# every method of the reference run drawn in its own dash and point
+# (styles.sh column 4 and 5): no two share both
+out=$(awk '{ k = $4 " " $5; b = $1; sub(/\+fma$/, "", b) } (k in s) && s[k] != b { printf "%s and %s: dash and point %s; ", s[k], $1, k } !(k in s) { s[k] = b }' "$T/sty")
+[ -z "$out" ] && ok || bad "line styles shared: $out"
 # a method keeps its colour whatever else a run holds: duff's in the whole
 # reference run and in a run of duff and jolt alone is its palette row
 awk -F, '/^#/ || $1 == "method" || $1 == "duff" || $1 == "jolt"' results/reference/summary.csv results/wild/summary.csv > "$T/two.csv"

@@ -3069,8 +3069,33 @@ onb_vec3  onb_frisvad_rotate_outline (onb_vec3  n, double x, double y, double z)
 onb_vec3f onb_frisvad_rotate_outlinef(onb_vec3f n, float  x, float  y, float  z);
 
 /* Out of line (ONB__INLINE 0, see the top): the method names call
-   libonb.a's copies, so the caller gets the studied bits. */
-#if !ONB__INLINE
+   libonb.a's copies, so the caller gets the studied bits.  With GCC and
+   clang each name is declared as the copy itself (an asm label: a call of
+   onb_NAME is a call of the symbol onb_NAME_outline, &onb_NAME its
+   address).  Through an inline wrapper, GCC at -O3 -march=native (C and
+   C++) first copied n into a local and then into the call's argument:
+   two more stores per call, and in float a reload of n.z through the
+   store buffer, and a call by the name cost 1.1-1.2x the same call of
+   onb_NAME_outline[f] (results/clients/entries.md, "name (out of line)").
+   Other compilers get the wrappers. */
+#if !ONB__INLINE && defined(__GNUC__)
+#define ONB__SYM_(p, s) #p s
+#define ONB__SYM(p, s) ONB__SYM_(p, s)
+#define ONB__LABEL(s) __asm__(ONB__SYM(__USER_LABEL_PREFIX__, s))
+#define ONB__WRAP(m) \
+	void onb_##m(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) ONB__LABEL("onb_" #m "_outline"); \
+	void onb_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) ONB__LABEL("onb_" #m "_outlinef");
+ONB_METHOD_LIST(ONB__WRAP)
+#undef ONB__WRAP
+#define ONB__WRAP_F(m) \
+	void onb_##m##f(onb_vec3f n, onb_vec3f *b1, onb_vec3f *b2) ONB__LABEL("onb_" #m "_outlinef");
+ONB_FLOAT_METHOD_LIST(ONB__WRAP_F)
+#undef ONB__WRAP_F
+void onb_frisvad_threshold(onb_vec3 n, double t, onb_vec3 *b1, onb_vec3 *b2) ONB__LABEL("onb_frisvad_threshold_outline");
+void onb_frisvad_thresholdf(onb_vec3f n, float t, onb_vec3f *b1, onb_vec3f *b2) ONB__LABEL("onb_frisvad_threshold_outlinef");
+onb_vec3 onb_frisvad_rotate(onb_vec3 n, double x, double y, double z) ONB__LABEL("onb_frisvad_rotate_outline");
+onb_vec3f onb_frisvad_rotatef(onb_vec3f n, float x, float y, float z) ONB__LABEL("onb_frisvad_rotate_outlinef");
+#elif !ONB__INLINE
 #define ONB__WRAP(m) \
 	static inline void onb_##m(onb_vec3 n, onb_vec3 *b1, onb_vec3 *b2) \
 	{ onb_##m##_outline(n, b1, b2); } \

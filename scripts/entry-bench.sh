@@ -69,6 +69,8 @@ if [ -n "$base" ]; then
 	tags="new base"
 fi
 load0=$(cut -d' ' -f1-3 /proc/loadavg)
+# the niceness it ran at (a shared machine runs it under nice -n 10)
+niced=$(nice); [ "$niced" -gt 0 ] && niced="nice -n $niced " || niced=
 r=0
 while [ $r -lt "$rounds" ]; do
 	r=$((r + 1))
@@ -132,13 +134,13 @@ headline() {
 		printf "\n" }' "$bf" "$tmp/new.c$2.med"
 }
 {
-	echo "<!-- scripts/entry-bench.sh $rounds $base at $rev, $(date -u +%Y-%m-%dT%H:%MZ) -->"
+	echo "<!-- CALLERS_PASSES=$passes scripts/entry-bench.sh $rounds $base at $rev, $(date -u +%Y-%m-%dT%H:%MZ) -->"
 	echo "<!-- cpu: $cpu; load $load0 at the start, $load1 at the end (shared machine) -->"
 	echo "<!-- $ccs; libonb.a: its Makefile's flags; entries driver: cc $LIBFP; callers: each build's flags; 4096 unit vectors, entries 100 passes, callers $passes passes, 7 runs per round -->"
 	echo
 	echo "# Out-of-line entries against the array entry"
 	echo
-	echo "Made by \`sh scripts/entry-bench.sh $rounds $base\`. ns per basis (thread CPU time, the"
+	echo "Made by \`CALLERS_PASSES=$passes ${niced}sh scripts/entry-bench.sh $rounds $base\`. ns per basis (thread CPU time, the"
 	echo "median of $rounds rounds, each the median of 7 runs; the rounds and"
 	echo "drivers take turns). Target: every out-of-line way of calling within 1.5x"
 	echo "of the array entry, or within 1.5 ns of it."

@@ -24,6 +24,19 @@ typedef struct {
    each random one, the whole threshold list, and the extremes (signed
    zeros, subnormals, axes, n.z next to -1, inf, NaN, zero vectors). */
 int gpu_inputs_make(gpu_inputs *in, uint64_t seed, uint64_t per);
+/* The same for another format (gpu_half.c: binary16): the distributions
+   at prec, each component rounded by round() (to a value that a float
+   holds), then every triple of the next values ext[], each input marked
+   by unit(); `what` names them in the out-of-memory message ("binary16 "). */
+typedef struct {
+	int prec;
+	float (*round)(double);
+	int (*unit)(const float n[3]);
+	const double *ext;
+	size_t next;
+	const char *what;
+} gpu_format;
+int gpu_inputs_build(gpu_inputs *in, const gpu_format *fmt, uint64_t seed, uint64_t per);
 void gpu_inputs_free(gpu_inputs *in);
 
 /* Float bits in an order where adjacent floats differ by 1 (-0 = +0). */

@@ -69,73 +69,18 @@ static int is_unit_h(const float n[3])
 	return mn < 1.0L - 0x1p-40L && mx > 1.0L + 0x1p-40L;
 }
 
-static int hpush(gpu_inputs *in, size_t *cap, double x, double y, double z)
+static float round_half(double x)
 {
-	if (in->count == *cap) {
-		const size_t c = *cap ? 2 * *cap : 4096;
-		float *n = realloc(in->n, 3 * c * sizeof *n);
-		unsigned char *u;
-		if (!n)
-			return -1;
-		in->n = n;
-		if (!(u = realloc(in->unit, c)))
-			return -1;
-		in->unit = u;
-		*cap = c;
-	}
-	in->n[3 * in->count] = (float)prec_half_round(x);
-	in->n[3 * in->count + 1] = (float)prec_half_round(y);
-	in->n[3 * in->count + 2] = (float)prec_half_round(z);
-	in->unit[in->count] = (unsigned char)is_unit_h(in->n + 3 * in->count);
-	in->count++;
-	return 0;
+	return (float)prec_half_round(x);
 }
 
-static int hdist(gpu_inputs *in, size_t *cap, int dist, uint64_t seed, uint64_t per)
-{
-	dist_spec d;
-	uint64_t i;
-	int rc = 0;
-	memset(&d, 0, sizeof d);
-	d.dist = dist;
-	d.prec = PREC_HALF;
-	d.seed = seed;
-	d.count = per;
-	d.ex_from = -1.0;
-	d.ex_values = per / 4 ? per / 4 : 1;
-	d.ex_azimuths = 4;
-	d.grid_rows = 24;
-	d.grid_cols = 48;
-	if (dist_prepare(&d) != 0)
-		return -1;
-	for (i = 0; i < d.count && rc == 0; i++) {
-		double n[3], loc[3], aux;
-		dist_sample(&d, i, n, loc, &aux);
-		rc = hpush(in, cap, n[0], n[1], n[2]);
-	}
-	dist_free(&d);
-	return rc;
-}
-
+/* the study's inputs in binary16 (gpu_inputs_build) */
 static int half_inputs(gpu_inputs *in, uint64_t seed, uint64_t per)
 {
 	static const double ext[] = { 0.0, -0.0, 0x1p-24, -0x1p-24, 0x1.ff8p-15, 0x1p-14, 1.0, -1.0,
 		0x1.ffcp-1, -0x1.ffcp-1, 0x1.004p+0, 0.5, 65504.0, INFINITY, NAN };
-	const size_t ne = sizeof ext / sizeof ext[0];
-	size_t cap = 0, a, b, c;
-	int dist, rc = 0;
-	memset(in, 0, sizeof *in);
-	for (dist = 0; dist < NDIST && rc == 0; dist++)
-		rc = hdist(in, &cap, dist, seed, per);
-	for (a = 0; a < ne && rc == 0; a++)
-		for (b = 0; b < ne && rc == 0; b++)
-			for (c = 0; c < ne && rc == 0; c++)
-				rc = hpush(in, &cap, ext[a], ext[b], ext[c]);
-	if (rc != 0) {
-		fprintf(stderr, "onbstudy-gpu: out of memory building the binary16 inputs\n");
-		gpu_inputs_free(in);
-	}
-	return rc;
+	static const gpu_format h = { PREC_HALF, round_half, is_unit_h, ext, sizeof ext / sizeof ext[0], "binary16 " };
+	return gpu_inputs_build(in, &h, seed, per);
 }
 
 /* libonb's C half kernel `name` on every input (6 floats per input) */

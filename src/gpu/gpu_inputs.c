@@ -44,7 +44,9 @@ static int is_unit(const float n[3])
 	return mn < 1.0L - 0x1p-50L && mx > 1.0L + 0x1p-50L;
 }
 
-static int push(gpu_inputs *in, size_t *cap, float x, float y, float z)
+/* Appends (x, y, z), each rounded by fmt->round, and whether the result
+   is a rounding of a real unit vector (fmt->unit). */
+static int push(gpu_inputs *in, size_t *cap, const gpu_format *fmt, double x, double y, double z)
 {
 	if (in->count == *cap) {
 		size_t c = *cap ? 2 * *cap : 4096;
@@ -59,22 +61,23 @@ static int push(gpu_inputs *in, size_t *cap, float x, float y, float z)
 		in->unit = u;
 		*cap = c;
 	}
-	in->n[3 * in->count] = x;
-	in->n[3 * in->count + 1] = y;
-	in->n[3 * in->count + 2] = z;
-	in->unit[in->count] = (unsigned char)is_unit(in->n + 3 * in->count);
+	in->n[3 * in->count] = fmt->round(x);
+	in->n[3 * in->count + 1] = fmt->round(y);
+	in->n[3 * in->count + 2] = fmt->round(z);
+	in->unit[in->count] = (unsigned char)fmt->unit(in->n + 3 * in->count);
 	in->count++;
 	return 0;
 }
 
-static int add_dist(gpu_inputs *in, size_t *cap, int dist, uint64_t seed, uint64_t per)
+/* `per` inputs of distribution `dist` in fmt->prec (src/inputs). */
+static int add_dist(gpu_inputs *in, size_t *cap, const gpu_format *fmt, int dist, uint64_t seed, uint64_t per)
 {
 	dist_spec d;
 	uint64_t i;
 	int rc = 0;
 	memset(&d, 0, sizeof d);
 	d.dist = dist;
-	d.prec = PREC_FLOAT;
+	d.prec = fmt->prec;
 	d.seed = seed;
 	d.count = per;
 	d.ex_from = -1.0;
@@ -87,32 +90,43 @@ static int add_dist(gpu_inputs *in, size_t *cap, int dist, uint64_t seed, uint64
 	for (i = 0; i < d.count && rc == 0; i++) {
 		double n[3], loc[3], aux;
 		dist_sample(&d, i, n, loc, &aux);
-		rc = push(in, cap, (float)n[0], (float)n[1], (float)n[2]);
+		rc = push(in, cap, fmt, n[0], n[1], n[2]);
 	}
 	dist_free(&d);
 	return rc;
 }
 
-int gpu_inputs_make(gpu_inputs *in, uint64_t seed, uint64_t per)
+int gpu_inputs_build(gpu_inputs *in, const gpu_format *fmt, uint64_t seed, uint64_t per)
 {
-	static const float ext[] = { 0.0f, -0.0f, 0x1p-149f, -0x1p-149f, 0x1.fffffcp-127f, 0x1p-126f,
-		1.0f, -1.0f, 0x1.fffffep-1f, -0x1.fffffep-1f, 0x1.000002p+0f, 0.5f,
-		INFINITY, -INFINITY, NAN };
-	const size_t ne = sizeof ext / sizeof ext[0];
 	size_t cap = 0, a, b, c;
 	int dist, rc = 0;
 	memset(in, 0, sizeof *in);
 	for (dist = 0; dist < NDIST && rc == 0; dist++)
-		rc = add_dist(in, &cap, dist, seed, per);
-	for (a = 0; a < ne && rc == 0; a++)
-		for (b = 0; b < ne && rc == 0; b++)
-			for (c = 0; c < ne && rc == 0; c++)
-				rc = push(in, &cap, ext[a], ext[b], ext[c]);
+		rc = add_dist(in, &cap, fmt, dist, seed, per);
+	for (a = 0; a < fmt->next && rc == 0; a++)
+		for (b = 0; b < fmt->next && rc == 0; b++)
+			for (c = 0; c < fmt->next && rc == 0; c++)
+				rc = push(in, &cap, fmt, fmt->ext[a], fmt->ext[b], fmt->ext[c]);
 	if (rc != 0) {
-		fprintf(stderr, "onbstudy-gpu: out of memory building the inputs\n");
+		fprintf(stderr, "onbstudy-gpu: out of memory building the %sinputs\n", fmt->what);
 		gpu_inputs_free(in);
 	}
 	return rc;
+}
+
+static float round_float(double x)
+{
+	return (float)x;
+}
+
+int gpu_inputs_make(gpu_inputs *in, uint64_t seed, uint64_t per)
+{
+	/* the float extremes (each exact in double) */
+	static const double ext[] = { 0.0, -0.0, 0x1p-149, -0x1p-149, 0x1.fffffcp-127, 0x1p-126,
+		1.0, -1.0, 0x1.fffffep-1, -0x1.fffffep-1, 0x1.000002p+0, 0.5,
+		INFINITY, -INFINITY, NAN };
+	static const gpu_format f = { PREC_FLOAT, round_float, is_unit, ext, sizeof ext / sizeof ext[0], "" };
+	return gpu_inputs_build(in, &f, seed, per);
 }
 
 void gpu_inputs_free(gpu_inputs *in)

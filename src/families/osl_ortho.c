@@ -104,6 +104,22 @@ static cv length_tiny(cm *c, int P, const cv p[3], int z0, int id, int zid, int 
 	return MUL(m, cm_sqrt(c, P, mk_dot3(c, P, a, a)));
 }
 
+/* Imath's normalize on p, in place: l = length(p), sqrt(p.p) or
+   lengthTiny() when p.p is below `tiny` (2 * the format's smallest
+   normal), then p / l, three divisions, unless l = 0.  Branch points 1
+   the tiny test, 2-6 lengthTiny's (*zero its m = 0), 7 l != 0.  A macro, not a function:
+   the compiled models stay byte-identical, and with them every certify
+   key of osl_ortho and osl_gabornoise (scripts/code-keys.sh). */
+#define IMATH_NORMALIZE(p, z0, tiny, zero)                                      \
+	do {                                                                       \
+		cv l_, l2_ = mk_dot3(c, P, p, p);                                      \
+		int i_;                                                                \
+		l_ = cm_branch(c, 1, CM_LT, l2_, K(tiny)) ? length_tiny(c, P, p, z0, 2, 6, &(zero)) : cm_sqrt(c, P, l2_); \
+		if (cm_branch(c, 7, CM_GT, l_, K(0.0)))                                \
+			for (i_ = 0; i_ < 3; i_++)                                         \
+				p[i_] = DIV(p[i_], l_);                                        \
+	} while (0)
+
 /* p = (z, 0, -x) or (0, -z, y) (the 0 a literal); l = Imath's length():
    sqrt(p.x*p.x + p.y*p.y + p.z*p.z), or lengthTiny() when that sum is
    below 2 * the format's smallest normal (never for a unit n: |p|^2 >=
@@ -113,7 +129,7 @@ static cv length_tiny(cm *c, int P, const cv p[3], int z0, int id, int zid, int 
 static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 {
 	const double tiny = P == PREC_FLOAT ? 0x1p-125 : P == PREC_HALF ? 0x1p-13 : 0x1p-1021;
-	cv p[3], l, l2;
+	cv p[3];
 	int i, z0, zero;
 	(void)m;
 	if (cm_branch_abs(c, 0, CM_GT, n[0], K((double).01f))) {
@@ -121,11 +137,7 @@ static void model(cm *c, int P, const onb_method *m, const cv n[3], cv out[6])
 	} else {
 		p[0] = K(0.0); p[1] = cm_neg(c, n[2]); p[2] = n[1]; z0 = 0;
 	}
-	l2 = mk_dot3(c, P, p, p);
-	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, p, z0, 2, 6, &zero) : cm_sqrt(c, P, l2);
-	if (cm_branch(c, 7, CM_GT, l, K(0.0)))
-		for (i = 0; i < 3; i++)
-			p[i] = DIV(p[i], l);
+	IMATH_NORMALIZE(p, z0, tiny, zero);
 	for (i = 0; i < 3; i++)
 		out[i] = p[i];
 	mk_cross_out(c, P, n, out, 1, 1, "nnn");
@@ -184,11 +196,7 @@ static void model_gabor(cm *c, int P, const onb_method *m, const cv n[3], cv out
 	} else {
 		a[0] = cm_neg(c, v[2]); a[1] = K(0.0); a[2] = v[0]; z0 = 1;
 	}
-	l2 = mk_dot3(c, P, a, a);
-	l = cm_branch(c, 1, CM_LT, l2, K(tiny)) ? length_tiny(c, P, a, z0, 2, 6, &zero) : cm_sqrt(c, P, l2);
-	if (cm_branch(c, 7, CM_GT, l, K(0.0)))
-		for (i = 0; i < 3; i++)
-			a[i] = DIV(a[i], l);
+	IMATH_NORMALIZE(a, z0, tiny, zero);
 	for (i = 0; i < 3; i++)
 		out[i] = a[i];
 	mk_cross(c, P, v, a, out + 3);

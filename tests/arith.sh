@@ -2,7 +2,9 @@
 # arith.sh - arithmetic profiles (src/model/arith.c, docs/gpu.md) through
 # `onbstudy certify --arith`: ieee is byte for byte the plain run; every
 # profile's --quick run on a few methods keeps found <= bound wherever a
-# bound is claimed and names the operation of every unbounded row; the
+# bound is claimed and names the cause of every row without a bound (the
+# operation the profile gives none, or the one whose enclosure was lost:
+# gltf_viewer under vulkan, rsqrt:0); the
 # profile's whole-sphere bound is never below the defect ieee found; bad input
 # exits 2 with the list of profiles; docs/gpu.md's tables are results/gpu's,
 # the full-budget runs' column included, and a full-budget bound looser than
@@ -11,7 +13,7 @@
 . "$(dirname "$0")/lib.sh"
 T=$tmp
 data() { grep -v '^#' "$1"; }
-M=frisvad,duff,hughes_moeller
+M=frisvad,duff,hughes_moeller,gltf_viewer
 Q="--quick --quiet --methods $M --samples 60 --budget 24"
 
 # 1. ieee: the plain model, byte for byte (provenance lines aside)
@@ -33,7 +35,10 @@ for p in vulkan vulkan-precise d3d11 opencl cuda-fast contract-any; do
 		&& ok || bad "$p: header $(data "$C" | head -1)"
 	data "$C" | awk -F, 'NR > 1 && $12 != "singular" && $12 != "unbounded" && !($7 + 0 >= $8 + 0) { n++; print } END { exit n > 0 }' > "$T/inv" \
 		&& ok || bad "$p: found above bound: $(head -2 "$T/inv")"
-	data "$C" | awk -F, 'NR > 1 && ($12 == "unbounded") != ($17 != "") { n++ } END { exit n > 0 }' && ok || bad "$p: unbounded rows and their operation disagree"
+	data "$C" | awk -F, 'NR > 1 && $12 == "unbounded" && $17 == "" { n++ } END { exit n > 0 }' && ok || bad "$p: an unbounded row without its operation"
+	# every row without a bound (inf, not singular) says why; no other row does
+	data "$C" | awk -F, 'NR > 1 && ($7 == "inf" && $12 != "singular") != ($17 != "") { n++; print } END { exit n > 0 }' > "$T/why" \
+		&& ok || bad "$p: a row with bound inf and an empty unbounded_by, or a cause beside a bound: $(head -2 "$T/why")"
 	data "$C" | awk -F, 'NR > 1 && $12 == "unbounded" && $7 != "inf" { n++ } END { exit n > 0 }' && ok || bad "$p: an unbounded row with a number"
 	whole() { data "$1" | awk -F, -v c="$2" 'NR > 1 && $3 == -1 && $4 == 1 && $5 == 0 && $6 == 360 { print $1 "/" $2 "," $c }' | sort; }
 	whole "$T/ieee/certify.csv" 8 > "$T/w0"
@@ -48,6 +53,11 @@ data "$T/d3d11/certify.csv" | awk -F, '$3 == -1 && $4 == 1 && $5 == 0 && $6 == 3
 	END { exit !(w["duff/double"] ~ /^[0-9.e+-]+,(proven|budget),$/ && w["frisvad/double"] ~ /^[0-9.e+-]+,/ &&
 	             w["hughes_moeller/double"] == "inf,unbounded,sqrt" && w["hughes_moeller/float"] == "inf,unbounded,sqrt") }' \
 	&& ok || bad "d3d11 doubles: duff/frisvad not bounded or hughes_moeller not unbounded by sqrt: $(data "$T/d3d11/certify.csv" | grep -e '^duff,double,-1,1,0,360' -e '^hughes_moeller,[a-z]*,-1,1,0,360')"
+# gltf_viewer under vulkan: its +-y poles (n.z in [-0.3, 0.3]) have no
+# finite bound, and the row names inversesqrt (Vulkan's sqrt, 1/inversesqrt)
+# of an enclosure of |up x n|^2 that reaches 0 (docs/gpu.md)
+data "$T/vulkan/certify.csv" | awk -F, '$1 == "gltf_viewer" && $2 == "float" && $3 == -1 && $4 == 1 && $5 == 0 { w = $7 "," $12 "," $17 }
+	END { exit w != "inf,budget,rsqrt:0" }' && ok || bad "gltf_viewer float under vulkan: $(data "$T/vulkan/certify.csv" | grep '^gltf_viewer,float,-1,1,0,360')"
 # the double under vulkan is only as precise as float: far above ieee's
 a=$(data "$T/ieee/certify.csv" | awk -F, '$1 == "duff" && $2 == "double" && $3 == -1 && $4 == 1 && $5 == 0 { print $7 }')
 b=$(data "$T/vulkan/certify.csv" | awk -F, '$1 == "duff" && $2 == "double" && $3 == -1 && $4 == 1 && $5 == 0 { print $7 }')
@@ -71,6 +81,11 @@ grep -q "ieee, vulkan, vulkan-precise, d3d11, opencl, cuda-fast, contract-any" "
 	grep -q '^# arith: cuda-fast ' "$T/h/certify-half.csv" && ok || bad "certify --precision half --arith cuda-fast failed"
 data "$T/h/certify-half.csv" | awk -F, 'NR == 1 { ok = $NF == "unbounded_by" } NR > 1 && $12 == "unbounded" { u++; ok = ok && $15 == "div" && $7 == "inf" }
 	NR > 1 && $12 == "proven" && $13 > 0 { ok = 0 } END { exit !(ok && u > 0) }' && ok || bad "cuda-fast half: duff not unbounded by div: $(data "$T/h/certify-half.csv" | head -3)"
+# naive in binary16 under vulkan: its equator bands (a flushed or
+# underflowing squared length) are unbounded, and every such row says why
+./onbstudy certify --precision half --arith vulkan --methods naive --sectors 1 --depth 1 --azimuths 1 --quiet --out "$T/hv" > /dev/null 2>&1 &&
+	data "$T/hv/certify-half.csv" | awk -F, 'NR > 1 && $12 == "unbounded" { u++; if ($15 == "") e++ } NR > 1 && $12 != "unbounded" && $15 != "" { e++ }
+		END { exit !(u > 0 && e == 0) }' && ok || bad "vulkan half: naive's unbounded rows without a cause: $(data "$T/hv/certify-half.csv" | grep unbounded | head -2)"
 ./onbstudy certify --precision half --arith d3d11 --methods duff --quick --out "$T/bad" > /dev/null 2> "$T/err"; rc=$?
 [ $rc -eq 2 ] && grep -q 'gives binary16 no precision' "$T/err" && [ ! -e "$T/bad/certify-half.csv" ] && ok || bad "certify --precision half --arith d3d11: exit $rc, $(cat "$T/err")"
 ./onbstudy certify --precision half --arith metal --quick > /dev/null 2> "$T/err"; rc=$?

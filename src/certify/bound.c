@@ -16,6 +16,7 @@
 struct bound_ctx {
 	cm *c;
 	int unb_op;   /* bound_unbounded_op */
+	int box_cause; /* bound_box_cause */
 };
 
 bound_ctx *bound_new(void)
@@ -26,7 +27,7 @@ bound_ctx *bound_new(void)
 		return NULL;
 	}
 	if (b)
-		b->unb_op = -1;
+		b->unb_op = b->box_cause = -1;
 	return b;
 }
 
@@ -458,6 +459,18 @@ void bound_set_arith(bound_ctx *b, const arith_profile *p)
 
 int bound_unbounded_op(const bound_ctx *b) { return b->unb_op; }
 
+int bound_box_cause(const bound_ctx *b) { return b->box_cause; }
+
+/* Why the path just run has no finite bound (arith.h's causes). */
+static int path_cause(cm *c)
+{
+	if (cm_unbounded_op(c) >= 0)
+		return cm_unbounded_op(c);
+	if (cm_lost_op(c) >= 0)
+		return cm_lost_op(c);
+	return mvf_overflowed(c->m) ? AR_NOPS | AR_OVERFLOW : AR_LOST;
+}
+
 int bound_overflow_seen(bound_ctx *b) { return mvf_overflow_seen(b->c->m); }
 
 double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsigned drop)
@@ -466,8 +479,9 @@ double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsi
 	double best = 0.0;
 	if (m->nbranch > BOUND_MAXBRANCH)
 		return INFINITY;   /* no model has so many (models.c checks) */
+	b->box_cause = -1;
 	if (m->direction && b->c->ar) {   /* dir_bound is proven for round to nearest */
-		b->unb_op = AR_NOPS;
+		b->unb_op = b->box_cause = AR_NOPS;
 		return INFINITY;
 	}
 	for (path = 0; path < npath; path++) {
@@ -486,6 +500,8 @@ double bound_box_ablate(bound_ctx *b, const cm_method *m, const mvf_box *x, unsi
 		seen[path] = b->c->seen;
 		if (b->unb_op < 0 && cm_unbounded_op(b->c) >= 0)
 			b->unb_op = cm_unbounded_op(b->c);
+		if (!(v < INFINITY) && b->box_cause < 0)
+			b->box_cause = path_cause(b->c);
 		if (!(v <= best))
 			best = v;   /* an infeasible path gives -1 */
 	}

@@ -26,6 +26,13 @@ double bound_box(bound_ctx *b, const cm_method *m, const mvf_box *x);
    allowance left some box without a bound since then (-1: none). */
 void bound_set_arith(bound_ctx *b, const arith_profile *p);
 int  bound_unbounded_op(const bound_ctx *b);
+/* Why the last bound_box had no finite bound (-1: it had one): the first
+   infinite path's operation kind with arith.h's AR_AT_POLE or AR_OVERFLOW
+   (its operand's enclosure reached the operation's pole, its result may
+   overflow), the kind alone (the profile gives it no bound), AR_NOPS (a
+   rule proven for round to nearest alone) or AR_LOST (the enclosure was
+   lost elsewhere in the mean value form). */
+int  bound_box_cause(const bound_ctx *b);
 /* Whether some box since the last call had a path whose value may exceed
    the format's largest finite value (an overflow: binary16's 65504), which
    left it without a bound (reset by the call). */

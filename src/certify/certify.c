@@ -442,12 +442,37 @@ static const char *status_name(int s)
    direction rule, proven for round to nearest alone). */
 static const char *unb_name(int op) { return op == AR_NOPS ? "direction-rule" : arith_op_name(op); }
 
+/* --arith: why a row's bound is +inf (arith.h's causes; the status
+   unbounded: the operation the profile gives no bound), "" when it has a
+   bound or is singular. */
+static const char *inf_cause(const cert_result *x)
+{
+	if (x->status == CERT_UNBOUNDED)
+		return unb_name(x->unb_op);
+	if (x->status == CERT_SINGULAR || x->bound < INFINITY)
+		return "";
+	return x->unb_op == AR_NOPS ? "direction-rule" : arith_cause_name(x->unb_op);
+}
+
+/* The cause a CSV's unbounded_by names (inf_cause), -1 for none. */
+static int parse_cause(const char *s)
+{
+	static const int why[3] = { 0, AR_AT_POLE, AR_OVERFLOW };
+	int j, w;
+	for (w = 0; w < 3; w++)
+		for (j = 0; j < AR_NOPS; j++)
+			if (strcmp(s, arith_cause_name(j | why[w])) == 0)
+				return j | why[w];
+	return strcmp(s, "direction-rule") == 0 ? AR_NOPS : strcmp(s, "overflow") == 0 ? (AR_NOPS | AR_OVERFLOW)
+	     : strcmp(s, "enclosure") == 0 ? AR_LOST : -1;
+}
+
 static double unit_of(int prec) { return prec == PREC_FLOAT ? 0x1p-24 : 0x1p-53; }
 
 /* The whole-sphere row of kernel k in precision p, from its regions. */
 static void whole_sphere(const cert_result *res, const task *t, int nt, int k, int p, cert_result *w)
 {
-	int i, any = 0;
+	int i, any = 0, cause = -1;
 	memset(w, 0, sizeof *w);
 	w->status = CERT_PROVEN;
 	for (i = 0; i < nt; i++) {
@@ -464,17 +489,22 @@ static void whole_sphere(const cert_result *res, const task *t, int nt, int k, i
 		}
 		if (r->status == CERT_SINGULAR)
 			w->status = CERT_SINGULAR;
-		if (r->status == CERT_UNBOUNDED && w->status != CERT_SINGULAR) {
-			w->status = CERT_UNBOUNDED;
+		if (r->status == CERT_UNBOUNDED) {   /* the op also beside singular (stdout's count) */
+			if (w->status != CERT_SINGULAR)
+				w->status = CERT_UNBOUNDED;
 			w->unb_op = r->unb_op;
 		}
+		if (r->status == CERT_BUDGET && !(r->bound < INFINITY) && cause < 0)
+			cause = r->unb_op;   /* the first region without a bound says why */
 		w->boxes += r->boxes;
 		w->probes += r->probes;
 	}
 	if (!any)
 		w->status = -1;
-	else if (w->status != CERT_SINGULAR && w->status != CERT_UNBOUNDED)
+	else if (w->status != CERT_SINGULAR && w->status != CERT_UNBOUNDED) {
 		w->status = w->bound <= 1.25 * w->found ? CERT_PROVEN : CERT_BUDGET;
+		w->unb_op = cause;
+	}
 	if (w->status == CERT_SINGULAR)
 		w->bound = INFINITY;
 }
@@ -496,8 +526,8 @@ static void csv_row(FILE *f, const char *name, int dir, int p, const cert_region
 		fprintf(f, ",%a,%a,%a", x->found_loc[0], x->found_loc[1], x->found_loc[2]);
 	else
 		fprintf(f, ",,,");
-	if (arith)   /* --arith: the operation an unbounded row owes it to */
-		fprintf(f, ",%s", x->status == CERT_UNBOUNDED ? unb_name(x->unb_op) : "");
+	if (arith)   /* --arith: the operation an unbounded row owes it to, or why the bound is +inf */
+		fprintf(f, ",%s", inf_cause(x));
 	fprintf(f, "\n");
 }
 
@@ -1057,7 +1087,7 @@ static int write_csv(FILE *f, const study_kernel *ks, int nk, const cert_region 
 	return ferror(f) ? -1 : 0;
 }
 
-static void print_summary(const study_kernel *ks, int nk, const task *t, int nt, const cert_result *res)
+static void print_summary(const study_kernel *ks, int nk, const task *t, int nt, const cert_result *res, int arith)
 {
 	int k, p;
 	printf("%-24s %-6s %12s %12s %7s  %s\n", "method", "prec", "bound/u", "found/u", "ratio", "status (regions proven/singular/budget)");
@@ -1076,6 +1106,8 @@ static void print_summary(const study_kernel *ks, int nk, const task *t, int nt,
 			       status_name(w.status), cnt[0], cnt[1], cnt[2]);
 			if (cnt[3])
 				printf(" %d unbounded (%s)", cnt[3], unb_name(w.unb_op));
+			else if (arith && w.status == CERT_BUDGET && !(w.bound < INFINITY))
+				printf(" inf by %s", inf_cause(&w));
 			printf("\n");
 		}
 }
@@ -1195,6 +1227,8 @@ static int parse_row(char **f, int nf, cert_result *r)
 	for (j = 0; r->status == CERT_UNBOUNDED && nf > 16 && j <= AR_NOPS; j++)
 		if (strcmp(f[16], unb_name(j)) == 0)
 			r->unb_op = j;
+	if (r->status == CERT_BUDGET && !(r->bound < INFINITY) && nf > 16)
+		r->unb_op = parse_cause(f[16]);
 	return 0;
 }
 
@@ -1624,7 +1658,7 @@ int cmd_certify(int argc, char **argv)
 	    (writer() && write_outputs(dir, ks, nk, reg, t, nt, res, &c, &ctl)))
 		goto done;
 	if (writer()) {
-		print_summary(ks, nk, t, nt, res);
+		print_summary(ks, nk, t, nt, res, c.arith_given);
 		print_profile(ks, nk, t, nt, res, &c);
 		fprintf(stderr, "certify: wrote %s/certify.csv\n", dir);
 	}

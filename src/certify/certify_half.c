@@ -168,18 +168,23 @@ double ch_scan(const study_kernel *k, const cert_region *r, int az, double worst
 	return a.dmax;
 }
 
-double ch_bound(bound_ctx *b, const cm_method *m, const cert_region *r, double target, int depth)
+/* ch_bound, and in *cause why it is +inf (bound_box_cause of a box
+   without a bound that no split replaced). */
+static double ch_bound_c(bound_ctx *b, const cm_method *m, const cert_region *r, double target, int depth, int *cause)
 {
 	mvf_box box;
 	cert_region h[2];
 	double v, w = 0.0;
-	int i;
+	int i, vc, wc = -1;
 	if (half_band_empty(r))
 		return 0.0;   /* no input */
 	region_box(r, PREC_HALF, -1.0, &box);
 	v = bound_box(b, m, &box);
+	vc = bound_box_cause(b);
 	if (v < 0.0)
 		v = 0.0;   /* no path: no input of the region lies in the box */
+	if (!(v < INFINITY))
+		*cause = vc;
 	if (depth <= 0 || v <= target)
 		return v;
 	h[0] = h[1] = *r;
@@ -187,9 +192,21 @@ double ch_bound(bound_ctx *b, const cm_method *m, const cert_region *r, double t
 		h[0].nz_hi = h[1].nz_lo = 0.5 * (r->nz_lo + r->nz_hi);
 	else
 		h[0].phi_hi = h[1].phi_lo = 0.5 * (r->phi_lo + r->phi_hi);
-	for (i = 0; i < 2 && w < v; i++)
-		w = fmax(w, ch_bound(b, m, &h[i], target, depth - 1));
+	for (i = 0; i < 2 && w < v; i++) {
+		int c = -1;
+		w = fmax(w, ch_bound_c(b, m, &h[i], target, depth - 1, &c));
+		if (!(w < INFINITY) && wc < 0)
+			wc = c;
+	}
+	if (!(w < INFINITY) && wc >= 0)
+		*cause = wc;
 	return fmin(v, w);
+}
+
+double ch_bound(bound_ctx *b, const cm_method *m, const cert_region *r, double target, int depth)
+{
+	int cause = -1;
+	return ch_bound_c(b, m, r, target, depth, &cause);
 }
 
 /* The defect of k's half basis at n in MPFR (ref_defects: within 2^-50). */
@@ -223,17 +240,20 @@ void ch_region(bound_ctx *b, const study_kernel *k, const cm_method *m, const ce
 	if (out->found > 0.0 && out->found < INFINITY)
 		out->found = exact_defect(k, out->worst);
 	(void)bound_overflow_seen(b);
-	out->bound = ch_bound(b, m, r, fmax(2.0 * out->found, u), depth);
+	int cause = -1;
+	out->bound = ch_bound_c(b, m, r, fmax(2.0 * out->found, u), depth, &cause);
 	if (out->nonfinite)
 		out->status = CH_NONFINITE;
 	else if (!(out->bound < INFINITY)) {
 		out->status = bound_overflow_seen(b) ? CH_OVERFLOW : CH_UNBOUNDED;
-		out->unb_op = bound_unbounded_op(b);
+		out->unb_op = bound_unbounded_op(b) >= 0 ? bound_unbounded_op(b) : cause;
 	} else
 		out->status = CH_PROVEN;
-	if (out->status == CH_PROVEN && out->found > out->bound)
+	if (out->status == CH_PROVEN && out->found > out->bound) {
 		out->status = CH_UNBOUNDED;   /* a bound under a defect the scan measured is no proof: the model's
 		                                 paths miss the kernel's (physx in half: every box "no path") */
+		out->unb_op = CH_BELOW_SCAN;
+	}
 	if (out->status != CH_PROVEN)
 		out->bound = INFINITY;
 }
@@ -368,7 +388,9 @@ static int ch_run_all(ch_run *s, int nt)
 /* --arith: the operation an unbounded row owes it to (certify.c's unbounded_by) */
 static const char *ch_unb(const ch_result *x)
 {
-	return x->status == CH_UNBOUNDED && x->unb_op >= 0 ? arith_op_name(x->unb_op) : "";
+	if (x->status != CH_UNBOUNDED)
+		return "";
+	return x->unb_op == CH_BELOW_SCAN ? "below-scan" : arith_cause_name(x->unb_op);
 }
 
 static void ch_write_rows(FILE *f, const study_kernel *ks, const cert_region *reg, const ch_task *t, int nt,

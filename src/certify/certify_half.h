@@ -28,8 +28,14 @@ typedef struct {
 	double worst[3];       /* its input                                             */
 	long scanned, nonfinite;
 	int status;
-	int unb_op;            /* --arith: the operation (AR_*) that left it unbounded, or -1 */
+	int unb_op;            /* --arith: why it is unbounded (arith.h's causes:
+	                          the operation the profile gives no bound, or the
+	                          operation whose enclosure was lost, with
+	                          AR_AT_POLE or AR_OVERFLOW), CH_BELOW_SCAN, or -1 */
 } ch_result;
+/* unb_op of a bound below the scan's defect (no proof: the model's paths
+   miss the kernel's), named "below-scan" */
+#define CH_BELOW_SCAN 0x800
 
 /* The scan: every binary16 n.z of the region's band at az azimuths per
    sector (the other two components the binary16 roundings of

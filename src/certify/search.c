@@ -149,6 +149,7 @@ typedef struct {
 	mvf_box b;
 	double bound;
 	int stuck;   /* cannot be split further */
+	int cause;   /* why bound is +inf (bound_box_cause), -1 */
 } leaf;
 
 /* The kernel at the box's centre, and at its two ends in u.z (where the
@@ -226,13 +227,14 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 	double t = study_thread_cpu(), t1;
 	l[0].b = *b0;
 	l[0].bound = bound_box(e->x->b, m, b0);
+	l[0].cause = bound_box_cause(e->x->b);
 	l[0].stuck = 0;
 	e->res->boxes = 1;
 	for (;;) {
 		i = worst_leaf(l, nl, &worst);
 		mvf_box c[8];
 		double parent;
-		int k, j;
+		int k, j, pcause;
 		if (worst <= e->o->target * e->res->found || i < 0 || e->res->boxes + 8 > e->o->budget)
 			break;
 		if (!e->no_stall && e->res->boxes >= next_check) {   /* stalled: 250 more boxes took < 2% off */
@@ -246,11 +248,13 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 			continue;
 		}
 		parent = l[i].bound;
+		pcause = l[i].cause;
 		for (j = 0; j < k; j++) {
 			const int at = j == 0 ? i : nl++;
 			const double v = bound_box(e->x->b, m, &c[j]);
 			l[at].b = c[j];
 			l[at].bound = v <= parent ? v : parent;   /* the parent's bound holds on its part too */
+			l[at].cause = v <= parent ? bound_box_cause(e->x->b) : pcause;
 			l[at].stuck = 0;
 			t1 = study_thread_cpu();
 			cpu[0] += t1 - t;
@@ -261,6 +265,12 @@ static void branch_and_bound(probe_env *e, const cm_method *m, const mvf_box *b0
 		e->res->boxes += k;
 	}
 	e->res->bound = worst;
+	if (!(worst < INFINITY) && !arith_is_ieee(e->o->arith))   /* why: the first leaf without a bound */
+		for (i = 0; i < nl; i++)
+			if (!(l[i].bound < INFINITY)) {
+				e->res->unb_op = l[i].cause;
+				break;
+			}
 	t1 = study_thread_cpu();
 	cpu[0] += t1 - t;
 	if (!(worst <= e->o->target * e->res->found))
@@ -345,9 +355,11 @@ void cert_region_run(cert_ctx *x, const study_kernel *k, const cm_method *m, int
 	if (res->nonfinite) {
 		res->status = CERT_SINGULAR;
 		res->bound = INFINITY;
-	} else if (!(res->bound < INFINITY) && (res->unb_op = bound_unbounded_op(x->b)) >= 0) {
+	} else if (!(res->bound < INFINITY) && bound_unbounded_op(x->b) >= 0) {
+		res->unb_op = bound_unbounded_op(x->b);
 		res->status = CERT_UNBOUNDED;
 	}
+	/* else a bound of +inf keeps in unb_op why (--arith: branch_and_bound) */
 }
 
 void cert_region_images(cert_ctx *x, const study_kernel *k, int prec, const cert_region *r, const cert_opts *o,

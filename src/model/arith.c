@@ -141,6 +141,20 @@ const char *arith_op_name(int op)
 	return op >= 0 && op < AR_NOPS ? names[op] : "?";
 }
 
+const char *arith_cause_name(int cause)
+{
+	static const char *const pole[AR_NOPS] = { "add:0", "sub:0", "mul:0", "div:0", "rcp:0", "sqrt:0", "rsqrt:0", "fma:0", "cvt:0" };
+	static const char *const over[AR_NOPS] = { "add:overflow", "sub:overflow", "mul:overflow", "div:overflow",
+	                                           "rcp:overflow", "sqrt:overflow", "rsqrt:overflow", "fma:overflow",
+	                                           "cvt:overflow" };
+	const int op = cause & 0xff;
+	if (cause < 0)
+		return "";
+	if (op >= AR_NOPS || (cause & AR_LOST))
+		return cause & AR_OVERFLOW ? "overflow" : "enclosure";
+	return cause & AR_AT_POLE ? pole[op] : cause & AR_OVERFLOW ? over[op] : arith_op_name(op);
+}
+
 int arith_kind(int op)
 {
 	switch (op) {

@@ -25,6 +25,19 @@
 /* Operation kinds (each C operation of a model is one of these). */
 enum { AR_ADD = 0, AR_SUB, AR_MUL, AR_DIV, AR_RCP, AR_SQRT, AR_RSQRT, AR_FMA, AR_CVT, AR_NOPS };
 
+/* Why a bound under a profile is infinite, beside an operation kind: the
+   profile gives it no bound (the kind alone), or the enclosure of its
+   operand reaches the operation's pole or edge of domain (a division by,
+   an inversesqrt or a sqrt of an enclosure that holds 0: AR_AT_POLE), or
+   its result may overflow (AR_OVERFLOW); AR_LOST alone: the mean value
+   form lost the enclosure elsewhere (a gradient, a quantity). */
+#define AR_AT_POLE  0x100
+#define AR_OVERFLOW 0x200
+#define AR_LOST     0x400
+/* "div", "rsqrt:0", "mul:overflow", "enclosure" ("" for -1): the
+   unbounded_by column of certify --arith (a static string). */
+const char *arith_cause_name(int cause);
+
 /* How an operation's result r may differ from the exact result v. */
 enum {
 	AR_NONE = 0, /* the specification gives no bound: nothing is proven

@@ -140,6 +140,7 @@ void cm_set_arith(cm *c, const arith_profile *p)
 
 const arith_profile *cm_arith(const cm *c) { return c->ar ? c->ar : arith_ieee(); }
 int cm_unbounded_op(const cm *c) { return c->m ? mvf_unbounded_op(c->m) : -1; }
+int cm_lost_op(const cm *c) { return c->m ? mvf_lost_op(c->m) : -1; }
 
 void cm_set_emu(cm *c, int mode, unsigned long long seed, const unsigned char *choice, int n)
 {

@@ -102,7 +102,9 @@ double cm_value(const cm *c, cv v);
    come (NULL or ieee: the IEEE model, unchanged).  Under another profile,
    CM_MVF widens every operation's enclosure by the profile's allowance
    (mvf.c), and cm_unbounded_op names the operation kind (AR_*) whose
-   allowance left the last run without a bound (-1: none).  CM_EXEC then
+   allowance left the last run without a bound (-1: none), cm_lost_op the
+   first operation whose operand's enclosure reached its pole or whose
+   result may overflow (arith.h's AR_AT_POLE, AR_OVERFLOW; -1: none).  CM_EXEC then
    emulates a conforming implementation: each operation takes its
    round-to-nearest result (CM_EMU_NEAREST), a random allowed result
    (CM_EMU_RANDOM, from seed), or the choice given for it (CM_EMU_CHOICE:
@@ -116,6 +118,7 @@ double cm_value(const cm *c, cv v);
 void cm_set_arith(cm *c, const arith_profile *p);
 const arith_profile *cm_arith(const cm *c);
 int  cm_unbounded_op(const cm *c);
+int  cm_lost_op(const cm *c);
 enum { CM_EMU_NEAREST = 0, CM_EMU_RANDOM, CM_EMU_CHOICE };
 #define CM_CH_LO        1u
 #define CM_CH_HI        2u

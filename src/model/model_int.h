@@ -128,6 +128,7 @@ void mvf_note_strict(mvf *m, int op, int absolute, cv a, cv b, int side);
    comparison reads it (flushed where it may be subnormal). */
 void mvf_set_arith(mvf *m, const arith_profile *p);
 int  mvf_unbounded_op(const mvf *m);
+int  mvf_lost_op(const mvf *m);
 cv   mvf_read(mvf *m, cv a);
 
 #endif

@@ -131,6 +131,9 @@ struct mvf {
 	   run (-1: none). */
 	const arith_profile *ar;
 	int unb_op;
+	int lost_op;           /* the first operation whose exact enclosure was
+	                          lost (an AR_ kind with AR_AT_POLE or
+	                          AR_OVERFLOW), -1: none */
 	mpfi_t t1, t2, t3;     /* scratch of round_to, grad_lin, sterbenz */
 	mpfi_t s1, s2;         /* scratch of the operations: scale factors */
 	mpfi_t one, mone;
@@ -1814,6 +1817,7 @@ void mvf_begin(mvf *m, const mvf_box *b, int mode, cv in[3])
 	m->no_point = 0;
 	m->grad_lost = 0;
 	m->unb_op = -1;
+	m->lost_op = -1;
 	m->nst = 0;
 	m->tol = b->tolerance;
 	m->nh[0] = m->nh[1] = m->nh[2] = 0.0;
@@ -2497,6 +2501,16 @@ static cv newton_common(mvf *m, int f, cv ix, cv iy, newton_kind k)
 
 void mvf_set_arith(mvf *m, const arith_profile *p) { m->ar = arith_is_ieee(p) ? NULL : p; }
 int mvf_unbounded_op(const mvf *m) { return m->unb_op; }
+int mvf_lost_op(const mvf *m) { return m->lost_op; }
+
+/* The run fails at an operation of kind k whose exact result has no
+   enclosure (why: AR_AT_POLE or AR_OVERFLOW). */
+static void prof_lost(mvf *m, int k, int why)
+{
+	if (m->lost_op < 0)
+		m->lost_op = k | why;
+	m->failed = 1;
+}
 
 static void mag_range(mvf *m, mpfi_srcptr v, double *vmin, double *vmax)
 {
@@ -2618,7 +2632,7 @@ static cv prof_round(mvf *m, int op, int k, int f, cv ia, cv ib, cv id)
 	}
 	if (a->opaque || (b && b->opaque) || !exact_eval(m, op, r, a, b, xd >= 0 ? &m->val[xd] : NULL) ||
 	    mpfi_nan_p(r->v) || !mpfi_bounded_p(r->v)) {
-		m->failed = 1;
+		prof_lost(m, k, op == MVF_DIV || op == MVF_SQRT ? AR_AT_POLE : AR_OVERFLOW);
 		return ir;
 	}
 	if (op == MVF_NEG) {
@@ -2650,7 +2664,7 @@ static cv prof_rsqrt(mvf *m, int k, int f, cv ia)
 	if (!exact_eval(m, MVF_SQRT, &m->val[is], &m->val[xa], NULL, NULL) ||
 	    !exact_eval(m, MVF_DIV, &m->val[ir], &m->val[mvf_cst(m, 1.0)], &m->val[is], NULL) ||
 	    !mpfi_bounded_p(m->val[ir].v)) {
-		m->failed = 1;
+		prof_lost(m, k, AR_AT_POLE);
 		return ir;
 	}
 	mag_range(m, m->val[ir].v, &vmin, &vmax);
@@ -2667,7 +2681,7 @@ static cv prof_rcp(mvf *m, int f, cv ib)
 		return ir;
 	if (!exact_eval(m, MVF_DIV, &m->val[ir], &m->val[mvf_cst(m, 1.0)], &m->val[xb], NULL) ||
 	    !mpfi_bounded_p(m->val[ir].v)) {
-		m->failed = 1;
+		prof_lost(m, AR_RCP, AR_AT_POLE);
 		return ir;
 	}
 	mag_range(m, m->val[ir].v, &vmin, &vmax);

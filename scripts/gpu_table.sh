@@ -201,7 +201,11 @@ brackets() {
 	done
 }
 # every region of a full run against the --quick region that holds it (the
-# same band, the sector that contains its own): a looser full bound is a bug
+# same band, the sector that contains its own): a looser full bound is a bug,
+# unless the full region is proven: its branch and bound stopped as soon as
+# the bound was within 1.25x of its found (a higher found than --quick's, so
+# often at fewer, larger boxes than --quick split into), and a looser bound
+# there is that stop, marked "(proven: stopped at its target)"
 looser() {
 	for p in $P; do
 		[ -f "$R/full/$p/certify.csv" ] || continue
@@ -211,7 +215,8 @@ looser() {
 			{ k = $2 SUBSEP $3 SUBSEP $4 SUBSEP $5
 			  for (i = 1; i <= n[k]; i++) if (lo[k, i] + 0 <= $6 + 0 && $7 + 0 <= hi[k, i] + 0) {
 				if (b[k, i] != "inf" && ($8 == "inf" || $8 + 0 > b[k, i] + 0))
-					printf "gpu_table.sh: %s %s %s nz [%s, %s] phi [%s, %s]: full-budget bound %s looser than the --quick bound %s\n", p, $2, $3, $4, $5, $6, $7, $8, b[k, i]
+					printf "gpu_table.sh: %s %s %s nz [%s, %s] phi [%s, %s]: full-budget bound %s looser than the --quick bound %s%s\n", p, $2, $3, $4, $5, $6, $7, $8, b[k, i],
+					       $13 == "proven" && $8 != "inf" ? " (proven: stopped at its target)" : ""
 				break } }'
 	done
 }
@@ -229,9 +234,9 @@ replace "$T/gpu3.md" '<!-- gpu-brackets: begin (scripts/gpu_table.sh) -->' '<!--
 # the looser regions already reported (results/gpu/full/known-looser.txt, one
 # line each as printed here) are listed in docs/gpu.md; any other fails
 K="$R/full/known-looser.txt"; touch "$T/known"; [ -f "$K" ] && grep -v '^#' "$K" > "$T/known" || true
-grep -v -x -F -f "$T/known" "$T/looser" > "$T/new" || true
+grep -v -x -F -f "$T/known" "$T/looser" | grep -v ' (proven: stopped at its target)$' > "$T/new" || true
 if [ -s "$T/new" ]; then cat "$T/new" >&2; echo "gpu_table.sh: a full-budget bound looser than the --quick one (a bug in certify or a stale run)" >&2; exit 1; fi
-{ echo "Full-budget regions with a looser bound than the --quick region holding it (results/gpu/full/known-looser.txt; the full budget must never prove less: each is an open finding):"; echo
+{ echo "Full-budget regions with a looser bound than the --quick region holding it (a looser region with status budget fails this script unless results/gpu/full/known-looser.txt lists it as an open finding; a proven one stopped at its target, bound <= 1.25 found, with fewer boxes than --quick split into: allowed, below):"; echo
   if [ -s "$T/looser" ]; then sed 's/^gpu_table.sh: /- /' "$T/looser"; else echo "- none"; fi; } > "$T/anom"
 replace "$T/gpu.md" '<!-- gpu-looser: begin (scripts/gpu_table.sh) -->' '<!-- gpu-looser: end -->' "$T/anom" > "$T/gpu4.md"; mv "$T/gpu4.md" "$T/gpu.md"
 replace README.md '<!-- gpu-headline: begin (scripts/gpu_table.sh) -->' '<!-- gpu-headline: end -->' "$T/head" > "$T/README.md"

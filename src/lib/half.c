@@ -208,19 +208,28 @@ V HN(frisvad_rotateh)(V n, H x, H y, H z)
 }
 
 /* ---- duff, duff_branchless, mitsuba3 ---- */
+/* Duff et al.'s lower branch's a and b (n.z < 0), and its upper branch
+   whole (Frisvad's formula); q2rtx_fixed shares both.  Macros: the
+   compiled kernels stay the same bytes (CODE_KEY("half"): certify
+   --precision half's keys). */
+#define H_DUFF_LOWER_AB                                                        \
+	const H a = hdiv(H1, hsub(H1, n.z));                                       \
+	const H b = hmul(hmul(n.x, n.y), a)
+#define H_DUFF_UPPER                                                           \
+	{                                                                          \
+		const H a = hdiv(H1, hadd(H1, n.z));                                   \
+		const H b = hmul(hmul(hneg(n.x), n.y), a);                             \
+		*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), b, hneg(n.x));           \
+		*b2 = hvec(b, hsub(H1, hmul(hmul(n.y, n.y), a)), hneg(n.y));           \
+	}
 void HN(duffh)(V n, V *b1, V *b2)
 {
 	if (n.z < H0) {
-		const H a = hdiv(H1, hsub(H1, n.z));
-		const H b = hmul(hmul(n.x, n.y), a);
+		H_DUFF_LOWER_AB;
 		*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), hneg(b), n.x);
 		*b2 = hvec(b, hsub(hmul(hmul(n.y, n.y), a), H1), hneg(n.y));
-	} else {
-		const H a = hdiv(H1, hadd(H1, n.z));
-		const H b = hmul(hmul(hneg(n.x), n.y), a);
-		*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), b, hneg(n.x));
-		*b2 = hvec(b, hsub(H1, hmul(hmul(n.y, n.y), a)), hneg(n.y));
-	}
+	} else
+		H_DUFF_UPPER
 }
 static inline H hsign(H z) { return (H)copysignf(1.0f, (float)z); }
 void HN(duff_branchlessh)(V n, V *b1, V *b2)
@@ -562,16 +571,11 @@ void HN(threejsh)(V n, V *b1, V *b2)
 void HN(q2rtx_fixedh)(V n, V *b1, V *b2)
 {
 	if (n.z < H0) {
-		const H a = hdiv(H1, hsub(H1, n.z));
-		const H b = hmul(hmul(n.x, n.y), a);
+		H_DUFF_LOWER_AB;
 		*b1 = hvec(b, hsub(hmul(hmul(n.y, n.y), a), H1), hneg(n.y));
 		*b2 = hvec(hneg(hsub(H1, hmul(hmul(n.x, n.x), a))), b, hneg(n.x));
-	} else {
-		const H a = hdiv(H1, hadd(H1, n.z));
-		const H b = hmul(hmul(hneg(n.x), n.y), a);
-		*b1 = hvec(hsub(H1, hmul(hmul(n.x, n.x), a)), b, hneg(n.x));
-		*b2 = hvec(b, hsub(H1, hmul(hmul(n.y, n.y), a)), hneg(n.y));
-	}
+	} else
+		H_DUFF_UPPER
 }
 
 /* ---- jolt_arm64: the non-SSE perpendicular (-x, std::max) ---- */

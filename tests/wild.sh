@@ -63,6 +63,19 @@ while IFS= read -r row; do
 	else bad "$name: '$cmd' gives defect $got, the row says $want (bound $bnd)"; fi
 done < "$T/rows"
 
+# a paragraph's "finds D = X at" followed by an `onbstudy eval` command
+# (a worst input outside the committed run, as rtao's): the replay gives X
+tr '\n' ' ' < docs/wild.md | grep -o 'finds D = [0-9.e+-]* at `onbstudy eval [^`]*`' > "$T/paras"
+[ -s "$T/paras" ] && ok || bad "no 'finds D = X at \`onbstudy eval ...\`' replay in docs/wild.md"
+while IFS= read -r para; do
+	want=$(printf '%s\n' "$para" | sed 's/^finds D = \([^ ]*\) at.*/\1/')
+	cmd=$(printf '%s\n' "$para" | sed 's/.*`onbstudy \(eval [^`]*\)`/\1/')
+	# shellcheck disable=SC2086 # the command's words
+	got=$(./onbstudy $cmd 2>&1 | sed -n 's/.*(max \([^)]*\)).*/\1/p' | head -1)
+	awk -v g="$got" -v w="$want" 'BEGIN { exit !(g != "" && sprintf("%.3g", g) == sprintf("%.3g", w)) }' && ok ||
+		bad "docs/wild.md says D = $want at '$cmd', the replay gives '$got'"
+done < "$T/paras"
+
 # the layout of docs/wild.md: the findings (### headings) before the
 # engines' table; that table and the findings sorted by the worst defect
 # found in float (non-finite first), then in double; the aliases grouped

@@ -15,6 +15,13 @@
 #  - with no checkpoint due (--checkpoint-every 600, and a run with --out
 #    and no --resume) rank 0 writes one when the job is ended: the resumed
 #    run starts from exactly the regions it said it kept;
+#  - with --checkpoint-every 0 rank 0 does not write when the job is
+#    ended (its checkpoint already holds every commit), so mpirun's
+#    SIGKILL, a second after its SIGTERM, has no write to cut short (with
+#    a grace of 0, in the run tried, a .certify-checkpoint.bin.partial.PID
+#    was left: the write cut short);
+#  - a partial checkpoint left by a writer that was killed is removed by
+#    the next run in that directory;
 #  - after the end the same command line says the work is done;
 #  - --precision half on 1 and 2 ranks: onbstudy certify's rows and stdout;
 #  - a bad option is refused once, exit 2, no hang.
@@ -103,9 +110,15 @@ kept=$(sed -n 's/.*committed so far (first pass: \([0-9]*\) of \([0-9]*\) region
 set -- ${kept:-0 -1 0}   # (none said: a failure below, not an unset $1)
 [ $# -eq 3 ] && [ "$1" = "$2" ] && [ "$3" -gt 0 ] && [ "$3" -lt "$2" ] && ok ||
 	bad "killed in the images pass, no checkpoint due: kept '$kept': $(grep -v '^-' "$d.err1" | head -8)"
+# ... and a partial checkpoint of a writer that is gone (killed while it
+#     wrote) beside it: the resumed run removes it, and reads the last
+#     complete one
+dead=$(sh -c 'echo $$')
+echo partial > "$d/.certify-checkpoint.bin.partial.$dead"
 OMP_NUM_THREADS=1 $MPIRUN -n 2 ./onbstudy-mpi certify $Q --resume "$d" > "$d.out" 2> "$d.err"
 grep -q "continuing from its checkpoint ($1 of $2 regions run)" "$d.err" && ok || bad "the late checkpoint, resumed: $(head -3 "$d.err")"
 same "$d" "the late checkpoint, resumed"
+ls -A "$d" | grep -q 'partial' && bad "the late checkpoint, resumed: a dead writer's partial checkpoint left: $(ls -A "$d" | tr '\n' ' ')" || ok
 # ... a run with --out and no --resume: the checkpoint in its directory,
 #     and the message's --resume DIR continues it
 d="$T/out"

@@ -48,6 +48,7 @@ typedef struct {
 	const char *resume;     /* --resume DIR */
 	const char *reuse;      /* --reuse DIR */
 	const char *check_keys; /* --check-keys DIR */
+	const char *write_keys; /* --write-keys DIR */
 	double ck_every;        /* --checkpoint-every S */
 	const unsigned char *frozen;   /* per group: re-used whole (--reuse), not refined */
 	int nreused;            /* groups re-used */
@@ -63,6 +64,7 @@ typedef struct {
 	double every, last;
 	int failed;             /* a checkpoint could not be written: stop */
 	int stopped;            /* cert_stop_save: nothing more is committed */
+	int current;            /* the checkpoint in dir holds every commit */
 	int kill_phase;         /* ONB_CERT_KILL=PHASE:N (tests): SIGKILL after */
 	long kill_at, commits;  /* the N-th commit of that phase */
 } run_ctl;
@@ -161,7 +163,12 @@ static void usage(FILE *f)
 	"                    engine: DIR/certify-keys.csv, which every run writes) is\n"
 	"                    unchanged from DIR's certify.csv; compute the others\n"
 	"  --check-keys DIR  prove nothing: exit 0 when every key of this command line is\n"
-	"                    DIR's (DIR/certify.csv is current), else 1 naming the stale\n");
+	"                    DIR's (DIR/certify.csv is current), else 1 naming the stale\n"
+	"  --write-keys DIR  prove nothing: write DIR/certify-keys.csv, the keys of this\n"
+	"                    command line, for a DIR/certify.csv that holds its methods,\n"
+	"                    precisions and regions and whose rows this code gives (made\n"
+	"                    before the keys, or by an engine engines.txt declares the\n"
+	"                    same: that claim is the caller's, with its evidence)\n");
 }
 
 /* Split line s at commas into f (at most max fields); returns the count. */
@@ -311,6 +318,16 @@ static int half_options_bad(const cert_cli *c)
 	return 1;
 }
 
+/* --check-keys and --write-keys prove nothing: no output to go with them. */
+static int keys_options_bad(const cert_cli *c)
+{
+	if (!c->write_keys || !(c->check_keys || c->reuse || c->resume || c->out))
+		return 0;
+	study_error("--write-keys proves nothing and writes only its keys: drop --out, --resume, --reuse and "
+	            "--check-keys");
+	return 1;
+}
+
 /* --arith NAME: the profile, and whether it differs from ieee. */
 static int parse_arith(const char *arg, cert_cli *c)
 {
@@ -347,6 +364,7 @@ static int parse(int argc, char **argv, cert_cli *c)
 		{ "fma", no_argument, NULL, 'F' }, { "arith", required_argument, NULL, 'A' },
 		{ "resume", required_argument, NULL, 'R' },
 		{ "reuse", required_argument, NULL, 'U' }, { "check-keys", required_argument, NULL, 'K' },
+		{ "write-keys", required_argument, NULL, 'W' },
 		{ "checkpoint-every", required_argument, NULL, 'E' },
 		{ "depth", required_argument, NULL, 'D' }, { "azimuths", required_argument, NULL, 'Z' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
@@ -392,14 +410,15 @@ static int parse(int argc, char **argv, cert_cli *c)
 		case 'R': c->resume = a.arg; break;
 		case 'U': c->reuse = a.arg; break;
 		case 'K': c->check_keys = a.arg; break;
+		case 'W': c->write_keys = a.arg; break;
 		case 'E': if (parse_every(a.arg, c)) goto bad; break;
 		default: goto bad;
 		}
-		c->set_other |= v > 0 && strchr("bntSTFUK", v) != NULL;
+		c->set_other |= v > 0 && strchr("bntSTFUKW", v) != NULL;
 	}
 	if (cli_no_rest(&a))
 		goto bad;
-	if (half_options_bad(c))
+	if (half_options_bad(c) || keys_options_bad(c))
 		goto bad;
 	if (c->arith_given && c->fma) {
 		study_error("--arith and --fma exclude each other (a profile's contraction covers the +fma copies)");
@@ -614,8 +633,10 @@ static void commit(const task_set *s, int i, const cert_result *r, int flag)
 		else
 			c->ck.base[i] = *r;
 		c->ck.flag[i] |= (unsigned char)flag;
+		c->current = 0;
 		if (c->dir && !c->failed && study_now() - c->last >= c->every) {
 			c->failed = ck_write(c->dir, &c->ck) != 0;
+			c->current = !c->failed;
 			c->last = study_now();
 		}
 		if (flag == c->kill_phase && ++c->commits == c->kill_at)
@@ -1334,6 +1355,51 @@ static int check_keys(const cert_cli *c, run_ctl *ctl)
 	return stale || rc ? 1 : 0;
 }
 
+/* --write-keys DIR: the keys of this command line into DIR's keys file,
+   once DIR/certify.csv holds a row of every one of its regions and no
+   other method and precision; 0, or 1 refused. */
+static int write_keys(const cert_cli *c, const cert_region *reg, const task *t, int nt, const int *gi,
+                      run_ctl *ctl)
+{
+	char path[4096], line[8192], *f[24];
+	cert_result *res = calloc((size_t)nt + 1, sizeof *res);
+	unsigned char *flag = calloc((size_t)nt + 1, 1);
+	int g, i, bad = 0, rows = 0;
+	FILE *in = NULL;
+	if (!res || !flag || snprintf(path, sizeof path, "%s/certify.csv", c->write_keys) >= (int)sizeof path ||
+	    !(in = fopen(path, "r"))) {
+		study_error("--write-keys %s: no certify.csv there", c->write_keys);
+		bad = 1;
+	}
+	for (g = 0; !bad && g < ctl->ck.ng; g++) {
+		int want = 0;
+		for (i = 0; i < nt; i++)
+			want += gi[group_of(&t[i])] == g;
+		if (reuse_group(in, &ctl->ck.g[g], reg, t, nt, g, gi, res, flag) != want) {
+			study_error("--write-keys %s: its certify.csv does not hold the %d regions of %s %s of this "
+			            "command line", c->write_keys, want, ctl->ck.g[g].name, prec_name(ctl->ck.g[g].prec));
+			bad = 1;
+		}
+		rows += want + 1;
+	}
+	if (!bad) {   /* no rows of other methods, precisions or regions */
+		rewind(in);
+		while (fgets(line, sizeof line, in))
+			rows -= line[0] != '#' && split_fields(line, f, 24) >= 16 && strcmp(f[0], "method") != 0;
+		if ((bad = rows != 0) != 0)
+			study_error("--write-keys %s: its certify.csv holds rows of methods, precisions or regions not on "
+			            "this command line", c->write_keys);
+	}
+	if (in)
+		fclose(in);
+	free(res);
+	free(flag);
+	if (bad || keys_write(c->write_keys, &ctl->ck, study_cmdline))
+		return 1;
+	printf("%s: %d keys written (no proof run)\n", c->write_keys, ctl->ck.ng);
+	return 0;
+}
+
 /* --resume DIR: the checkpoint's state into res; 0 to run, 1 when the
    work is done already, -1 refused. */
 static int resume_dir(const cert_cli *c, run_ctl *ctl, cert_result *res)
@@ -1384,6 +1450,7 @@ static int ck_now(run_ctl *ctl)
 {
 	if (!ctl->failed && ctl->dir) {
 		ctl->failed = ck_write(ctl->dir, &ctl->ck) != 0;
+		ctl->current = !ctl->failed;
 		ctl->last = study_now();
 	}
 	if (ctl->failed)
@@ -1406,6 +1473,8 @@ static int prepare_state(cert_cli *c, const study_kernel *ks, int nk, const cm_m
 	}
 	if (c->check_keys)
 		return 1 + check_keys(c, ctl);
+	if (c->write_keys)
+		return 1 + write_keys(c, reg, t, nt, gi, ctl);
 	if (study_mkdir_p(dir))
 		return 2;
 	kill_hook(ctl);
@@ -1543,8 +1612,8 @@ int cert_stop_save(void)
 {
 	int rc = 1;
 #pragma omp critical(cert_commit)
-	if (live.ctl)
-		rc = ck_write(live.dir, &live.ctl->ck) != 0 ? -1 : 0;
+	if (live.ctl)   /* nothing new since the last checkpoint: no write to be cut short by mpirun's SIGKILL */
+		rc = live.ctl->current ? 0 : ck_write(live.dir, &live.ctl->ck) != 0 ? -1 : 0;
 	return rc;
 }
 

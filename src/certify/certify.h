@@ -60,9 +60,11 @@ extern const cert_dist *cert_distribute;
    directory of the checkpoint (the --resume DIR, or else the run's
    output directory, which --resume DIR then continues) and the region
    tasks with a result of each pass; 0, or 1 when no run is under way.
-   cert_stop_save then writes the checkpoint of every result committed:
-   0 written, -1 not (a message said why; the last one, if any, is
-   intact), 1 no run under way. */
+   cert_stop_save then writes the checkpoint of every result committed
+   (no write when the last checkpoint already holds them all, as with
+   --checkpoint-every 0: nothing for mpirun's SIGKILL to cut short):
+   0 written or current, -1 not (a message said why; the last one, if
+   any, is intact), 1 no run under way. */
 typedef struct {
 	char dir[4096];
 	int nt, run, images, refined;

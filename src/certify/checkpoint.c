@@ -7,8 +7,10 @@
  * them back: sizes and a byte-order mark are checked), and an FNV-1a hash
  * of everything before it (a truncated or altered file is refused).
  */
+#include <dirent.h>
 #include <errno.h>
 #include <inttypes.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -178,6 +180,31 @@ static int get_bin(FILE *f, uint64_t *h, void *p, size_t n)
 	return 0;
 }
 
+/* The partial checkpoints in dir (study_out's ".NAME.partial.PID") of a
+   writer that is gone: one killed while it wrote (onbstudy-mpi's rank 0,
+   SIGKILLed by mpirun in the middle of a write) left its partial file
+   beside the last complete checkpoint; removed.  A live writer's is
+   left alone. */
+static void clean_partials(const char *dir)
+{
+	static const char head[] = "." CK_NAME ".partial.";
+	char path[4096], *end;
+	struct dirent *e;
+	DIR *d = opendir(dir);
+	while (d && (e = readdir(d)) != NULL) {
+		long pid;
+		if (strncmp(e->d_name, head, sizeof head - 1) != 0)
+			continue;
+		pid = strtol(e->d_name + sizeof head - 1, &end, 10);
+		if (*end || pid <= 0 || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+			continue;
+		if (snprintf(path, sizeof path, "%s/%s", dir, e->d_name) < (int)sizeof path)
+			remove(path);
+	}
+	if (d)
+		closedir(d);
+}
+
 int ck_read(const char *dir, ck_state *s)
 {
 	char path[4096];
@@ -186,6 +213,7 @@ int ck_read(const char *dir, ck_state *s)
 	int bad;
 	if (snprintf(path, sizeof path, "%s/%s", dir, CK_NAME) >= (int)sizeof path)
 		return -1;
+	clean_partials(dir);
 	if (!(f = fopen(path, "rb"))) {
 		if (errno == ENOENT)
 			return 1;

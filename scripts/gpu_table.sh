@@ -177,7 +177,7 @@ brackets() {
 	echo "side's (one greedy adversarial pass at 4 inputs per region), which a larger budget cannot"
 	echo "separate.  **bound** where the bound still fell by more than 2% while found stayed within"
 	echo "2%; **found** where found still rose by more than 10% while the bound stood within 2%;"
-	echo "**both** otherwise."
+	echo "**both** otherwise.  A --quick bound of inf (no finite bound at 40 boxes) counts as a fall of 100%."
 	echo
 	echo "| profile | method | prec | full: bound / found | ratio | quick ratio | region: nz, phi | its bound / found, status | floor | moved: bound, found | loose side |"
 	echo "|---|---|---|---|---|---|---|---|---|---|---|"
@@ -193,9 +193,9 @@ brackets() {
 				if (wb[k] == "inf" || wf[k] + 0 <= 0 || wb[k] / wf[k] <= 1.25) continue
 				for (j = 1; j <= m; j++) if (rk[j] == k && rb[j] == wb[k]) break
 				eq = 0; nb = 0; for (l = 1; l <= m; l++) if (rk[l] == k && rlo[l] == rlo[j] && rhi[l] == rhi[j]) { nb++; if (rb[l] == wb[k]) eq++ }
-				q = qb[k] ~ /^[0-9]/; db = q ? (wb[k] / u - qb[k]) / qb[k] : 0; df = q ? (wf[k] / u - qf[k]) / qf[k] : 0
-				side = eq == nb && nb > 1 ? "floor" : (!q ? "not read (no --quick run)" : (db < -0.02 && df < 0.02 ? "bound" : (df > 0.1 && db > -0.02 ? "found" : "both")))
-				mv = q ? sprintf("%+.0f%%, %+.0f%%", 100 * db, 100 * df) : "no --quick run"
+				q = qb[k] ~ /^[0-9]/; qi = qb[k] == "inf"; db = q ? (wb[k] / u - qb[k]) / qb[k] : (qi ? -1 : 0); df = q || qi ? (wf[k] / u - qf[k]) / qf[k] : 0
+				side = eq == nb && nb > 1 ? "floor" : (!q && !qi ? "not read (no --quick run)" : (db < -0.02 && df < 0.02 ? "bound" : (df > 0.1 && db > -0.02 ? "found" : "both")))
+				mv = q ? sprintf("%+.0f%%, %+.0f%%", 100 * db, 100 * df) : (qi ? sprintf("from inf, %+.0f%%", 100 * df) : "no --quick run")
 				printf "| `%s` | %s | %s | %.3g / %.3g | %.2f | %s | [%.6g, %.6g], [%s, %s] | %.3g / %.3g, %s | %d of %d | %s | %s |\n", p, a[1], a[2], wb[k] / u, wf[k] / u, wb[k] / wf[k],
 					q ? sprintf("%.2f", qb[k] / qf[k]) : (qb[k] != "" ? qb[k] : "-"), rlo[j], rhi[j], rpl[j], rph[j], rb[j] / u, rf[j] / u, rs[j], eq, nb, mv, side } }'
 	done

@@ -29,7 +29,11 @@ CSV=$DIR/certify.csv
 command -v gnuplot >/dev/null 2>&1 || { echo "certify-plot: gnuplot is not installed" >&2; exit 2; }
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
-sh "$HERE/styles.sh" "$CSV" > "$W/styles"
+# (panels of at most three methods, not five: where the engines' brackets
+# lay within 2x of each other, five translucent shades and hatches
+# stacked into one band no colour told apart; three stay readable: one
+# shade and two hatches of different angles)
+PANEL_MAX=${PANEL_MAX:-3} sh "$HERE/styles.sh" "$CSV" > "$W/styles"
 made=""
 # keys "FILES" "NAMES" "PANELS": per method, "DUP FILL TITLE", and a sixth
 # column in each file: 1 where the band's bracket (found, bound) is an

@@ -39,6 +39,13 @@
 #    so a pair shared is a method missing from the table or a style
 #    assigned by place rather than by method (NAME+fma excepted).  The
 #    dash is the series' stroke-dasharray divided by its smallest entry.
+# 9. (with leadcheck=1: a diagnostic, not run on the committed charts,
+#    whose tradeoff charts it fails: docs/chart-grading.md) a label's
+#    leader line (the tradeoff charts': grey, rgb(119, 119,
+#    119), drawn outside any series) crosses no other leader, passes
+#    through no text but, at its end, its own label's edge, and passes
+#    no marker closer than 5 pixels but those within 9 of its start (its
+#    own point's, and markers that overlap it).
 # A text's box is estimated from gnuplot's font size (width 0.56 em per
 # character, height 1 em, on the baseline), so "overlap" means boxes
 # that share more than 1.5 px each way.  Texts turned by other than 0 or
@@ -80,6 +87,18 @@ function dashkey(s,   a, k, i, lo, r) {
 }
 cur && st[cur] != "" && !(cur in sdash) && /<path stroke=/ { sdash[cur] = dashkey($0) }
 cur && st[cur] != "" && !(cur in spt) && match($0, /xlink:href='#gpPt[0-9]+'/) { spt[cur] = substr($0, RSTART + 17, RLENGTH - 18) }
+# a leader line (check 9): its segments (gnuplot writes one path for all
+# of a plot's arrows, over several lines)
+!cur && /<path stroke='rgb\(119, 119, 119\)'/ { inlead = 1; ld = "" }
+inlead { ld = ld " " $0; if ($0 !~ /'\/>/) next; inlead = 0
+	d = ld; sub(/.*d='/, "", d); sub(/'.*/, "", d); gsub(/[\t ]+/, " ", d); m = split(d, p, / +/); have = 0
+	for (i = 1; i <= m; i++) {
+		if (p[i] !~ /,/) continue
+		mv = (p[i] ~ /^M/); t = p[i]; sub(/^[ML]/, "", t); split(t, q, ",")
+		if (!mv && have) { nld++; DX0[nld] = px; DY0[nld] = py; DX1[nld] = q[1] + 0; DY1[nld] = q[2] + 0 }
+		px = q[1] + 0; py = q[2] + 0; have = 1
+	}
+}
 # a non-finite band (drawn behind, before its plot's series)
 /<polygon fill = 'rgb\(251, 227, 212\)'/ { nfpend = 1 }
 # the end of a plot's group (a text's group ends in the rule below)
@@ -170,6 +189,7 @@ END {
 		if (tot[t] == 0 && t !~ /no finite point/ && t !~ /^[^ ]+ = [^ ]+$/)
 			fail(sprintf("series \"%s\" draws nothing and does not say so", t))
 	overdata()
+	if (leadcheck) leaders()
 	floors()
 	if (nfband) { nfbands(); linestyles() }
 	colours()
@@ -255,4 +275,22 @@ function linestyles(   s, t, b, k, seen3) {
 			fail(sprintf("\"%s\" and \"%s\" share the line style (%s) in one plot", lsname[spl[s], k], st[s], k))
 		if (!((spl[s], k) in lsown)) { lsown[spl[s], k] = b; lsname[spl[s], k] = st[s] }
 	}
+}
+# leaders(): no two leader lines cross, none passes through a text (check 9)
+function ori(ax, ay, bx, by, cx, cy,   v) { v = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax); return v > 0.01 ? 1 : (v < -0.01 ? -1 : 0) }
+function leaders(   a, b, i) {
+	for (a = 1; a <= nld; a++) for (b = a + 1; b <= nld; b++)
+		if (ori(DX0[a], DY0[a], DX1[a], DY1[a], DX0[b], DY0[b]) * ori(DX0[a], DY0[a], DX1[a], DY1[a], DX1[b], DY1[b]) < 0 && \
+		    ori(DX0[b], DY0[b], DX1[b], DY1[b], DX0[a], DY0[a]) * ori(DX0[b], DY0[b], DX1[b], DY1[b], DX1[a], DY1[a]) < 0)
+			fail(sprintf("two leader lines cross (%.0f,%.0f-%.0f,%.0f and %.0f,%.0f-%.0f,%.0f)", DX0[a], DY0[a], DX1[a], DY1[a], DX0[b], DY0[b], DX1[b], DY1[b]))
+	for (a = 1; a <= nld; a++) { nseg++; SX0[nseg] = DX0[a]; SY0[nseg] = DY0[a]; SX1[nseg] = DX1[a]; SY1[nseg] = DY1[a]
+		for (i = 1; i <= n; i++) if (K[i] != "d" && cross(i, nseg)) fail(sprintf("a leader line passes through the text \"%s\"", T[i]))
+		nseg--
+		for (i = 1; i <= nmk; i++) if ((MKX[i] - DX0[a]) ^ 2 + (MKY[i] - DY0[a]) ^ 2 > 81 && pdist2(MKX[i], MKY[i], DX0[a], DY0[a], DX1[a], DY1[a]) < 25)
+			fail(sprintf("a leader line (%.0f,%.0f-%.0f,%.0f) passes over a marker at %.0f,%.0f", DX0[a], DY0[a], DX1[a], DY1[a], MKX[i], MKY[i])) }
+}
+function pdist2(qx, qy, x0, y0, x1, y1,   dx, dy, t) {
+	dx = x1 - x0; dy = y1 - y0; t = (dx * dx + dy * dy > 0) ? ((qx - x0) * dx + (qy - y0) * dy) / (dx * dx + dy * dy) : 0
+	if (t < 0) t = 0; if (t > 1) t = 1
+	return (qx - x0 - t * dx) ^ 2 + (qy - y0 - t * dy) ^ 2
 }

@@ -178,11 +178,11 @@ $(filter-out $(B)/bench/yardstick.o,$(STUDY_OBJ)): $(B)/%.o: src/%.c include/lib
 
 # Provenance: output.o and main.o carry the git revision and the flags.
 # rev.stamp changes whenever they do (checked on every make), so a result
-# file never names a stale revision.
+# file never names a stale revision.  (Its temporary file is the shell's
+# own: tests that run make run two at a time, scripts/test-run.sh.)
 $(B)/rev.stamp: FORCE
 	@mkdir -p $(B)
-	@echo '$(GIT_REV) $(BASE)' > $@.tmp
-	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+	@t=$@.tmp.$$$$; echo '$(GIT_REV) $(BASE)' > $$t; if cmp -s $$t $@; then rm -f $$t; else mv $$t $@; fi
 $(B)/common/output.o $(MAIN_OBJ): $(B)/rev.stamp
 # certify's keys (src/certify/keys.c): a hash of the sources that decide a
 # region's result beyond its method; engine.stamp changes when it does.
@@ -194,8 +194,7 @@ CERT_ENGINE_SUM := $(shell cat $(CERT_ENGINE_SRC) 2>/dev/null | cksum | cut -d' 
 CERT_ENGINE := $(shell awk -v s=$(CERT_ENGINE_SUM) '$$1 == s { print $$2; f = 1; exit } END { if (!f) print s }' src/certify/engines.txt 2>/dev/null || echo $(CERT_ENGINE_SUM))
 $(B)/engine.stamp: FORCE
 	@mkdir -p $(B)
-	@echo '$(CERT_ENGINE)' > $@.tmp
-	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+	@t=$@.tmp.$$$$; echo '$(CERT_ENGINE)' > $$t; if cmp -s $$t $@; then rm -f $$t; else mv $$t $@; fi
 $(B)/certify/keys.o: $(B)/engine.stamp
 $(B)/certify/keys.o: XFLAGS += -DONB_CERT_ENGINE='"$(CERT_ENGINE)"' -DONB_CODE_KEYS -I$(B)/certify
 .PHONY: FORCE
@@ -299,18 +298,22 @@ TEST_SH = $(filter-out tests/lib.sh $(if $(SANITIZE),$(SANITIZE_SKIP)),$(wildcar
 # (16384 uniform inputs, every pole and threshold input; 10^6).
 SANITIZE_ARGS = test_reffast:500 test_certify:100000 test_indep:--quick
 # everything the tests need, built (in parallel with make -jN test-build:
-# CI does that first); `make test` itself then runs the tests one by one
+# CI does that first; the MPI driver and aorender too, which tests/mpi.sh,
+# certify_mpi.sh and render_obj.sh would otherwise build while other tests
+# run); `make test` then runs the tests TEST_JOBS at a time
+# (scripts/test-run.sh: each test's output whole, in this order; TEST_JOBS=1
+# runs them one by one).  Wall and CPU seconds per test go to
+# $(B)/test-times.tsv.
+TEST_JOBS ?= 2
 .PHONY: test-build
-test-build: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX) gpu
+test-build: $(B)/test-deps.stamp all $(TEST_BIN) $(TEST_AUX) gpu onbstudy-mpi $(B)/aorender
 test: test-build
-	@fail=0; : > $(B)/test-times.tsv; \
-	$(if $(SANITIZE),echo "make test: not run under SANITIZE: $(SANITIZE_SKIP)";) \
-	for t in $(TEST_BIN) $(TEST_SH); do a=; \
-	  $(if $(SANITIZE),for x in $(SANITIZE_ARGS); do [ "$${x%%:*}" = "$${t##*/}" ] && a=$${x#*:}; done;) \
-	  echo "== $$t$${a:+ $$a}"; s=$$(date +%s); \
-	  case $$t in *.sh) ONB_SANFLAGS='$(SANFLAGS)' sh $$t || fail=1;; *) $$t $$a || fail=1;; esac; \
-	  printf '%s\t%s\n' "$$t" $$(( $$(date +%s) - s )) >> $(B)/test-times.tsv; done; \
-	echo "make test: seconds per test (the slowest five; all in $(B)/test-times.tsv):"; sort -k2,2nr $(B)/test-times.tsv | head -5; \
+	@$(if $(SANITIZE),echo "make test: not run under SANITIZE: $(SANITIZE_SKIP)";) \
+	fail=0; ONB_SANFLAGS='$(SANFLAGS)' sh scripts/test-run.sh $(TEST_JOBS) $(B)/test-logs \
+	  $(foreach t,$(TEST_BIN) $(TEST_SH),$(t)$(if $(SANITIZE),$(patsubst $(notdir $(t)):%,:%,$(filter $(notdir $(t)):%,$(SANITIZE_ARGS))))) || fail=1; \
+	cp $(B)/test-logs/times.tsv $(B)/test-times.tsv; \
+	echo "make test: seconds per test, wall and CPU (the slowest five; all in $(B)/test-times.tsv):"; sort -k2,2nr $(B)/test-times.tsv | head -5; \
+	awk -F'\t' '{ w += $$2; c += $$3 } END { printf "make test: %d tests, %.0f s of wall and %.0f s of CPU summed over the tests, $(TEST_JOBS) at a time\n", NR, w, c }' $(B)/test-times.tsv; \
 	if [ $$fail -ne 0 ]; then echo "make test: FAILED"; exit 1; fi; echo "make test: all passed"
 
 # make check-method M=NAME: what a new method needs, in about a minute:

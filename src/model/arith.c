@@ -82,7 +82,7 @@ static const arith_profile profiles[] = {
 	    { CL_D_OPS, 53, 0, 0.0, INFINITY, "x+y, x-y, x*y, x/y, 1/x, sqrt, fma correctly rounded; rsqrt 2 ulp; denormals supported" },
 	    { CL_H_OPS, 11, 1, 0.0, INFINITY,
 	      "cl_khr_fp16, full profile (table \"ULP Values for Half-Precision Floating-Point Arithmetic Operations\"): x+y, x-y, x*y, fma correctly rounded in the device's mode, which may be round to zero (CL_DEVICE_HALF_FP_CONFIG's minimum is CL_FP_ROUND_TO_ZERO): < 1 ulp; x/y and 1.0/x 1 ulp; sqrt 1.5 ulp; rsqrt 1 ulp; conversions to half round to nearest even (the default _rte); denormals optional (CL_FP_DENORM): may flush" } },
-	  1, 0, 0, "OpenCL C 3.0 section 7.4 (Relative Error as ULPs; its half-precision table with cl_khr_fp16), 7.5 (Edge Case Behavior in Flush To Zero Mode), 6.13.2 (FP_CONTRACT), 6.4.3 (conversions: default rounding _rte); OpenCL 3.0 API 4.2 (CL_DEVICE_HALF_FP_CONFIG)",
+	  1, 0, 2, "OpenCL C 3.0 section 7.4 (Relative Error as ULPs; its half-precision table with cl_khr_fp16), 7.5 (Edge Case Behavior in Flush To Zero Mode), 6.13.2 (FP_CONTRACT), 6.4.3 (conversions: default rounding _rte); OpenCL 3.0 API 4.2 (CL_DEVICE_HALF_FP_CONFIG)",
 	  "dot, cross, length, normalize built-ins have their own ulp bounds (normalize 2 + n ulp); the C kernels use +, *, /, sqrt" },
 	{ "cuda-fast", "CUDA with --use_fast_math (-ftz=true -prec-div=false -prec-sqrt=false -fmad=true)", 0,
 	  { { CUDA_F_OPS, 24, 1, 0x1p-126, 0x1p126,
@@ -257,7 +257,8 @@ void arith_describe(const arith_profile *p, char *buf, size_t n)
 	used = (size_t)snprintf(buf, n, "%s: contract %s, reassociation %s, signed zeros %s;", p->name,
 	                        p->contract ? "any a*b+c" : "no",
 	                        p->reassoc ? "allowed by the spec (proven: the source's order, every contraction choice)" : "no",
-	                        p->zero_sign ? "may be lost" : "kept");
+	                        p->zero_sign == 2 ? "undefined where flushed (may be lost)"
+	                        : p->zero_sign ? "may be lost" : "kept");
 	for (f = 0; f < PREC_COUNT && used < n; f++) {
 		used += (size_t)snprintf(buf + used, n - used, " %s:", prec_name(f));
 		for (op = 0; op < AR_NOPS && used < n; op++) {
@@ -288,6 +289,6 @@ void arith_print_table(void)
 				printf(" %-10s", t);
 			}
 			printf(" %-5s %-8s %-7s %-5s\n", p->fmt[f].flush ? "yes" : "no", p->contract ? "yes" : "no",
-			       p->reassoc ? "yes" : "no", p->zero_sign ? "lost" : "kept");
+			       p->reassoc ? "yes" : "no", p->zero_sign == 2 ? (p->fmt[f].flush ? "flush" : "kept") : p->zero_sign ? "lost" : "kept");
 		}
 }

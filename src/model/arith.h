@@ -76,7 +76,11 @@ typedef struct {
 	int reassoc;        /* the specification also allows reassociation: not
 	                       modelled; proven for the source's operation order,
 	                       every contraction choice                          */
-	int zero_sign;      /* the sign of a zero may be lost (-0 read as +0)    */
+	int zero_sign;      /* 1: the sign of a zero may be lost (-0 read as +0);
+	                       2: only where an operand or result is flushed
+	                       (OpenCL C 7.5.3: "if an operand or result is
+	                       flushed to zero, the sign of the zero is
+	                       undefined"); 0: kept                              */
 	const char *spec;   /* the sections the rows come from                   */
 	const char *compose;/* dot, cross, normalize, length, sign, abs, copysign */
 } arith_profile;

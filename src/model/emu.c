@@ -331,7 +331,8 @@ void cm__emu_read2(cm *c, cv *a, cv *b)
 }
 
 /* The sign test (copysign): a flushed operand keeps its sign; where the
-   profile may lose a zero's sign, a zero's sign may read either way. */
+   profile may lose a zero's sign, a zero's sign may read either way, and
+   where it loses only a flushed zero's (OpenCL), a flushed operand's. */
 int cm__emu_sign(cm *c, cv a)
 {
 	unsigned avail = 0, ch;
@@ -340,7 +341,7 @@ int cm__emu_sign(cm *c, cv a)
 	ch = next_choice(c, &idx);
 	x = flush_in(c, c->exec_f, c->x[a], ch, &avail);
 	s = signbit(x) != 0;
-	if (x == 0.0 && c->ar->zero_sign) {
+	if (x == 0.0 && (c->ar->zero_sign == 1 || (c->ar->zero_sign == 2 && x != c->x[a]))) {
 		avail |= CM_CH_ZSIGN;
 		if (ch & CM_CH_ZSIGN)
 			s = !s;

@@ -76,7 +76,9 @@ sleep 0.5
 victim=""
 i=0
 while [ -z "$victim" ] && [ $i -lt 50 ]; do
-	for p in $(pgrep -f "onbstudy-mpi sweep $K"); do
+	# this run's ranks alone (its --out names them): another mpi.sh at once
+	# (make test runs two tests at a time; other checkouts) has its own
+	for p in $(pgrep -f "onbstudy-mpi sweep $K --batch $BATCH --out $tmp/kill"); do
 		r=$(tr '\0' '\n' < /proc/$p/environ 2> /dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
 		[ "$r" = 1 ] && victim=$p
 	done
@@ -131,7 +133,7 @@ mp=$!
 victim=""
 i=0
 while [ -z "$victim" ] && [ $i -lt 600 ]; do
-	for p in $(pgrep -f "onbstudy-mpi sweep $K --batch 1000000"); do
+	for p in $(pgrep -f "onbstudy-mpi sweep $K --batch 1000000 --resume $tmp/early"); do
 		r=$(tr '\0' '\n' < /proc/$p/environ 2> /dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
 		[ "$r" = 1 ] && victim=$p
 	done

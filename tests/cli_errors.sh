@@ -174,7 +174,7 @@ R scene "$tmp/ok.obj" --tolerance nan
 R scene "$tmp/ok.obj" --tolerance inf
 R scene "$tmp/ok.obj" --tolerance 1e999
 R scene "$tmp/ok.obj" --tolerance 1e-6x
-R scene "$tmp/ok.obj" --precision half
+R scene "$tmp/ok.obj" --precision quarter
 R scene "$tmp/ok.obj" --up w
 R scene "$tmp/ok.obj" --up xy
 R scene "$tmp/ok.obj" --repeats 0

@@ -13,6 +13,15 @@
  * each stored normal is its own patch.  The domain is every format vector
  * within 4 ulps of 1 of unit length (the renderer's own normalization of the
  * interpolated normal).
+ *
+ * In binary16 (--precision half) nothing is proven anew: the committed
+ * proof results/half/certify/certify-half.csv (`certify --precision half`
+ * of every method, 68 regions each) is read, the same patches mark its
+ * regions, and each method's bound is the largest of its rows over the
+ * regions the scene reaches (whole regions, not cut to the scene's band:
+ * coarser, still a bound); a reached row that is not proven (non-finite,
+ * overflow, unbounded) makes it inf.  Its domain is the committed run's:
+ * every binary16 rounding of a unit vector.
  */
 #include <math.h>
 #include <stdio.h>
@@ -21,6 +30,8 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+#include <unistd.h>
+#include "common/csv.h"
 #include "mesh/meshio.h"
 #include "scene_cert.h"
 
@@ -216,6 +227,9 @@ static int certify_hits(const onb_method *ms, size_t nm, int prec, const cert_re
 	return fail ? -1 : 0;
 }
 
+static int scene_certify_half(const char *path, char up, double E, const onb_method *ms, size_t nm,
+                              const double *measured, const char *recommended, double *proven);
+
 int scene_certify(const char *path, char up, int prec, double E, const onb_method *ms, size_t nm,
                   const double *measured, const char *recommended, double *proven)
 {
@@ -225,6 +239,10 @@ int scene_certify(const char *path, char up, int prec, double E, const onb_metho
 	size_t nreg = regions_default(prec, 8, reg, MAXREG), i, nhit = 0, npatch = 0;
 	cert_opts o = { 60, 150, 1.25, 0.0, 1, NULL, NULL, NULL, 0, NULL };
 	double zmin = 2.0, zmax = -2.0;
+	if (prec == PREC_HALF) {
+		free(sb);
+		return scene_certify_half(path, up, E, ms, nm, measured, recommended, proven);
+	}
 	o.tolerance = prec == PREC_FLOAT ? 0x1p-22 : 0x1p-51;   /* 4 ulps of 1: the renderer's normalization */
 	memset(hit, 0, sizeof hit);
 	if (!sb || mark_scene(path, up, reg, nreg, hit, &npatch, &zmin, &zmax) != 0) {
@@ -260,5 +278,190 @@ int scene_certify(const char *path, char up, int prec, double E, const onb_metho
 		printf("  recommended %s: %s\n", recommended, nhit == (size_t)-1 ? "proven within E on every normal a renderer can interpolate here"
 		                                                          : "NOT proven within E on this scene's interpolated normals");
 	free(sb);
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* binary16: the committed proof                                       */
+/* ------------------------------------------------------------------ */
+
+#define HALF_CERT "results/half/certify/certify-half.csv"
+
+typedef struct {
+	char method[64];
+	int region, proven;   /* index into the regions; status proven */
+	double bound;
+	char status[16];
+} half_row;
+
+typedef struct {
+	half_row *rows;
+	size_t nrows, nreg;
+	cert_region reg[MAXREG];
+	char path[4096], rev[128];
+} half_cert;
+
+/* The committed file beside the executable, else in the working directory. */
+static int half_cert_path(char *buf, size_t n)
+{
+	char exe[4096];
+	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	char *sl;
+	if (l > 0) {
+		exe[l] = '\0';
+		if ((sl = strrchr(exe, '/')) != NULL) {
+			*sl = '\0';
+			if ((size_t)snprintf(buf, n, "%s/%s", exe, HALF_CERT) < n && access(buf, R_OK) == 0)
+				return 0;
+		}
+	}
+	snprintf(buf, n, "%s", HALF_CERT);
+	return access(buf, R_OK) == 0 ? 0 : -1;
+}
+
+/* The region of a row: an existing one, or a new one (-1: too many). */
+static int half_region(half_cert *h, const cert_region *r)
+{
+	size_t k;
+	for (k = 0; k < h->nreg; k++)
+		if (!memcmp(&h->reg[k], r, sizeof *r))
+			return (int)k;
+	if (h->nreg == MAXREG)
+		return -1;
+	h->reg[h->nreg] = *r;
+	return (int)h->nreg++;
+}
+
+/* One data line into a row; 0, or -1 when it is malformed. */
+static int half_line(half_cert *h, char **f, int n, const int *c, half_row *w)
+{
+	cert_region r;
+	char *e[5];
+	if (n <= c[7] || strcmp(f[c[1]], "half") != 0)
+		return -1;
+	r.nz_lo = strtod(f[c[2]], &e[0]); r.nz_hi = strtod(f[c[3]], &e[1]);
+	r.phi_lo = strtod(f[c[4]], &e[2]); r.phi_hi = strtod(f[c[5]], &e[3]);
+	w->bound = strtod(f[c[6]], &e[4]);
+	if (*e[0] || *e[1] || *e[2] || *e[3] || *e[4] || !(r.nz_lo <= r.nz_hi) || !(r.phi_lo < r.phi_hi))
+		return -1;
+	snprintf(w->method, sizeof w->method, "%s", f[c[0]]);
+	snprintf(w->status, sizeof w->status, "%s", f[c[7]]);
+	w->proven = strcmp(w->status, "proven") == 0 && isfinite(w->bound);
+	return (w->region = half_region(h, &r)) < 0 ? -1 : 0;
+}
+
+/* Reads the committed proof; 0, or -1 after a message. */
+static int half_read(half_cert *h)
+{
+	static const char *const names[8] = { "method", "precision", "nz_lo", "nz_hi", "phi_lo", "phi_hi", "bound", "status" };
+	char line[4096], *f[64];
+	int c[8], hdr = 0, n, k;
+	size_t cap = 0;
+	FILE *in;
+	if (half_cert_path(h->path, sizeof h->path) != 0 || !(in = fopen(h->path, "r"))) {
+		fprintf(stderr, "onbstudy scene --certify --precision half: no readable %s (the committed proof in binary16)\n", HALF_CERT);
+		return -1;
+	}
+	while (fgets(line, sizeof line, in)) {
+		line[strcspn(line, "\r\n")] = '\0';
+		if (line[0] == '#') {
+			if (!h->rev[0] && !strncmp(line, "# revision: ", 12))
+				snprintf(h->rev, sizeof h->rev, "%.100s", line + 12);
+			continue;
+		}
+		n = csv_split(line, f, 64, 0);
+		if (!hdr++) {
+			for (k = 0; k < 8; k++)
+				if ((c[k] = csv_col(f, n, names[k])) < 0)
+					goto bad;
+			continue;
+		}
+		if (h->nrows == cap) {
+			half_row *w = realloc(h->rows, (cap = cap ? 2 * cap : 1024) * sizeof *w);
+			if (!w)
+				goto bad;
+			h->rows = w;
+		}
+		if (half_line(h, f, n, c, &h->rows[h->nrows]) != 0)
+			goto bad;
+		h->nrows++;
+	}
+	fclose(in);
+	if (h->nrows)
+		return 0;
+	fprintf(stderr, "onbstudy scene --certify --precision half: %s holds no rows\n", h->path);
+	return -1;
+bad:
+	fclose(in);
+	fprintf(stderr, "onbstudy scene --certify --precision half: %s: malformed after %zu rows\n", h->path, h->nrows);
+	return -1;
+}
+
+/* Method name's bound over the reached regions: 0 and *found 0 when it has
+   no row there, inf when a reached row is not proven (*why: its status). */
+static double half_bound(const half_cert *h, const unsigned char *hit, const char *name, int *found, const char **why)
+{
+	double b = 0.0;
+	size_t k;
+	*found = 0;
+	*why = NULL;
+	for (k = 0; k < h->nrows; k++) {
+		const half_row *w = &h->rows[k];
+		if (!hit[w->region] || strcmp(w->method, name) != 0)
+			continue;
+		*found = 1;
+		if (!w->proven) {
+			b = INFINITY;
+			if (!*why)
+				*why = w->status;
+		} else if (w->bound > b) {
+			b = w->bound;
+		}
+	}
+	return b;
+}
+
+static int scene_certify_half(const char *path, char up, double E, const onb_method *ms, size_t nm,
+                              const double *measured, const char *recommended, double *proven)
+{
+	half_cert *h = calloc(1, sizeof *h);
+	unsigned char hit[MAXREG];
+	size_t i, npatch = 0, nhit = 0;
+	double zmin = 2.0, zmax = -2.0;
+	int rec = -1;
+	memset(hit, 0, sizeof hit);
+	if (!h || half_read(h) != 0 || mark_scene(path, up, h->reg, h->nreg, hit, &npatch, &zmin, &zmax) != 0) {
+		if (h) free(h->rows);
+		free(h);
+		return -1;
+	}
+	for (i = 0; i < h->nreg; i++)
+		nhit += hit[i];
+	printf("\nproven bounds for this scene (--certify, half): %zu shading patches reach %zu of the %zu regions of the committed proof\n"
+	       "  %s (revision %s; not proven anew); each bound is its rows' largest over those regions; domain: every binary16\n"
+	       "  rounding of a unit vector (a mediump normalize() that lands off that set is not covered); in u = 2^-11\n",
+	       npatch, nhit, h->nreg, h->path, h->rev[0] ? h->rev : "?");
+	printf("  %-24s %12s %12s  %s\n", "method", "proven/u", "measured/u", "verdict (E = tolerance)");
+	for (i = 0; i < nm; i++) {
+		const char *why;
+		int found;
+		const double b = half_bound(h, hit, ms[i].name, &found, &why);
+		char v[96];
+		if (!found)
+			continue;   /* no committed row: proven[i] stays NaN */
+		proven[i] = b;
+		if (why)
+			snprintf(v, sizeof v, "not bounded here: a reached region is %s", why);
+		else
+			snprintf(v, sizeof v, "%s", b <= E ? "proven within E" : "not proven within E");
+		printf("  %-24s %12.4g %12.4g  %s\n", ms[i].name, b * 0x1p11, measured[i] * 0x1p11, v);
+		if (recommended && strcmp(recommended, ms[i].name) == 0)
+			rec = b <= E;
+	}
+	if (recommended)
+		printf("  recommended %s: %s\n", recommended, rec == 1 ? "proven within E on every binary16 rounding of a unit vector in the reached regions"
+		       : rec == 0 ? "NOT proven within E on this scene's regions" : "no committed binary16 proof");
+	free(h->rows);
+	free(h);
 	return 0;
 }

@@ -348,7 +348,7 @@ int mesh_classify(const mesh_normals *m, int prec, double tol, mesh_stats *st)
 	size_t i, k = 0;
 	double *dev;
 	memset(st, 0, sizeof *st);
-	st->tol = tol > 0 ? tol : prec == PREC_FLOAT ? 4.0 * FLT_EPSILON : 4.0 * DBL_EPSILON;
+	st->tol = tol > 0 ? tol : prec == PREC_FLOAT ? 4.0 * FLT_EPSILON : prec == PREC_HALF ? 0x1p-8 : 4.0 * DBL_EPSILON;
 	st->total = m->count;
 	dev = xcalloc(m->count, sizeof *dev);
 	if (!dev)
@@ -357,6 +357,8 @@ int mesh_classify(const mesh_normals *m, int prec, double tol, mesh_stats *st)
 		long double x = m->x[i], y = m->y[i], z = m->z[i], l, d;
 		if (prec == PREC_FLOAT) {
 			x = (float)m->x[i]; y = (float)m->y[i]; z = (float)m->z[i];
+		} else if (prec == PREC_HALF) {   /* the float, rounded to nearest binary16 */
+			x = prec_half_round((float)m->x[i]); y = prec_half_round((float)m->y[i]); z = prec_half_round((float)m->z[i]);
 		}
 		if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {
 			st->nonfinite++;

@@ -145,7 +145,9 @@ int  mesh_read_file_opts(const char *path, const mesh_opts *o, mesh_normals *out
 #define MESH_MAX_ITEMS ((uint64_t)1 << 28)
 
 /* Classification of the normals.  |n| is computed in long double from the
-   values rounded to the working precision prec (PREC_FLOAT: to float first). */
+   values rounded to the working precision prec (PREC_FLOAT: to float first;
+   PREC_HALF: to float, then to nearest binary16, where a component above
+   65504 is infinite and one below 2^-25 is 0). */
 typedef struct {
 	size_t total, unit, nonunit, zero, nonfinite;
 	double tol;                    /* unit means ||n| - 1| <= tol            */
@@ -156,7 +158,8 @@ typedef struct {
 } mesh_stats;
 
 /* tol <= 0 selects the default: 4 ulps of 1 in the working precision
-   (4 * FLT_EPSILON = 4.8e-7 for float, 4 * DBL_EPSILON = 8.9e-16 for double).
+   (4 * FLT_EPSILON = 4.8e-7 for float, 4 * DBL_EPSILON = 8.9e-16 for double,
+   2^-8 for half).
    Returns 0, or -1 when out of memory (quantiles need a sorted copy). */
 int mesh_classify(const mesh_normals *m, int prec, double tol, mesh_stats *st);
 /* "line 12" (OBJ) or "vertex 17 at byte 345" (PLY) for normal i. */

@@ -4,7 +4,10 @@
  * identical runs.
  *
  * The normals come from meshio.c (OBJ, PLY, glTF 2.0; the format from the
- * content), rounded to the working precision (--precision, default float).
+ * content), rounded to the working precision (--precision, default float;
+ * half: binary16, each component the file's float rounded to nearest, as a
+ * vertex buffer of floats read by a mediump shader; --world's transforms
+ * are then done in float before that rounding).
  * Degenerate normals (zero or non-finite there) are counted and located,
  * then left out: no basis is meaningful for them, and a renderer has to
  * catch them before building one (onb_basis_checked does).  Every other
@@ -28,7 +31,8 @@
  *
  * Recommendation.  Acceptable: no non-finite output, no wrong-handed basis,
  * max defect <= E (default 1e-6 in float, about 8 float ulps of 1; 1e-14 in
- * double, about 45 double ulps).  Speed is never timed on the scene: it is
+ * double, about 45 double ulps; 2^-7 in half, 8 binary16 ulps of 1 = 16 u
+ * with u = 2^-11, in which the half report prints its defects).  Speed is never timed on the scene: it is
  * the batch throughput of speed.c (a per-machine cache measured by
  * --refresh-speed, else the committed reference run), each figure with an
  * interval.  Among acceptable methods with a speed figure, let F be the
@@ -75,8 +79,12 @@ static void usage(FILE *f)
 	"  Reads the normals of an OBJ, PLY or glTF 2.0 (.gltf, .glb) file (stored, or\n"
 	"  area-weighted from the faces; the format is told by the content), runs every\n"
 	"  method on them as read and renormalized, and recommends one.\n"
-	"  --tolerance E      max orthonormality defect accepted (default 1e-6 float, 1e-14 double)\n"
-	"  --precision P      float (default) or double\n"
+	"  --tolerance E      max orthonormality defect accepted (default 1e-6 float, 1e-14 double,\n"
+	"                     2^-7 = 0.0078125 half)\n"
+	"  --precision P      float (default), double or half (binary16: each component the file's\n"
+	"                     float rounded to nearest binary16, every operation of the kernels and\n"
+	"                     of the renormalization rounded to binary16; defects printed in\n"
+	"                     u = 2^-11; --certify takes the committed proof results/half/certify)\n"
 	"  --up z|y|x         the axis that plays n.z (y: (x,y,z)->(z,x,y), x: (x,y,z)->(y,z,x))\n"
 	"  --renormalize      make the renormalized row the headline (default: as read)\n"
 	"  --world            glTF: transform each normal by its node's inverse transpose world\n"
@@ -104,7 +112,7 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 		{ "refresh-speed", no_argument, NULL, 'R' }, { "certify", no_argument, NULL, 'C' },
 		CLI_HELP_OPTION, { NULL, 0, NULL, 0 }
 	};
-	static const char *const precs[] = { "float", "double" }, *const ups[] = { "z", "y", "x" };
+	static const char *const precs[] = { "float", "double", "half" }, *const ups[] = { "z", "y", "x" };
 	cli_args c;
 	char **rest;
 	int v, nrest, rc = -1;
@@ -134,8 +142,13 @@ static int parse_opts(int argc, char **argv, scene_opts *o)
 			o->tol_given = 1;
 			break;
 		case 'p':
-			if ((v = cli_choice("--precision", c.arg, precs, 2)) < 0)
+			if ((v = cli_choice("--precision", c.arg, precs, 3)) < 0)
 				goto out;
+			if (v == PREC_HALF && !ONB_HAVE_HALF) {
+				study_error("scene: --precision half: this build has no binary16 kernels: its compiler lacks "
+				            "_Float16 (GCC >= 12, or clang >= 15, on x86-64 or arm64); rebuild with one (make CC=gcc-12)");
+				goto out;
+			}
 			o->prec = v;   /* precs[] in PREC_ order */
 			break;
 		case 'u':
@@ -269,6 +282,11 @@ static const char *variant_name(int v) { return v ? "renormalized" : "as-read"; 
 
 static void print_speed_source(const speed_table *t, int prec)
 {
+	if (prec == PREC_HALF)
+		printf("half speeds: libonb's binary16 kernels emulated in float (F16C conversions where the CPU has them): "
+		       "a cost on this CPU, not a hardware half speed%s\n", t->kind == SPEED_REFERENCE ?
+		       "; the committed half bench was run at load 21 on 2 cores and is not a measurement to quote "
+		       "(results/half/bench/README.md): the ranking by speed is indicative only" : "");
 	if (t->kind == SPEED_CACHE)
 		printf("speed (%s): this machine's cache %s (%s); %d repetitions, interval = confidence interval of the median\n",
 		       prec_name(prec), t->path, t->desc, t->reps);
@@ -334,12 +352,17 @@ static const char *status(const scene_eval *e, int v, size_t i, const speed_row 
 	return sp ? "ok" : "ok, no speed figure";
 }
 
+/* In half the defects are printed in u = 2^-11 (binary16's unit
+   roundoff), the unit of every half result of the study; scene.csv keeps
+   them as numbers in every precision. */
 static void print_table(const onb_method *ms, size_t nm, const speed_row *const *sp, const scene_eval *e, int v,
-                        const double *udef)
+                        const double *udef, int prec)
 {
+	const double s = prec == PREC_HALF ? 0x1p11 : 1.0;
 	size_t i;
-	printf("  %-24s %10s %10s %9s %9s %8s %11s %9s %21s  %s\n", "method", "max_defect", "rms_defect", "nonfinite",
-	       "wronghand", "scal!=bt", "uniform_max", "M/s", "[interval]", "");
+	printf("  %-24s %10s %10s %9s %9s %8s %11s %9s %21s  %s\n", "method", prec == PREC_HALF ? "max_def/u" : "max_defect",
+	       prec == PREC_HALF ? "rms_def/u" : "rms_defect", "nonfinite", "wronghand", "scal!=bt",
+	       prec == PREC_HALF ? "unif_max/u" : "uniform_max", "M/s", "[interval]", "");
 	for (i = 0; i < nm; i++) {
 		const scene_res *r = &e->r[0][v][i];
 		char sb[64] = "-", ib[64] = "";
@@ -347,8 +370,8 @@ static void print_table(const onb_method *ms, size_t nm, const speed_row *const 
 			snprintf(sb, sizeof sb, "%.1f", sp[i]->med);
 			snprintf(ib, sizeof ib, "[%.1f, %.1f]", sp[i]->lo, sp[i]->hi);
 		}
-		printf("  %-24s %10.3g %10.3g %9zu %9zu %8zu %11.3g %9s %21s  %s\n", ms[i].name, r->max_defect, r->rms_defect,
-		       r->nonfinite, r->wrong_hand, r->mismatch, udef[i], sb, ib, status(e, v, i, sp[i]));
+		printf("  %-24s %10.3g %10.3g %9zu %9zu %8zu %11.3g %9s %21s  %s\n", ms[i].name, s * r->max_defect, s * r->rms_defect,
+		       r->nonfinite, r->wrong_hand, r->mismatch, s * udef[i], sb, ib, status(e, v, i, sp[i]));
 	}
 }
 
@@ -424,7 +447,7 @@ static void print_variant(const mesh_normals *mn, const scene_opts *o, const onb
 {
 	const int b = e->best[0][v], ob = e->best[1][v];
 	printf("\n%s normals, %s, %zu used:\n", v ? "renormalized" : "as-read", prec_name(o->prec), e->used[v]);
-	print_table(ms, nm, sp, e, v, udef);
+	print_table(ms, nm, sp, e, v, udef, o->prec);
 	print_verdict(mn, ms, nm, sp, e, v, o->tol);
 	print_flags(ms, sh, e, v, udef, o->tol);
 	if (ob == b)
@@ -479,7 +502,9 @@ static int write_csv(const scene_opts *o, const mesh_normals *mn, const mesh_sta
 	fprintf(out.f, "# file: %s\n# normals: %zu %s%s; unit %zu (tol %.3g), non-unit %zu, zero %zu, non-finite %zu\n", o->file,
 	        mn->count, mn->origin == MESH_STORED ? "stored" : "computed", mn->world ? ", world space (--world)" : "",
 	        st->unit, st->tol, st->nonunit, st->zero, st->nonfinite);
-	fprintf(out.f, "# precision: %s; tolerance E: %.17g\n", prec_name(o->prec), o->tol);
+	fprintf(out.f, "# precision: %s; tolerance E: %.17g%s\n", prec_name(o->prec), o->tol, o->prec == PREC_HALF ?
+	        "; binary16: each component the file's float rounded to nearest binary16, u = 2^-11 (stdout prints the "
+	        "defects in u; the columns here are the defects themselves)" : "");
 	fprintf(out.f, "# speed: %s %s (%s), %d repetitions; batch_mbases_s is its median, speed_lo and speed_hi its interval; "
 	        "never timed on the scene\n", t->kind == SPEED_CACHE ? "cache" : t->kind == SPEED_FILE ? "file" : "reference run",
 	        t->path, t->desc, t->reps);
@@ -544,7 +569,7 @@ static int object_space(const scene_opts *o, const onb_method *ms, size_t nm, co
 	char err[512];
 	int v;
 	memset(&mo, 0, sizeof mo);
-	mo.prec = o->prec;
+	mo.prec = o->prec == PREC_HALF ? PREC_FLOAT : o->prec;
 	if (mesh_read_file_opts(o->file, &mo, &mn, NULL, err, sizeof err) != 0) {
 		study_error("scene: %s", err);
 		return -1;
@@ -562,7 +587,8 @@ static int object_space(const scene_opts *o, const onb_method *ms, size_t nm, co
 }
 
 /* The registry's methods that have code in this precision: in double, the
-   float-only ones (ONB_FLOAT_ONLY) are left out. */
+   float-only ones (ONB_FLOAT_ONLY) are left out; in half, those without a
+   binary16 entry (arrayh; none in a build without _Float16). */
 static const onb_method *methods_for(int prec, size_t *nm)
 {
 	static onb_method dbl_ms[128];
@@ -571,10 +597,26 @@ static const onb_method *methods_for(int prec, size_t *nm)
 	if (prec == PREC_FLOAT)
 		return ms;
 	for (i = 0; i < *nm && j < sizeof dbl_ms / sizeof dbl_ms[0]; i++)
-		if (ms[i].basis && ms[i].batch)
+		if (prec == PREC_HALF ? ms[i].arrayh != NULL : ms[i].basis && ms[i].batch)
 			dbl_ms[j++] = ms[i];
 	*nm = j;
 	return dbl_ms;
+}
+
+/* The kernels' instruction set: in half the arithmetic is emulated in
+   float (no native half instruction), the conversions are onb_half_isa()'s
+   (bench's isa column says the same). */
+static const char *scene_isa(int prec)
+{
+	static char buf[48];
+	if (prec != PREC_HALF)
+		return onb_batch_isa();
+#if ONB_HAVE_HALF
+	snprintf(buf, sizeof buf, "emulated-%s", onb_half_isa());
+#else
+	snprintf(buf, sizeof buf, "none");
+#endif
+	return buf;
 }
 
 /* The input, the run's settings and the speed source, before the tables. */
@@ -584,8 +626,14 @@ static void print_head(const scene_opts *o, const mesh_normals *mn, const mesh_s
 	print_input(o->file, mn, st, o->prec);
 	if (e->dropped[1])
 		printf("renormalizing under/overflowed for %zu normals (left out of the renormalized row)\n", e->dropped[1]);
-	printf("up axis: %c (%s); tolerance E = %.3g (max orthonormality defect); batch isa %s\n", o->up,
-	       o->up == 'z' ? "(x,y,z) as stored" : o->up == 'y' ? "(x,y,z) -> (z,x,y)" : "(x,y,z) -> (y,z,x)", o->tol, onb_batch_isa());
+	printf("up axis: %c (%s); tolerance E = %.3g (max orthonormality defect%s); batch isa %s\n", o->up,
+	       o->up == 'z' ? "(x,y,z) as stored" : o->up == 'y' ? "(x,y,z) -> (z,x,y)" : "(x,y,z) -> (y,z,x)", o->tol,
+	       o->prec == PREC_HALF ? "; in u = 2^-11 below" : "", scene_isa(o->prec));
+	if (o->prec == PREC_HALF)
+		printf("binary16: each component the file's float rounded to nearest binary16 (u = 2^-11, largest 65504, "
+		       "smallest subnormal 2^-24: a component above 65504 becomes infinite and the normal is degenerate); "
+		       "every operation rounded to binary16 (libonb's half kernels: onb_NAME_arrayh per basis as the batch, "
+		       "onb_NAMEh as the scalar)\n");
 	print_speed_source(t, o->prec);
 }
 
@@ -621,14 +669,14 @@ int cmd_scene(int argc, char **argv)
 	if ((v = parse_opts(argc, argv, &o)) != 0)
 		return v > 0 ? 0 : ONB_EXIT_USAGE;
 	if (!o.tol_given)
-		o.tol = o.prec == PREC_FLOAT ? 1e-6 : 1e-14;
+		o.tol = o.prec == PREC_FLOAT ? 1e-6 : o.prec == PREC_HALF ? 0x1p-7 : 1e-14;
 	o.other = o.up == 'z' ? 'y' : 'z';
 	ms = methods_for(o.prec, &nm);
 	if (!o.file)
 		return refresh_only(&o);
 	memset(&mo, 0, sizeof mo);
 	mo.world = o.world;
-	mo.prec = o.prec;
+	mo.prec = o.prec == PREC_HALF ? PREC_FLOAT : o.prec;   /* half: the float transform, then the rounding */
 	if (mesh_read_file_opts(o.file, &mo, &mn, NULL, err, sizeof err) != 0) {
 		study_error("scene: %s", err);
 		return ONB_EXIT_USAGE;

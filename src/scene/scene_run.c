@@ -11,6 +11,28 @@
 #include "scene/scene_run.h"
 #include "common/prec.h"
 #include "bench/bench_core.h"
+#include "bench/bench_calls.h"
+
+/* The size of one component in the working precision: binary16 buffers
+   hold bit patterns (uint16_t), as libonb's onb_NAME_arrayh takes them. */
+static size_t elem_size(int prec)
+{
+	return prec == PREC_DOUBLE ? sizeof(double) : prec == PREC_HALF ? sizeof(uint16_t) : sizeof(float);
+}
+
+double scene_round(int prec, double x)
+{
+	if (prec == PREC_FLOAT)
+		return (float)x;
+	if (prec == PREC_HALF)
+		return prec_half_round((float)x);   /* the file's float, rounded to nearest binary16 */
+	return x;
+}
+
+/* One operation of binary16 arithmetic: done in float (exact for one
+   +, -, x, / or sqrt of binary16 values, rounded once) and rounded to
+   binary16, as libonb's half kernels and a GPU's mediump do it. */
+static double h16(float x) { return prec_half_round(x); }
 
 void scene_buf_free(scene_buf *b)
 {
@@ -23,7 +45,7 @@ void scene_buf_free(scene_buf *b)
 
 int scene_buf_alloc(scene_buf *b, size_t n, int prec)
 {
-	size_t es = prec == PREC_FLOAT ? sizeof(float) : sizeof(double), cnt = n ? n : 1;
+	size_t es = elem_size(prec), cnt = n ? n : 1;
 	int k, bad = 0;
 	memset(b, 0, sizeof *b);
 	b->n = n;
@@ -40,12 +62,59 @@ int scene_buf_alloc(scene_buf *b, size_t n, int prec)
 
 static long double getv(const void *a, int prec, size_t i)
 {
+	if (prec == PREC_HALF)
+		return (long double)prec_half_value(((const uint16_t *)a)[i]);
 	return prec == PREC_FLOAT ? (long double)((const float *)a)[i] : (long double)((const double *)a)[i];
+}
+
+/* binary16: the batch is libonb's onb_NAME_arrayh once per basis over the
+   SoA bit patterns (libonb has no half batch; bench's half "batch" rows
+   time the same loop, bench_soa_kernel). */
+static void run_batch_half(const onb_method *m, const scene_buf *b)
+{
+	bench_soa s;
+	int k;
+	memset(&s, 0, sizeof s);
+	s.prec = PREC_HALF;
+	s.n = b->n;
+	s.arrayh = m->arrayh;
+	for (k = 0; k < 3; k++) s.in[k] = b->in[k];
+	for (k = 0; k < 6; k++) s.out[k] = b->bo[k];
+	if (m->arrayh)
+		bench_soa_kernel(&s, 0, b->n);
+}
+
+/* binary16: the scalar is libonb's out-of-line onb_NAMEh on onb_vec3h
+   (bench_calls.c's loop over it), in chunks of SCALAR_CHUNK. */
+#define SCALAR_CHUNK 256
+static void run_scalar_half(const onb_method *m, const scene_buf *b)
+{
+	const bench_call *c = bench_call_find(m->name);
+	uint16_t in[3 * SCALAR_CHUNK], out[6 * SCALAR_CHUNK];
+	const uint16_t *const *x = (const uint16_t *const *)b->in;
+	uint16_t *const *o = (uint16_t *const *)b->so;
+	size_t i, j, n;
+	if (!c || !c->tph)
+		return;
+	for (i = 0; i < b->n; i += n) {
+		n = b->n - i < SCALAR_CHUNK ? b->n - i : SCALAR_CHUNK;
+		for (j = 0; j < n; j++) {
+			in[3 * j] = x[0][i + j]; in[3 * j + 1] = x[1][i + j]; in[3 * j + 2] = x[2][i + j];
+		}
+		c->tph(n, in, out);
+		for (j = 0; j < n; j++) {
+			int k;
+			for (k = 0; k < 6; k++)
+				o[k][i + j] = out[6 * j + k];
+		}
+	}
 }
 
 static void run_batch(const onb_method *m, const scene_buf *b)
 {
-	if (b->prec == PREC_FLOAT)
+	if (b->prec == PREC_HALF)
+		run_batch_half(m, b);
+	else if (b->prec == PREC_FLOAT)
 		m->batchf(b->n, b->in[0], b->in[1], b->in[2], b->bo[0], b->bo[1], b->bo[2], b->bo[3], b->bo[4], b->bo[5]);
 	else
 		m->batch(b->n, b->in[0], b->in[1], b->in[2], b->bo[0], b->bo[1], b->bo[2], b->bo[3], b->bo[4], b->bo[5]);
@@ -54,7 +123,9 @@ static void run_batch(const onb_method *m, const scene_buf *b)
 static void run_scalar(const onb_method *m, const scene_buf *b)
 {
 	size_t i;
-	if (b->prec == PREC_FLOAT) {
+	if (b->prec == PREC_HALF) {
+		run_scalar_half(m, b);
+	} else if (b->prec == PREC_FLOAT) {
 		const float *x = b->in[0], *y = b->in[1], *z = b->in[2];
 		float **o = (float **)b->so;
 		for (i = 0; i < b->n; i++) {
@@ -83,7 +154,7 @@ static void measure(const onb_method *m, const scene_buf *b, scene_res *r)
 	size_t i;
 	long double sum2 = 0;
 	size_t nfin = 0;
-	const size_t es = b->prec == PREC_FLOAT ? sizeof(float) : sizeof(double);
+	const size_t es = elem_size(b->prec);
 	memset(r, 0, sizeof *r);
 	for (i = 0; i < b->n; i++) {
 		long double n[3], u[3], v[3], l, e, d, det;
@@ -132,18 +203,41 @@ static void measure(const onb_method *m, const scene_buf *b, scene_res *r)
 /* Fill b with the non-degenerate normals, permuted for `up`, rounded to
    the working precision, and renormalized when asked.  Returns the number
    dropped because renormalizing under- or overflowed. */
+/* n / sqrt(n.n) in binary16, each operation rounded (h16), as a
+   mediump normalize() computes it: the squares of components below 2^-12
+   underflow to 0, so a normal whose every component is that small has
+   length 0 and n / 0 is not finite, and one with a component of 256 or
+   more overflows n.n, and n / inf is 0.  0, or -1 for either (the normal
+   is dropped, as float drops a non-finite one). */
+static int half_normalize(double p[3])
+{
+	const float x = (float)p[0], y = (float)p[1], z = (float)p[2];
+	const float s = (float)h16((float)h16(x * x) + (float)h16(y * y)) + (float)h16(z * z);
+	const float l = (float)h16(sqrtf((float)h16(s)));
+	int j;
+	for (j = 0; j < 3; j++)
+		p[j] = h16((float)p[j] / l);
+	if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]))
+		return -1;
+	return p[0] != 0 || p[1] != 0 || p[2] != 0 ? 0 : -1;   /* n.n overflowed: n / inf = 0 */
+}
+
 size_t scene_fill(const mesh_normals *mn, int prec, char up, int renorm, scene_buf *b)
 {
 	size_t i, k = 0, dropped = 0;
+	int j;
 	for (i = 0; i < mn->count; i++) {
-		double x = mn->x[i], y = mn->y[i], z = mn->z[i], p[3];
-		if (prec == PREC_FLOAT) { x = (float)x; y = (float)y; z = (float)z; }
+		double x = scene_round(prec, mn->x[i]), y = scene_round(prec, mn->y[i]), z = scene_round(prec, mn->z[i]), p[3];
 		if (!isfinite(x) || !isfinite(y) || !isfinite(z) || (x == 0 && y == 0 && z == 0))
 			continue;
 		if (up == 'y') { p[0] = z; p[1] = x; p[2] = y; }
 		else if (up == 'x') { p[0] = y; p[1] = z; p[2] = x; }
 		else { p[0] = x; p[1] = y; p[2] = z; }
-		if (prec == PREC_FLOAT) {
+		if (prec == PREC_HALF) {
+			if (renorm && half_normalize(p) != 0) { dropped++; continue; }
+			for (j = 0; j < 3; j++)
+				((uint16_t *)b->in[j])[k] = prec_half_bits(p[j]);
+		} else if (prec == PREC_FLOAT) {
 			float f[3];
 			f[0] = (float)p[0]; f[1] = (float)p[1]; f[2] = (float)p[2];
 			if (renorm) {
@@ -195,7 +289,9 @@ int scene_uniform_defects(const onb_method *ms, size_t nm, int prec, double *out
 	for (i = 0; i < n; i++) {
 		int k;
 		for (k = 0; k < 3; k++) {
-			if (prec == PREC_FLOAT)
+			if (prec == PREC_HALF)   /* the directions rounded to binary16 (via float, as the scene's) */
+				((uint16_t *)b.in[k])[i] = prec_half_bits(scene_round(prec, x[k * n + i]));
+			else if (prec == PREC_FLOAT)
 				((float *)b.in[k])[i] = (float)x[k * n + i];
 			else
 				((double *)b.in[k])[i] = x[k * n + i];
@@ -236,8 +332,7 @@ int scene_shape_of(const mesh_normals *mn, int prec, scene_shape *s)
 		int k, zeros = 0;
 		p[0] = mn->x[i]; p[1] = mn->y[i]; p[2] = mn->z[i];
 		for (k = 0; k < 3; k++) {
-			if (prec == PREC_FLOAT)
-				p[k] = (float)p[k];
+			p[k] = scene_round(prec, p[k]);
 			if (!isfinite(p[k]))
 				break;
 			zeros += p[k] == 0;

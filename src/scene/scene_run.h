@@ -22,7 +22,7 @@ typedef struct {
 /* The inputs and both outputs (batch, scalar) in the working precision. */
 typedef struct {
 	size_t n;
-	int prec;               /* PREC_FLOAT: float arrays */
+	int prec;               /* PREC_FLOAT: float arrays; PREC_HALF: binary16 bit patterns (uint16_t) */
 	void *in[3], *bo[6], *so[6];
 	size_t *src;            /* index into the mesh normals */
 } scene_buf;
@@ -31,6 +31,11 @@ typedef struct {
 typedef struct {
 	size_t used, distinct, on_axes;
 } scene_shape;
+
+/* x rounded to the working precision: float; binary16 by rounding the
+   file's float to nearest (a vertex buffer's float read as mediump);
+   double as it is. */
+double scene_round(int prec, double x);
 
 /* 0, or -1 when out of memory (then b is freed). */
 int  scene_buf_alloc(scene_buf *b, size_t n, int prec);

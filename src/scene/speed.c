@@ -65,7 +65,7 @@ int speed_cache_path(int prec, char *buf, size_t n)
 	h = fnv1a(h, study_cpu_model());
 	h = fnv1a(h, "|" ONB_GIT_REV "|" ONB_CFLAGS "|");
 	h = fnv1a(h, onb_batch_isa());
-	h = fnv1a(h, prec == PREC_DOUBLE ? "|double" : "|float");
+	h = fnv1a(h, prec == PREC_DOUBLE ? "|double" : prec == PREC_HALF ? "|half" : "|float");
 	if (x && x[0] == '/')
 		w = snprintf(buf, n, "%s/onbstudy/speed-%016llx.csv", x, (unsigned long long)h);
 	else if (home && home[0])
@@ -165,9 +165,11 @@ static int read_csv(const char *path, int prec, speed_table *t)
 }
 
 /* results/reference/bench.csv beside the executable, else in the working
-   directory. */
-static int reference_path(char *buf, size_t n)
+   directory; in half, results/half/bench/bench.csv (the reference run has
+   no half rows). */
+static int reference_path(int prec, char *buf, size_t n)
 {
+	const char *rel = prec == PREC_HALF ? "results/half/bench/bench.csv" : "results/reference/bench.csv";
 	char exe[4096];
 	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
 	if (l > 0) {
@@ -176,11 +178,11 @@ static int reference_path(char *buf, size_t n)
 		s = strrchr(exe, '/');
 		if (s) {
 			*s = '\0';
-			if ((size_t)snprintf(buf, n, "%s/results/reference/bench.csv", exe) < n && access(buf, R_OK) == 0)
+			if ((size_t)snprintf(buf, n, "%s/%s", exe, rel) < n && access(buf, R_OK) == 0)
 				return 0;
 		}
 	}
-	snprintf(buf, n, "results/reference/bench.csv");
+	snprintf(buf, n, "%s", rel);
 	return access(buf, R_OK) == 0 ? 0 : -1;
 }
 
@@ -211,15 +213,20 @@ static int measure(int prec, int reps, speed_table *t)
 	for (i = 0; i < SPEED_N; i++) {
 		if (prec == PREC_DOUBLE) {
 			((double *)s.in[0])[i] = gx[i]; ((double *)s.in[1])[i] = gy[i]; ((double *)s.in[2])[i] = gz[i];
+		} else if (prec == PREC_HALF) {   /* rounded once to binary16, as bench --precision half's */
+			((uint16_t *)s.in[0])[i] = prec_half_bits(prec_half_round(gx[i]));
+			((uint16_t *)s.in[1])[i] = prec_half_bits(prec_half_round(gy[i]));
+			((uint16_t *)s.in[2])[i] = prec_half_bits(prec_half_round(gz[i]));
 		} else {
 			((float *)s.in[0])[i] = (float)gx[i]; ((float *)s.in[1])[i] = (float)gy[i]; ((float *)s.in[2])[i] = (float)gz[i];
 		}
 	}
 	for (i = 0; i < nm; i++) {
-		if (prec == PREC_DOUBLE ? !ms[i].batch : !ms[i].batchf)
-			continue; /* float-only methods in double */
+		if (prec == PREC_DOUBLE ? !ms[i].batch : prec == PREC_HALF ? !ms[i].arrayh : !ms[i].batchf)
+			continue; /* float-only methods in double, methods without a binary16 entry in half */
 		s.batch = ms[i].batch;
 		s.batchf = ms[i].batchf;
+		s.arrayh = ms[i].arrayh;
 		inner[i] = bench_calibrate(bench_soa_kernel, &s, SPEED_N, 1, 0.02, 100000);
 	}
 	for (r = 0; r < reps; r++)
@@ -231,6 +238,7 @@ static int measure(int prec, int reps, speed_table *t)
 			cfg.threads = 1; cfg.warmup = 1; cfg.reps = 1; cfg.inner = inner[i];
 			s.batch = ms[i].batch;
 			s.batchf = ms[i].batchf;
+			s.arrayh = ms[i].arrayh;
 			if (bench_run(bench_soa_kernel, &s, SPEED_N, &cfg, &br) != 0 || !(br.median_s > 0)) {
 				study_error("scene: timing %s failed", ms[i].name);
 				goto out;
@@ -316,11 +324,12 @@ int speed_load(int prec, const char *file, int refresh, int reps, speed_table *t
 		t->kind = SPEED_CACHE;
 		return 0;
 	}
-	if (reference_path(ref, sizeof ref) == 0 && read_csv(ref, prec, t) == 0) {
+	if (reference_path(prec, ref, sizeof ref) == 0 && read_csv(ref, prec, t) == 0) {
 		t->kind = SPEED_REFERENCE;
 		return 0;
 	}
-	study_error("scene: no speed figures: no cache (%s) and no readable results/reference/bench.csv; "
-	            "run 'onbstudy scene --refresh-speed FILE' or give --speed BENCH_CSV", cache[0] ? cache : "no cache directory");
+	study_error("scene: no speed figures: no cache (%s) and no readable %s; "
+	            "run 'onbstudy scene --refresh-speed FILE' or give --speed BENCH_CSV", cache[0] ? cache : "no cache directory",
+	            prec == PREC_HALF ? "results/half/bench/bench.csv" : "results/reference/bench.csv");
 	return -1;
 }
